@@ -1,0 +1,72 @@
+#include "cli/common.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef::cli {
+namespace {
+
+double parse_finite(const std::string& text, const std::string& option, const std::string& whole) {
+  std::string_view body = text;
+  if (!body.empty() && body.front() == '+') body.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
+  if (body.empty() || ec != std::errc{} || end != body.data() + body.size() || !std::isfinite(value))
+    throw InputError(option + " '" + whole + "': found '" + text + "', expected a finite number");
+  return value;
+}
+
+}  // namespace
+
+std::pair<std::string, std::string> parse_text_assignment(const std::string& text, const std::string& option) {
+  const auto equals = text.find('=');
+  if (equals == std::string::npos || equals == 0)
+    throw InputError(option + " '" + text + "': expected NAME=VALUE");
+  return {text.substr(0, equals), text.substr(equals + 1)};
+}
+
+std::pair<std::string, double> parse_assignment(const std::string& text, const std::string& option) {
+  auto [name, value] = parse_text_assignment(text, option);
+  return {name, parse_finite(value, option, text)};
+}
+
+std::array<double, 3> parse_triple(const std::string& text, const std::string& option) {
+  std::array<double, 3> out{};
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto comma = text.find(',', start);
+    if ((i < 2) == (comma == std::string::npos))
+      throw InputError(option + " '" + text + "': expected three comma-separated numbers x,y,z");
+    out[i] = parse_finite(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option,
+                          text);
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string number(double value) {
+  std::array<char, 32> buffer{};
+  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  (void)ec;
+  return std::string(buffer.data(), end);
+}
+
+std::string significant(double value, int digits) {
+  std::array<char, 48> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
+  return buffer.data();
+}
+
+nlohmann::json key_json(const RunKey& key) {
+  nlohmann::json out;
+  out["body"] = key.body;
+  for (std::size_t i = 0; i < 6; ++i) out[std::string(kVelocityNames[i])] = key.nu_b[i];
+  out["disturbances"] = nlohmann::json::object();
+  for (const auto& [name, value] : key.disturbances) out["disturbances"][name] = value;
+  return out;
+}
+
+}  // namespace hydrocoef::cli

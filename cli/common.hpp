@@ -1,0 +1,44 @@
+// Shared pieces of the hydrocoef command line: global options, argument
+// parsing helpers and number formatting. The CLI only parses, calls the
+// library and prints.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <array>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/core/run.hpp"
+
+namespace hydrocoef::cli {
+
+struct GlobalOptions {
+  std::string database = "hydrocoef.db";
+};
+
+/// Registers each subcommand; the callbacks run after parsing.
+void add_import_command(CLI::App& app, const GlobalOptions& global);
+void add_runs_command(CLI::App& app, const GlobalOptions& global);
+void add_fit_command(CLI::App& app, const GlobalOptions& global);
+
+
+/// Parses "NAME=VALUE" (VALUE a finite number); InputError naming the option otherwise.
+std::pair<std::string, double> parse_assignment(const std::string& text, const std::string& option);
+/// Parses "NAME=TEXT".
+std::pair<std::string, std::string> parse_text_assignment(const std::string& text, const std::string& option);
+/// Parses "x,y,z" into three finite numbers.
+std::array<double, 3> parse_triple(const std::string& text, const std::string& option);
+
+/// Shortest text that reads back as the same double.
+std::string number(double value);
+/// A number in engineering style with `digits` significant digits.
+std::string significant(double value, int digits = 6);
+
+/// JSON of one run key: {"body", "u".."r", "disturbances"}.
+nlohmann::json key_json(const RunKey& key);
+
+}  // namespace hydrocoef::cli

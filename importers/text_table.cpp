@@ -1,0 +1,105 @@
+#include "importers/text_table.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace hydrocoef {
+namespace {
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+std::vector<TextLine> split_lines(std::string_view bytes) {
+  std::vector<TextLine> lines;
+  std::size_t start = 0;
+  std::size_t number = 1;
+  while (start < bytes.size()) {
+    auto end = bytes.find('\n', start);
+    if (end == std::string_view::npos) end = bytes.size();
+    auto text = bytes.substr(start, end - start);
+    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+    lines.push_back({text, number++});
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file) {
+  std::vector<TextField> fields;
+  const std::string_view text = line.text;
+  std::size_t i = 0;
+  while (true) {
+    TextField field;
+    std::size_t start = i;
+    while (start < text.size() && (text[start] == ' ' || text[start] == '\t') && text[start] != delimiter) ++start;
+    field.column = start + 1;
+    if (start < text.size() && text[start] == '"') {
+      std::size_t j = start + 1;
+      bool closed = false;
+      while (j < text.size()) {
+        if (text[j] == '"') {
+          if (j + 1 < text.size() && text[j + 1] == '"') {
+            field.text += '"';
+            j += 2;
+            continue;
+          }
+          closed = true;
+          ++j;
+          break;
+        }
+        field.text += text[j++];
+      }
+      if (!closed)
+        throw InputError(SourceLocation{file, line.number, start + 1},
+                         "unterminated quoted field; expected a closing '\"'");
+      while (j < text.size() && text[j] != delimiter) {
+        if (text[j] != ' ' && text[j] != '\t')
+          throw InputError(SourceLocation{file, line.number, j + 1},
+                           "text after a closing quote; expected the delimiter or the end of the line");
+        ++j;
+      }
+      i = j;
+    } else {
+      std::size_t j = start;
+      while (j < text.size() && text[j] != delimiter) ++j;
+      field.text = std::string(trim(text.substr(start, j - start)));
+      i = j;
+    }
+    fields.push_back(std::move(field));
+    if (i >= text.size()) break;
+    ++i;  // skip the delimiter
+  }
+  return fields;
+}
+
+char detect_delimiter(std::string_view header) {
+  if (header.find(',') != std::string_view::npos) return ',';
+  if (header.find('\t') != std::string_view::npos) return '\t';
+  if (header.find(';') != std::string_view::npos) return ';';
+  return ',';
+}
+
+double parse_number(const TextField& field, const std::string& file, std::size_t line, std::string_view column_name) {
+  std::string_view text = field.text;
+  const SourceLocation where{file, line, field.column};
+  const std::string context = "column '" + std::string(column_name) + "': ";
+  if (text.empty()) throw InputError(where, context + "empty field; expected a number");
+  if (text.front() == '+') text.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    throw InputError(where, context + "'" + field.text + "' is out of the range of a double");
+  if (ec != std::errc{} || end != text.data() + text.size())
+    throw InputError(where, context + "found '" + field.text + "', expected a number");
+  if (!std::isfinite(value))
+    throw InputError(where, context + "found '" + field.text + "', expected a finite number");
+  return value;
+}
+
+}  // namespace hydrocoef

@@ -1,0 +1,41 @@
+// Line and field splitting for delimited text exports (CSV, tab- or
+// semicolon-separated), shared by the text importers. Keeps 1-based line and
+// column numbers so that every error can point into the file.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+
+struct TextField {
+  std::string text;        ///< unquoted, surrounding blanks trimmed
+  std::size_t column = 0;  ///< 1-based character column where the field starts
+};
+
+struct TextLine {
+  std::string_view text;   ///< without the line ending (LF or CRLF)
+  std::size_t number = 0;  ///< 1-based
+};
+
+/// Splits a buffer into lines, accepting LF and CRLF endings and a missing
+/// final newline.
+std::vector<TextLine> split_lines(std::string_view bytes);
+
+/// Splits one line at `delimiter`; double-quoted fields may hold the delimiter
+/// and doubled quotes (""). An unterminated quote is an InputError at `where`.
+std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file);
+
+/// Picks the delimiter of a header line: ',' if present, else tab, else ';'.
+char detect_delimiter(std::string_view header);
+
+/// Parses a whole field as a finite double (std::from_chars; a leading '+' is
+/// allowed). Throws InputError at the field naming the column, what was found
+/// and that a finite number was expected.
+double parse_number(const TextField& field, const std::string& file, std::size_t line, std::string_view column_name);
+
+}  // namespace hydrocoef

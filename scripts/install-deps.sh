@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages hydrocoef needs to build, test and benchmark.
+# Idempotent and quick when everything is present: it asks dpkg first and runs
+# apt-get (update once, then install) only for what is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libvtk9-dev           # VTK readers (legacy/XML/EnSight/CGNS) and cross-check filters
+  libeigen3-dev         # linear algebra
+  libceres-dev          # damping-law fitting and covariance
+  libsqlite3-dev        # run database
+  libssl-dev            # SHA-256 of imported files (libcrypto)
+  libgtest-dev libgmock-dev
+  libbenchmark-dev      # bench/
+  libcli11-dev          # command line
+  nlohmann-json3-dev    # --json output
+  libfast-float-dev     # number parsing in importers
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,94 @@
+// The domain vocabulary of one CFD run: its key (body, body velocity,
+// disturbance), the generalized force it produced, and where it came from.
+//
+// Frames and units: body axes after Fossen/SNAME (x forward, y starboard,
+// z down); velocity nu_b = (u, v, w) in m/s and (p, q, r) in rad/s; generalized
+// force tau_b = (X, Y, Z) in N and (K, M, N) in N m about the run's reference
+// point. Everything inside the library is SI.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hydrocoef {
+
+/// Velocity component names, in the order of nu_b.
+inline constexpr std::array<std::string_view, 6> kVelocityNames = {"u", "v", "w", "p", "q", "r"};
+/// Generalized force component names, in the order of tau_b.
+inline constexpr std::array<std::string_view, 6> kForceNames = {"X", "Y", "Z", "K", "M", "N"};
+
+/// Index 0..5 of a velocity name ("u".."r"), or nullopt.
+std::optional<std::size_t> velocity_index(std::string_view name);
+/// Index 0..5 of a force name ("X".."N"), or nullopt.
+std::optional<std::size_t> force_index(std::string_view name);
+
+/// What identifies a run: the body, its velocity in body axes, and any number
+/// of named disturbance parameters (for example current_v = 0.05 m/s).
+struct RunKey {
+  std::string body;
+  std::array<double, 6> nu_b{};                 ///< u, v, w [m/s]; p, q, r [rad/s]
+  std::map<std::string, double> disturbances;  ///< SI values, by name
+};
+
+/// A canonical text form of a key's disturbances ("a=0.05;b=1"), sorted by
+/// name and printed with round-trip precision; "" when there are none.
+std::string disturbance_signature(const std::map<std::string, double>& disturbances);
+
+/// One-line human form of a key: "asr-v u=0.1 r=0.2 current_v=0.05" (zero
+/// velocity components are left out).
+std::string describe(const RunKey& key);
+
+/// How the numbers of a force record are signed.
+enum class SignConvention {
+  OnBody,         ///< the force the fluid exerts on the body (SNAME); damping is negative
+  OpposingMotion  ///< a damping magnitude: positive opposes motion (the negative of OnBody)
+};
+std::string_view to_string(SignConvention convention);
+/// Parses "on-body" or "opposing"; throws InputError otherwise.
+SignConvention parse_sign_convention(std::string_view text);
+
+/// One generalized force component with its parts where known.
+struct ForceComponent {
+  double total = 0.0;
+  std::optional<double> pressure;
+  std::optional<double> viscous;
+};
+
+/// The fluid a run was computed in; unknown values stay empty.
+struct Fluid {
+  std::optional<double> density_kg_m3;
+  std::optional<double> kinematic_viscosity_m2_s;
+};
+
+/// One run as an importer produced it.
+struct ImportedRun {
+  RunKey key;
+  Fluid fluid;
+  std::array<double, 3> reference_point_b{};                ///< moment centre [m], body axes
+  std::array<std::optional<ForceComponent>, 6> tau_b;       ///< X..N; empty where the source has none
+  SignConvention sign = SignConvention::OnBody;
+  std::size_t source_line = 0;                              ///< 1-based line in the source, 0 if n/a
+};
+
+/// Where a batch of runs came from.
+struct Provenance {
+  std::string path;              ///< as given by the user
+  std::string sha256;            ///< of the file's bytes, lower-case hex
+  std::uint64_t size_bytes = 0;
+  std::string importer;          ///< importer name, e.g. "force-table"
+  std::string importer_version;
+};
+
+/// Everything one source file contributes, imported in one go.
+struct ImportBatch {
+  Provenance source;
+  std::vector<ImportedRun> runs;
+};
+
+}  // namespace hydrocoef

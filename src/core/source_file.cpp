@@ -1,0 +1,49 @@
+#include "src/core/source_file.hpp"
+
+#include <openssl/evp.h>
+
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+
+std::string sha256_hex(std::string_view bytes) {
+  std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
+  unsigned int length = 0;
+  if (EVP_Digest(bytes.data(), bytes.size(), digest.data(), &length, EVP_sha256(), nullptr) != 1)
+    throw std::runtime_error("SHA-256 computation failed in libcrypto");
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(2 * length);
+  for (unsigned int i = 0; i < length; ++i) {
+    out += kHex[digest[i] >> 4];
+    out += kHex[digest[i] & 0x0f];
+  }
+  return out;
+}
+
+SourceFile load_source_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(SourceLocation{path.string()}, "no such file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(SourceLocation{path.string()}, "is a directory, expected a file");
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) throw InputError(SourceLocation{path.string()}, std::string("cannot open: ") + std::strerror(errno));
+  SourceFile out;
+  out.path = path;
+  std::array<char, 1 << 16> buffer{};
+  std::size_t got = 0;
+  while ((got = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0) out.bytes.append(buffer.data(), got);
+  if (std::ferror(file.get()))
+    throw InputError(SourceLocation{path.string()}, std::string("read error: ") + std::strerror(errno));
+  out.sha256 = sha256_hex(out.bytes);
+  return out;
+}
+
+}  // namespace hydrocoef

@@ -1,0 +1,429 @@
+#include "src/store/database.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <unordered_map>
+
+#include "src/core/error.hpp"
+#include "src/store/migrations.hpp"
+
+namespace hydrocoef {
+namespace {
+
+constexpr double kFilterTolerance = 1e-9;
+
+double canonical(double value) { return value == 0.0 ? 0.0 : value; }  // folds -0 into 0
+
+bool same_value(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+std::string force_name(std::size_t i) { return std::string(kForceNames[i]); }
+
+}  // namespace
+
+std::string utc_timestamp_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm parts{};
+  gmtime_r(&now, &parts);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
+  return text;
+}
+
+Database::Database(const std::filesystem::path& path, OpenMode mode)
+    : path_(path), connection_([&] {
+        if (mode == OpenMode::MustExist && !std::filesystem::exists(path))
+          throw InputError(SourceLocation{path.string()},
+                           "no database here; create one with 'hydrocoef import' or give --db PATH");
+        return store::Connection(path.string(), mode == OpenMode::CreateIfMissing);
+      }()) {
+  connection_.execute("PRAGMA foreign_keys = ON");
+  // Reading the schema is the first access to the file's content: a foreign or
+  // damaged file fails here with SQLite's "file is not a database".
+  const std::string check = integrity_check();
+  if (check != "ok")
+    throw InputError(SourceLocation{path.string()}, "database fails its integrity check: " + check);
+  migrate();
+}
+
+int Database::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
+
+int Database::schema_version() {
+  auto statement = connection_.prepare("PRAGMA user_version");
+  statement.step();
+  return static_cast<int>(statement.get_int(0));
+}
+
+std::string Database::integrity_check() {
+  auto statement = connection_.prepare("PRAGMA quick_check");
+  std::string out;
+  while (statement.step()) {
+    if (!out.empty()) out += "; ";
+    out += statement.get_text(0);
+  }
+  return out;
+}
+
+void Database::migrate() {
+  const int version = schema_version();
+  const int latest = latest_schema_version();
+  if (version > latest)
+    throw InputError(SourceLocation{path_.string()},
+                     "database is at schema version " + std::to_string(version) + ", this hydrocoef knows up to " +
+                         std::to_string(latest) + "; use a newer hydrocoef");
+  if (version == 0) {
+    auto count = connection_.prepare("SELECT count(*) FROM sqlite_schema");
+    count.step();
+    if (count.get_int(0) != 0)
+      throw InputError(SourceLocation{path_.string()},
+                       "an SQLite database with tables but no hydrocoef schema version; expected a hydrocoef "
+                       "database or a new file");
+  }
+  for (int next = version + 1; next <= latest; ++next) {
+    const auto& migration = store::migrations()[static_cast<std::size_t>(next - 1)];
+    store::Transaction transaction(connection_);
+    connection_.execute(migration.sql);
+    connection_.execute("PRAGMA user_version = " + std::to_string(next));
+    transaction.commit();
+  }
+}
+
+std::int64_t Database::body_id(const std::string& name, bool create) {
+  auto find = connection_.prepare("SELECT id FROM body WHERE name = ?");
+  find.bind(1, name);
+  if (find.step()) return find.get_int(0);
+  if (!create) return -1;
+  auto insert = connection_.prepare("INSERT INTO body(name) VALUES (?)");
+  insert.bind(1, name).run();
+  return connection_.last_insert_id();
+}
+
+std::optional<std::int64_t> Database::find_run_id(std::int64_t body, const RunKey& key) {
+  auto find = connection_.prepare(
+      "SELECT id FROM run WHERE body_id = ? AND u = ? AND v = ? AND w = ? AND p = ? AND q = ? AND r = ? "
+      "AND disturbance_key = ?");
+  find.bind(1, body);
+  for (int i = 0; i < 6; ++i) find.bind(2 + i, canonical(key.nu_b[static_cast<std::size_t>(i)]));
+  find.bind(8, disturbance_signature(key.disturbances));
+  if (find.step()) return find.get_int(0);
+  return std::nullopt;
+}
+
+std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batches, ConflictPolicy policy) {
+  std::vector<ImportOutcome> outcomes;
+  store::Transaction transaction(connection_);
+  const std::string now = utc_timestamp_now();
+
+  auto find_source = connection_.prepare("SELECT path, imported_at FROM source_file WHERE sha256 = ?");
+  auto insert_source = connection_.prepare(
+      "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
+      "VALUES (?, ?, ?, ?, ?, ?)");
+  auto insert_run = connection_.prepare(
+      "INSERT INTO run(body_id, u, v, w, p, q, r, disturbance_key, density, kinematic_viscosity, ref_x, ref_y, "
+      "ref_z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  auto insert_disturbance = connection_.prepare("INSERT INTO run_disturbance(run_id, name, value) VALUES (?, ?, ?)");
+  auto run_details =
+      connection_.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?");
+  auto update_fluid =
+      connection_.prepare("UPDATE run SET density = coalesce(density, ?), "
+                          "kinematic_viscosity = coalesce(kinematic_viscosity, ?) WHERE id = ?");
+  auto existing_force = connection_.prepare(
+      "SELECT s.path, f.source_line, s.imported_at FROM run_force f JOIN source_file s ON s.id = f.source_id "
+      "WHERE f.run_id = ? AND f.component = ?");
+  auto write_force = connection_.prepare(
+      "INSERT OR REPLACE INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, "
+      "source_line) VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
+
+  for (const auto& batch : batches) {
+    ImportOutcome outcome;
+    outcome.path = batch.source.path;
+    outcome.sha256 = batch.source.sha256;
+    find_source.bind(1, batch.source.sha256);
+    if (find_source.step()) {
+      outcome.already_imported = true;
+      outcome.previous_path = find_source.get_text(0);
+      outcome.previously_imported_at = find_source.get_text(1);
+      find_source.reset();
+      outcomes.push_back(outcome);
+      continue;
+    }
+    find_source.reset();
+
+    insert_source.bind(1, batch.source.path)
+        .bind(2, batch.source.sha256)
+        .bind(3, static_cast<std::int64_t>(batch.source.size_bytes))
+        .bind(4, batch.source.importer)
+        .bind(5, batch.source.importer_version)
+        .bind(6, now)
+        .run();
+    const std::int64_t source_id = connection_.last_insert_id();
+
+    for (const auto& run : batch.runs) {
+      const SourceLocation where{batch.source.path, run.source_line, 0};
+      const std::int64_t body = body_id(run.key.body, true);
+      std::int64_t run_id = 0;
+      bool created = false;
+      if (const auto existing = find_run_id(body, run.key)) {
+        run_id = *existing;
+        run_details.bind(1, run_id);
+        run_details.step();
+        const auto density = run_details.get_optional_double(0);
+        const auto viscosity = run_details.get_optional_double(1);
+        const std::array<double, 3> ref{run_details.get_double(2), run_details.get_double(3),
+                                        run_details.get_double(4)};
+        run_details.reset();
+        for (std::size_t i = 0; i < 3; ++i)
+          if (!same_value(ref[i], run.reference_point_b[i]))
+            throw InputError(where, "run " + describe(run.key) +
+                                        " already exists with another moment reference point; expected the same "
+                                        "reference point for every source of one run");
+        if ((density && run.fluid.density_kg_m3 && !same_value(*density, *run.fluid.density_kg_m3)) ||
+            (viscosity && run.fluid.kinematic_viscosity_m2_s &&
+             !same_value(*viscosity, *run.fluid.kinematic_viscosity_m2_s)))
+          throw InputError(where, "run " + describe(run.key) +
+                                      " already exists with other fluid properties (density or viscosity)");
+        update_fluid.bind(1, run.fluid.density_kg_m3).bind(2, run.fluid.kinematic_viscosity_m2_s).bind(3, run_id);
+        update_fluid.run();
+      } else {
+        insert_run.bind(1, body);
+        for (int i = 0; i < 6; ++i) insert_run.bind(2 + i, canonical(run.key.nu_b[static_cast<std::size_t>(i)]));
+        insert_run.bind(8, disturbance_signature(run.key.disturbances))
+            .bind(9, run.fluid.density_kg_m3)
+            .bind(10, run.fluid.kinematic_viscosity_m2_s)
+            .bind(11, run.reference_point_b[0])
+            .bind(12, run.reference_point_b[1])
+            .bind(13, run.reference_point_b[2])
+            .run();
+        run_id = connection_.last_insert_id();
+        for (const auto& [name, value] : run.key.disturbances)
+          insert_disturbance.bind(1, run_id).bind(2, name).bind(3, canonical(value)).run();
+        created = true;
+        ++outcome.runs_created;
+      }
+
+      bool extended = false;
+      for (std::size_t i = 0; i < 6; ++i) {
+        if (!run.tau_b[i]) continue;
+        existing_force.bind(1, run_id).bind(2, force_name(i));
+        if (existing_force.step()) {
+          const std::string previous = existing_force.get_text(0) + ":" + existing_force.get_text(1) +
+                                       " (imported " + existing_force.get_text(2) + ")";
+          existing_force.reset();
+          if (policy == ConflictPolicy::Error)
+            throw InputError(where, "run " + describe(run.key) + " already has " + force_name(i) + " from " +
+                                        previous + "; give --replace to supersede it");
+        } else {
+          existing_force.reset();
+        }
+        const auto& force = *run.tau_b[i];
+        write_force.bind(1, run_id)
+            .bind(2, force_name(i))
+            .bind(3, force.total)
+            .bind(4, force.pressure)
+            .bind(5, force.viscous)
+            .bind(6, to_string(run.sign))
+            .bind(7, source_id)
+            .bind(8, static_cast<std::int64_t>(run.source_line))
+            .run();
+        ++outcome.components_written;
+        extended = true;
+      }
+      if (extended && !created) ++outcome.runs_extended;
+    }
+    outcomes.push_back(outcome);
+  }
+  transaction.commit();
+  return outcomes;
+}
+
+std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run) {
+  std::string sql =
+      "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z "
+      "FROM run JOIN body ON body.id = run.body_id WHERE 1";
+  if (body) sql += " AND run.body_id = ?1";
+  if (run) sql += " AND run.id = ?2";
+  sql += " ORDER BY body.name, u, v, w, p, q, r, disturbance_key";
+  auto select = connection_.prepare(sql);
+  if (body) select.bind(1, *body);
+  if (run) select.bind(2, *run);
+
+  std::vector<StoredRun> out;
+  std::unordered_map<std::int64_t, std::size_t> index;
+  while (select.step()) {
+    StoredRun stored;
+    stored.id = select.get_int(0);
+    stored.key.body = select.get_text(1);
+    for (int i = 0; i < 6; ++i) stored.key.nu_b[static_cast<std::size_t>(i)] = select.get_double(2 + i);
+    stored.fluid.density_kg_m3 = select.get_optional_double(8);
+    stored.fluid.kinematic_viscosity_m2_s = select.get_optional_double(9);
+    for (int i = 0; i < 3; ++i) stored.reference_point_b[static_cast<std::size_t>(i)] = select.get_double(10 + i);
+    index[stored.id] = out.size();
+    out.push_back(std::move(stored));
+  }
+  if (out.empty()) return out;
+
+  auto disturbances = connection_.prepare("SELECT run_id, name, value FROM run_disturbance");
+  while (disturbances.step()) {
+    const auto found = index.find(disturbances.get_int(0));
+    if (found != index.end()) out[found->second].key.disturbances[disturbances.get_text(1)] = disturbances.get_double(2);
+  }
+  auto forces = connection_.prepare(
+      "SELECT f.run_id, f.component, f.total, f.pressure, f.viscous, f.sign_convention, f.source_id, s.path, "
+      "coalesce(f.source_line, 0) FROM run_force f JOIN source_file s ON s.id = f.source_id");
+  while (forces.step()) {
+    const auto found = index.find(forces.get_int(0));
+    if (found == index.end()) continue;
+    const auto component = force_index(forces.get_text(1));
+    if (!component) continue;  // excluded by the schema's CHECK
+    StoredForce force;
+    force.value.total = forces.get_double(2);
+    force.value.pressure = forces.get_optional_double(3);
+    force.value.viscous = forces.get_optional_double(4);
+    force.sign = parse_sign_convention(forces.get_text(5));
+    force.source_id = forces.get_int(6);
+    force.source_path = forces.get_text(7);
+    force.source_line = static_cast<std::size_t>(forces.get_int(8));
+    out[found->second].tau_b[*component] = std::move(force);
+  }
+  return out;
+}
+
+std::vector<StoredRun> Database::runs(const RunFilter& filter) {
+  std::optional<std::int64_t> body;
+  if (filter.body) {
+    body = body_id(*filter.body, false);
+    if (*body < 0) return {};
+  }
+  auto all = load_runs(body, std::nullopt);
+  std::erase_if(all, [&](const StoredRun& run) {
+    if (filter.with_force && !run.tau_b[*filter.with_force]) return true;
+    for (const auto& [name, wanted] : filter.equal) {
+      double value = 0.0;
+      if (const auto i = velocity_index(name)) {
+        value = run.key.nu_b[*i];
+      } else if (const auto found = run.key.disturbances.find(name); found != run.key.disturbances.end()) {
+        value = found->second;
+      } else {
+        return true;
+      }
+      if (std::abs(value - wanted) > kFilterTolerance * std::max(1.0, std::abs(wanted))) return true;
+    }
+    return false;
+  });
+  return all;
+}
+
+std::optional<StoredRun> Database::find_run(const RunKey& key) {
+  const std::int64_t body = body_id(key.body, false);
+  if (body < 0) return std::nullopt;
+  const auto id = find_run_id(body, key);
+  if (!id) return std::nullopt;
+  auto found = load_runs(body, *id);
+  if (found.empty()) return std::nullopt;
+  return std::move(found.front());
+}
+
+std::vector<SourceRecord> Database::sources() {
+  auto select = connection_.prepare(
+      "SELECT id, path, sha256, size_bytes, importer, importer_version, imported_at FROM source_file ORDER BY id");
+  std::vector<SourceRecord> out;
+  while (select.step()) {
+    SourceRecord record;
+    record.id = select.get_int(0);
+    record.provenance.path = select.get_text(1);
+    record.provenance.sha256 = select.get_text(2);
+    record.provenance.size_bytes = static_cast<std::uint64_t>(select.get_int(3));
+    record.provenance.importer = select.get_text(4);
+    record.provenance.importer_version = select.get_text(5);
+    record.imported_at = select.get_text(6);
+    out.push_back(std::move(record));
+  }
+  return out;
+}
+
+std::vector<std::string> Database::bodies() {
+  auto select = connection_.prepare("SELECT name FROM body ORDER BY name");
+  std::vector<std::string> out;
+  while (select.step()) out.push_back(select.get_text(0));
+  return out;
+}
+
+std::int64_t Database::save_fit(const FitRecord& fit) {
+  store::Transaction transaction(connection_);
+  const std::int64_t body = body_id(fit.body, false);
+  if (body < 0) throw InputError("no body named '" + fit.body + "' in " + path_.string());
+  connection_.prepare("DELETE FROM fit WHERE name = ?").bind(1, fit.name).run();
+  auto insert = connection_.prepare(
+      "INSERT INTO fit(name, body_id, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
+      "created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  insert.bind(1, fit.name)
+      .bind(2, body)
+      .bind(3, fit.dof)
+      .bind(4, fit.variable)
+      .bind(5, fit.terms)
+      .bind(6, fit.loss)
+      .bind(7, fit.run_filter)
+      .bind(8, to_string(fit.sign))
+      .bind(9, static_cast<std::int64_t>(fit.n))
+      .bind(10, fit.rmse)
+      .bind(11, fit.r2)
+      .bind(12, utc_timestamp_now())
+      .run();
+  const std::int64_t id = connection_.last_insert_id();
+  auto coefficient = connection_.prepare(
+      "INSERT INTO fit_coefficient(fit_id, position, term, value, std_error) VALUES (?, ?, ?, ?, ?)");
+  for (std::size_t i = 0; i < fit.coefficients.size(); ++i) {
+    const auto& c = fit.coefficients[i];
+    coefficient.bind(1, id).bind(2, static_cast<std::int64_t>(i)).bind(3, c.term).bind(4, c.value).bind(5, c.std_error);
+    coefficient.run();
+  }
+  auto used = connection_.prepare("INSERT INTO fit_run(fit_id, run_id) VALUES (?, ?)");
+  for (const auto run_id : fit.run_ids) used.bind(1, id).bind(2, run_id).run();
+  transaction.commit();
+  return id;
+}
+
+std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
+  std::string sql =
+      "SELECT fit.id, fit.name, body.name, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
+      "created_at FROM fit JOIN body ON body.id = fit.body_id";
+  if (body) sql += " WHERE body.name = ?1";
+  sql += " ORDER BY fit.name";
+  auto select = connection_.prepare(sql);
+  if (body) select.bind(1, *body);
+  std::vector<FitRecord> out;
+  while (select.step()) {
+    FitRecord fit;
+    fit.id = select.get_int(0);
+    fit.name = select.get_text(1);
+    fit.body = select.get_text(2);
+    fit.dof = select.get_text(3);
+    fit.variable = select.get_text(4);
+    fit.terms = select.get_text(5);
+    fit.loss = select.get_text(6);
+    fit.run_filter = select.get_text(7);
+    fit.sign = parse_sign_convention(select.get_text(8));
+    fit.n = static_cast<std::size_t>(select.get_int(9));
+    fit.rmse = select.get_double(10);
+    fit.r2 = select.get_double(11);
+    fit.created_at = select.get_text(12);
+    out.push_back(std::move(fit));
+  }
+  auto coefficients =
+      connection_.prepare("SELECT term, value, std_error FROM fit_coefficient WHERE fit_id = ? ORDER BY position");
+  auto runs_used = connection_.prepare("SELECT run_id FROM fit_run WHERE fit_id = ? ORDER BY run_id");
+  for (auto& fit : out) {
+    coefficients.bind(1, fit.id);
+    while (coefficients.step())
+      fit.coefficients.push_back({coefficients.get_text(0), coefficients.get_double(1),
+                                  coefficients.get_optional_double(2)});
+    coefficients.reset();
+    runs_used.bind(1, fit.id);
+    while (runs_used.step()) fit.run_ids.push_back(runs_used.get_int(0));
+    runs_used.reset();
+  }
+  return out;
+}
+
+}  // namespace hydrocoef

@@ -1,0 +1,136 @@
+// The run database: CFD runs keyed by body, body velocity and disturbance,
+// their force components with provenance, and the damping laws fitted to
+// them. The only module that speaks SQL. Every write is one transaction: a
+// failure anywhere leaves the file exactly as it was.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/core/run.hpp"
+#include "src/store/sqlite.hpp"
+
+namespace hydrocoef {
+
+/// A force component as stored, with where it came from.
+struct StoredForce {
+  ForceComponent value;  ///< N or N m, about the run's reference point
+  SignConvention sign = SignConvention::OnBody;
+  std::int64_t source_id = 0;
+  std::string source_path;
+  std::size_t source_line = 0;
+};
+
+struct StoredRun {
+  std::int64_t id = 0;
+  RunKey key;
+  Fluid fluid;
+  std::array<double, 3> reference_point_b{};
+  std::array<std::optional<StoredForce>, 6> tau_b;  ///< X..N
+};
+
+/// Which runs to list. Values are compared with a tolerance of 1e-9 (SI).
+struct RunFilter {
+  std::optional<std::string> body;
+  std::map<std::string, double> equal;       ///< velocity component or disturbance name -> value
+  std::optional<std::size_t> with_force;     ///< only runs that have this component (0..5 = X..N)
+};
+
+/// What to do when a file brings a force component that a run already has
+/// from another file.
+enum class ConflictPolicy { Error, Replace };
+
+struct ImportOutcome {
+  std::string path;
+  std::string sha256;
+  bool already_imported = false;      ///< the same bytes were imported before: nothing added
+  std::string previously_imported_at; ///< when already_imported
+  std::string previous_path;          ///< when already_imported
+  std::size_t runs_created = 0;
+  std::size_t runs_extended = 0;      ///< existing runs that gained components
+  std::size_t components_written = 0;
+};
+
+struct SourceRecord {
+  std::int64_t id = 0;
+  Provenance provenance;
+  std::string imported_at;
+};
+
+/// A fitted damping law as stored: plain numbers and names, no fitting code.
+struct FitRecord {
+  struct Coefficient {
+    std::string term;
+    double value = 0.0;
+    std::optional<double> std_error;
+  };
+  std::int64_t id = 0;
+  std::string name;
+  std::string body;
+  std::string dof;       ///< X..N
+  std::string variable;  ///< u..r
+  std::string terms;     ///< e.g. "1,u,u|u|"
+  std::string loss;
+  std::string run_filter;
+  SignConvention sign = SignConvention::OnBody;
+  std::size_t n = 0;
+  double rmse = 0.0;
+  double r2 = 0.0;
+  std::string created_at;
+  std::vector<Coefficient> coefficients;
+  std::vector<std::int64_t> run_ids;
+};
+
+class Database {
+ public:
+  enum class OpenMode { CreateIfMissing, MustExist };
+
+  /// Opens the database and brings its schema up to date (schema/ migrations,
+  /// recorded in PRAGMA user_version). Throws InputError when the file is not
+  /// an SQLite database, fails its integrity check, belongs to another
+  /// program, or was written by a newer hydrocoef.
+  explicit Database(const std::filesystem::path& path, OpenMode mode = OpenMode::CreateIfMissing);
+
+  /// The migration number the database is at.
+  int schema_version();
+  /// The number of migrations this build knows.
+  static int latest_schema_version();
+
+  /// Imports batches in one transaction. A batch whose file (by SHA-256) is
+  /// already in the database adds nothing and says so in its outcome. Throws
+  /// InputError on a conflict (policy Error), leaving the database unchanged.
+  std::vector<ImportOutcome> import(const std::vector<ImportBatch>& batches, ConflictPolicy policy);
+
+  std::vector<StoredRun> runs(const RunFilter& filter = {});
+  std::optional<StoredRun> find_run(const RunKey& key);
+  std::vector<SourceRecord> sources();
+  std::vector<std::string> bodies();
+
+  /// Stores a fit, replacing one of the same name; returns its id.
+  std::int64_t save_fit(const FitRecord& fit);
+  std::vector<FitRecord> fits(const std::optional<std::string>& body = std::nullopt);
+
+  /// "ok", or SQLite's list of problems.
+  std::string integrity_check();
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  void migrate();
+  std::int64_t body_id(const std::string& name, bool create);
+  std::optional<std::int64_t> find_run_id(std::int64_t body, const RunKey& key);
+  /// All runs, or those of one body, or one run; ordered by body and key.
+  std::vector<StoredRun> load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run);
+
+  std::filesystem::path path_;
+  store::Connection connection_;
+};
+
+/// Now as UTC ISO 8601 ("2026-11-22T10:04:05Z").
+std::string utc_timestamp_now();
+
+}  // namespace hydrocoef
