@@ -1,6 +1,7 @@
 #include "importers/force_table.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "importers/text_table.hpp"
@@ -48,9 +49,17 @@ Column classify(const TextField& field, const std::string& file, std::size_t lin
     if (source == header.name) component = target;
 
   if (contains(options.disturbance_columns, header.name)) {
+    // A disturbance may be of any kind (a speed, an angle, a wave height), so
+    // its unit is converted to SI but not checked against a kind.
     column.role = ColumnRole::Disturbance;
     column.name = header.name;
-    if (header.has_unit) column.scale = parse_unit(header.unit).scale;
+    std::string unit_text = header.unit;
+    if (const auto given = options.units.find(header.name); given != options.units.end()) unit_text = given->second;
+    try {
+      column.scale = parse_unit(unit_text).scale;
+    } catch (const InputError& error) {
+      throw InputError(where, "column '" + field.text + "': " + error.what());
+    }
     return column;
   }
   if (const auto i = velocity_index(component)) {
@@ -156,6 +165,10 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
       const Column& column = columns[c];
       if (column.role == ColumnRole::Ignored) continue;
       const double value = parse_number(fields[c], file, line->number, column.header) * column.scale;
+      if (!std::isfinite(value))
+        throw InputError(SourceLocation{file, line->number, fields[c].column},
+                         "column '" + column.header + "': '" + fields[c].text +
+                             "' overflows when converted to SI; expected a finite value");
       switch (column.role) {
         case ColumnRole::Velocity: run.key.nu_b[column.component] = value; break;
         case ColumnRole::Force: run.tau_b[column.component] = ForceComponent{value, std::nullopt, std::nullopt}; break;

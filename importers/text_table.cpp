@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 
 namespace hydrocoef {
 namespace {
@@ -17,6 +18,7 @@ std::string_view trim(std::string_view text) {
 
 std::vector<TextLine> split_lines(std::string_view bytes) {
   std::vector<TextLine> lines;
+  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);  // UTF-8 byte-order mark, as spreadsheets write
   std::size_t start = 0;
   std::size_t number = 1;
   while (start < bytes.size()) {
@@ -79,9 +81,19 @@ std::vector<TextField> split_fields(const TextLine& line, char delimiter, const 
 }
 
 char detect_delimiter(std::string_view header) {
-  if (header.find(',') != std::string_view::npos) return ',';
-  if (header.find('\t') != std::string_view::npos) return '\t';
-  if (header.find(';') != std::string_view::npos) return ';';
+  // Only delimiters outside double quotes count: "X, total [N]" is one name.
+  bool quoted = false;
+  bool comma = false, tab = false, semicolon = false;
+  for (const char c : header) {
+    if (c == '"') quoted = !quoted;
+    if (quoted) continue;
+    comma = comma || c == ',';
+    tab = tab || c == '\t';
+    semicolon = semicolon || c == ';';
+  }
+  if (comma) return ',';
+  if (tab) return '\t';
+  if (semicolon) return ';';
   return ',';
 }
 
@@ -90,11 +102,16 @@ double parse_number(const TextField& field, const std::string& file, std::size_t
   const SourceLocation where{file, line, field.column};
   const std::string context = "column '" + std::string(column_name) + "': ";
   if (text.empty()) throw InputError(where, context + "empty field; expected a number");
-  if (text.front() == '+') text.remove_prefix(1);
+  if (text.size() > 1 && text.front() == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
   double value = 0.0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec == std::errc::result_out_of_range)
-    throw InputError(where, context + "'" + field.text + "' is out of the range of a double");
+  if (ec == std::errc::result_out_of_range && end == text.data() + text.size()) {
+    // from_chars reports underflow and overflow alike; a value below the
+    // smallest double is zero for every purpose here, an overflow is an error.
+    const double magnitude = std::strtod(std::string(text).c_str(), nullptr);
+    if (magnitude == 0.0) return 0.0;
+    throw InputError(where, context + "found '" + field.text + "', expected a finite number within +-1.8e308");
+  }
   if (ec != std::errc{} || end != text.data() + text.size())
     throw InputError(where, context + "found '" + field.text + "', expected a number");
   if (!std::isfinite(value))

@@ -14,7 +14,7 @@ namespace hydrocoef {
 
 struct TextField {
   std::string text;        ///< unquoted, surrounding blanks trimmed
-  std::size_t column = 0;  ///< 1-based character column where the field starts
+  std::size_t column = 0;  ///< 1-based byte column where the field starts
 };
 
 struct TextLine {
@@ -22,15 +22,16 @@ struct TextLine {
   std::size_t number = 0;  ///< 1-based
 };
 
-/// Splits a buffer into lines, accepting LF and CRLF endings and a missing
-/// final newline.
+/// Splits a buffer into lines, accepting LF and CRLF endings, a missing final
+/// newline and a leading UTF-8 byte-order mark.
 std::vector<TextLine> split_lines(std::string_view bytes);
 
 /// Splits one line at `delimiter`; double-quoted fields may hold the delimiter
 /// and doubled quotes (""). An unterminated quote is an InputError at `where`.
 std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file);
 
-/// Picks the delimiter of a header line: ',' if present, else tab, else ';'.
+/// Picks the delimiter of a header line: ',' if present outside quotes, else
+/// tab, else ';'.
 char detect_delimiter(std::string_view header);
 
 /// Parses a whole field as a finite double (std::from_chars; a leading '+' is

@@ -15,7 +15,6 @@ packages=(
   libbenchmark-dev      # bench/
   libcli11-dev          # command line
   nlohmann-json3-dev    # --json output
-  libfast-float-dev     # number parsing in importers
 )
 
 missing=()

@@ -39,7 +39,7 @@ std::string describe(const RunKey& key) {
   std::string out = key.body;
   for (std::size_t i = 0; i < 6; ++i)
     if (key.nu_b[i] != 0.0) out += ' ' + std::string(kVelocityNames[i]) + '=' + shortest(key.nu_b[i]);
-  for (const auto& [name, value] : key.disturbances) out += ' ' + name + '=' + shortest(value);
+  for (const auto& [name, value] : key.disturbances) out += ' ' + name + '=' + shortest(value == 0.0 ? 0.0 : value);
   if (key.nu_b == std::array<double, 6>{} && key.disturbances.empty()) out += " (at rest)";
   return out;
 }

@@ -52,9 +52,10 @@ struct Prefix {
   std::string_view name;
   double scale;
 };
-constexpr std::array<Prefix, 9> kPrefixes = {{{"G", 1e9},
+constexpr std::array<Prefix, 10> kPrefixes = {{{"G", 1e9},
                                               {"M", 1e6},
                                               {"k", 1e3},
+                                              {"h", 1e2},
                                               {"c", 1e-2},
                                               {"m", 1e-3},
                                               {"u", 1e-6},
@@ -111,7 +112,7 @@ void apply_factor(std::string_view whole, std::string_view factor, int sign, Uni
   const auto found = find_symbol(symbol);
   if (!found)
     fail(whole, "unknown unit symbol '" + std::string(symbol) +
-                    "'; known: m g s min h N Pa bar J W L rad deg rev with prefixes G M k c d m u n");
+                    "'; known: m g s min h N Pa bar J W L rad deg rev with prefixes G M k h c d m u n");
   exponent *= sign;
   unit.scale *= std::pow(found->scale, exponent);
   for (std::size_t i = 0; i < 4; ++i) unit.dimension.exponents[i] += found->dimension.exponents[i] * exponent;
@@ -120,9 +121,11 @@ void apply_factor(std::string_view whole, std::string_view factor, int sign, Uni
 }  // namespace
 
 std::string si_unit_name(const Dimension& dimension) {
+  // Printed in the order engineers write them: kg m rad s (rad s^-1, N = kg m s^-2).
   static constexpr std::array<std::string_view, 4> names = {"kg", "m", "s", "rad"};
+  static constexpr std::array<std::size_t, 4> order = {0, 1, 3, 2};
   std::string out;
-  for (std::size_t i = 0; i < 4; ++i) {
+  for (const std::size_t i : order) {
     const int e = dimension.exponents[i];
     if (e == 0) continue;
     if (!out.empty()) out += ' ';

@@ -1,0 +1,55 @@
+// Test support: runs the hydrocoef binary with arguments and captures its
+// exit code, standard output and standard error.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hydrocoef::test {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string shell_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    if (c == '\'') out += "'\\''";
+    else out += c;
+  }
+  return out + "'";
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Runs HYDROCOEF_CLI with `args` in directory `cwd`; scratch files go in `cwd`.
+inline CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd) {
+  std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_quote(HYDROCOEF_CLI);
+  for (const auto& arg : args) command += " " + shell_quote(arg);
+  const auto out_path = cwd / ".cli-stdout";
+  const auto err_path = cwd / ".cli-stderr";
+  command += " >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string()) + " </dev/null";
+  const int status = std::system(command.c_str());
+  CliResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_text(out_path);
+  result.err = read_text(err_path);
+  std::filesystem::remove(out_path);
+  std::filesystem::remove(err_path);
+  return result;
+}
+
+}  // namespace hydrocoef::test
