@@ -1,0 +1,450 @@
+#include "src/fit/damping_law.hpp"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "src/core/error.hpp"
+#include "src/core/run.hpp"
+
+namespace hydrocoef {
+namespace {
+
+// A law has each DampingTerm at most once.
+constexpr std::size_t kMaxTerms = 6;
+constexpr std::string_view kAcceptedTerms =
+    "accepted terms are 1, x, x|x|, x^2, x^3 and |x| with x one of u, v, w, p, q, r, e.g. '1,u,u|u|'";
+constexpr std::string_view kAcceptedLosses =
+    "expected 'squared', 'huber:SCALE', 'cauchy:SCALE' or 'soft-l1:SCALE' with SCALE > 0 in the force's unit";
+
+// Ceres' covariance calls J rank-deficient when sigma_min/sigma_max falls below
+// this; the up-front check uses the same limit so both agree on what is degenerate.
+constexpr double kMinReciprocalConditionNumber = 1e-14;
+const double kMinSingularValueRatio = std::sqrt(kMinReciprocalConditionNumber);
+
+std::string shortest(double value) {
+  std::array<char, 32> buffer{};
+  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  (void)ec;
+  return std::string(buffer.data(), end);
+}
+
+// Built by appending: GCC 12 raises a false -Wrestrict on "'" + std::string(...) in release builds.
+std::string quoted(std::string_view text) {
+  std::string out = "'";
+  out += text;
+  out += '\'';
+  return out;
+}
+
+std::string without_whitespace(std::string_view text) {
+  std::string out;
+  for (char c : text)
+    if (c != ' ' && c != '\t' && c != '\n' && c != '\r') out += c;
+  return out;
+}
+
+std::string_view trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1);
+}
+
+bool looks_like_a_name(std::string_view text) {
+  if (text.empty() || !std::isalpha(static_cast<unsigned char>(text.front()))) return false;
+  return std::all_of(text.begin(), text.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+// Splits a term into its shape and the name it is a term of ("" for the
+// constant); the caller checks that the name is a velocity component.
+std::optional<std::pair<DampingTerm, std::string>> split_term(std::string_view term) {
+  if (term == "1") return std::pair{DampingTerm::Constant, std::string()};
+  std::pair<DampingTerm, std::string_view> split{DampingTerm::Linear, term};
+  if (term.size() >= 3 && term.front() == '|' && term.back() == '|') {
+    split = {DampingTerm::AbsLinear, term.substr(1, term.size() - 2)};
+  } else if (term.ends_with("^2")) {
+    split = {DampingTerm::Quadratic, term.substr(0, term.size() - 2)};
+  } else if (term.ends_with("^3")) {
+    split = {DampingTerm::Cubic, term.substr(0, term.size() - 2)};
+  } else if (term.ends_with('|')) {
+    // x|x|: both halves must name the same component.
+    const std::string_view outside = term.substr(0, term.find('|'));
+    const std::string_view inside = term.substr(outside.size());  // "|x|" when well formed
+    if (inside.size() != outside.size() + 2 || inside.front() != '|' || inside.substr(1, outside.size()) != outside)
+      return std::nullopt;
+    split = {DampingTerm::SignedQuadratic, outside};
+  }
+  if (!looks_like_a_name(split.second)) return std::nullopt;
+  return std::pair{split.first, std::string(split.second)};
+}
+
+std::string term_list(const DampingLawSpec& spec, const std::vector<std::size_t>& which) {
+  std::string out;
+  for (std::size_t j : which) {
+    if (!out.empty()) out += ", ";
+    out += term_name(spec.terms[j], spec.variable);
+  }
+  return out;
+}
+
+std::vector<std::size_t> all_indices(std::size_t count) {
+  std::vector<std::size_t> out(count);
+  for (std::size_t j = 0; j < count; ++j) out[j] = j;
+  return out;
+}
+
+void validate(const DampingLawSpec& spec) {
+  if (spec.terms.empty()) throw InputError("damping law has no terms; " + std::string(kAcceptedTerms));
+  const bool has_variable_term =
+      std::any_of(spec.terms.begin(), spec.terms.end(), [](DampingTerm t) { return t != DampingTerm::Constant; });
+  if (!has_variable_term)
+    throw InputError("damping law '" + format_damping_terms(spec) +
+                     "' has no term in a velocity component; " + std::string(kAcceptedTerms));
+  if (!velocity_index(spec.variable))
+    throw InputError("damping law variable '" + spec.variable +
+                     "' is not a velocity component; expected one of u, v, w, p, q, r");
+  for (std::size_t j = 0; j < spec.terms.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i)
+      if (spec.terms[i] == spec.terms[j])
+        throw InputError("damping term '" + term_name(spec.terms[j], spec.variable) +
+                         "' appears twice; each term may appear once");
+}
+
+// One run's contribution r = sum_j c_j b_j(x) - y. The basis row is scaled by
+// the design matrix's column norms so that the solver and the covariance see
+// unit-norm columns whatever the units and sizes of the terms.
+class ObservationResidual final : public ceres::CostFunction {
+ public:
+  ObservationResidual(const double* scaled_basis_row, std::size_t term_count, double observed)
+      : term_count_(term_count), observed_(observed) {
+    std::copy_n(scaled_basis_row, term_count, scaled_basis_.begin());
+    set_num_residuals(1);
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(term_count));
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    double predicted = 0.0;
+    for (std::size_t j = 0; j < term_count_; ++j) predicted += parameters[0][j] * scaled_basis_[j];
+    residuals[0] = predicted - observed_;
+    if (jacobians != nullptr && jacobians[0] != nullptr)
+      std::copy_n(scaled_basis_.begin(), term_count_, jacobians[0]);
+    return true;
+  }
+
+ private:
+  std::array<double, kMaxTerms> scaled_basis_{};
+  std::size_t term_count_;
+  double observed_;
+};
+
+std::unique_ptr<ceres::LossFunction> make_loss(const FitOptions& options) {
+  switch (options.loss) {
+    case LossKind::Squared: return nullptr;
+    case LossKind::Huber: return std::make_unique<ceres::HuberLoss>(options.loss_scale);
+    case LossKind::Cauchy: return std::make_unique<ceres::CauchyLoss>(options.loss_scale);
+    case LossKind::SoftLOne: return std::make_unique<ceres::SoftLOneLoss>(options.loss_scale);
+  }
+  throw std::invalid_argument("make_loss: unknown LossKind");
+}
+
+struct ScaledSolution {
+  Eigen::VectorXd coefficients;
+  Eigen::MatrixXd covariance;  // (J^T W J)^-1 in scaled coordinates; empty unless asked for
+  bool covariance_ok = false;
+};
+
+ScaledSolution solve(const Eigen::MatrixXd& scaled_design, std::span<const double> y, ceres::LossFunction* loss,
+                     const Eigen::VectorXd& start, bool want_covariance) {
+  const auto term_count = static_cast<std::size_t>(scaled_design.cols());
+  // Row-major copy so that each residual can read its basis row contiguously.
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = scaled_design;
+
+  ScaledSolution solution{start, {}, false};
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // one loss shared by all runs
+  ceres::Problem problem(problem_options);
+  double* parameters = solution.coefficients.data();
+  problem.AddParameterBlock(parameters, static_cast<int>(term_count));
+  for (Eigen::Index i = 0; i < rows.rows(); ++i)
+    problem.AddResidualBlock(new ObservationResidual(rows.row(i).data(), term_count, y[static_cast<std::size_t>(i)]),
+                             loss, parameters);
+
+  // The problem is linear (or IRLS-like for robust losses), so tight
+  // tolerances cost a few iterations and make the answer match a direct solve.
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.function_tolerance = 1e-15;
+  options.gradient_tolerance = 1e-15;
+  options.parameter_tolerance = 1e-14;
+  options.max_num_iterations = 500;
+  // Levenberg-Marquardt damping would only slow a linear problem down: start
+  // from (almost) Gauss-Newton and let the trust region shrink if a robust loss needs it.
+  options.initial_trust_region_radius = 1e12;
+  options.num_threads = 1;
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  if (!summary.IsSolutionUsable())
+    throw std::runtime_error("damping law fit: Ceres found no usable solution: " + summary.message);
+
+  if (want_covariance) {
+    ceres::Covariance::Options covariance_options;
+    covariance_options.algorithm_type = ceres::DENSE_SVD;
+    covariance_options.min_reciprocal_condition_number = kMinReciprocalConditionNumber;
+    covariance_options.num_threads = 1;
+    ceres::Covariance covariance(covariance_options);
+    const std::vector<std::pair<const double*, const double*>> blocks = {{parameters, parameters}};
+    if (covariance.Compute(blocks, &problem)) {
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> block(term_count, term_count);
+      covariance.GetCovarianceBlock(parameters, parameters, block.data());
+      solution.covariance = block;
+      solution.covariance_ok = true;
+    }
+  }
+  return solution;
+}
+
+[[noreturn]] void throw_dependent_terms(const DampingLawSpec& spec, const std::vector<std::size_t>& which,
+                                        std::span<const double> x) {
+  std::string detail;
+  if (std::all_of(x.begin(), x.end(), [&](double value) { return value == x.front(); }))
+    detail = " (all " + std::to_string(x.size()) + " values of " + spec.variable + " are " + shortest(x.front()) + ")";
+  if (which.size() == 1)
+    throw InputError("damping term '" + term_list(spec, which) + "' is zero at every one of the " +
+                     std::to_string(x.size()) + " runs" + detail +
+                     ", so its coefficient cannot be fitted; expected runs where it is not zero");
+  throw InputError("damping terms " + term_list(spec, which) + " are linearly dependent on these " +
+                   std::to_string(x.size()) + " runs" + detail +
+                   ", so their coefficients cannot be told apart; expected runs over a range of " + spec.variable +
+                   " that separates them, or fewer terms");
+}
+
+// Terms that take part in a (near) null vector of the scaled design matrix;
+// empty when the columns are independent.
+std::vector<std::size_t> dependent_terms(const Eigen::MatrixXd& scaled_design) {
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled_design, Eigen::ComputeFullV);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  const Eigen::Index k = scaled_design.cols();
+  std::vector<std::size_t> which;
+  if (sigma.size() < k) return all_indices(static_cast<std::size_t>(k));
+  for (Eigen::Index j = 0; j < k; ++j) {
+    bool involved = false;
+    for (Eigen::Index s = 0; s < k; ++s)
+      if (!(sigma(s) > kMinSingularValueRatio * sigma(0)) && std::abs(svd.matrixV()(j, s)) > 1e-3) involved = true;
+    if (involved) which.push_back(static_cast<std::size_t>(j));
+  }
+  return which;
+}
+
+}  // namespace
+
+DampingLawSpec parse_damping_terms(std::string_view text) {
+  const std::string quoted_text = quoted(text);
+  if (trimmed(text).empty())
+    throw InputError("empty damping term list " + quoted_text + "; " + std::string(kAcceptedTerms));
+
+  DampingLawSpec spec;
+  std::string first_term_with_variable;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', begin);
+    const std::string_view raw =
+        trimmed(text.substr(begin, comma == std::string_view::npos ? text.npos : comma - begin));
+    if (raw.empty())
+      throw InputError("empty damping term in " + quoted_text + " (two commas, or a comma at an end); " +
+                       std::string(kAcceptedTerms));
+    const std::string term = without_whitespace(raw);
+    const auto parsed = split_term(term);
+    if (!parsed)
+      throw InputError("unknown damping term '" + std::string(raw) + "' in " + quoted_text + "; " +
+                       std::string(kAcceptedTerms));
+    const auto& [kind, variable] = *parsed;
+    if (kind != DampingTerm::Constant) {
+      if (!velocity_index(variable))
+        throw InputError("'" + variable + "' in damping term '" + std::string(raw) +
+                         "' is not a velocity component; expected one of u, v, w, p, q, r");
+      if (spec.variable.empty()) {
+        spec.variable = variable;
+        first_term_with_variable = raw;
+      } else if (variable != spec.variable) {
+        throw InputError("damping term '" + std::string(raw) + "' is in " + variable + " but '" +
+                         first_term_with_variable + "' is in " + spec.variable + " (in " + quoted_text +
+                         "); a damping law has terms of one velocity component only");
+      }
+    }
+    if (std::find(spec.terms.begin(), spec.terms.end(), kind) != spec.terms.end())
+      throw InputError("damping term '" + std::string(raw) + "' appears twice in " + quoted_text +
+                       "; each term may appear once");
+    spec.terms.push_back(kind);
+    if (comma == std::string_view::npos) break;
+    begin = comma + 1;
+  }
+  if (spec.variable.empty())
+    throw InputError("damping term list " + quoted_text + " has no term in a velocity component; " +
+                     std::string(kAcceptedTerms));
+  return spec;
+}
+
+std::string term_name(DampingTerm term, std::string_view variable) {
+  const std::string x(variable);
+  switch (term) {
+    case DampingTerm::Constant: return "1";
+    case DampingTerm::Linear: return x;
+    case DampingTerm::SignedQuadratic: return x + "|" + x + "|";
+    case DampingTerm::Quadratic: return x + "^2";
+    case DampingTerm::Cubic: return x + "^3";
+    case DampingTerm::AbsLinear: return "|" + x + "|";
+  }
+  throw std::invalid_argument("term_name: unknown DampingTerm");
+}
+
+std::string format_damping_terms(const DampingLawSpec& spec) {
+  std::string out;
+  for (DampingTerm term : spec.terms) {
+    if (!out.empty()) out += ',';
+    out += term_name(term, spec.variable);
+  }
+  return out;
+}
+
+double basis_value(DampingTerm term, double x) {
+  switch (term) {
+    case DampingTerm::Constant: return 1.0;
+    case DampingTerm::Linear: return x;
+    case DampingTerm::SignedQuadratic: return x * std::abs(x);
+    case DampingTerm::Quadratic: return x * x;
+    case DampingTerm::Cubic: return x * x * x;
+    case DampingTerm::AbsLinear: return std::abs(x);
+  }
+  throw std::invalid_argument("basis_value: unknown DampingTerm");
+}
+
+FitOptions parse_loss(std::string_view text) {
+  const std::string spelled = without_whitespace(text);
+  if (spelled == "squared") return {};
+
+  const auto colon = spelled.find(':');
+  const std::string name = spelled.substr(0, colon);
+  FitOptions options;
+  if (name == "huber") {
+    options.loss = LossKind::Huber;
+  } else if (name == "cauchy") {
+    options.loss = LossKind::Cauchy;
+  } else if (name == "soft-l1") {
+    options.loss = LossKind::SoftLOne;
+  } else {
+    throw InputError("unknown loss '" + std::string(text) + "': " + std::string(kAcceptedLosses));
+  }
+  if (colon == std::string::npos)
+    throw InputError("loss '" + std::string(text) + "' has no scale: " + std::string(kAcceptedLosses));
+
+  const char* first = spelled.data() + colon + 1;
+  const char* last = spelled.data() + spelled.size();
+  auto [end, ec] = std::from_chars(first, last, options.loss_scale);
+  if (ec != std::errc() || end != last || first == last || !std::isfinite(options.loss_scale) ||
+      !(options.loss_scale > 0.0))
+    throw InputError("bad scale in loss '" + std::string(text) + "': " + std::string(kAcceptedLosses));
+  return options;
+}
+
+std::string format_loss(const FitOptions& options) {
+  switch (options.loss) {
+    case LossKind::Squared: return "squared";
+    case LossKind::Huber: return "huber:" + shortest(options.loss_scale);
+    case LossKind::Cauchy: return "cauchy:" + shortest(options.loss_scale);
+    case LossKind::SoftLOne: return "soft-l1:" + shortest(options.loss_scale);
+  }
+  throw std::invalid_argument("format_loss: unknown LossKind");
+}
+
+double DampingLawFit::evaluate(double x) const {
+  double value = 0.0;
+  for (std::size_t j = 0; j < spec.terms.size() && j < coefficients.size(); ++j)
+    value += coefficients[j] * basis_value(spec.terms[j], x);
+  return value;
+}
+
+DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
+                              const FitOptions& options) {
+  validate(spec);
+  if (options.loss != LossKind::Squared && !(std::isfinite(options.loss_scale) && options.loss_scale > 0.0))
+    throw InputError("loss scale " + shortest(options.loss_scale) + " for a robust loss: expected a finite scale > 0 "
+                     "in the force's unit");
+  if (x.size() != y.size())
+    throw InputError("damping law fit got " + std::to_string(x.size()) + " velocity values but " +
+                     std::to_string(y.size()) + " force values; expected one of each per run");
+  const std::size_t n = x.size();
+  const std::size_t k = spec.terms.size();
+  if (n < k)
+    throw InputError("damping law '" + format_damping_terms(spec) + "' has " + std::to_string(k) +
+                     " terms and needs at least " + std::to_string(k) + " runs, found " + std::to_string(n));
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
+      throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable +
+                       " = " + shortest(x[i]) + ", force = " + shortest(y[i]) + "; expected finite values");
+
+  const auto rows = static_cast<Eigen::Index>(n);
+  const auto cols = static_cast<Eigen::Index>(k);
+  Eigen::MatrixXd design(rows, cols);
+  for (Eigen::Index i = 0; i < rows; ++i)
+    for (Eigen::Index j = 0; j < cols; ++j)
+      design(i, j) = basis_value(spec.terms[static_cast<std::size_t>(j)], x[static_cast<std::size_t>(i)]);
+  // An all-zero column keeps scale 1; the rank check below reports it.
+  const Eigen::VectorXd column_norm = design.colwise().norm().transpose();
+  const Eigen::VectorXd column_scale = (column_norm.array() > 0.0).select(column_norm, 1.0);
+  const Eigen::MatrixXd scaled_design = design * column_scale.cwiseInverse().asDiagonal();
+  if (const auto which = dependent_terms(scaled_design); !which.empty()) throw_dependent_terms(spec, which, x);
+
+  const auto loss = make_loss(options);
+  ScaledSolution solution = solve(scaled_design, y, nullptr, Eigen::VectorXd::Zero(cols), loss == nullptr);
+  if (loss != nullptr) solution = solve(scaled_design, y, loss.get(), solution.coefficients, true);
+  if (!solution.covariance_ok) throw_dependent_terms(spec, all_indices(k), x);
+
+  const Eigen::Map<const Eigen::VectorXd> observed(y.data(), rows);
+  const Eigen::VectorXd residuals = scaled_design * solution.coefficients - observed;
+  const double ssr = residuals.squaredNorm();
+  const double sst = (observed.array() - observed.mean()).matrix().squaredNorm();
+
+  // The covariance Ceres reports already carries the robust weights W, so the
+  // residual variance is the weighted one that goes with it.
+  double weighted_ssr = ssr;
+  if (loss != nullptr) {
+    weighted_ssr = 0.0;
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      std::array<double, 3> rho{};
+      const double r_squared = residuals(i) * residuals(i);
+      loss->Evaluate(r_squared, rho.data());
+      weighted_ssr += rho[1] * r_squared;
+    }
+  }
+  const double residual_variance =
+      n > k ? weighted_ssr / static_cast<double>(n - k) : std::numeric_limits<double>::quiet_NaN();
+
+  DampingLawFit fit;
+  fit.spec = spec;
+  fit.n = n;
+  fit.loss = format_loss(options);
+  fit.rmse = std::sqrt(ssr / static_cast<double>(n));
+  fit.r2 = sst > 0.0 ? 1.0 - ssr / sst : std::numeric_limits<double>::quiet_NaN();
+  for (Eigen::Index j = 0; j < cols; ++j) {
+    fit.coefficients.push_back(solution.coefficients(j) / column_scale(j));
+    fit.std_errors.push_back(std::sqrt(residual_variance * solution.covariance(j, j)) / column_scale(j));
+  }
+  return fit;
+}
+
+}  // namespace hydrocoef

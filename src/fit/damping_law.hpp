@@ -1,0 +1,115 @@
+// Damping laws: one generalized-force component written as a linear
+// combination of basis terms of one velocity component, for example the surge
+// law X(u) = c0 + c1 u + c2 u|u|, and their least-squares fit to CFD runs.
+//
+// A law is linear in its coefficients, so the fit is an ordinary (or, with a
+// robust loss, iteratively reweighted) linear least-squares problem. It is
+// solved with Ceres so that robust losses and the covariance of the
+// coefficients come from one well-tested place.
+//
+// Units: x is in the velocity component's SI unit (m/s for u, v, w; rad/s for
+// p, q, r) and the force in N (X, Y, Z) or N m (K, M, N). A coefficient's unit
+// is the force's unit divided by its basis term's unit (for u|u|: N s^2 m^-2).
+// Fitting does not change signs: the law is in whatever sign convention the
+// force values were given in.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hydrocoef {
+
+/// A basis term of a damping law in the velocity component x.
+enum class DampingTerm {
+  Constant,         ///< 1: an offset, e.g. a CFD zero-speed bias
+  Linear,           ///< x
+  SignedQuadratic,  ///< x|x|: quadratic drag that keeps opposing motion when x changes sign
+  Quadratic,        ///< x^2: even in x
+  Cubic,            ///< x^3
+  AbsLinear         ///< |x|: even in x
+};
+
+/// Which terms a law has and which velocity component they are terms of.
+struct DampingLawSpec {
+  std::string variable;            ///< "u", "v", "w", "p", "q" or "r"
+  std::vector<DampingTerm> terms;  ///< in the order coefficients are reported; no repeats
+};
+
+/// Parses a comma-separated term list such as "1,u,u|u|" or "r, r|r|, r^3".
+/// Accepted terms are 1, x, x|x|, x^2, x^3 and |x| with x one of u, v, w, p,
+/// q, r; whitespace around and inside terms is ignored. Throws InputError,
+/// naming the offending term and listing the accepted forms, when the list is
+/// empty or has an empty entry, a term is unknown or repeated, the terms mix
+/// two velocity components ("u,r|r|"), or no term names a component (just "1").
+DampingLawSpec parse_damping_terms(std::string_view text);
+
+/// The term as parse_damping_terms accepts it: "1", "u", "u|u|", "u^2", "u^3", "|u|".
+/// variable: the velocity component's name, e.g. "u".
+std::string term_name(DampingTerm term, std::string_view variable);
+
+/// The canonical text of a spec, "1,u,u|u|"; parse_damping_terms reads it back.
+std::string format_damping_terms(const DampingLawSpec& spec);
+
+/// The basis term's value at x (x in m/s or rad/s; result in x's unit to the
+/// term's power, 1 for Constant).
+double basis_value(DampingTerm term, double x);
+
+/// How residuals are penalized. Robust losses grow slower than r^2 beyond
+/// loss_scale, so a few bad runs cannot drag the law away from the rest.
+enum class LossKind {
+  Squared,  ///< ordinary least squares
+  Huber,    ///< r^2 within loss_scale, linear beyond
+  Cauchy,   ///< logarithmic beyond loss_scale: strongest outlier rejection
+  SoftLOne  ///< smooth blend of r^2 and |r|
+};
+
+struct FitOptions {
+  LossKind loss = LossKind::Squared;
+  /// Residual size [force's unit: N or N m] beyond which a robust loss starts
+  /// discounting a run. Must be finite and > 0 for robust losses; ignored for Squared.
+  double loss_scale = 0.0;
+};
+
+/// Parses "squared", "huber:SCALE", "cauchy:SCALE" or "soft-l1:SCALE", SCALE
+/// being a positive number in the force's unit (e.g. "huber:0.01"). Throws
+/// InputError naming the text otherwise.
+FitOptions parse_loss(std::string_view text);
+
+/// The canonical text of a loss, "squared" or "huber:0.01" (shortest
+/// round-trip form of the scale); parse_loss reads it back.
+std::string format_loss(const FitOptions& options);
+
+/// A fitted law and how well it fits.
+struct DampingLawFit {
+  DampingLawSpec spec;
+  std::vector<double> coefficients;  ///< same order as spec.terms; [force unit / term unit]
+  /// One-sigma standard errors, same order and units as coefficients:
+  /// sqrt(diag(s^2 (J^T W J)^-1)) with J the design matrix, W the robust
+  /// loss's weights at the solution (all 1 for Squared) and
+  /// s^2 = sum(w_i r_i^2)/(n-k). NaN when n <= k, where s^2 is undefined.
+  std::vector<double> std_errors;
+  double rmse = 0.0;  ///< sqrt(SSR/n) of the unweighted residuals [force unit]
+  double r2 = 0.0;    ///< 1 - SSR/SST, SST about the mean of y; NaN when all y are equal
+  std::size_t n = 0;  ///< number of observations fitted
+  std::string loss;   ///< format_loss of the options used, e.g. "squared" or "huber:0.01"
+
+  /// The law's value at x [force unit]; x in m/s or rad/s.
+  double evaluate(double x) const;
+};
+
+/// Fits y ~ sum_k c_k basis_k(x) over the observations (x[i], y[i]).
+///   spec:    the law's terms; validated as parse_damping_terms would.
+///   x:       velocity component of each run [m/s or rad/s].
+///   y:       force component of each run [N or N m], same length as x.
+///   options: loss; robust losses start from the least-squares solution.
+/// Throws InputError when x and y differ in length, there are fewer runs than
+/// terms, a value is not finite, the spec is invalid, or the terms are
+/// linearly dependent on this data (e.g. all x equal with terms 1,u; or
+/// u,|u| with no negative u), naming the terms concerned.
+DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x,
+                              std::span<const double> y, const FitOptions& options = {});
+
+}  // namespace hydrocoef
