@@ -12,6 +12,8 @@ packages=(
   libsqlite3-dev        # run database
   libssl-dev            # SHA-256 of imported files (libcrypto)
   libgtest-dev libgmock-dev
+  libcgns-dev           # tests write CGNS files for the CGNS reader path
+  ninja-build
   libbenchmark-dev      # bench/
   libcli11-dev          # command line
   nlohmann-json3-dev    # --json output

@@ -66,6 +66,27 @@ struct Fluid {
   std::optional<double> kinematic_viscosity_m2_s;
 };
 
+/// What is kept of an integrated surface, so that forces can be recomputed
+/// for another reference pressure or moment point without the mesh.
+/// Body axes, SI.
+struct SurfaceIntegrals {
+  std::size_t faces = 0;
+  double area = 0.0;           ///< m^2
+  double signed_volume = 0.0;  ///< m^3, > 0 for a closed surface with outward normals
+  bool closed = false;
+  std::size_t boundary_edges = 0;
+  std::size_t degenerate_faces = 0;
+  bool normals_flipped = false;
+  std::array<double, 3> integral_n_dA_b{};          ///< ∫ n dA [m^2]
+  std::array<double, 3> integral_x_cross_n_dA_b{};  ///< ∫ x × n dA about the body origin [m^3]
+  double reference_pressure = 0.0;                  ///< Pa, subtracted from the pressure
+  std::string pressure_array;
+  std::string shear_array;       ///< "" when no viscous part was integrated
+  std::string pressure_kind;     ///< "static" or "kinematic" (as in the file)
+  std::string shear_convention;  ///< "on-wall" or "on-fluid" (as in the file)
+  std::string axes;              ///< CFD axes to body axes, e.g. "-x,y,-z"
+};
+
 /// One run as an importer produced it.
 struct ImportedRun {
   RunKey key;
@@ -74,6 +95,7 @@ struct ImportedRun {
   std::array<std::optional<ForceComponent>, 6> tau_b;       ///< X..N; empty where the source has none
   SignConvention sign = SignConvention::OnBody;
   std::size_t source_line = 0;                              ///< 1-based line in the source, 0 if n/a
+  std::optional<SurfaceIntegrals> surface;                  ///< when the forces came from a surface
 };
 
 /// Where a batch of runs came from.

@@ -135,6 +135,12 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       "INSERT OR REPLACE INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, "
       "source_line) VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
 
+  auto write_surface = connection_.prepare(
+      "INSERT OR REPLACE INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
+      "degenerate_faces, normals_flipped, n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, "
+      "reference_pressure, pressure_array, shear_array, pressure_kind, shear_convention, axes) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+
   for (const auto& batch : batches) {
     ImportOutcome outcome;
     outcome.path = batch.source.path;
@@ -230,6 +236,29 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
         extended = true;
       }
       if (extended && !created) ++outcome.runs_extended;
+      if (run.surface) {
+        const auto& g = *run.surface;
+        write_surface.bind(1, run_id)
+            .bind(2, source_id)
+            .bind(3, static_cast<std::int64_t>(g.faces))
+            .bind(4, g.area)
+            .bind(5, g.signed_volume)
+            .bind(6, static_cast<std::int64_t>(g.closed))
+            .bind(7, static_cast<std::int64_t>(g.boundary_edges))
+            .bind(8, static_cast<std::int64_t>(g.degenerate_faces))
+            .bind(9, static_cast<std::int64_t>(g.normals_flipped));
+        for (int i = 0; i < 3; ++i) {
+          write_surface.bind(10 + i, g.integral_n_dA_b[static_cast<std::size_t>(i)]);
+          write_surface.bind(13 + i, g.integral_x_cross_n_dA_b[static_cast<std::size_t>(i)]);
+        }
+        write_surface.bind(16, g.reference_pressure)
+            .bind(17, g.pressure_array)
+            .bind(18, g.shear_array)
+            .bind(19, g.pressure_kind)
+            .bind(20, g.shear_convention)
+            .bind(21, g.axes)
+            .run();
+      }
     }
     outcomes.push_back(outcome);
   }
@@ -285,6 +314,33 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     force.source_path = forces.get_text(7);
     force.source_line = static_cast<std::size_t>(forces.get_int(8));
     out[found->second].tau_b[*component] = std::move(force);
+  }
+  auto surfaces = connection_.prepare(
+      "SELECT run_id, faces, area, signed_volume, closed, boundary_edges, degenerate_faces, normals_flipped, "
+      "n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, reference_pressure, "
+      "pressure_array, shear_array, pressure_kind, shear_convention, axes FROM run_surface");
+  while (surfaces.step()) {
+    const auto found = index.find(surfaces.get_int(0));
+    if (found == index.end()) continue;
+    SurfaceIntegrals g;
+    g.faces = static_cast<std::size_t>(surfaces.get_int(1));
+    g.area = surfaces.get_double(2);
+    g.signed_volume = surfaces.get_double(3);
+    g.closed = surfaces.get_int(4) != 0;
+    g.boundary_edges = static_cast<std::size_t>(surfaces.get_int(5));
+    g.degenerate_faces = static_cast<std::size_t>(surfaces.get_int(6));
+    g.normals_flipped = surfaces.get_int(7) != 0;
+    for (int i = 0; i < 3; ++i) {
+      g.integral_n_dA_b[static_cast<std::size_t>(i)] = surfaces.get_double(8 + i);
+      g.integral_x_cross_n_dA_b[static_cast<std::size_t>(i)] = surfaces.get_double(11 + i);
+    }
+    g.reference_pressure = surfaces.get_double(14);
+    g.pressure_array = surfaces.get_text(15);
+    g.shear_array = surfaces.get_text(16);
+    g.pressure_kind = surfaces.get_text(17);
+    g.shear_convention = surfaces.get_text(18);
+    g.axes = surfaces.get_text(19);
+    out[found->second].surface = std::move(g);
   }
   return out;
 }

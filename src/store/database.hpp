@@ -32,6 +32,7 @@ struct StoredRun {
   Fluid fluid;
   std::array<double, 3> reference_point_b{};
   std::array<std::optional<StoredForce>, 6> tau_b;  ///< X..N
+  std::optional<SurfaceIntegrals> surface;          ///< when the forces came from an integrated surface
 };
 
 /// Which runs to list. Values are compared with a tolerance of 1e-9 (SI).

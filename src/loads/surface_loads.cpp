@@ -1,0 +1,535 @@
+#include "src/loads/surface_loads.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+namespace {
+
+// ---- small vector helpers (Vec3 is a plain array so the hot loop stays inline)
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+inline Vec3& operator+=(Vec3& a, const Vec3& b) {
+  a[0] += b[0];
+  a[1] += b[1];
+  a[2] += b[2];
+  return a;
+}
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+/// A scalar or vector array seen through stride and offsets, so that a
+/// 3-component array and three scalar arrays are read the same way.
+struct FieldView {
+  const double* component[3] = {nullptr, nullptr, nullptr};
+  std::size_t stride = 1;
+  bool per_point = true;
+  bool present() const { return component[0] != nullptr; }
+  double scalar(std::size_t i) const { return component[0][i * stride]; }
+  Vec3 vector(std::size_t i) const {
+    return {component[0][i * stride], component[1][i * stride], component[2][i * stride]};
+  }
+};
+
+std::string available_arrays(const SurfaceMesh& mesh) {
+  std::string out;
+  for (const auto& field : mesh.fields) {
+    if (!out.empty()) out += ", ";
+    out += "'" + field.name + "'";
+    if (field.components == 3) out += " (vector)";
+  }
+  return out.empty() ? "none" : out;
+}
+
+const FieldArray& find_array(const SurfaceMesh& mesh, const std::string& name, int components, const char* role) {
+  const FieldArray* field = mesh.find_field(name);
+  if (!field)
+    throw InputError(std::string(role) + " array '" + name + "' is not in the file; arrays there: " +
+                     available_arrays(mesh));
+  if (field->components != components)
+    throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->components) +
+                     " components, expected " + std::to_string(components));
+  const std::size_t expected =
+      field->association == FieldAssociation::Point ? mesh.point_count() : mesh.face_count();
+  if (field->size() != expected)
+    throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->size()) +
+                     " values, expected " + std::to_string(expected) + " (one per " +
+                     (field->association == FieldAssociation::Point ? "point" : "face") + ")");
+  for (std::size_t i = 0; i < field->values.size(); ++i)
+    if (!std::isfinite(field->values[i]))
+      throw InputError(std::string(role) + " array '" + name + "' holds " +
+                       (std::isnan(field->values[i]) ? "NaN" : "Inf") + " at " +
+                       (field->association == FieldAssociation::Point ? "point " : "face ") +
+                       std::to_string(i / static_cast<std::size_t>(components)) + "; expected finite values");
+  return *field;
+}
+
+FieldView pressure_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
+  const FieldArray& field = find_array(mesh, options.pressure_field, 1, "pressure");
+  FieldView view;
+  view.component[0] = field.values.data();
+  view.per_point = field.association == FieldAssociation::Point;
+  return view;
+}
+
+FieldView shear_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
+  FieldView view;
+  if (options.shear_fields.empty()) return view;
+  if (options.shear_fields.size() == 1) {
+    const FieldArray& field = find_array(mesh, options.shear_fields[0], 3, "wall shear");
+    for (int c = 0; c < 3; ++c) view.component[c] = field.values.data() + c;
+    view.stride = 3;
+    view.per_point = field.association == FieldAssociation::Point;
+    return view;
+  }
+  if (options.shear_fields.size() != 3)
+    throw InputError("wall shear: expected one vector array or three scalar arrays x,y,z, got " +
+                     std::to_string(options.shear_fields.size()) + " names");
+  for (int c = 0; c < 3; ++c) {
+    const FieldArray& field = find_array(mesh, options.shear_fields[static_cast<std::size_t>(c)], 1, "wall shear");
+    view.component[c] = field.values.data();
+    const bool per_point = field.association == FieldAssociation::Point;
+    if (c > 0 && per_point != view.per_point)
+      throw InputError("wall shear arrays mix point and face data; expected all three alike");
+    view.per_point = per_point;
+  }
+  return view;
+}
+
+/// Running sums of one block of faces; blocks are then summed, which keeps
+/// the rounding error of millions of faces near that of a few thousand.
+struct Sums {
+  Vec3 force_p{}, force_v{}, moment_p{}, moment_v{};
+  Vec3 n_dA{}, y_cross_n_dA{};  // y = x - x_ref
+  double area = 0.0, y_dot_n_dA = 0.0;
+  std::size_t degenerate = 0;
+
+  void add(const Sums& o) {
+    force_p += o.force_p;
+    force_v += o.force_v;
+    moment_p += o.moment_p;
+    moment_v += o.moment_v;
+    n_dA += o.n_dA;
+    y_cross_n_dA += o.y_cross_n_dA;
+    area += o.area;
+    y_dot_n_dA += o.y_dot_n_dA;
+    degenerate += o.degenerate;
+  }
+};
+
+/// Everything a face contributes, computed by one of the rules below.
+struct Integrator {
+  const SurfaceMesh& mesh;
+  const double* xyz;
+  Vec3 x_ref;
+  FieldView pressure;  // may be absent (geometry only)
+  FieldView shear;     // may be absent
+  double p_ref = 0.0;
+  double shear_sign = 1.0;
+  double degenerate_area = 0.0;
+
+  Vec3 point(std::uint32_t i) const {
+    const double* p = xyz + 3 * static_cast<std::size_t>(i);
+    return {p[0] - x_ref[0], p[1] - x_ref[1], p[2] - x_ref[2]};
+  }
+
+  // Triangle with vertex values, exact for linear fields:
+  //   ∫ f dA = |S| (f0+f1+f2)/3,  ∫ f y dA = |S|/12 (Σ f_i y_i + F Y).
+  void triangle_point_data(const Vec3 (&y)[3], const double (&p)[3], const Vec3* tau, Sums& s) const {
+    const Vec3 S = 0.5 * cross(y[1] - y[0], y[2] - y[0]);
+    const Vec3 Y = y[0] + y[1] + y[2];
+    const double P = p[0] + p[1] + p[2];
+    const Vec3 first_moment = (1.0 / 12.0) * (p[0] * y[0] + p[1] * y[1] + p[2] * y[2] + P * Y);  // ∫p y dA / |S|
+    s.force_p += (-P / 3.0) * S;
+    s.moment_p += -1.0 * cross(first_moment, S);
+    add_geometry(S, (1.0 / 3.0) * Y, s);
+    if (tau) {
+      const double a = norm(S);
+      const Vec3 T = tau[0] + tau[1] + tau[2];
+      s.force_v += (shear_sign * a / 3.0) * T;
+      s.moment_v += (shear_sign * a / 12.0) *
+                    (cross(y[0], tau[0]) + cross(y[1], tau[1]) + cross(y[2], tau[2]) + cross(Y, T));
+    }
+  }
+
+  void add_geometry(const Vec3& S, const Vec3& centroid, Sums& s) const {
+    const double a = norm(S);
+    s.area += a;
+    s.n_dA += S;
+    s.y_cross_n_dA += cross(centroid, S);
+    s.y_dot_n_dA += dot(centroid, S);
+    if (a <= degenerate_area) ++s.degenerate;
+  }
+
+  // Quad with vertex values on its bilinear patch, 2×2 Gauss: exact for
+  // bilinear fields (the integrands are at most cubic in each direction).
+  void quad_point_data(const Vec3 (&y)[4], const double (&p)[4], const Vec3* tau, Sums& s) const {
+    static constexpr double g = 0.57735026918962576451;  // 1/sqrt(3)
+    static constexpr double xi_of[4] = {-g, g, g, -g};
+    static constexpr double eta_of[4] = {-g, -g, g, g};
+    Vec3 S_total{}, yS_total{};
+    double ydotS = 0.0, area = 0.0;
+    for (int q = 0; q < 4; ++q) {
+      const double xi = xi_of[q], eta = eta_of[q];
+      // Corner order 0:(-1,-1) 1:(1,-1) 2:(1,1) 3:(-1,1); weights of each Gauss point are 1.
+      const double N[4] = {0.25 * (1 - xi) * (1 - eta), 0.25 * (1 + xi) * (1 - eta), 0.25 * (1 + xi) * (1 + eta),
+                           0.25 * (1 - xi) * (1 + eta)};
+      const Vec3 d_xi = (0.25 * (1 - eta)) * (y[1] - y[0]) + (0.25 * (1 + eta)) * (y[2] - y[3]);
+      const Vec3 d_eta = (0.25 * (1 - xi)) * (y[3] - y[0]) + (0.25 * (1 + xi)) * (y[2] - y[1]);
+      const Vec3 J = cross(d_xi, d_eta);
+      const Vec3 yq = N[0] * y[0] + N[1] * y[1] + N[2] * y[2] + N[3] * y[3];
+      const double pq = N[0] * p[0] + N[1] * p[1] + N[2] * p[2] + N[3] * p[3];
+      const double j = norm(J);
+      s.force_p += (-pq) * J;
+      s.moment_p += (-pq) * cross(yq, J);
+      S_total += J;
+      yS_total += cross(yq, J);
+      ydotS += dot(yq, J);
+      area += j;
+      if (tau) {
+        const Vec3 tq = N[0] * tau[0] + N[1] * tau[1] + N[2] * tau[2] + N[3] * tau[3];
+        s.force_v += (shear_sign * j) * tq;
+        s.moment_v += (shear_sign * j) * cross(yq, tq);
+      }
+    }
+    s.area += area;
+    s.n_dA += S_total;
+    s.y_cross_n_dA += yS_total;
+    s.y_dot_n_dA += ydotS;
+    if (area <= degenerate_area) ++s.degenerate;
+  }
+
+  // Finite-volume face: vector area S_f and area-weighted centroid C_f from
+  // the triangles around the vertex mean; constant values applied at C_f.
+  void face_geometry(std::size_t begin, std::size_t end, Vec3& S, Vec3& C) const {
+    const std::size_t k = end - begin;
+    Vec3 mean{};
+    for (std::size_t i = begin; i < end; ++i) mean += point(mesh.face_indices[i]);
+    mean = (1.0 / static_cast<double>(k)) * mean;
+    S = {};
+    Vec3 weighted{};
+    double total = 0.0;
+    for (std::size_t i = 0; i < k; ++i) {
+      const Vec3 a = point(mesh.face_indices[begin + i]);
+      const Vec3 b = point(mesh.face_indices[begin + (i + 1) % k]);
+      const Vec3 St = 0.5 * cross(a - mean, b - mean);
+      const double w = norm(St);
+      S += St;
+      weighted += w * ((1.0 / 3.0) * (a + b + mean));
+      total += w;
+    }
+    C = total > 0.0 ? (1.0 / total) * weighted : mean;
+  }
+
+  void face_data(std::size_t f, std::size_t begin, std::size_t end, Sums& s) const {
+    Vec3 S, C;
+    if (end - begin == 3) {
+      const Vec3 a = point(mesh.face_indices[begin]), b = point(mesh.face_indices[begin + 1]),
+                 c = point(mesh.face_indices[begin + 2]);
+      S = 0.5 * cross(b - a, c - a);
+      C = (1.0 / 3.0) * (a + b + c);
+    } else {
+      face_geometry(begin, end, S, C);
+    }
+    add_geometry(S, C, s);
+    if (pressure.present()) {
+      const double p = pressure_at_face(f, begin, end);
+      const Vec3 F = (-p) * S;
+      s.force_p += F;
+      s.moment_p += cross(C, F);
+    }
+    if (shear.present()) {
+      const Vec3 F = (shear_sign * norm(S)) * shear_at_face(f, begin, end);
+      s.force_v += F;
+      s.moment_v += cross(C, F);
+    }
+  }
+
+  double pressure_at_face(std::size_t f, std::size_t begin, std::size_t end) const {
+    if (!pressure.per_point) return pressure.scalar(f) - p_ref;
+    double sum = 0.0;
+    for (std::size_t i = begin; i < end; ++i) sum += pressure.scalar(mesh.face_indices[i]);
+    return sum / static_cast<double>(end - begin) - p_ref;
+  }
+  Vec3 shear_at_face(std::size_t f, std::size_t begin, std::size_t end) const {
+    if (!shear.per_point) return shear.vector(f);
+    Vec3 sum{};
+    for (std::size_t i = begin; i < end; ++i) sum += shear.vector(mesh.face_indices[i]);
+    return (1.0 / static_cast<double>(end - begin)) * sum;
+  }
+
+  void face(std::size_t f, Sums& s) const {
+    const std::size_t begin = mesh.face_offsets[f], end = mesh.face_offsets[f + 1];
+    const std::size_t k = end - begin;
+    if (k < 3) {
+      ++s.degenerate;
+      return;
+    }
+    const bool point_pressure = pressure.present() && pressure.per_point;
+    if (!point_pressure) {
+      // Face-constant pressure (or geometry only): finite-volume face rule;
+      // shear given per point is averaged over the face's vertices.
+      face_data(f, begin, end, s);
+      return;
+    }
+    const bool point_shear = shear.present() && shear.per_point;
+    const Vec3 face_tau = shear.present() && !point_shear ? shear.vector(f) : Vec3{};
+    if (k == 3) {
+      const Vec3 y[3] = {point(mesh.face_indices[begin]), point(mesh.face_indices[begin + 1]),
+                         point(mesh.face_indices[begin + 2])};
+      const double p[3] = {pressure.scalar(mesh.face_indices[begin]) - p_ref,
+                           pressure.scalar(mesh.face_indices[begin + 1]) - p_ref,
+                           pressure.scalar(mesh.face_indices[begin + 2]) - p_ref};
+      Vec3 tau[3];
+      for (int i = 0; i < 3; ++i) tau[i] = point_shear ? shear.vector(mesh.face_indices[begin + i]) : face_tau;
+      triangle_point_data(y, p, shear.present() ? tau : nullptr, s);
+      return;
+    }
+    if (k == 4) {
+      Vec3 y[4];
+      double p[4];
+      Vec3 tau[4];
+      for (int i = 0; i < 4; ++i) {
+        const std::uint32_t v = mesh.face_indices[begin + i];
+        y[i] = point(v);
+        p[i] = pressure.scalar(v) - p_ref;
+        tau[i] = point_shear ? shear.vector(v) : face_tau;
+      }
+      quad_point_data(y, p, shear.present() ? tau : nullptr, s);
+      return;
+    }
+    // Polygon: triangles around the vertex mean, where the value is the
+    // vertex mean (the linear interpolant's value there for a planar polygon).
+    Vec3 yc{};
+    double pc = 0.0;
+    Vec3 tc{};
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t v = mesh.face_indices[i];
+      yc += point(v);
+      pc += pressure.scalar(v) - p_ref;
+      tc += point_shear ? shear.vector(v) : face_tau;
+    }
+    const double inv = 1.0 / static_cast<double>(k);
+    yc = inv * yc;
+    pc *= inv;
+    tc = inv * tc;
+    // Degeneracy is judged on the whole polygon, not on its pieces.
+    Sums parts;
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::uint32_t a = mesh.face_indices[begin + i], b = mesh.face_indices[begin + (i + 1) % k];
+      const Vec3 y[3] = {yc, point(a), point(b)};
+      const double p[3] = {pc, pressure.scalar(a) - p_ref, pressure.scalar(b) - p_ref};
+      const Vec3 tau[3] = {tc, point_shear ? shear.vector(a) : face_tau, point_shear ? shear.vector(b) : face_tau};
+      triangle_point_data(y, p, shear.present() ? tau : nullptr, parts);
+    }
+    parts.degenerate = parts.area <= degenerate_area ? 1 : 0;
+    s.add(parts);
+  }
+
+  Sums run() const {
+    constexpr std::size_t kBlock = 2048;
+    Sums total;
+    const std::size_t faces = mesh.face_count();
+    for (std::size_t start = 0; start < faces; start += kBlock) {
+      Sums block;
+      const std::size_t stop = std::min(faces, start + kBlock);
+      for (std::size_t f = start; f < stop; ++f) face(f, block);
+      total.add(block);
+    }
+    return total;
+  }
+};
+
+void check_mesh_indices(const SurfaceMesh& mesh) {
+  if (mesh.face_count() == 0) throw InputError("the surface has no faces; expected a body surface of polygons");
+  if (mesh.points_xyz.size() % 3 != 0) throw InputError("point coordinates are not a multiple of 3");
+  if (mesh.face_offsets.back() != mesh.face_indices.size())
+    throw InputError("face offsets end at " + std::to_string(mesh.face_offsets.back()) + " but there are " +
+                     std::to_string(mesh.face_indices.size()) + " face indices");
+  const std::size_t points = mesh.point_count();
+  for (std::size_t i = 0; i < mesh.face_indices.size(); ++i)
+    if (mesh.face_indices[i] >= points)
+      throw InputError("a face refers to point " + std::to_string(mesh.face_indices[i]) + " but the surface has " +
+                       std::to_string(points) + " points");
+  for (const double x : mesh.points_xyz)
+    if (!std::isfinite(x)) throw InputError("point coordinates hold NaN or Inf; expected finite coordinates");
+}
+
+double bounding_box_diagonal(const SurfaceMesh& mesh) {
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (std::size_t i = 0; i < mesh.point_count(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], mesh.points_xyz[3 * i + c]);
+      hi[c] = std::max(hi[c], mesh.points_xyz[3 * i + c]);
+    }
+  return mesh.point_count() ? norm(hi - lo) : 0.0;
+}
+
+/// Edge topology: each edge (a, b) is filed under its smaller vertex with
+/// the direction the face walks it; two passes of counting, no sort of the
+/// whole edge list, so this stays linear in the number of faces.
+void count_edges(const SurfaceMesh& mesh, SurfaceGeometry& geometry) {
+  const std::size_t points = mesh.point_count();
+  std::vector<std::uint32_t> start(points + 1, 0);
+  const std::size_t faces = mesh.face_count();
+  for (std::size_t f = 0; f < faces; ++f) {
+    const std::size_t begin = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - begin;
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::uint32_t a = mesh.face_indices[begin + i], b = mesh.face_indices[begin + (i + 1) % k];
+      if (a != b) ++start[std::min(a, b) + 1];
+    }
+  }
+  for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
+  // Each entry: the other vertex, and 1 if the face walks min -> max.
+  std::vector<std::uint32_t> other(start[points]);
+  std::vector<std::uint8_t> forward(start[points]);
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t f = 0; f < faces; ++f) {
+    const std::size_t begin = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - begin;
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::uint32_t a = mesh.face_indices[begin + i], b = mesh.face_indices[begin + (i + 1) % k];
+      if (a == b) continue;
+      const std::uint32_t low = std::min(a, b);
+      other[fill[low]] = std::max(a, b);
+      forward[fill[low]] = a < b ? 1 : 0;
+      ++fill[low];
+    }
+  }
+  std::vector<std::pair<std::uint32_t, std::uint8_t>> list;
+  for (std::size_t v = 0; v < points; ++v) {
+    list.clear();
+    for (std::uint32_t e = start[v]; e < start[v + 1]; ++e) list.emplace_back(other[e], forward[e]);
+    std::sort(list.begin(), list.end());
+    for (std::size_t i = 0; i < list.size();) {
+      std::size_t j = i;
+      int walked_forward = 0;
+      while (j < list.size() && list[j].first == list[i].first) walked_forward += list[j++].second;
+      const std::size_t uses = j - i;
+      if (uses == 1) ++geometry.boundary_edges;
+      else if (uses > 2) ++geometry.nonmanifold_edges;
+      else if (walked_forward != 1) ++geometry.inconsistent_edges;
+      i = j;
+    }
+  }
+  geometry.closed = geometry.boundary_edges == 0 && geometry.nonmanifold_edges == 0;
+}
+
+void count_shapes(const SurfaceMesh& mesh, SurfaceGeometry& geometry) {
+  geometry.faces = mesh.face_count();
+  for (std::size_t f = 0; f < geometry.faces; ++f) {
+    const auto k = mesh.face_offsets[f + 1] - mesh.face_offsets[f];
+    if (k == 3) ++geometry.triangles;
+    else if (k == 4) ++geometry.quads;
+    else if (k > 4) ++geometry.polygons;
+  }
+}
+
+SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& options, bool with_fields) {
+  check_mesh_indices(mesh);
+  Integrator integrator{mesh, mesh.points_xyz.data(), options.reference_point, {}, {}, 0.0, 1.0, 0.0};
+  if (with_fields) {
+    integrator.pressure = pressure_view(mesh, options);
+    integrator.shear = shear_view(mesh, options);
+  }
+  integrator.p_ref = options.reference_pressure;
+  integrator.shear_sign = options.shear_convention == ShearConvention::OnWall ? 1.0 : -1.0;
+  const double diagonal = bounding_box_diagonal(mesh);
+  integrator.degenerate_area = 1e-14 * diagonal * diagonal;
+
+  const Sums sums = integrator.run();
+  SurfaceLoads loads;
+  loads.reference_point = options.reference_point;
+  loads.force_pressure = sums.force_p;
+  loads.force_viscous = sums.force_v;
+  loads.moment_pressure = sums.moment_p;
+  loads.moment_viscous = sums.moment_v;
+
+  SurfaceGeometry& geometry = loads.geometry;
+  count_shapes(mesh, geometry);
+  count_edges(mesh, geometry);
+  geometry.degenerate_faces = sums.degenerate;
+  geometry.area = sums.area;
+  const Vec3& x_ref = options.reference_point;
+  geometry.integral_n_dA = sums.n_dA;
+  geometry.integral_x_cross_n_dA = sums.y_cross_n_dA + cross(x_ref, sums.n_dA);
+  geometry.signed_volume = (sums.y_dot_n_dA + dot(x_ref, sums.n_dA)) / 3.0;
+
+  bool flip = options.normals == NormalPolicy::Flip;
+  if (options.normals == NormalPolicy::Auto) {
+    if (geometry.inconsistent_edges > 0)
+      throw InputError("face orientation is inconsistent: " + std::to_string(geometry.inconsistent_edges) +
+                       " interior edges are walked the same way by both of their faces, so some normals point "
+                       "in and some out; expected a consistently oriented surface (or give --normals as-given)");
+    if (geometry.closed) {
+      flip = geometry.signed_volume < 0.0;
+    } else {
+      // Open surface: the cone volume about the mean of its points.
+      Vec3 centre{};
+      for (std::size_t i = 0; i < mesh.point_count(); ++i)
+        centre += Vec3{mesh.points_xyz[3 * i], mesh.points_xyz[3 * i + 1], mesh.points_xyz[3 * i + 2]};
+      centre = (1.0 / static_cast<double>(std::max<std::size_t>(1, mesh.point_count()))) * centre;
+      const double cone = sums.y_dot_n_dA - dot(centre - x_ref, sums.n_dA);
+      flip = cone < 0.0;
+      geometry.warnings.push_back("open surface (" + std::to_string(geometry.boundary_edges) +
+                                  " boundary edges): outward normals judged from the cone volume about its centre");
+    }
+  }
+  if (flip) {
+    loads.force_pressure = -1.0 * loads.force_pressure;
+    loads.moment_pressure = -1.0 * loads.moment_pressure;
+    geometry.integral_n_dA = -1.0 * geometry.integral_n_dA;
+    geometry.integral_x_cross_n_dA = -1.0 * geometry.integral_x_cross_n_dA;
+    geometry.signed_volume = -geometry.signed_volume;
+    geometry.normals_flipped = true;
+    geometry.warnings.push_back("face normals pointed into the body and were reversed");
+  }
+  if (geometry.inconsistent_edges > 0 && options.normals != NormalPolicy::Auto)
+    geometry.warnings.push_back(std::to_string(geometry.inconsistent_edges) + " edges with inconsistent orientation");
+  if (geometry.degenerate_faces > 0)
+    geometry.warnings.push_back(std::to_string(geometry.degenerate_faces) + " degenerate faces (zero area)");
+  if (geometry.nonmanifold_edges > 0)
+    geometry.warnings.push_back(std::to_string(geometry.nonmanifold_edges) + " non-manifold edges");
+  return loads;
+}
+
+}  // namespace
+
+Vec3 SurfaceLoads::force() const { return force_pressure + force_viscous; }
+Vec3 SurfaceLoads::moment() const { return moment_pressure + moment_viscous; }
+
+SurfaceLoads integrate_surface_loads(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
+  if (options.pressure_field.empty()) throw InputError("no pressure array named; expected e.g. --pressure Pressure");
+  return integrate(mesh, options, true);
+}
+
+SurfaceGeometry check_surface_geometry(const SurfaceMesh& mesh) {
+  SurfaceLoadOptions options;
+  options.normals = NormalPolicy::AsGiven;
+  return integrate(mesh, options, false).geometry;
+}
+
+SurfaceLoads shift_loads(const SurfaceLoads& loads, double old_reference_pressure, double new_reference_pressure,
+                         const Vec3& new_reference_point) {
+  SurfaceLoads out = loads;
+  const double delta = new_reference_pressure - old_reference_pressure;
+  const Vec3& n_dA = loads.geometry.integral_n_dA;
+  // ∫ (x - x_ref) × n dA about the old point.
+  const Vec3 y_cross_n = loads.geometry.integral_x_cross_n_dA - cross(loads.reference_point, n_dA);
+  out.force_pressure = loads.force_pressure + delta * n_dA;
+  const Vec3 moment_pressure_old_point = loads.moment_pressure + delta * y_cross_n;
+  // M about x' = M about x - (x' - x) × F.
+  const Vec3 shift = new_reference_point - loads.reference_point;
+  out.moment_pressure = moment_pressure_old_point - cross(shift, out.force_pressure);
+  out.moment_viscous = loads.moment_viscous - cross(shift, loads.force_viscous);
+  out.reference_point = new_reference_point;
+  return out;
+}
+
+}  // namespace hydrocoef
