@@ -1,8 +1,11 @@
 #include "src/loads/surface_loads.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <string>
+#include <thread>
 
 #include "src/core/error.hpp"
 
@@ -144,14 +147,14 @@ struct Integrator {
   //   ∫ f dA = |S| (f0+f1+f2)/3,  ∫ f y dA = |S|/12 (Σ f_i y_i + F Y).
   void triangle_point_data(const Vec3 (&y)[3], const double (&p)[3], const Vec3* tau, Sums& s) const {
     const Vec3 S = 0.5 * cross(y[1] - y[0], y[2] - y[0]);
+    const double a = norm(S);
     const Vec3 Y = y[0] + y[1] + y[2];
     const double P = p[0] + p[1] + p[2];
     const Vec3 first_moment = (1.0 / 12.0) * (p[0] * y[0] + p[1] * y[1] + p[2] * y[2] + P * Y);  // ∫p y dA / |S|
     s.force_p += (-P / 3.0) * S;
     s.moment_p += -1.0 * cross(first_moment, S);
-    add_geometry(S, (1.0 / 3.0) * Y, s);
+    add_geometry(S, a, (1.0 / 3.0) * Y, s);
     if (tau) {
-      const double a = norm(S);
       const Vec3 T = tau[0] + tau[1] + tau[2];
       s.force_v += (shear_sign * a / 3.0) * T;
       s.moment_v += (shear_sign * a / 12.0) *
@@ -159,8 +162,7 @@ struct Integrator {
     }
   }
 
-  void add_geometry(const Vec3& S, const Vec3& centroid, Sums& s) const {
-    const double a = norm(S);
+  void add_geometry(const Vec3& S, double a, const Vec3& centroid, Sums& s) const {
     s.area += a;
     s.n_dA += S;
     s.y_cross_n_dA += cross(centroid, S);
@@ -238,7 +240,7 @@ struct Integrator {
     } else {
       face_geometry(begin, end, S, C);
     }
-    add_geometry(S, C, s);
+    add_geometry(S, norm(S), C, s);
     if (pressure.present()) {
       const double p = pressure_at_face(f, begin, end);
       const Vec3 F = (-p) * S;
@@ -333,19 +335,49 @@ struct Integrator {
     s.add(parts);
   }
 
-  Sums run() const {
-    constexpr std::size_t kBlock = 2048;
-    Sums total;
-    const std::size_t faces = mesh.face_count();
-    for (std::size_t start = 0; start < faces; start += kBlock) {
-      Sums block;
-      const std::size_t stop = std::min(faces, start + kBlock);
-      for (std::size_t f = start; f < stop; ++f) face(f, block);
-      total.add(block);
-    }
-    return total;
+  static constexpr std::size_t kBlock = 4096;
+
+  void run_block(std::size_t block, Sums& out) const {
+    const std::size_t start = block * kBlock;
+    const std::size_t stop = std::min(mesh.face_count(), start + kBlock);
+    for (std::size_t f = start; f < stop; ++f) face(f, out);
   }
 };
+
+/// Runs the integration blocks on the calling thread and, for large meshes,
+/// on a second thread that first does `side_work` (the edge topology). Block
+/// results are summed in block order, so the totals do not depend on which
+/// thread ran what.
+template <typename SideWork>
+Sums integrate_blocks(const Integrator& integrator, SideWork side_work) {
+  const std::size_t faces = integrator.mesh.face_count();
+  const std::size_t blocks = (faces + Integrator::kBlock - 1) / Integrator::kBlock;
+  std::vector<Sums> block_sums(blocks);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t b = next++; b < blocks; b = next++) integrator.run_block(b, block_sums[b]);
+  };
+  if (faces >= 50000 && std::thread::hardware_concurrency() > 1) {
+    std::exception_ptr side_error;
+    std::thread helper([&] {
+      try {
+        side_work();
+      } catch (...) {
+        side_error = std::current_exception();
+      }
+      worker();
+    });
+    worker();
+    helper.join();
+    if (side_error) std::rethrow_exception(side_error);
+  } else {
+    side_work();
+    worker();
+  }
+  Sums total;
+  for (const auto& block : block_sums) total.add(block);
+  return total;
+}
 
 void check_mesh_indices(const SurfaceMesh& mesh) {
   if (mesh.face_count() == 0) throw InputError("the surface has no faces; expected a body surface of polygons");
@@ -387,36 +419,36 @@ void count_edges(const SurfaceMesh& mesh, SurfaceGeometry& geometry) {
     }
   }
   for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
-  // Each entry: the other vertex, and 1 if the face walks min -> max.
-  std::vector<std::uint32_t> other(start[points]);
-  std::vector<std::uint8_t> forward(start[points]);
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  // Each entry packs the other vertex and 1 if the face walks min -> max.
+  std::vector<std::uint64_t> entries(start[points]);
   for (std::size_t f = 0; f < faces; ++f) {
     const std::size_t begin = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - begin;
     for (std::size_t i = 0; i < k; ++i) {
       const std::uint32_t a = mesh.face_indices[begin + i], b = mesh.face_indices[begin + (i + 1) % k];
       if (a == b) continue;
       const std::uint32_t low = std::min(a, b);
-      other[fill[low]] = std::max(a, b);
-      forward[fill[low]] = a < b ? 1 : 0;
-      ++fill[low];
+      entries[start[low]++] = (static_cast<std::uint64_t>(std::max(a, b)) << 1) | (a < b ? 1u : 0u);
     }
   }
-  std::vector<std::pair<std::uint32_t, std::uint8_t>> list;
+  // start[v] now holds the end of v's entries, start[v - 1] their beginning.
+  std::uint32_t begin = 0;
   for (std::size_t v = 0; v < points; ++v) {
-    list.clear();
-    for (std::uint32_t e = start[v]; e < start[v + 1]; ++e) list.emplace_back(other[e], forward[e]);
-    std::sort(list.begin(), list.end());
-    for (std::size_t i = 0; i < list.size();) {
+    const std::uint32_t end = start[v];
+    std::uint64_t* list = entries.data() + begin;
+    const std::size_t n = end - begin;
+    for (std::size_t i = 1; i < n; ++i)  // lists hold a handful of edges
+      for (std::size_t j = i; j > 0 && list[j] < list[j - 1]; --j) std::swap(list[j], list[j - 1]);
+    for (std::size_t i = 0; i < n;) {
       std::size_t j = i;
-      int walked_forward = 0;
-      while (j < list.size() && list[j].first == list[i].first) walked_forward += list[j++].second;
+      unsigned walked_forward = 0;
+      while (j < n && (list[j] >> 1) == (list[i] >> 1)) walked_forward += static_cast<unsigned>(list[j++] & 1u);
       const std::size_t uses = j - i;
       if (uses == 1) ++geometry.boundary_edges;
       else if (uses > 2) ++geometry.nonmanifold_edges;
       else if (walked_forward != 1) ++geometry.inconsistent_edges;
       i = j;
     }
+    begin = end;
   }
   geometry.closed = geometry.boundary_edges == 0 && geometry.nonmanifold_edges == 0;
 }
@@ -443,8 +475,8 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   const double diagonal = bounding_box_diagonal(mesh);
   integrator.degenerate_area = 1e-14 * diagonal * diagonal;
 
-  const Sums sums = integrator.run();
   SurfaceLoads loads;
+  const Sums sums = integrate_blocks(integrator, [&] { count_edges(mesh, loads.geometry); });
   loads.reference_point = options.reference_point;
   loads.force_pressure = sums.force_p;
   loads.force_viscous = sums.force_v;
@@ -453,7 +485,6 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
 
   SurfaceGeometry& geometry = loads.geometry;
   count_shapes(mesh, geometry);
-  count_edges(mesh, geometry);
   geometry.degenerate_faces = sums.degenerate;
   geometry.area = sums.area;
   const Vec3& x_ref = options.reference_point;

@@ -559,3 +559,42 @@ INSTANTIATE_TEST_SUITE_P(Sphere, OpenFoamForces,
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+TEST(SurfaceLoads, LargeSurfacesUseBothCoresAndStayExactAndDeterministic) {
+  // 81,920 triangles: above the size where a second thread joins in.
+  const double rho = 1025.0, g = 9.81;
+  SurfaceMesh mesh = test::make_icosphere(0.3, 6, {0.1, 0.2, -2.0});
+  test::add_point_scalar(mesh, "p", [&](const P3& x) { return -rho * g * x[2]; });
+  test::add_point_vector(mesh, "tau", [](const P3& x) { return P3{x[1], -x[0], 0.5}; });
+  auto options = pressure_only();
+  options.shear_fields = {"tau"};
+  const auto first = integrate_surface_loads(mesh, options);
+  const double V = first.geometry.signed_volume;
+  EXPECT_NEAR(first.force_pressure[2], rho * g * V, 1e-12 * rho * g * V);
+  EXPECT_TRUE(first.geometry.closed);
+  EXPECT_EQ(first.geometry.inconsistent_edges, 0u);
+  EXPECT_EQ(first.geometry.faces, 81920u);
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    const auto again = integrate_surface_loads(mesh, options);
+    EXPECT_EQ(again.force_pressure, first.force_pressure);  // bit for bit: blocks are summed in order
+    EXPECT_EQ(again.moment_viscous, first.moment_viscous);
+    EXPECT_EQ(again.geometry.area, first.geometry.area);
+  }
+  // A hole and a turned face are still found when the edges run on the other thread.
+  SurfaceMesh holed = mesh;
+  holed.face_offsets.pop_back();
+  holed.face_indices.resize(holed.face_offsets.back());
+  std::reverse(holed.face_indices.begin() + 30, holed.face_indices.begin() + 33);
+  auto as_given = options;
+  as_given.normals = NormalPolicy::AsGiven;
+  const auto broken = integrate_surface_loads(holed, as_given);
+  EXPECT_EQ(broken.geometry.boundary_edges, 3u);
+  EXPECT_EQ(broken.geometry.inconsistent_edges, 3u);
+  EXPECT_FALSE(broken.geometry.closed);
+}
+
+}  // namespace
+}  // namespace hydrocoef

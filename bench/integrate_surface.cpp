@@ -1,0 +1,158 @@
+// Integration speed and the cost of a whole .vtp import, against VTK.
+//
+//   BM_IntegrateTriangles      integrate_surface_loads on a closed surface of
+//                              1.3 million triangles with point pressure and
+//                              point wall shear (goal: >= 50 M triangles/s)
+//   BM_VtpReadOnly             vtkXMLPolyDataReader alone on that surface as
+//                              a .vtp: the floor for any .vtp import
+//   BM_VtpImportAndIntegrate   hydrocoef's path: read_vtk_surface (VTK reader
+//                              plus the copy into a SurfaceMesh) and
+//                              integrate_surface_loads (goal: <= 1.3x read)
+//   BM_VtpVtkFilters           the same forces with VTK's own filters:
+//                              vtkPointDataToCellData, vtkPolyDataNormals,
+//                              vtkArrayCalculator, vtkIntegrateAttributes
+//                              (goal: hydrocoef >= 3x faster)
+#include <benchmark/benchmark.h>
+#include <vtkArrayCalculator.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntegrateAttributes.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPointDataToCellData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <filesystem>
+
+#include "importers/vtk_surface.hpp"
+#include "src/loads/surface_loads.hpp"
+#include "tests/support/meshes.hpp"
+
+namespace {
+
+using namespace hydrocoef;
+
+const SurfaceMesh& big_surface() {
+  static const SurfaceMesh mesh = [] {
+    SurfaceMesh m = test::make_icosphere(0.15, 8);  // 1,310,720 triangles
+    test::add_point_scalar(m, "p", [](const test::P3& x) { return 1000.0 + 4000.0 * x[0] - 900.0 * x[2] * x[1]; });
+    test::add_point_vector(m, "tau", [](const test::P3& x) { return test::P3{0.3 + x[1], -0.2 * x[0], 0.1 * x[2]}; });
+    return m;
+  }();
+  return mesh;
+}
+
+const std::filesystem::path& big_vtp() {
+  static const std::filesystem::path path = [] {
+    const auto file = std::filesystem::temp_directory_path() / "hydrocoef-bench-sphere.vtp";
+    const SurfaceMesh& mesh = big_surface();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.point_count()));
+    for (std::size_t i = 0; i < mesh.point_count(); ++i)
+      points->SetPoint(static_cast<vtkIdType>(i), &mesh.points_xyz[3 * i]);
+    vtkNew<vtkCellArray> cells;
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      const vtkIdType ids[3] = {mesh.face_indices[3 * f], mesh.face_indices[3 * f + 1], mesh.face_indices[3 * f + 2]};
+      cells->InsertNextCell(3, ids);
+    }
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    poly->SetPolys(cells);
+    for (const auto& field : mesh.fields) {
+      vtkNew<vtkDoubleArray> array;
+      array->SetName(field.name.c_str());
+      array->SetNumberOfComponents(field.components);
+      array->SetNumberOfTuples(static_cast<vtkIdType>(field.size()));
+      std::copy(field.values.begin(), field.values.end(), array->GetPointer(0));
+      poly->GetPointData()->AddArray(array);
+    }
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetFileName(file.c_str());
+    writer->SetInputData(poly);
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();  // raw binary, as ParaView writes by default
+    writer->Write();
+    return file;
+  }();
+  return path;
+}
+
+SurfaceLoadOptions options() {
+  SurfaceLoadOptions o;
+  o.pressure_field = "p";
+  o.shear_fields = {"tau"};
+  return o;
+}
+
+void BM_IntegrateTriangles(benchmark::State& state) {
+  const SurfaceMesh& mesh = big_surface();
+  const auto o = options();
+  for (auto _ : state) benchmark::DoNotOptimize(integrate_surface_loads(mesh, o));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(mesh.face_count()));
+  state.counters["triangles"] = static_cast<double>(mesh.face_count());
+}
+BENCHMARK(BM_IntegrateTriangles)->Unit(benchmark::kMillisecond);
+
+void BM_VtpReadOnly(benchmark::State& state) {
+  const auto& file = big_vtp();
+  for (auto _ : state) {
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    benchmark::DoNotOptimize(reader->GetOutput()->GetNumberOfCells());
+  }
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
+}
+BENCHMARK(BM_VtpReadOnly)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_VtpImportAndIntegrate(benchmark::State& state) {
+  const auto& file = big_vtp();
+  const auto o = options();
+  for (auto _ : state) {
+    const SurfaceMesh mesh = read_vtk_surface(file);
+    benchmark::DoNotOptimize(integrate_surface_loads(mesh, o));
+  }
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
+}
+BENCHMARK(BM_VtpImportAndIntegrate)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_VtpVtkFilters(benchmark::State& state) {
+  const auto& file = big_vtp();
+  for (auto _ : state) {
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkPointDataToCellData> to_cells;
+    to_cells->SetInputConnection(reader->GetOutputPort());
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(to_cells->GetOutputPort());
+    normals->ComputeCellNormalsOn();
+    normals->ComputePointNormalsOff();
+    normals->SplittingOff();
+    normals->ConsistencyOff();
+    vtkNew<vtkArrayCalculator> pressure_force;
+    pressure_force->SetInputConnection(normals->GetOutputPort());
+    pressure_force->SetAttributeTypeToCellData();
+    pressure_force->AddScalarArrayName("p");
+    pressure_force->AddVectorArrayName("Normals");
+    pressure_force->SetFunction("-p*Normals");
+    pressure_force->SetResultArrayName("dF_p");
+    pressure_force->SetResultArrayType(VTK_DOUBLE);
+    vtkNew<vtkIntegrateAttributes> integrate;
+    integrate->SetInputConnection(pressure_force->GetOutputPort());
+    integrate->Update();
+    benchmark::DoNotOptimize(integrate->GetOutput()->GetCellData()->GetArray("dF_p")->GetComponent(0, 0));
+  }
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
+}
+BENCHMARK(BM_VtpVtkFilters)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
