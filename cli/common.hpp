@@ -24,6 +24,7 @@ struct GlobalOptions {
 void add_import_command(CLI::App& app, const GlobalOptions& global);
 void add_runs_command(CLI::App& app, const GlobalOptions& global);
 void add_fit_command(CLI::App& app, const GlobalOptions& global);
+void add_integrate_command(CLI::App& app);
 
 
 /// Parses "NAME=VALUE" (VALUE a finite number); InputError naming the option otherwise.

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   cli::add_import_command(app, global);
   cli::add_runs_command(app, global);
   cli::add_fit_command(app, global);
+  cli::add_integrate_command(app);
 
   try {
     app.parse(argc, argv);

@@ -127,7 +127,8 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
         throw InputError(SourceLocation{file, header_line, field.column},
                          "column '" + field.text + "' gives '" + column.name + "' again (first at column " +
                              std::to_string(previous->second) + "); expected each component once");
-      if (options.disturbances.count(column.name))
+      const auto velocity = velocity_index(column.name);
+      if (options.disturbances.count(column.name) || (velocity && options.velocity_b[*velocity] != 0.0))
         throw InputError(SourceLocation{file, header_line, field.column},
                          "column '" + field.text + "' and --set both give '" + column.name + "'");
       seen[column.name] = field.column;
@@ -157,6 +158,7 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
     ImportedRun run;
     run.key.body = options.body;
     run.key.disturbances = options.disturbances;
+    run.key.nu_b = options.velocity_b;
     run.fluid = options.fluid;
     run.reference_point_b = options.reference_point_b;
     run.sign = options.sign;

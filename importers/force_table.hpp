@@ -23,6 +23,8 @@ struct ForceTableOptions {
   std::string body = "vehicle";
   /// Disturbance parameters that hold for every row (--set NAME=VALUE), SI.
   std::map<std::string, double> disturbances;
+  /// Body velocity for components the table has no column for (--set v=0.05), SI.
+  std::array<double, 6> velocity_b{};
   /// Component (u..r, X..N) -> header name in the file, for files whose
   /// headers are not the SNAME letters (--column X=Drag).
   std::map<std::string, std::string> columns;

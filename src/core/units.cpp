@@ -20,6 +20,7 @@ struct Symbol {
 constexpr Dimension kMass{{1, 0, 0, 0}};
 constexpr Dimension kTime{{0, 0, 1, 0}};
 constexpr Dimension kAngle{{0, 0, 0, 1}};
+constexpr Dimension kTemperature{{0, 0, 0, 0, 1}};
 constexpr Dimension kEnergy{{1, 2, -2, 0}};
 constexpr Dimension kPower{{1, 2, -3, 0}};
 constexpr Dimension kVolume{{0, 3, 0, 0}};
@@ -44,6 +45,7 @@ const std::vector<Symbol>& symbols() {
       {"deg", std::numbers::pi / 180.0, kAngle},
       {"degree", std::numbers::pi / 180.0, kAngle},
       {"rev", 2.0 * std::numbers::pi, kAngle},
+      {"K", 1.0, kTemperature},
   };
   return table;
 }
@@ -112,18 +114,19 @@ void apply_factor(std::string_view whole, std::string_view factor, int sign, Uni
   const auto found = find_symbol(symbol);
   if (!found)
     fail(whole, "unknown unit symbol '" + std::string(symbol) +
-                    "'; known: m g s min h N Pa bar J W L rad deg rev with prefixes G M k h c d m u n");
+                    "'; known: m g s min h N Pa bar J W L rad deg rev K with prefixes G M k h c d m u n");
   exponent *= sign;
   unit.scale *= std::pow(found->scale, exponent);
-  for (std::size_t i = 0; i < 4; ++i) unit.dimension.exponents[i] += found->dimension.exponents[i] * exponent;
+  for (std::size_t i = 0; i < unit.dimension.exponents.size(); ++i)
+    unit.dimension.exponents[i] += found->dimension.exponents[i] * exponent;
 }
 
 }  // namespace
 
 std::string si_unit_name(const Dimension& dimension) {
   // Printed in the order engineers write them: kg m rad s (rad s^-1, N = kg m s^-2).
-  static constexpr std::array<std::string_view, 4> names = {"kg", "m", "s", "rad"};
-  static constexpr std::array<std::size_t, 4> order = {0, 1, 3, 2};
+  static constexpr std::array<std::string_view, 5> names = {"kg", "m", "s", "rad", "K"};
+  static constexpr std::array<std::size_t, 5> order = {0, 1, 3, 4, 2};
   std::string out;
   for (const std::size_t i : order) {
     const int e = dimension.exponents[i];

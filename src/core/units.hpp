@@ -11,9 +11,9 @@
 
 namespace hydrocoef {
 
-/// Exponents of mass, length, time and plane angle.
+/// Exponents of mass, length, time, plane angle and temperature.
 struct Dimension {
-  std::array<int, 4> exponents{};  ///< kg, m, s, rad
+  std::array<int, 5> exponents{};  ///< kg, m, s, rad, K
   bool operator==(const Dimension&) const = default;
 };
 
@@ -40,7 +40,8 @@ struct Unit {
 /// Parses a unit expression: factors separated by spaces, '*' or '.', each a
 /// symbol with an optional SI prefix and an optional exponent ("s^-1", "m^2",
 /// "m2"); one '/' divides by everything after it. Symbols: m, g, s, min, h, N,
-/// Pa, bar, J, W, rad, radian, deg, degree, rev, L. Surrounding brackets and
+/// Pa, bar, J, W, rad, radian, deg, degree, rev, L, K (kelvin; temperature
+/// differences and absolute temperatures alike, no offset units). Surrounding brackets and
 /// spaces are ignored; "" and "1" are dimensionless. Throws InputError naming
 /// the unknown part.
 Unit parse_unit(std::string_view text);

@@ -220,3 +220,17 @@ TEST(SiUnitName, RoundTripsThroughParseUnit) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+TEST(ParseUnit, KelvinIsATemperatureSoCfdPostTemperatureColumnsParse) {
+  const Unit kelvin = parse_unit("[ K ]");
+  EXPECT_EQ(kelvin.scale, 1.0);
+  EXPECT_EQ(kelvin.dimension, (Dimension{{0, 0, 0, 0, 1}}));
+  EXPECT_FALSE(dimension_matches(kelvin.dimension, kDimensionless));
+  EXPECT_EQ(si_unit_name(parse_unit("W m^-2 K^-1").dimension), "kg K^-1 s^-3");
+}
+
+}  // namespace
+}  // namespace hydrocoef
