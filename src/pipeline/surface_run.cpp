@@ -194,7 +194,7 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
 
     std::vector<std::string> shear = options.shear;
     if (shear.empty()) {
-      if (const FieldArray* vector = find_named(mesh, {"wallShearStress", "Wall Shear", "wall_shear_stress"}, 3)) {
+      if (const FieldArray* vector = find_named(mesh, {"wallShearStress", "Wall Shear", "Wall_Shear", "wall_shear_stress"}, 3)) {
         shear = {vector->name};
       } else if (const FieldArray* x = find_named(mesh, {"Wall Shear X"}, 1)) {
         const std::string prefix = x->name.substr(0, x->name.size() - 1);
