@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/huge_pages.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
@@ -375,24 +376,6 @@ std::string si_unit_or_empty(const Dimension& dimension) {
   return dimension == kDimensionless ? std::string() : si_unit_name(dimension);
 }
 
-// The arrays of a big export are hundreds of MB written once, right after
-// they are allocated. With 4 KiB pages every 4 KiB costs a page fault, which
-// on virtual machines takes longer than parsing the bytes that fill it; 2 MiB
-// pages (transparent huge pages in "madvise" mode) make that 512 times rarer.
-// Only a hint: where it is refused, memory is paged as usual.
-void prefer_huge_pages(const void* data, std::size_t bytes) {
-  constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
-  const auto begin = reinterpret_cast<std::uintptr_t>(data);
-  const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
-  const std::uintptr_t last = (begin + bytes) & ~(kHugePage - 1);
-  if (last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
-}
-
-template <class T>
-void reserve_with_huge_pages(std::vector<T>& values, std::size_t count) {
-  values.reserve(count);
-  prefer_huge_pages(values.data(), values.capacity() * sizeof(T));
-}
 
 // ---------------------------------------------------------------------------
 // Values. Rows and faces are parsed straight from the section's bytes: the

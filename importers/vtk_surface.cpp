@@ -27,6 +27,11 @@
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkSmartPointer.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkUnstructuredGrid.h>
@@ -58,6 +63,7 @@
 #include <vector>
 
 #include "src/core/error.hpp"
+#include "src/core/huge_pages.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -1494,9 +1500,10 @@ struct Part {
   std::uint32_t location = 0;
   std::vector<std::uint32_t> offsets{0};
   std::vector<std::uint32_t> indices;
-  std::vector<vtkIdType> face_cell;
+  std::vector<vtkIdType> face_cell;  ///< the cell each face came from, unless cells_are_faces
+  bool cells_are_faces = false;      ///< face f is cell f (polygon-only polydata)
 
-  std::size_t face_count() const { return face_cell.size(); }
+  std::size_t face_count() const { return offsets.size() - 1; }
 };
 
 /// Closes the face whose point indices were just appended; they came from `cell`.
@@ -1508,6 +1515,62 @@ void end_face(Part& part, vtkIdType cell) {
 void add_face(Part& part, vtkIdType cell, std::initializer_list<vtkIdType> ids) {
   for (const vtkIdType id : ids) part.indices.push_back(static_cast<std::uint32_t>(id));
   end_face(part, cell);
+}
+
+/// The common case, a polydata of polygons only (what foamToVTK, ParaView and
+/// most exporters write): faces read straight from the cell array's offsets
+/// and connectivity, point indices checked on the way, instead of one
+/// virtual GetCellPoints call per cell.
+bool polygons_only(vtkDataSet* data) {
+  auto* poly = vtkPolyData::SafeDownCast(data);
+  return poly != nullptr && poly->GetNumberOfVerts() == 0 && poly->GetNumberOfLines() == 0 &&
+         poly->GetNumberOfStrips() == 0 && poly->GetPolys() != nullptr;
+}
+
+template <typename IdArray>
+void copy_polygons(IdArray* offsets, IdArray* connectivity, vtkIdType point_count, Part& part,
+                   const std::string& file, const std::string& location_name) {
+  const auto* off = offsets->GetPointer(0);
+  const auto* ids = connectivity->GetPointer(0);
+  const vtkIdType cells = offsets->GetNumberOfValues() - 1;
+  reserve_with_huge_pages(part.indices, static_cast<std::size_t>(connectivity->GetNumberOfValues()));
+  part.indices.resize(static_cast<std::size_t>(connectivity->GetNumberOfValues()));
+  part.offsets.resize(static_cast<std::size_t>(cells) + 1);
+  part.cells_are_faces = true;
+  std::uint32_t* out = part.indices.data();
+  for (vtkIdType cell = 0; cell < cells; ++cell) {
+    const auto begin = off[cell], end = off[cell + 1];
+    if (end - begin < 3)
+      throw InputError(SourceLocation{file}, "block '" + location_name + "': cell " + std::to_string(cell) +
+                                                 " is a polygon with " + std::to_string(end - begin) +
+                                                 " points; expected at least 3");
+    for (auto k = begin; k < end; ++k) {
+      const auto id = ids[k];
+      if (id < 0 || id >= point_count)
+        throw InputError(SourceLocation{file}, "block '" + location_name + "': cell " + std::to_string(cell) +
+                                                   " refers to point " + std::to_string(id) + "; expected 0.." +
+                                                   std::to_string(point_count - 1) + " (the block has " +
+                                                   std::to_string(point_count) + " points)");
+      *out++ = static_cast<std::uint32_t>(id);
+    }
+    part.offsets[static_cast<std::size_t>(cell) + 1] = static_cast<std::uint32_t>(end);
+  }
+}
+
+Part extract_polygons(vtkSmartPointer<vtkDataSet> surface, std::uint32_t location, const std::string& file,
+                      const std::string& location_name) {
+  Part part;
+  part.surface = std::move(surface);
+  part.location = location;
+  vtkCellArray* polys = vtkPolyData::SafeDownCast(part.surface)->GetPolys();
+  const vtkIdType point_count = part.surface->GetNumberOfPoints();
+  if (polys->IsStorage64Bit())
+    copy_polygons(polys->GetOffsetsArray64(), polys->GetConnectivityArray64(), point_count, part, file,
+                  location_name);
+  else
+    copy_polygons(polys->GetOffsetsArray32(), polys->GetConnectivityArray32(), point_count, part, file,
+                  location_name);
+  return part;
 }
 
 Part extract_faces(vtkSmartPointer<vtkDataSet> surface, std::uint32_t location, const std::string& file,
@@ -1592,6 +1655,40 @@ void check_tuple_count(vtkDataArray* array, vtkIdType expected, const std::strin
                                                std::to_string(expected) + " (one per " + per + ")");
 }
 
+/// Appends all values of a float or double array in one pass; false for
+/// other value types (the caller then goes through GetComponent).
+template <typename Array>
+bool append_typed(vtkDataArray* array, std::vector<double>& out) {
+  auto* typed = Array::SafeDownCast(array);
+  if (typed == nullptr) return false;
+  const auto* values = typed->GetPointer(0);
+  const auto count = static_cast<std::size_t>(typed->GetNumberOfValues());
+  reserve_with_huge_pages(out, out.size() + count);
+  out.insert(out.end(), values, values + count);
+  return true;
+}
+
+bool append_values(vtkDataArray* array, std::vector<double>& out) {
+  return append_typed<vtkDoubleArray>(array, out) || append_typed<vtkFloatArray>(array, out);
+}
+
+/// The values of the cells that became faces, in face order.
+template <typename Array>
+bool append_cells_typed(vtkDataArray* array, const std::vector<vtkIdType>& cells, std::vector<double>& out) {
+  auto* typed = Array::SafeDownCast(array);
+  if (typed == nullptr) return false;
+  const auto* values = typed->GetPointer(0);
+  const auto components = static_cast<std::size_t>(typed->GetNumberOfComponents());
+  out.reserve(out.size() + cells.size() * components);
+  for (const vtkIdType cell : cells)
+    for (std::size_t c = 0; c < components; ++c) out.push_back(values[static_cast<std::size_t>(cell) * components + c]);
+  return true;
+}
+
+bool append_cell_values(vtkDataArray* array, const std::vector<vtkIdType>& cells, std::vector<double>& out) {
+  return append_cells_typed<vtkDoubleArray>(array, cells, out) || append_cells_typed<vtkFloatArray>(array, cells, out);
+}
+
 /// Appends the arrays that every part holds under the same name with the same
 /// number of components; the first part decides the order.
 void append_fields(const std::vector<Part>& parts, const std::vector<std::string>& location_names,
@@ -1617,12 +1714,19 @@ void append_fields(const std::vector<Part>& parts, const std::vector<std::string
       const std::string& location = location_names[part.location];
       if (association == FieldAssociation::Point) {
         check_tuple_count(array, part.surface->GetNumberOfPoints(), file, location, "point");
-        for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
-          for (int c = 0; c < components; ++c) field.values.push_back(array->GetComponent(t, c));
+        if (!append_values(array, field.values))
+          for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+            for (int c = 0; c < components; ++c) field.values.push_back(array->GetComponent(t, c));
       } else {
         check_tuple_count(array, part.surface->GetNumberOfCells(), file, location, "cell");
-        for (const vtkIdType cell : part.face_cell)
-          for (int c = 0; c < components; ++c) field.values.push_back(array->GetComponent(cell, c));
+        if (part.cells_are_faces) {
+          if (!append_values(array, field.values))
+            for (vtkIdType cell = 0; cell < array->GetNumberOfTuples(); ++cell)
+              for (int c = 0; c < components; ++c) field.values.push_back(array->GetComponent(cell, c));
+        } else if (!append_cell_values(array, part.face_cell, field.values)) {
+          for (const vtkIdType cell : part.face_cell)
+            for (int c = 0; c < components; ++c) field.values.push_back(array->GetComponent(cell, c));
+        }
       }
     }
     mesh.fields.push_back(std::move(field));
@@ -1671,6 +1775,14 @@ SurfaceMesh read_vtk_surface(const std::filesystem::path& file, const VtkSurface
   std::vector<Part> parts;
   for (const auto& leaf : leaves) {
     if (leaf.data == nullptr || !selected(leaf)) continue;
+    const auto location = static_cast<std::uint32_t>(
+        std::find(mesh.location_names.begin(), mesh.location_names.end(), leaf.location) -
+        mesh.location_names.begin());
+    if (!leaf.patch && polygons_only(leaf.data)) {
+      Part part = extract_polygons(leaf.data, location, file_name, leaf.location);
+      if (part.face_count() > 0) parts.push_back(std::move(part));
+      continue;
+    }
     check_point_indices(leaf.data, file_name, leaf.location);
     vtkSmartPointer<vtkDataSet> surface = leaf.data;
     if (leaf.patch) {
@@ -1682,9 +1794,6 @@ SurfaceMesh read_vtk_surface(const std::filesystem::path& file, const VtkSurface
                                                         "': VTK could not extract the boundary surface: " +
                                                         summarize_vtk_messages(capture.errors()));
     }
-    const auto location = static_cast<std::uint32_t>(
-        std::find(mesh.location_names.begin(), mesh.location_names.end(), leaf.location) -
-        mesh.location_names.begin());
     Part part = extract_faces(surface, location, file_name, leaf.location);
     if (part.face_count() > 0) parts.push_back(std::move(part));
   }
@@ -1703,15 +1812,23 @@ SurfaceMesh read_vtk_surface(const std::filesystem::path& file, const VtkSurface
   check_fits_uint32(point_total, file_name, "points");
   check_fits_uint32(index_total, file_name, "face point indices");
 
-  mesh.points_xyz.reserve(3 * point_total);
-  mesh.face_indices.reserve(index_total);
+  std::size_t face_total = 0;
+  for (const auto& part : parts) face_total += part.face_count();
+  reserve_with_huge_pages(mesh.points_xyz, 3 * point_total);
+  reserve_with_huge_pages(mesh.face_indices, index_total);
+  reserve_with_huge_pages(mesh.face_offsets, face_total + 1);
+  reserve_with_huge_pages(mesh.face_location, face_total);
   for (const auto& part : parts) {
     const auto first_point = static_cast<std::uint32_t>(mesh.point_count());
     const auto first_index = static_cast<std::uint32_t>(mesh.face_indices.size());
-    double xyz[3];
-    for (vtkIdType p = 0; p < part.surface->GetNumberOfPoints(); ++p) {
-      part.surface->GetPoint(p, xyz);
-      mesh.points_xyz.insert(mesh.points_xyz.end(), xyz, xyz + 3);
+    vtkPointSet* point_set = vtkPointSet::SafeDownCast(part.surface);
+    vtkDataArray* coordinates = point_set && point_set->GetPoints() ? point_set->GetPoints()->GetData() : nullptr;
+    if (!coordinates || !append_values(coordinates, mesh.points_xyz)) {
+      double xyz[3];
+      for (vtkIdType p = 0; p < part.surface->GetNumberOfPoints(); ++p) {
+        part.surface->GetPoint(p, xyz);
+        mesh.points_xyz.insert(mesh.points_xyz.end(), xyz, xyz + 3);
+      }
     }
     for (const auto index : part.indices) mesh.face_indices.push_back(first_point + index);
     for (std::size_t f = 1; f < part.offsets.size(); ++f) mesh.face_offsets.push_back(first_index + part.offsets[f]);

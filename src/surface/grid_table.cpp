@@ -1,0 +1,620 @@
+#include "src/surface/grid_table.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+
+namespace {
+
+std::string format_number(double value) {
+  std::array<char, 32> buffer{};
+  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  if (ec != std::errc()) return "?";
+  return std::string(buffer.data(), end);
+}
+
+bool is_cubic(Interpolation method) {
+  return method == Interpolation::Pchip || method == Interpolation::Akima || method == Interpolation::NaturalSpline;
+}
+
+std::string quoted(std::string_view name) { return "'" + std::string(name) + "'"; }
+
+// ---- 1-D slope rules: y at breakpoints x (n >= 3) -> slope d at every breakpoint.
+
+double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
+
+// Shape-preserving three-point end slope (MATLAB pchip, SciPy PchipInterpolator).
+// h0, del0: the end interval and its secant; h1, del1: the next ones.
+double pchip_end_slope(double h0, double h1, double del0, double del1) {
+  double d = ((2.0 * h0 + h1) * del0 - h0 * del1) / (h0 + h1);
+  if (sign(d) != sign(del0)) {
+    d = 0.0;
+  } else if (sign(del0) != sign(del1) && std::abs(d) > std::abs(3.0 * del0)) {
+    d = 3.0 * del0;
+  }
+  return d;
+}
+
+void pchip_slopes(std::span<const double> x, std::span<const double> y, std::span<double> d, std::span<double> h,
+                  std::span<double> del) {
+  const std::size_t n = x.size();
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    h[i] = x[i + 1] - x[i];
+    del[i] = (y[i + 1] - y[i]) / h[i];
+  }
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double left = del[i - 1];
+    const double right = del[i];
+    if (left == 0.0 || right == 0.0 || (left > 0.0) != (right > 0.0)) {
+      d[i] = 0.0;
+    } else {
+      // Weighted harmonic mean (Fritsch & Butland 1984): the weights favour the shorter interval's secant.
+      const double w_left = h[i - 1] + 2.0 * h[i];
+      const double w_right = 2.0 * h[i - 1] + h[i];
+      d[i] = (w_left + w_right) / (w_left / left + w_right / right);
+    }
+  }
+  d[0] = pchip_end_slope(h[0], h[1], del[0], del[1]);
+  d[n - 1] = pchip_end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
+}
+
+// Modified Akima. ext holds the n - 1 secants with two extrapolated ones on each side:
+// ext[j + 2] is the secant of interval j, j = -2 .. n.
+void makima_slopes(std::span<const double> x, std::span<const double> y, std::span<double> d, std::span<double> ext) {
+  const std::size_t n = x.size();
+  for (std::size_t i = 0; i + 1 < n; ++i) ext[i + 2] = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
+  ext[1] = 2.0 * ext[2] - ext[3];
+  ext[0] = 2.0 * ext[1] - ext[2];
+  ext[n + 1] = 2.0 * ext[n] - ext[n - 1];
+  ext[n + 2] = 2.0 * ext[n + 1] - ext[n];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double far_left = ext[i];       // secant i - 2
+    const double left = ext[i + 1];       // secant i - 1
+    const double right = ext[i + 2];      // secant i
+    const double far_right = ext[i + 3];  // secant i + 1
+    const double w_left = std::abs(left - far_left) + 0.5 * std::abs(left + far_left);
+    const double w_right = std::abs(far_right - right) + 0.5 * std::abs(far_right + right);
+    const double sum = w_left + w_right;
+    d[i] = sum == 0.0 ? 0.0 : (w_right * left + w_left * right) / sum;
+  }
+}
+
+// Natural cubic spline: second derivatives m with m[0] = m[n-1] = 0 from the
+// tridiagonal continuity equations (Thomas algorithm), then the end slopes of
+// each cubic piece.
+void natural_spline_slopes(std::span<const double> x, std::span<const double> y, std::span<double> d,
+                           std::span<double> m, std::span<double> c_prime) {
+  const std::size_t n = x.size();
+  // Unknowns m[1..n-2]: h[i-1] m[i-1] + 2 (h[i-1] + h[i]) m[i] + h[i] m[i+1] = 6 (del[i] - del[i-1]).
+  m[0] = 0.0;
+  m[n - 1] = 0.0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double h_left = x[i] - x[i - 1];
+    const double h_right = x[i + 1] - x[i];
+    const double rhs = 6.0 * ((y[i + 1] - y[i]) / h_right - (y[i] - y[i - 1]) / h_left);
+    const double sub = i > 1 ? h_left : 0.0;
+    const double diag = 2.0 * (h_left + h_right) - sub * (i > 1 ? c_prime[i - 1] : 0.0);
+    c_prime[i] = h_right / diag;
+    m[i] = (rhs - sub * m[i - 1]) / diag;
+  }
+  for (std::size_t i = n - 2; i >= 1; --i) {
+    if (i + 2 < n) m[i] -= c_prime[i] * m[i + 1];
+  }
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double h = x[i + 1] - x[i];
+    d[i] = (y[i + 1] - y[i]) / h - h * (2.0 * m[i] + m[i + 1]) / 6.0;
+  }
+  const double h_last = x[n - 1] - x[n - 2];
+  d[n - 1] = (y[n - 1] - y[n - 2]) / h_last + h_last * (m[n - 2] + 2.0 * m[n - 1]) / 6.0;
+}
+
+// ---- Per-axis weights of the local sum.
+
+// Cubic Hermite basis on a cell of width h at t = (x - x_i) / h, in term order
+// (corner 0 value, corner 0 slope, corner 1 value, corner 1 slope); slope
+// terms carry h so that they multiply d/dx in axis units.
+inline void hermite_weights(double t, double h, double* w) {
+  const double t2 = t * t;
+  const double t3 = t2 * t;
+  w[0] = 2.0 * t3 - 3.0 * t2 + 1.0;
+  w[1] = h * (t3 - 2.0 * t2 + t);
+  w[2] = 3.0 * t2 - 2.0 * t3;
+  w[3] = h * (t3 - t2);
+}
+
+// d/dx of hermite_weights.
+inline void hermite_derivative_weights(double t, double h, double* dw) {
+  const double t2 = t * t;
+  dw[0] = 6.0 * (t2 - t) / h;
+  dw[1] = 3.0 * t2 - 4.0 * t + 1.0;
+  dw[2] = 6.0 * (t - t2) / h;
+  dw[3] = 3.0 * t2 - 2.0 * t;
+}
+
+// ---- The local sum, with the axis count N and the terms per axis K known at compile time.
+
+constexpr std::size_t power(std::size_t base, std::size_t exponent) {
+  std::size_t result = 1;
+  for (std::size_t i = 0; i < exponent; ++i) result *= base;
+  return result;
+}
+
+// M outputs at once. The weight of term t = t_inner + e * kInner is
+// inner_weights[t_inner] * last[e] (last: the last axis's weights), so
+// out[j * out_stride] = sum_e last[e] sum_t_inner inner_weights[t_inner] * data[offsets[t] + j].
+template <std::size_t M, std::size_t kInner, std::size_t K>
+inline void accumulate(const double* inner_weights, const double* last, const std::size_t* offsets, const double* data,
+                       double* out, std::size_t out_stride) {
+  std::array<double, M> total{};
+  for (std::size_t e = 0; e < K; ++e) {
+    std::array<double, M> part{};
+    const std::size_t* term_offsets = offsets + e * kInner;
+    for (std::size_t t = 0; t < kInner; ++t) {
+      const double* row = data + term_offsets[t];
+      const double w = inner_weights[t];
+      for (std::size_t j = 0; j < M; ++j) part[j] += w * row[j];
+    }
+    for (std::size_t j = 0; j < M; ++j) total[j] += last[e] * part[j];
+  }
+  for (std::size_t j = 0; j < M; ++j) out[j * out_stride] = total[j];
+}
+
+template <std::size_t N, std::size_t K>
+void sum_terms(const double* axis_weights, std::size_t replaced, const double* replacement, const std::size_t* offsets,
+               const double* data, std::size_t count, double* out, std::size_t out_stride) {
+  // The product of the weights of axes 0 .. N-2, inner[t] = prod_a w_a[e_a]
+  // with t = sum_a e_a K^a, built one axis at a time; the last axis's weights
+  // multiply partial sums instead, which saves K^N multiplications.
+  constexpr std::size_t kInner = power(K, N - 1);
+  std::array<double, kInner> inner;
+  inner[0] = 1.0;
+  std::size_t length = 1;
+  for (std::size_t a = 0; a + 1 < N; ++a) {
+    const double* w = a == replaced ? replacement : axis_weights + 4 * a;
+    for (std::size_t e = K; e-- > 1;) {
+      for (std::size_t j = 0; j < length; ++j) inner[e * length + j] = inner[j] * w[e];
+    }
+    for (std::size_t j = 0; j < length; ++j) inner[j] *= w[0];
+    length *= K;
+  }
+  const double* last = N - 1 == replaced ? replacement : axis_weights + 4 * (N - 1);
+  std::size_t k = 0;
+  for (; k + 4 <= count; k += 4) {
+    accumulate<4, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
+  }
+  if (count - k >= 2) {
+    accumulate<2, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
+    k += 2;
+  }
+  if (k < count) accumulate<1, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
+}
+
+template <std::size_t K, std::size_t... N>
+constexpr std::array<void (*)(const double*, std::size_t, const double*, const std::size_t*, const double*, std::size_t,
+                              double*, std::size_t),
+                     sizeof...(N)>
+kernels_for(std::index_sequence<N...>) {
+  return {&sum_terms<N + 1, K>...};
+}
+
+}  // namespace
+
+std::string_view interpolation_name(Interpolation method) {
+  switch (method) {
+    case Interpolation::Nearest:
+      return "nearest";
+    case Interpolation::Linear:
+      return "linear";
+    case Interpolation::Pchip:
+      return "pchip";
+    case Interpolation::Akima:
+      return "makima";
+    case Interpolation::NaturalSpline:
+      return "natural-spline";
+  }
+  return "?";
+}
+
+Interpolation parse_interpolation(std::string_view text) {
+  for (Interpolation method : {Interpolation::Nearest, Interpolation::Linear, Interpolation::Pchip,
+                               Interpolation::Akima, Interpolation::NaturalSpline}) {
+    if (text == interpolation_name(method)) return method;
+  }
+  throw InputError("unknown interpolation method " + quoted(text) +
+                   "; expected nearest, linear, pchip, makima or natural-spline");
+}
+
+std::string_view extrapolation_name(Extrapolation policy) {
+  switch (policy) {
+    case Extrapolation::Error:
+      return "error";
+    case Extrapolation::Clamp:
+      return "clamp";
+    case Extrapolation::Linear:
+      return "linear";
+    case Extrapolation::Method:
+      return "method";
+  }
+  return "?";
+}
+
+Extrapolation parse_extrapolation(std::string_view text) {
+  for (Extrapolation policy :
+       {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
+    if (text == extrapolation_name(policy)) return policy;
+  }
+  throw InputError("unknown extrapolation policy " + quoted(text) + "; expected error, clamp, linear or method");
+}
+
+// Where a query falls: the base offset of its cell (or node, for Nearest) in
+// the evaluated array and the per-axis term weights and their derivatives.
+// Only the first K entries of each used axis's weights are written and read.
+struct GridTable::Location {
+  std::size_t base;
+  std::array<double, 4 * kMaxGridAxes> weights;
+  std::array<double, 4 * kMaxGridAxes> derivative_weights;
+};
+
+GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> outputs, std::vector<double> values,
+                     Interpolation method)
+    : axes_(std::move(axes)), outputs_(std::move(outputs)), values_(std::move(values)), method_(method) {
+  const std::size_t n = axes_.size();
+  if (n < 1 || n > kMaxGridAxes) {
+    throw InputError("a grid table has " + std::to_string(n) + " axes; expected 1 to " + std::to_string(kMaxGridAxes));
+  }
+  const bool cubic = is_cubic(method_);
+  const std::size_t min_points = cubic ? 3 : 2;
+  node_count_ = 1;
+  for (std::size_t a = 0; a < n; ++a) {
+    const GridAxis& axis = axes_[a];
+    if (axis.name.empty()) throw InputError("axis " + std::to_string(a) + " has an empty name; expected a name");
+    for (std::size_t b = 0; b < a; ++b) {
+      if (axes_[b].name == axis.name) {
+        throw InputError("axis name " + quoted(axis.name) + " is used by axes " + std::to_string(b) + " and " +
+                         std::to_string(a) + "; expected unique axis names");
+      }
+    }
+    const std::vector<double>& x = axis.breakpoints;
+    if (x.size() < min_points) {
+      throw InputError("axis " + quoted(axis.name) + " has " + std::to_string(x.size()) +
+                       " breakpoints; expected at least " + std::to_string(min_points) + " for " +
+                       std::string(interpolation_name(method_)) + " interpolation" +
+                       (cubic ? " (cubic methods need 3)" : ""));
+    }
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (!std::isfinite(x[i])) {
+        throw InputError("axis " + quoted(axis.name) + " breakpoint " + std::to_string(i) + " is " +
+                         format_number(x[i]) + "; expected a finite number");
+      }
+      if (i > 0 && !(x[i] > x[i - 1])) {
+        throw InputError("axis " + quoted(axis.name) + " breakpoint " + std::to_string(i) + " (" + format_number(x[i]) +
+                         ") is not greater than breakpoint " + std::to_string(i - 1) + " (" + format_number(x[i - 1]) +
+                         "); expected strictly increasing breakpoints");
+      }
+    }
+    AxisLookup& lookup = lookup_[a];
+    lookup.lo = x.front();
+    lookup.hi = x.back();
+    lookup.count = x.size();
+    lookup.node_stride = node_count_;
+    lookup.offset = breakpoints_.size();
+    breakpoints_.insert(breakpoints_.end(), x.begin(), x.end());
+    lookup.extrapolation = axis.extrapolation;
+    const double step = (lookup.hi - lookup.lo) / static_cast<double>(x.size() - 1);
+    const double tolerance = 1e-12 * std::max(std::abs(lookup.lo), std::abs(lookup.hi));
+    // The direct index is corrected by one cell at most, so "even" also needs
+    // the tolerance to be well below the spacing.
+    bool even = tolerance < 0.25 * step;
+    for (std::size_t i = 0; i < x.size() && even; ++i) {
+      even = std::abs(x[i] - (lookup.lo + static_cast<double>(i) * step)) <= tolerance;
+    }
+    lookup.even = even;
+    lookup.inv_step = 1.0 / step;
+    if (node_count_ > values_.max_size() / x.size()) {
+      throw InputError("a grid table of this size has too many nodes; expected fewer breakpoints");
+    }
+    node_count_ *= x.size();
+  }
+
+  if (outputs_.empty()) throw InputError("a grid table has no outputs; expected at least one output name");
+  for (std::size_t k = 0; k < outputs_.size(); ++k) {
+    if (outputs_[k].empty()) {
+      throw InputError("output " + std::to_string(k) + " has an empty name; expected a name");
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (outputs_[j] == outputs_[k]) {
+        throw InputError("output name " + quoted(outputs_[k]) + " is used by outputs " + std::to_string(j) + " and " +
+                         std::to_string(k) + "; expected unique output names");
+      }
+    }
+  }
+  const std::size_t n_out = outputs_.size();
+  if (values_.size() / n_out != node_count_ || values_.size() % n_out != 0) {
+    std::string shape;
+    for (std::size_t a = 0; a < n; ++a) shape += (a > 0 ? " x " : "") + std::to_string(lookup_[a].count);
+    throw InputError("a grid table has " + std::to_string(values_.size()) + " values; expected " +
+                     std::to_string(node_count_ * n_out) + " (" + shape + " nodes x " + std::to_string(n_out) +
+                     " outputs)");
+  }
+  for (std::size_t index = 0; index < values_.size(); ++index) {
+    if (std::isfinite(values_[index])) continue;
+    std::size_t node = index / n_out;
+    std::string at;
+    for (std::size_t a = 0; a < n; ++a) {
+      at += (a > 0 ? ", " : "") + axes_[a].name + "[" + std::to_string(node % lookup_[a].count) + "]";
+      node /= lookup_[a].count;
+    }
+    throw InputError("value of output " + quoted(outputs_[index % n_out]) + " at node (" + at + ") (values index " +
+                     std::to_string(index) + ") is " + format_number(values_[index]) + "; expected a finite number");
+  }
+
+  // Derivative tables for the cubic methods.
+  const std::size_t subsets = cubic ? (std::size_t{1} << n) : 1;
+  node_block_ = subsets * n_out;
+  if (cubic) {
+    hermite_.assign(node_count_ * node_block_, 0.0);
+    for (std::size_t node = 0; node < node_count_; ++node) {
+      std::copy_n(values_.begin() + static_cast<std::ptrdiff_t>(node * n_out), n_out,
+                  hermite_.begin() + static_cast<std::ptrdiff_t>(node * node_block_));
+    }
+    std::size_t longest = 0;
+    for (const AxisLookup& lookup : lookup_) longest = std::max(longest, lookup.count);
+    std::vector<double> y(longest);
+    std::vector<double> d(longest);
+    std::vector<double> scratch_a(longest + 3);
+    std::vector<double> scratch_b(longest + 3);
+    // Subset S gets its derivative along its highest axis from subset S minus that axis.
+    for (std::size_t subset = 1; subset < subsets; ++subset) {
+      std::size_t a = 0;
+      while ((subset >> (a + 1)) != 0) ++a;
+      const std::size_t from = subset & ~(std::size_t{1} << a);
+      const AxisLookup& lookup = lookup_[a];
+      const std::size_t count = lookup.count;
+      const std::size_t stride = lookup.node_stride;
+      const std::span<const double> x(axes_[a].breakpoints);
+      const std::span<double> ys(y.data(), count);
+      const std::span<double> ds(d.data(), count);
+      for (std::size_t outer = 0; outer < node_count_; outer += stride * count) {
+        for (std::size_t inner = 0; inner < stride; ++inner) {
+          const std::size_t first = outer + inner;
+          for (std::size_t k = 0; k < n_out; ++k) {
+            for (std::size_t i = 0; i < count; ++i) {
+              ys[i] = hermite_[(first + i * stride) * node_block_ + from * n_out + k];
+            }
+            switch (method_) {
+              case Interpolation::Pchip:
+                pchip_slopes(x, ys, ds, scratch_a, scratch_b);
+                break;
+              case Interpolation::Akima:
+                makima_slopes(x, ys, ds, scratch_a);
+                break;
+              default:
+                natural_spline_slopes(x, ys, ds, scratch_a, scratch_b);
+                break;
+            }
+            for (std::size_t i = 0; i < count; ++i) {
+              hermite_[(first + i * stride) * node_block_ + subset * n_out + k] = ds[i];
+            }
+          }
+        }
+      }
+    }
+  }
+
+  // Offsets of the local sum's terms from the cell base.
+  terms_per_axis_ = method_ == Interpolation::Nearest ? 1 : (cubic ? 4 : 2);
+  std::array<std::array<std::size_t, 4>, kMaxGridAxes> axis_offsets{};
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t next_node = lookup_[a].node_stride * node_block_;
+    if (cubic) {
+      const std::size_t slope = (std::size_t{1} << a) * n_out;
+      axis_offsets[a] = {0, slope, next_node, next_node + slope};
+    } else {
+      axis_offsets[a] = {0, next_node, 0, 0};
+    }
+  }
+  std::size_t terms = 1;
+  for (std::size_t a = 0; a < n; ++a) terms *= terms_per_axis_;
+  term_offsets_.assign(terms, 0);
+  for (std::size_t t = 0; t < terms; ++t) {
+    std::size_t rest = t;
+    for (std::size_t a = 0; a < n; ++a) {
+      term_offsets_[t] += axis_offsets[a][rest % terms_per_axis_];
+      rest /= terms_per_axis_;
+    }
+  }
+  static constexpr auto kNearest = kernels_for<1>(std::make_index_sequence<kMaxGridAxes>());
+  static constexpr auto kLinear = kernels_for<2>(std::make_index_sequence<kMaxGridAxes>());
+  static constexpr auto kCubic = kernels_for<4>(std::make_index_sequence<kMaxGridAxes>());
+  sum_ = (terms_per_axis_ == 1 ? kNearest : (terms_per_axis_ == 2 ? kLinear : kCubic))[n - 1];
+}
+
+bool GridTable::evenly_spaced(std::size_t axis) const {
+  if (axis >= axes_.size()) {
+    throw std::out_of_range("GridTable::evenly_spaced: axis " + std::to_string(axis) +
+                            " is out of range; the table has " + std::to_string(axes_.size()) + " axes");
+  }
+  return lookup_[axis].even;
+}
+
+std::size_t GridTable::output_index(std::string_view name) const {
+  for (std::size_t k = 0; k < outputs_.size(); ++k) {
+    if (outputs_[k] == name) return k;
+  }
+  std::string names;
+  for (std::size_t k = 0; k < outputs_.size(); ++k) names += (k > 0 ? ", " : "") + outputs_[k];
+  throw InputError("no output named " + quoted(name) + "; expected one of " + names);
+}
+
+void GridTable::check_point(std::span<const double> point) const {
+  if (point.size() != axes_.size()) {
+    throw InputError("a query point has " + std::to_string(point.size()) + " coordinates; expected " +
+                     std::to_string(axes_.size()) + " (one per axis)");
+  }
+}
+
+void GridTable::throw_outside(std::size_t axis, double value) const {
+  if (!std::isfinite(value)) {
+    throw InputError("axis " + quoted(axes_[axis].name) + " = " + format_number(value) +
+                     " is not a number; expected a finite value");
+  }
+  throw InputError("axis " + quoted(axes_[axis].name) + " = " + format_number(value) + " is outside [" +
+                   format_number(lookup_[axis].lo) + ", " + format_number(lookup_[axis].hi) +
+                   "]; expected a value in range (or an extrapolation policy)");
+}
+
+template <std::size_t K, bool WithGradient>
+void GridTable::locate(std::span<const double> point, Location& location) const {
+  std::size_t base_node = 0;
+  const double* all_breakpoints = breakpoints_.data();
+  for (std::size_t a = 0; a < point.size(); ++a) {
+    const AxisLookup& axis = lookup_[a];
+    const double* x = all_breakpoints + axis.offset;
+    const std::size_t last_cell = axis.count - 2;
+    double* w = location.weights.data() + 4 * a;
+    double* dw = location.derivative_weights.data() + 4 * a;
+    double value = point[a];
+    std::size_t cell = 0;
+    if (value >= axis.lo && value <= axis.hi) [[likely]] {
+      if (axis.even) {
+        cell = std::min(static_cast<std::size_t>((value - axis.lo) * axis.inv_step), last_cell);
+        // Rounding in the breakpoints or the product can put the index one cell off.
+        if (value < x[cell]) {
+          --cell;
+        } else if (cell < last_cell && value >= x[cell + 1]) {
+          ++cell;
+        }
+      } else {
+        // Branch-free binary search for the last breakpoint <= value among x[0 .. count-2].
+        const double* first = x;
+        std::size_t length = axis.count - 1;
+        while (length > 1) {
+          const std::size_t half = length / 2;
+          first = first[half] <= value ? first + half : first;
+          length -= half;
+        }
+        cell = static_cast<std::size_t>(first - x);
+      }
+    } else {
+      // NaN, infinite or outside the breakpoints.
+      if (!std::isfinite(value) || axis.extrapolation == Extrapolation::Error) throw_outside(a, value);
+      const bool below = value < axis.lo;
+      cell = below ? 0 : last_cell;
+      Extrapolation policy = axis.extrapolation;
+      if (K == 1) policy = Extrapolation::Clamp;  // a constant's own continuation and its slope are both flat
+      if (K == 2 && policy == Extrapolation::Linear) policy = Extrapolation::Method;  // the same line
+      if (policy == Extrapolation::Clamp) {
+        // The end node's value alone; flat along this axis.
+        base_node += (K == 1 && !below ? cell + 1 : cell) * axis.node_stride;
+        const std::size_t end = below || K == 1 ? 0 : (K == 4 ? 2 : 1);
+        for (std::size_t e = 0; e < K; ++e) {
+          w[e] = e == end ? 1.0 : 0.0;
+          if constexpr (WithGradient) dw[e] = 0.0;
+        }
+        continue;
+      }
+      if (K == 4 && policy == Extrapolation::Linear) {
+        // End value plus end slope times the distance beyond the end.
+        base_node += cell * axis.node_stride;
+        const double distance = value - (below ? axis.lo : axis.hi);
+        const std::size_t end = below ? 0 : 2;
+        for (std::size_t e = 0; e < K; ++e) {
+          w[e] = e == end ? 1.0 : (e == end + 1 ? distance : 0.0);
+          if constexpr (WithGradient) dw[e] = e == end + 1 ? 1.0 : 0.0;
+        }
+        continue;
+      }
+      // Extrapolation::Method: the end cell's polynomial at t outside [0, 1].
+    }
+    const double h = x[cell + 1] - x[cell];
+    const double t = (value - x[cell]) / h;
+    if constexpr (K == 1) {
+      base_node += (t >= 0.5 ? cell + 1 : cell) * axis.node_stride;
+      w[0] = 1.0;
+      if constexpr (WithGradient) dw[0] = 0.0;
+    } else if constexpr (K == 2) {
+      base_node += cell * axis.node_stride;
+      w[0] = 1.0 - t;
+      w[1] = t;
+      if constexpr (WithGradient) {
+        dw[0] = -1.0 / h;
+        dw[1] = 1.0 / h;
+      }
+    } else {
+      base_node += cell * axis.node_stride;
+      hermite_weights(t, h, w);
+      if constexpr (WithGradient) hermite_derivative_weights(t, h, dw);
+    }
+  }
+  location.base = base_node * node_block_;
+}
+
+template <bool WithGradient>
+void GridTable::locate_any(std::span<const double> point, Location& location) const {
+  switch (terms_per_axis_) {
+    case 1:
+      locate<1, WithGradient>(point, location);
+      break;
+    case 2:
+      locate<2, WithGradient>(point, location);
+      break;
+    default:
+      locate<4, WithGradient>(point, location);
+      break;
+  }
+}
+
+void GridTable::evaluate(std::span<const double> point, std::span<double> out) const {
+  check_point(point);
+  if (out.size() != outputs_.size()) {
+    throw std::invalid_argument("GridTable::evaluate: out has " + std::to_string(out.size()) + " entries; expected " +
+                                std::to_string(outputs_.size()));
+  }
+  Location location;
+  locate_any<false>(point, location);
+  const double* data = (hermite_.empty() ? values_.data() : hermite_.data()) + location.base;
+  sum_(location.weights.data(), kMaxGridAxes, nullptr, term_offsets_.data(), data, out.size(), out.data(), 1);
+}
+
+void GridTable::evaluate_with_gradient(std::span<const double> point, std::span<double> out,
+                                       std::span<double> gradient) const {
+  check_point(point);
+  const std::size_t n = axes_.size();
+  const std::size_t n_out = outputs_.size();
+  if (out.size() != n_out || gradient.size() != n_out * n) {
+    throw std::invalid_argument("GridTable::evaluate_with_gradient: out has " + std::to_string(out.size()) +
+                                " and gradient " + std::to_string(gradient.size()) + " entries; expected " +
+                                std::to_string(n_out) + " and " + std::to_string(n_out * n));
+  }
+  Location location;
+  locate_any<true>(point, location);
+  const double* data = (hermite_.empty() ? values_.data() : hermite_.data()) + location.base;
+  sum_(location.weights.data(), kMaxGridAxes, nullptr, term_offsets_.data(), data, n_out, out.data(), 1);
+  for (std::size_t a = 0; a < n; ++a) {
+    sum_(location.weights.data(), a, location.derivative_weights.data() + 4 * a, term_offsets_.data(), data, n_out,
+         gradient.data() + a, n);
+  }
+}
+
+double GridTable::evaluate_one(std::span<const double> point, std::size_t output) const {
+  check_point(point);
+  if (output >= outputs_.size()) {
+    throw std::out_of_range("GridTable::evaluate_one: output " + std::to_string(output) +
+                            " is out of range; the table has " + std::to_string(outputs_.size()) + " outputs");
+  }
+  Location location;
+  locate_any<false>(point, location);
+  const double* data = (hermite_.empty() ? values_.data() : hermite_.data()) + location.base + output;
+  double result = 0.0;
+  sum_(location.weights.data(), kMaxGridAxes, nullptr, term_offsets_.data(), data, 1, &result, 1);
+  return result;
+}
+
+}  // namespace hydrocoef
