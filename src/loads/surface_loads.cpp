@@ -4,10 +4,13 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <functional>
+#include <memory>
 #include <string>
 #include <thread>
 
 #include "src/core/error.hpp"
+#include "src/core/huge_pages.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -345,11 +348,11 @@ struct Integrator {
 };
 
 /// Runs the integration blocks on the calling thread and, for large meshes,
-/// on a second thread that first does `side_work` (the edge topology). Block
-/// results are summed in block order, so the totals do not depend on which
-/// thread ran what.
+/// on a second thread; each thread first does its share of the side work
+/// (the edge topology, split by vertex range). Block results are summed in
+/// block order, so the totals do not depend on which thread ran what.
 template <typename SideWork>
-Sums integrate_blocks(const Integrator& integrator, SideWork side_work) {
+Sums integrate_blocks(const Integrator& integrator, SideWork main_side_work, SideWork helper_side_work) {
   const std::size_t faces = integrator.mesh.face_count();
   const std::size_t blocks = (faces + Integrator::kBlock - 1) / Integrator::kBlock;
   std::vector<Sums> block_sums(blocks);
@@ -361,17 +364,25 @@ Sums integrate_blocks(const Integrator& integrator, SideWork side_work) {
     std::exception_ptr side_error;
     std::thread helper([&] {
       try {
-        side_work();
+        helper_side_work();
       } catch (...) {
         side_error = std::current_exception();
       }
       worker();
     });
+    try {
+      main_side_work();
+    } catch (...) {
+      worker();  // let the helper finish before the error leaves
+      helper.join();
+      throw;
+    }
     worker();
     helper.join();
     if (side_error) std::rethrow_exception(side_error);
   } else {
-    side_work();
+    main_side_work();
+    helper_side_work();
     worker();
   }
   Sums total;
@@ -386,6 +397,9 @@ void check_mesh_indices(const SurfaceMesh& mesh) {
     throw InputError("face offsets end at " + std::to_string(mesh.face_offsets.back()) + " but there are " +
                      std::to_string(mesh.face_indices.size()) + " face indices");
   const std::size_t points = mesh.point_count();
+  // Edge entries pack a point index and a direction bit into 32 bits.
+  if (points >= (std::size_t{1} << 31))
+    throw InputError("the surface has " + std::to_string(points) + " points; expected fewer than 2^31");
   for (std::size_t i = 0; i < mesh.face_indices.size(); ++i)
     if (mesh.face_indices[i] >= points)
       throw InputError("a face refers to point " + std::to_string(mesh.face_indices[i]) + " but the surface has " +
@@ -404,53 +418,66 @@ double bounding_box_diagonal(const SurfaceMesh& mesh) {
   return mesh.point_count() ? norm(hi - lo) : 0.0;
 }
 
+/// Edge counts of the edges whose smaller vertex lies in [first, last).
+struct EdgeCounts {
+  std::size_t boundary = 0, nonmanifold = 0, inconsistent = 0;
+};
+
 /// Edge topology: each edge (a, b) is filed under its smaller vertex with
 /// the direction the face walks it; two passes of counting, no sort of the
-/// whole edge list, so this stays linear in the number of faces.
-void count_edges(const SurfaceMesh& mesh, SurfaceGeometry& geometry) {
-  const std::size_t points = mesh.point_count();
-  std::vector<std::uint32_t> start(points + 1, 0);
+/// whole edge list, so this stays linear in the number of faces. Working on a
+/// vertex range lets two threads share the work; entries are 32 bits (the
+/// other vertex and the direction), uninitialised and on huge pages, since
+/// filling them is random access over tens of MB.
+EdgeCounts count_edges(const SurfaceMesh& mesh, std::uint32_t first, std::uint32_t last) {
+  EdgeCounts counts;
+  if (last <= first) return counts;
+  const std::size_t vertices = last - first;
+  std::vector<std::uint32_t> start;
+  reserve_with_huge_pages(start, vertices + 1);
+  start.assign(vertices + 1, 0);
   const std::size_t faces = mesh.face_count();
-  for (std::size_t f = 0; f < faces; ++f) {
-    const std::size_t begin = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - begin;
-    for (std::size_t i = 0; i < k; ++i) {
-      const std::uint32_t a = mesh.face_indices[begin + i], b = mesh.face_indices[begin + (i + 1) % k];
-      if (a != b) ++start[std::min(a, b) + 1];
+  const std::uint32_t* offsets = mesh.face_offsets.data();
+  const std::uint32_t* indices = mesh.face_indices.data();
+  auto for_each_edge = [&](auto&& visit) {
+    for (std::size_t f = 0; f < faces; ++f) {
+      const std::uint32_t begin = offsets[f], end = offsets[f + 1];
+      for (std::uint32_t i = begin; i < end; ++i) {
+        const std::uint32_t a = indices[i], b = indices[i + 1 < end ? i + 1 : begin];
+        const std::uint32_t low = a < b ? a : b;
+        if (a != b && low >= first && low < last) visit(a, b, low - first);
+      }
     }
-  }
-  for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
-  // Each entry packs the other vertex and 1 if the face walks min -> max.
-  std::vector<std::uint64_t> entries(start[points]);
-  for (std::size_t f = 0; f < faces; ++f) {
-    const std::size_t begin = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - begin;
-    for (std::size_t i = 0; i < k; ++i) {
-      const std::uint32_t a = mesh.face_indices[begin + i], b = mesh.face_indices[begin + (i + 1) % k];
-      if (a == b) continue;
-      const std::uint32_t low = std::min(a, b);
-      entries[start[low]++] = (static_cast<std::uint64_t>(std::max(a, b)) << 1) | (a < b ? 1u : 0u);
-    }
-  }
+  };
+  for_each_edge([&](std::uint32_t, std::uint32_t, std::uint32_t v) { ++start[v + 1]; });
+  for (std::size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  const std::size_t total = start[vertices];
+  const std::unique_ptr<std::uint32_t[]> entries(new std::uint32_t[total]);
+  prefer_huge_pages(entries.get(), total * sizeof(std::uint32_t));
+  for_each_edge([&](std::uint32_t a, std::uint32_t b, std::uint32_t v) {
+    entries[start[v]++] = ((a < b ? b : a) << 1) | (a < b ? 1u : 0u);
+  });
   // start[v] now holds the end of v's entries, start[v - 1] their beginning.
   std::uint32_t begin = 0;
-  for (std::size_t v = 0; v < points; ++v) {
+  for (std::size_t v = 0; v < vertices; ++v) {
     const std::uint32_t end = start[v];
-    std::uint64_t* list = entries.data() + begin;
+    std::uint32_t* list = entries.get() + begin;
     const std::size_t n = end - begin;
     for (std::size_t i = 1; i < n; ++i)  // lists hold a handful of edges
       for (std::size_t j = i; j > 0 && list[j] < list[j - 1]; --j) std::swap(list[j], list[j - 1]);
     for (std::size_t i = 0; i < n;) {
       std::size_t j = i;
       unsigned walked_forward = 0;
-      while (j < n && (list[j] >> 1) == (list[i] >> 1)) walked_forward += static_cast<unsigned>(list[j++] & 1u);
+      while (j < n && (list[j] >> 1) == (list[i] >> 1)) walked_forward += list[j++] & 1u;
       const std::size_t uses = j - i;
-      if (uses == 1) ++geometry.boundary_edges;
-      else if (uses > 2) ++geometry.nonmanifold_edges;
-      else if (walked_forward != 1) ++geometry.inconsistent_edges;
+      if (uses == 1) ++counts.boundary;
+      else if (uses > 2) ++counts.nonmanifold;
+      else if (walked_forward != 1) ++counts.inconsistent;
       i = j;
     }
     begin = end;
   }
-  geometry.closed = geometry.boundary_edges == 0 && geometry.nonmanifold_edges == 0;
+  return counts;
 }
 
 void count_shapes(const SurfaceMesh& mesh, SurfaceGeometry& geometry) {
@@ -476,7 +503,18 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   integrator.degenerate_area = 1e-14 * diagonal * diagonal;
 
   SurfaceLoads loads;
-  const Sums sums = integrate_blocks(integrator, [&] { count_edges(mesh, loads.geometry); });
+  // The main thread starts on the faces at once; the helper thread first
+  // walks the edges (measured faster than splitting the edges between the
+  // two: integration is memory-bound and gains from starting early).
+  const auto points = static_cast<std::uint32_t>(mesh.point_count());
+  EdgeCounts low_edges, high_edges;
+  const std::function<void()> nothing = [] {};
+  const std::function<void()> edges = [&] { high_edges = count_edges(mesh, 0, points); };
+  const Sums sums = integrate_blocks(integrator, nothing, edges);
+  loads.geometry.boundary_edges = low_edges.boundary + high_edges.boundary;
+  loads.geometry.nonmanifold_edges = low_edges.nonmanifold + high_edges.nonmanifold;
+  loads.geometry.inconsistent_edges = low_edges.inconsistent + high_edges.inconsistent;
+  loads.geometry.closed = loads.geometry.boundary_edges == 0 && loads.geometry.nonmanifold_edges == 0;
   loads.reference_point = options.reference_point;
   loads.force_pressure = sums.force_p;
   loads.force_viscous = sums.force_v;
