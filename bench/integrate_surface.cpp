@@ -33,6 +33,7 @@
 #include "importers/vtk_surface.hpp"
 #include "src/loads/surface_loads.hpp"
 #include "tests/support/meshes.hpp"
+#include "tests/support/vtk_polydata.hpp"
 
 namespace {
 
@@ -51,28 +52,7 @@ const SurfaceMesh& big_surface() {
 const std::filesystem::path& big_vtp() {
   static const std::filesystem::path path = [] {
     const auto file = std::filesystem::temp_directory_path() / "hydrocoef-bench-sphere.vtp";
-    const SurfaceMesh& mesh = big_surface();
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.point_count()));
-    for (std::size_t i = 0; i < mesh.point_count(); ++i)
-      points->SetPoint(static_cast<vtkIdType>(i), &mesh.points_xyz[3 * i]);
-    vtkNew<vtkCellArray> cells;
-    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-      const vtkIdType ids[3] = {mesh.face_indices[3 * f], mesh.face_indices[3 * f + 1], mesh.face_indices[3 * f + 2]};
-      cells->InsertNextCell(3, ids);
-    }
-    vtkNew<vtkPolyData> poly;
-    poly->SetPoints(points);
-    poly->SetPolys(cells);
-    for (const auto& field : mesh.fields) {
-      vtkNew<vtkDoubleArray> array;
-      array->SetName(field.name.c_str());
-      array->SetNumberOfComponents(field.components);
-      array->SetNumberOfTuples(static_cast<vtkIdType>(field.size()));
-      std::copy(field.values.begin(), field.values.end(), array->GetPointer(0));
-      poly->GetPointData()->AddArray(array);
-    }
+    const auto poly = test::to_vtk_polydata(big_surface());
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetFileName(file.c_str());
     writer->SetInputData(poly);

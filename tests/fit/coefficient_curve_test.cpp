@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/expect_input_error.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -20,16 +22,7 @@
 namespace hydrocoef {
 namespace {
 
-void expect_input_error(const std::function<void()>& action, const std::vector<std::string>& expected) {
-  try {
-    action();
-    ADD_FAILURE() << "expected an InputError mentioning '" << expected.front() << "'";
-  } catch (const InputError& error) {
-    const std::string message = error.what();
-    for (const auto& piece : expected)
-      EXPECT_NE(message.find(piece), std::string::npos) << "message '" << message << "' lacks '" << piece << "'";
-  }
-}
+using test::expect_input_error;
 
 // Surge damping under a sway current v: X = a(v) u + b(v) u|u| with
 // quadratic a and b (coefficients in ascending powers of v).

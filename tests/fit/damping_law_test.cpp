@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/expect_input_error.hpp"
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <fstream>
@@ -53,16 +55,7 @@ Table surge_table() { return read_two_column_csv("examples/asr-v/asr-v-surge-dam
 Table yaw_table() { return read_two_column_csv("examples/asr-v/asr-v-yaw-damping.csv"); }
 
 // Runs `action` and checks it throws InputError whose message contains every `expected` piece.
-void expect_input_error(const std::function<void()>& action, const std::vector<std::string>& expected) {
-  try {
-    action();
-    ADD_FAILURE() << "expected an InputError mentioning '" << expected.front() << "'";
-  } catch (const InputError& error) {
-    const std::string message = error.what();
-    for (const auto& piece : expected)
-      EXPECT_NE(message.find(piece), std::string::npos) << "message '" << message << "' lacks '" << piece << "'";
-  }
-}
+using test::expect_input_error;
 
 TEST(DampingLawFitAsrV, SurgeWithOffsetMatchesPaper) {
   const Table table = surge_table();

@@ -25,6 +25,7 @@
 #include "importers/vtk_surface.hpp"
 #include "src/core/error.hpp"
 #include "tests/support/meshes.hpp"
+#include "tests/support/vtk_polydata.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -112,18 +113,7 @@ TEST(SurfaceLoads, HydrostaticBuoyancyOnAnIcosphereMatchesVtkMassProperties) {
   test::add_point_scalar(mesh, "p", [&](const P3& x) { return -rho * g * x[2]; });
   const auto loads = integrate_surface_loads(mesh, pressure_only());
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();  // VTK's default float32 points would limit the comparison to ~1e-8
-  for (std::size_t i = 0; i < mesh.point_count(); ++i)
-    points->InsertNextPoint(mesh.points_xyz[3 * i], mesh.points_xyz[3 * i + 1], mesh.points_xyz[3 * i + 2]);
-  vtkNew<vtkCellArray> cells;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const vtkIdType ids[3] = {mesh.face_indices[3 * f], mesh.face_indices[3 * f + 1], mesh.face_indices[3 * f + 2]};
-    cells->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetPolys(cells);
+  const auto poly = test::to_vtk_polydata(mesh);
   vtkNew<vtkMassProperties> mass;
   mass->SetInputData(poly);
   mass->Update();
@@ -450,28 +440,7 @@ TEST(SurfaceLoads, AgreesWithVtkIntegrateAttributes) {
   options.shear_fields = {"tau"};
   const auto ours = integrate_surface_loads(mesh, options);
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();  // VTK's default float32 points would limit the comparison to ~1e-8
-  for (std::size_t i = 0; i < mesh.point_count(); ++i)
-    points->InsertNextPoint(mesh.points_xyz[3 * i], mesh.points_xyz[3 * i + 1], mesh.points_xyz[3 * i + 2]);
-  vtkNew<vtkCellArray> cells;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const vtkIdType ids[3] = {mesh.face_indices[3 * f], mesh.face_indices[3 * f + 1], mesh.face_indices[3 * f + 2]};
-    cells->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetPolys(cells);
-  vtkNew<vtkDoubleArray> p, tau;
-  p->SetName("p");
-  tau->SetName("tau");
-  tau->SetNumberOfComponents(3);
-  for (std::size_t i = 0; i < mesh.point_count(); ++i) {
-    p->InsertNextValue(mesh.fields[0].values[i]);
-    tau->InsertNextTuple(&mesh.fields[1].values[3 * i]);
-  }
-  poly->GetPointData()->AddArray(p);
-  poly->GetPointData()->AddArray(tau);
+  const auto poly = test::to_vtk_polydata(mesh);  // with its point arrays p and tau
 
   // Cell normals in double from VTK's own vtkTriangle::ComputeNormal
   // (vtkPolyDataNormals would give float32 normals, good to ~1e-8 only).

@@ -22,6 +22,7 @@
 #include "src/core/error.hpp"
 #include "tests/support/cfdpost_writer.hpp"
 #include "tests/support/meshes.hpp"
+#include "tests/support/vtk_polydata.hpp"
 #include "tests/support/sqlite_dump.hpp"
 
 namespace hydrocoef {
@@ -52,18 +53,6 @@ void fill_vtk(const SurfaceMesh& mesh, Dataset* data) {
       array->InsertNextTuple(&field.values[i * static_cast<std::size_t>(field.components)]);
     data->GetPointData()->AddArray(array);
   }
-}
-
-vtkNew<vtkPolyData> to_polydata(const SurfaceMesh& mesh) {
-  vtkNew<vtkPolyData> poly;
-  fill_vtk(mesh, poly.Get());
-  vtkNew<vtkCellArray> cells;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const vtkIdType ids[3] = {mesh.face_indices[3 * f], mesh.face_indices[3 * f + 1], mesh.face_indices[3 * f + 2]};
-    cells->InsertNextCell(3, ids);
-  }
-  poly->SetPolys(cells);
-  return poly;
 }
 
 /// EnSight Gold through VTK's writer (binary, float32). The writer needs a
@@ -123,7 +112,7 @@ TEST(SurfaceRun, TheSameSurfaceInEveryFormatGivesTheSameForces) {
   mm.shuffle_columns = true;
   std::ofstream(dir / "hull-mm-kpa.csv", std::ios::binary) << test::write_cfdpost_export(mesh, mm);
 
-  auto poly = to_polydata(mesh);
+  const auto poly = test::to_vtk_polydata(mesh);
   vtkNew<vtkXMLPolyDataWriter> xml;
   xml->SetInputData(poly);
   xml->SetFileName((dir / "hull.vtp").c_str());
@@ -161,7 +150,7 @@ TEST(SurfaceRun, TheSameSurfaceInEveryFormatGivesTheSameForces) {
 TEST(SurfaceRun, FramesRotateForcesMomentsAndIntegrals) {
   test::TempDir dir;
   const SurfaceMesh mesh = cfx_like_surface();
-  auto poly = to_polydata(mesh);
+  const auto poly = test::to_vtk_polydata(mesh);
   vtkNew<vtkXMLPolyDataWriter> xml;
   xml->SetInputData(poly);
   xml->SetFileName((dir / "hull.vtp").c_str());

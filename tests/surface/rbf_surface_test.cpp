@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/expect_input_error.hpp"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -82,16 +84,7 @@ std::vector<double> eval(const RbfSurface& surface, std::vector<double> point) {
   return out;
 }
 
-void expect_input_error(const std::function<void()>& action, const std::vector<std::string>& expected) {
-  try {
-    action();
-    ADD_FAILURE() << "expected an InputError mentioning '" << expected.front() << "'";
-  } catch (const InputError& error) {
-    const std::string message = error.what();
-    for (const auto& piece : expected)
-      EXPECT_NE(message.find(piece), std::string::npos) << "message '" << message << "' lacks '" << piece << "'";
-  }
-}
+using test::expect_input_error;
 
 // sin(3u) cos(2v) + u v on [0, 1]^2 and a second output, so that two outputs share one factorization.
 std::vector<double> smooth_pair(const double* x) {
