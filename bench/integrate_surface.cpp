@@ -17,6 +17,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkIntegrateAttributes.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -49,18 +50,41 @@ const SurfaceMesh& big_surface() {
   return mesh;
 }
 
-const std::filesystem::path& big_vtp() {
-  static const std::filesystem::path path = [] {
-    const auto file = std::filesystem::temp_directory_path() / "hydrocoef-bench-sphere.vtp";
-    const auto poly = test::to_vtk_polydata(big_surface());
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(file.c_str());
+/// The surface as a .vtp in one of two layouts:
+///   0: as VTK's own writer writes by default with raw appended data (float64, zlib);
+///   1: as foamToVTK writes a patch (the real exports in shared/data): float32
+///      points and arrays, inline base64, no compression.
+const std::filesystem::path& big_vtp(int layout) {
+  static std::filesystem::path paths[2];
+  std::filesystem::path& path = paths[layout];
+  if (!path.empty()) return path;
+  path = std::filesystem::temp_directory_path() / ("hydrocoef-bench-sphere-" + std::to_string(layout) + ".vtp");
+  auto poly = test::to_vtk_polydata(big_surface());
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetFileName(path.c_str());
+  if (layout == 0) {
     writer->SetInputData(poly);
     writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();  // raw binary, as ParaView writes by default
-    writer->Write();
-    return file;
-  }();
+    writer->EncodeAppendedDataOff();
+  } else {
+    vtkNew<vtkPolyData> single;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToFloat();
+    points->DeepCopy(poly->GetPoints());
+    single->SetPoints(points);
+    single->SetPolys(poly->GetPolys());
+    for (int a = 0; a < poly->GetPointData()->GetNumberOfArrays(); ++a) {
+      vtkDataArray* source = poly->GetPointData()->GetArray(a);
+      vtkNew<vtkFloatArray> array;
+      array->DeepCopy(source);
+      array->SetName(source->GetName());
+      single->GetPointData()->AddArray(array);
+    }
+    writer->SetInputData(single);
+    writer->SetDataModeToBinary();
+    writer->SetCompressorTypeToNone();
+  }
+  writer->Write();
   return path;
 }
 
@@ -81,7 +105,7 @@ void BM_IntegrateTriangles(benchmark::State& state) {
 BENCHMARK(BM_IntegrateTriangles)->Unit(benchmark::kMillisecond);
 
 void BM_VtpReadOnly(benchmark::State& state) {
-  const auto& file = big_vtp();
+  const auto& file = big_vtp(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->SetFileName(file.c_str());
@@ -90,10 +114,10 @@ void BM_VtpReadOnly(benchmark::State& state) {
   }
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
 }
-BENCHMARK(BM_VtpReadOnly)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_VtpReadOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_VtpImportAndIntegrate(benchmark::State& state) {
-  const auto& file = big_vtp();
+  const auto& file = big_vtp(static_cast<int>(state.range(0)));
   const auto o = options();
   for (auto _ : state) {
     const SurfaceMesh mesh = read_vtk_surface(file);
@@ -101,10 +125,10 @@ void BM_VtpImportAndIntegrate(benchmark::State& state) {
   }
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
 }
-BENCHMARK(BM_VtpImportAndIntegrate)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_VtpImportAndIntegrate)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_VtpVtkFilters(benchmark::State& state) {
-  const auto& file = big_vtp();
+  const auto& file = big_vtp(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->SetFileName(file.c_str());
@@ -131,7 +155,7 @@ void BM_VtpVtkFilters(benchmark::State& state) {
   }
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
 }
-BENCHMARK(BM_VtpVtkFilters)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_VtpVtkFilters)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

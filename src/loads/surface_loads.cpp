@@ -116,8 +116,17 @@ struct Sums {
   Vec3 n_dA{}, y_cross_n_dA{};  // y = x - x_ref
   double area = 0.0, y_dot_n_dA = 0.0;
   std::size_t degenerate = 0;
+  /// Σ over directed edges a→b of h(a) g(b) - h(b) g(a), modulo 2^64: exactly
+  /// 0 when every edge is walked once each way (closed, consistently
+  /// oriented), a random 64-bit number otherwise (see edge_hash).
+  std::uint64_t edge_residue = 0;
+  std::size_t triangles = 0, quads = 0, polygons = 0;
 
   void add(const Sums& o) {
+    edge_residue += o.edge_residue;
+    triangles += o.triangles;
+    quads += o.quads;
+    polygons += o.polygons;
     force_p += o.force_p;
     force_v += o.force_v;
     moment_p += o.moment_p;
@@ -129,6 +138,30 @@ struct Sums {
     degenerate += o.degenerate;
   }
 };
+
+/// A 64-bit mix of a vertex index (splitmix64's finalizer).
+inline std::uint64_t mix64(std::uint64_t x) {
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+/// The face's share of Sums::edge_residue, with h = mix64 and g the index
+/// itself: h(a) b - h(b) a is antisymmetric in (a, b), which is all the
+/// cancellation needs, at one hash per vertex.
+inline std::uint64_t edge_residue(const std::uint32_t* indices, std::size_t k) {
+  std::uint64_t residue = 0;
+  const std::uint64_t g_first = indices[0], h_first = mix64(g_first);
+  std::uint64_t h_prev = h_first, g_prev = g_first;
+  for (std::size_t i = 1; i <= k; ++i) {
+    const std::uint64_t g = i < k ? indices[i] : g_first;
+    const std::uint64_t h = i < k ? mix64(g) : h_first;
+    residue += h_prev * g - h * g_prev;
+    h_prev = h;
+    g_prev = g;
+  }
+  return residue;
+}
 
 /// Everything a face contributes, computed by one of the rules below.
 struct Integrator {
@@ -148,7 +181,7 @@ struct Integrator {
 
   // Triangle with vertex values, exact for linear fields:
   //   ∫ f dA = |S| (f0+f1+f2)/3,  ∫ f y dA = |S|/12 (Σ f_i y_i + F Y).
-  void triangle_point_data(const Vec3 (&y)[3], const double (&p)[3], const Vec3* tau, Sums& s) const {
+  [[gnu::always_inline]] void triangle_point_data(const Vec3 (&y)[3], const double (&p)[3], const Vec3* tau, Sums& s) const {
     const Vec3 S = 0.5 * cross(y[1] - y[0], y[2] - y[0]);
     const double a = norm(S);
     const Vec3 Y = y[0] + y[1] + y[2];
@@ -165,7 +198,7 @@ struct Integrator {
     }
   }
 
-  void add_geometry(const Vec3& S, double a, const Vec3& centroid, Sums& s) const {
+  [[gnu::always_inline]] void add_geometry(const Vec3& S, double a, const Vec3& centroid, Sums& s) const {
     s.area += a;
     s.n_dA += S;
     s.y_cross_n_dA += cross(centroid, S);
@@ -275,8 +308,13 @@ struct Integrator {
     const std::size_t k = end - begin;
     if (k < 3) {
       ++s.degenerate;
+      if (k > 0) s.edge_residue += edge_residue(mesh.face_indices.data() + begin, k);
       return;
     }
+    s.edge_residue += edge_residue(mesh.face_indices.data() + begin, k);
+    if (k == 3) ++s.triangles;
+    else if (k == 4) ++s.quads;
+    else ++s.polygons;
     const bool point_pressure = pressure.present() && pressure.per_point;
     if (!point_pressure) {
       // Face-constant pressure (or geometry only): finite-volume face rule;
@@ -340,10 +378,15 @@ struct Integrator {
 
   static constexpr std::size_t kBlock = 4096;
 
+  // Sums in a local and stored once: the block results of neighbouring
+  // blocks share cache lines, and updating them in place from two threads
+  // made every face bounce a line between the cores.
   void run_block(std::size_t block, Sums& out) const {
     const std::size_t start = block * kBlock;
     const std::size_t stop = std::min(mesh.face_count(), start + kBlock);
-    for (std::size_t f = start; f < stop; ++f) face(f, out);
+    Sums local;
+    for (std::size_t f = start; f < stop; ++f) face(f, local);
+    out = local;
   }
 };
 
@@ -404,17 +447,22 @@ void check_mesh_indices(const SurfaceMesh& mesh) {
     if (mesh.face_indices[i] >= points)
       throw InputError("a face refers to point " + std::to_string(mesh.face_indices[i]) + " but the surface has " +
                        std::to_string(points) + " points");
-  for (const double x : mesh.points_xyz)
-    if (!std::isfinite(x)) throw InputError("point coordinates hold NaN or Inf; expected finite coordinates");
 }
 
+/// The diagonal of the points' bounding box, checking on the way that every
+/// coordinate is finite (one pass over the points for both).
 double bounding_box_diagonal(const SurfaceMesh& mesh) {
   Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  bool finite = true;
+  const double* x = mesh.points_xyz.data();
   for (std::size_t i = 0; i < mesh.point_count(); ++i)
     for (std::size_t c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], mesh.points_xyz[3 * i + c]);
-      hi[c] = std::max(hi[c], mesh.points_xyz[3 * i + c]);
+      const double v = x[3 * i + c];
+      finite = finite && std::isfinite(v);
+      lo[c] = std::min(lo[c], v);
+      hi[c] = std::max(hi[c], v);
     }
+  if (!finite) throw InputError("point coordinates hold NaN or Inf; expected finite coordinates");
   return mesh.point_count() ? norm(hi - lo) : 0.0;
 }
 
@@ -480,16 +528,6 @@ EdgeCounts count_edges(const SurfaceMesh& mesh, std::uint32_t first, std::uint32
   return counts;
 }
 
-void count_shapes(const SurfaceMesh& mesh, SurfaceGeometry& geometry) {
-  geometry.faces = mesh.face_count();
-  for (std::size_t f = 0; f < geometry.faces; ++f) {
-    const auto k = mesh.face_offsets[f + 1] - mesh.face_offsets[f];
-    if (k == 3) ++geometry.triangles;
-    else if (k == 4) ++geometry.quads;
-    else if (k > 4) ++geometry.polygons;
-  }
-}
-
 SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& options, bool with_fields) {
   check_mesh_indices(mesh);
   Integrator integrator{mesh, mesh.points_xyz.data(), options.reference_point, {}, {}, 0.0, 1.0, 0.0};
@@ -503,17 +541,31 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   integrator.degenerate_area = 1e-14 * diagonal * diagonal;
 
   SurfaceLoads loads;
-  // The main thread starts on the faces at once; the helper thread first
-  // walks the edges (measured faster than splitting the edges between the
-  // two: integration is memory-bound and gains from starting early).
-  const auto points = static_cast<std::uint32_t>(mesh.point_count());
-  EdgeCounts low_edges, high_edges;
   const std::function<void()> nothing = [] {};
-  const std::function<void()> edges = [&] { high_edges = count_edges(mesh, 0, points); };
-  const Sums sums = integrate_blocks(integrator, nothing, edges);
-  loads.geometry.boundary_edges = low_edges.boundary + high_edges.boundary;
-  loads.geometry.nonmanifold_edges = low_edges.nonmanifold + high_edges.nonmanifold;
-  loads.geometry.inconsistent_edges = low_edges.inconsistent + high_edges.inconsistent;
+  const Sums sums = integrate_blocks(integrator, nothing, nothing);
+  // Topology: a zero edge residue proves every edge is walked once each way
+  // (the surface is closed and consistently oriented; only a mesh built to
+  // cancel the 64-bit hash sums could fake it). Anything else is counted
+  // exactly, edge by edge, on both threads.
+  if (sums.edge_residue != 0) {
+    const auto points = static_cast<std::uint32_t>(mesh.point_count());
+    const auto split = static_cast<std::uint32_t>(0.4 * points);  // lower vertices own more edges
+    EdgeCounts low_edges, high_edges;
+    std::exception_ptr error;
+    std::thread helper([&] {
+      try {
+        high_edges = count_edges(mesh, split, points);
+      } catch (...) {
+        error = std::current_exception();
+      }
+    });
+    low_edges = count_edges(mesh, 0, split);
+    helper.join();
+    if (error) std::rethrow_exception(error);
+    loads.geometry.boundary_edges = low_edges.boundary + high_edges.boundary;
+    loads.geometry.nonmanifold_edges = low_edges.nonmanifold + high_edges.nonmanifold;
+    loads.geometry.inconsistent_edges = low_edges.inconsistent + high_edges.inconsistent;
+  }
   loads.geometry.closed = loads.geometry.boundary_edges == 0 && loads.geometry.nonmanifold_edges == 0;
   loads.reference_point = options.reference_point;
   loads.force_pressure = sums.force_p;
@@ -522,7 +574,10 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   loads.moment_viscous = sums.moment_v;
 
   SurfaceGeometry& geometry = loads.geometry;
-  count_shapes(mesh, geometry);
+  geometry.faces = mesh.face_count();
+  geometry.triangles = sums.triangles;
+  geometry.quads = sums.quads;
+  geometry.polygons = sums.polygons;
   geometry.degenerate_faces = sums.degenerate;
   geometry.area = sums.area;
   const Vec3& x_ref = options.reference_point;

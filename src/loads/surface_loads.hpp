@@ -68,7 +68,8 @@ struct SurfaceGeometry {
   double area = 0.0;                    ///< m^2
   double signed_volume = 0.0;           ///< m^3, (1/3)∮ x·n dA with the normals used; > 0 outward when closed
   std::size_t boundary_edges = 0;       ///< edges used by one face: 0 for a closed surface
-  std::size_t nonmanifold_edges = 0;    ///< edges used by more than two faces
+  std::size_t nonmanifold_edges = 0;    ///< edges used by more than two faces (counted when the surface
+                                        ///< is not closed; a closed surface passes a quick whole-surface test)
   std::size_t inconsistent_edges = 0;   ///< interior edges walked the same way by both faces
   bool closed = false;                  ///< no boundary and no non-manifold edges
   bool normals_flipped = false;         ///< the file's normals were reversed (see NormalPolicy)
