@@ -482,4 +482,70 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
   return out;
 }
 
+std::int64_t Database::save_surface(const SurfaceRecord& surface) {
+  store::Transaction transaction(connection_);
+  const std::int64_t body = body_id(surface.body, false);
+  if (body < 0) throw InputError("no body named '" + surface.body + "' in " + path_.string());
+  connection_.prepare("DELETE FROM surface WHERE name = ?").bind(1, surface.name).run();
+  auto insert = connection_.prepare(
+      "INSERT INTO surface(name, body_id, kind, method, definition, data, quality, created_at, stale) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, 0)");
+  insert.bind(1, surface.name)
+      .bind(2, body)
+      .bind(3, surface.kind)
+      .bind(4, surface.method)
+      .bind(5, surface.definition)
+      .bind_doubles(6, surface.data)
+      .bind(7, surface.quality)
+      .bind(8, utc_timestamp_now())
+      .run();
+  const std::int64_t id = connection_.last_insert_id();
+  auto used = connection_.prepare("INSERT INTO surface_run(surface_id, run_id) VALUES (?, ?)");
+  for (const auto run_id : surface.run_ids) used.bind(1, id).bind(2, run_id).run();
+  transaction.commit();
+  return id;
+}
+
+std::vector<SurfaceRecord> Database::surfaces(const std::optional<std::string>& body) {
+  std::string sql =
+      "SELECT surface.id, surface.name, body.name, kind, method, definition, data, quality, created_at, stale "
+      "FROM surface JOIN body ON body.id = surface.body_id";
+  if (body) sql += " WHERE body.name = ?1";
+  sql += " ORDER BY surface.name";
+  auto select = connection_.prepare(sql);
+  if (body) select.bind(1, *body);
+  std::vector<SurfaceRecord> out;
+  while (select.step()) {
+    SurfaceRecord record;
+    record.id = select.get_int(0);
+    record.name = select.get_text(1);
+    record.body = select.get_text(2);
+    record.kind = select.get_text(3);
+    record.method = select.get_text(4);
+    record.definition = select.get_text(5);
+    record.data = select.get_doubles(6);
+    record.quality = select.get_text(7);
+    record.created_at = select.get_text(8);
+    record.stale = select.get_int(9) != 0;
+    out.push_back(std::move(record));
+  }
+  auto runs_used = connection_.prepare("SELECT run_id FROM surface_run WHERE surface_id = ? ORDER BY run_id");
+  for (auto& record : out) {
+    runs_used.bind(1, record.id);
+    while (runs_used.step()) record.run_ids.push_back(runs_used.get_int(0));
+    runs_used.reset();
+  }
+  return out;
+}
+
+SurfaceRecord Database::surface(const std::string& name) {
+  auto all = surfaces();
+  for (auto& record : all)
+    if (record.name == name) return std::move(record);
+  std::string names;
+  for (const auto& record : all) names += (names.empty() ? "'" : ", '") + record.name + "'";
+  throw InputError("no surface named '" + name + "' in " + path_.string() + "; surfaces there: " +
+                   (names.empty() ? "none" : names));
+}
+
 }  // namespace hydrocoef

@@ -87,6 +87,22 @@ struct FitRecord {
   std::vector<std::int64_t> run_ids;
 };
 
+/// A coefficient surface as stored: what src/surface needs to rebuild it,
+/// as plain data (the store knows no interpolation).
+struct SurfaceRecord {
+  std::int64_t id = 0;
+  std::string name;
+  std::string body;
+  std::string kind;        ///< "grid" or "rbf"
+  std::string method;      ///< e.g. "pchip", or the RBF kernel
+  std::string definition;  ///< JSON: axes, breakpoints, outputs, units, options
+  std::vector<double> data;  ///< values in the layout the definition states
+  std::string quality;     ///< JSON: leave-one-out max and RMS per output
+  std::string created_at;
+  bool stale = false;      ///< a force of the body changed since the surface was built
+  std::vector<std::int64_t> run_ids;
+};
+
 class Database {
  public:
   enum class OpenMode { CreateIfMissing, MustExist };
@@ -115,6 +131,14 @@ class Database {
   /// Stores a fit, replacing one of the same name; returns its id.
   std::int64_t save_fit(const FitRecord& fit);
   std::vector<FitRecord> fits(const std::optional<std::string>& body = std::nullopt);
+
+  /// Stores a surface, replacing one of the same name (which clears its
+  /// stale flag); returns its id.
+  std::int64_t save_surface(const SurfaceRecord& surface);
+  /// All surfaces (data included), or those of one body, by name.
+  std::vector<SurfaceRecord> surfaces(const std::optional<std::string>& body = std::nullopt);
+  /// One surface by name; InputError listing the names there are when absent.
+  SurfaceRecord surface(const std::string& name);
 
   /// "ok", or SQLite's list of problems.
   std::string integrity_check();

@@ -87,6 +87,10 @@ Statement& Statement::bind(int index, std::string_view value) {
 Statement& Statement::bind(int index, const std::optional<double>& value) {
   return value ? bind(index, *value) : bind_null(index);
 }
+Statement& Statement::bind_doubles(int index, const std::vector<double>& values) {
+  sqlite3_bind_blob64(statement_, index, values.data(), values.size() * sizeof(double), SQLITE_TRANSIENT);
+  return *this;
+}
 Statement& Statement::bind_null(int index) {
   sqlite3_bind_null(statement_, index);
   return *this;
@@ -116,6 +120,12 @@ std::int64_t Statement::get_int(int column) const { return sqlite3_column_int64(
 std::string Statement::get_text(int column) const {
   const auto* text = sqlite3_column_text(statement_, column);
   return text ? std::string(reinterpret_cast<const char*>(text)) : std::string();
+}
+std::vector<double> Statement::get_doubles(int column) const {
+  const auto* bytes = static_cast<const double*>(sqlite3_column_blob(statement_, column));
+  const auto size = static_cast<std::size_t>(sqlite3_column_bytes(statement_, column));
+  if (bytes == nullptr || size % sizeof(double) != 0) return {};
+  return std::vector<double>(bytes, bytes + size / sizeof(double));
 }
 std::optional<double> Statement::get_optional_double(int column) const {
   if (is_null(column)) return std::nullopt;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hydrocoef::store {
 
@@ -55,6 +56,8 @@ class Statement {
   Statement& bind(int index, std::string_view value);
   Statement& bind(int index, const std::optional<double>& value);
   Statement& bind_null(int index);
+  /// Binds doubles as a blob of their bytes (float64, host order: little-endian on every target here).
+  Statement& bind_doubles(int index, const std::vector<double>& values);
 
   /// Advances to the next row; false when done.
   bool step();
@@ -68,6 +71,7 @@ class Statement {
   std::int64_t get_int(int column) const;
   std::string get_text(int column) const;
   std::optional<double> get_optional_double(int column) const;
+  std::vector<double> get_doubles(int column) const;
 
  private:
   const Connection* connection_;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include <cstring>
 #include <fstream>
 
 #include "src/core/error.hpp"
@@ -325,6 +326,108 @@ TEST(Database, DetectsACorruptedPage) {
     for (int i = 0; i < 4096; ++i) file.put(static_cast<char>(0xA5));
   }
   EXPECT_THROW(Database(dir / "runs.db"), InputError);
+}
+
+}  // namespace
+}  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+SurfaceRecord make_surface(const std::string& name, const std::string& body, std::vector<std::int64_t> runs) {
+  SurfaceRecord s;
+  s.name = name;
+  s.body = body;
+  s.kind = "grid";
+  s.method = "pchip";
+  s.definition = R"({"axes":[{"name":"u","breakpoints":[0,0.1,0.2]}],"outputs":["X"]})";
+  s.data = {0.0, -0.1, -0.45, 1e-300, -0.0};
+  s.quality = R"({"X":{"loo_max":0.01,"loo_rms":0.004}})";
+  s.run_ids = std::move(runs);
+  return s;
+}
+
+TEST(DatabaseSurfaces, RoundTripBitForBitWithTheirRuns) {
+  TempDir dir;
+  Database db(dir / "runs.db");
+  db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
+            ConflictPolicy::Error);
+  const auto runs = db.runs();
+  db.save_surface(make_surface("sphere-X", "sphere", {runs[0].id, runs[1].id}));
+  const SurfaceRecord back = db.surface("sphere-X");
+  const SurfaceRecord sent = make_surface("sphere-X", "sphere", {});
+  EXPECT_EQ(back.body, "sphere");
+  EXPECT_EQ(back.kind, "grid");
+  EXPECT_EQ(back.method, "pchip");
+  EXPECT_EQ(back.definition, sent.definition);
+  EXPECT_EQ(back.quality, sent.quality);
+  ASSERT_EQ(back.data.size(), sent.data.size());
+  for (std::size_t i = 0; i < sent.data.size(); ++i)
+    EXPECT_EQ(std::memcmp(&back.data[i], &sent.data[i], sizeof(double)), 0) << i;  // -0 and subnormals kept
+  EXPECT_EQ(back.run_ids, (std::vector<std::int64_t>{runs[0].id, runs[1].id}));
+  EXPECT_FALSE(back.stale);
+  EXPECT_EQ(db.surfaces("sphere").size(), 1u);
+  EXPECT_TRUE(db.surfaces("cube").empty());
+}
+
+TEST(DatabaseSurfaces, AChangeToTheBodysForcesMarksItsSurfacesStale) {
+  TempDir dir;
+  Database db(dir / "runs.db");
+  auto other = make_run({0.1, 0, 0, 0, 0, 0}, kX, 5, 2);
+  other.key.body = "cube";
+  db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)}), make_batch("c.csv", 'c', {other})},
+            ConflictPolicy::Error);
+  db.save_surface(make_surface("sphere-X", "sphere", {}));
+  db.save_surface(make_surface("cube-X", "cube", {}));
+  // A new run of the sphere: its surface is stale, the cube's is not.
+  db.import({make_batch("b.csv", 'b', {make_run({0.3, 0, 0, 0, 0, 0}, kX, 3, 2)})}, ConflictPolicy::Error);
+  EXPECT_TRUE(db.surface("sphere-X").stale);
+  EXPECT_FALSE(db.surface("cube-X").stale);
+  // Rebuilding (saving again) clears it; replacing a force stales it again.
+  db.save_surface(make_surface("sphere-X", "sphere", {}));
+  EXPECT_FALSE(db.surface("sphere-X").stale);
+  db.import({make_batch("d.csv", 'd', {make_run({0.3, 0, 0, 0, 0, 0}, kX, 3.5, 2)})}, ConflictPolicy::Replace);
+  EXPECT_TRUE(db.surface("sphere-X").stale);
+  // A re-import of the same bytes changes nothing.
+  db.save_surface(make_surface("sphere-X", "sphere", {}));
+  db.import({make_batch("d.csv", 'd', {make_run({0.3, 0, 0, 0, 0, 0}, kX, 3.5, 2)})}, ConflictPolicy::Replace);
+  EXPECT_FALSE(db.surface("sphere-X").stale);
+}
+
+TEST(DatabaseSurfaces, MissingNamesAndBodiesAreInputErrorsThatChangeNothing) {
+  TempDir dir;
+  Database db(dir / "runs.db");
+  db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);
+  db.save_surface(make_surface("sphere-X", "sphere", {}));
+  try {
+    db.surface("sphere-N");
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("'sphere-X'"), std::string::npos) << error.what();
+  }
+  const auto before = dump_database(dir / "runs.db");
+  EXPECT_THROW(db.save_surface(make_surface("boat-X", "boat", {})), InputError);
+  EXPECT_EQ(dump_database(dir / "runs.db"), before);
+}
+
+TEST(DatabaseSurfaces, AnOlderDatabaseIsMigratedOnOpen) {
+  TempDir dir;
+  // A database as an earlier hydrocoef left it: migrations 1 and 2 only.
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open((dir / "old.db").c_str(), &raw), SQLITE_OK);
+  for (int i = 0; i < 2; ++i) {
+    const std::string sql(store::migrations()[static_cast<std::size_t>(i)].sql);
+    ASSERT_EQ(sqlite3_exec(raw, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+  }
+  sqlite3_exec(raw, "PRAGMA user_version = 2", nullptr, nullptr, nullptr);
+  sqlite3_close(raw);
+  Database db(dir / "old.db");
+  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+  EXPECT_GE(Database::latest_schema_version(), 3);
+  db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);
+  db.save_surface(make_surface("sphere-X", "sphere", {}));
+  EXPECT_EQ(db.surfaces().size(), 1u);
+  EXPECT_EQ(db.integrity_check(), "ok");
 }
 
 }  // namespace
