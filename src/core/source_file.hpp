@@ -19,6 +19,15 @@ struct SourceFile {
 /// exist, is a directory or cannot be read.
 SourceFile load_source_file(const std::filesystem::path& path);
 
+/// The SHA-256 and size of a file read in blocks, for files another library
+/// parses itself (VTK): the bytes are hashed, never held in memory. Throws
+/// InputError as load_source_file does.
+struct FileDigest {
+  std::string sha256;
+  std::uint64_t size_bytes = 0;
+};
+FileDigest digest_file(const std::filesystem::path& path);
+
 /// SHA-256 of a byte string as 64 lower-case hex digits.
 std::string sha256_hex(std::string_view bytes);
 

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/surface/pchip.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -20,38 +21,6 @@ std::string shortest(double value) {
   auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
   (void)ec;
   return std::string(buffer.data(), end);
-}
-
-int sign(double value) { return (value > 0.0) - (value < 0.0); }
-
-// MATLAB pchip's one-sided three-point end slope, limited so that the curve
-// stays monotone next to the end (h1, del1: the end interval; h2, del2: its neighbour).
-double pchip_end_slope(double h1, double h2, double del1, double del2) {
-  double slope = ((2.0 * h1 + h2) * del1 - h1 * del2) / (h1 + h2);
-  if (sign(slope) != sign(del1)) {
-    slope = 0.0;
-  } else if (sign(del1) != sign(del2) && std::abs(slope) > std::abs(3.0 * del1)) {
-    slope = 3.0 * del1;
-  }
-  return slope;
-}
-
-// Fritsch-Carlson slope at knot i: 0 at a local extremum or flat piece,
-// otherwise the weighted harmonic mean of the neighbouring secants
-// (Fritsch & Butland weights, as MATLAB pchip).
-double pchip_slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t i) {
-  const std::size_t n = x.size();
-  const auto secant = [&](std::size_t k) { return (y[k + 1] - y[k]) / (x[k + 1] - x[k]); };
-  const auto width = [&](std::size_t k) { return x[k + 1] - x[k]; };
-  if (n == 2) return secant(0);
-  if (i == 0) return pchip_end_slope(width(0), width(1), secant(0), secant(1));
-  if (i == n - 1) return pchip_end_slope(width(n - 2), width(n - 3), secant(n - 2), secant(n - 3));
-  const double left = secant(i - 1);
-  const double right = secant(i);
-  if (!((left > 0.0 && right > 0.0) || (left < 0.0 && right < 0.0))) return 0.0;
-  const double w_left = 2.0 * width(i) + width(i - 1);   // weight on 1 / left secant
-  const double w_right = width(i) + 2.0 * width(i - 1);  // weight on 1 / right secant
-  return (w_left + w_right) / (w_left / left + w_right / right);
 }
 
 struct Interval {

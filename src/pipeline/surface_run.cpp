@@ -68,18 +68,19 @@ double json_number(const nlohmann::json& value, const std::string& where, const 
   return value.get<double>();
 }
 
-/// Reads the mesh; `source` receives the bytes hashed for provenance (the
-/// bytes parsed, for text formats, so that the file is read once).
+/// Reads the mesh and the file's SHA-256 and size: text formats are read
+/// once, hashed and parsed from the same bytes; VTK reads its files itself,
+/// so those are hashed block by block without being held.
 SurfaceMesh read_mesh(const std::filesystem::path& file, const std::string& format,
-                      const std::vector<std::string>& locations, SourceFile& source) {
-  source = load_source_file(file);
+                      const std::vector<std::string>& locations, FileDigest& digest) {
   if (format == "cfdpost") {
+    const SourceFile source = load_source_file(file);
+    digest = {source.sha256, source.bytes.size()};
     CfdPostOptions options;
     options.locations = locations;
     return parse_cfdpost_export(source.bytes, file.string(), options);
   }
-  source.bytes.clear();
-  source.bytes.shrink_to_fit();
+  digest = digest_file(file);
   VtkSurfaceOptions options;
   options.locations = locations;
   const std::lock_guard<std::mutex> lock(vtk_read_mutex());
@@ -172,9 +173,9 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
   result.format = detect_format(file, options.format);
   if (result.format != "cfdpost" && result.format != "vtk")
     throw InputError(SourceLocation{path}, "format '" + result.format + "' is not a surface export");
-  SourceFile source;
+  FileDigest digest;
   try {
-    SurfaceMesh mesh = read_mesh(file, result.format, options.locations, source);
+    SurfaceMesh mesh = read_mesh(file, result.format, options.locations, digest);
 
     // Which arrays: the user's, else what the file's naming says.
     const FieldArray* pressure = nullptr;
@@ -308,8 +309,8 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
   run.surface = integrals;
 
   result.batch.source.path = path;
-  result.batch.source.sha256 = source.sha256;
-  result.batch.source.size_bytes = std::filesystem::file_size(file);
+  result.batch.source.sha256 = digest.sha256;
+  result.batch.source.size_bytes = digest.size_bytes;
   result.batch.source.importer = result.format == "cfdpost" ? "cfdpost-surface" : "vtk-surface";
   result.batch.source.importer_version = std::string(kSurfaceImporterVersion);
   result.batch.runs.push_back(std::move(run));

@@ -407,8 +407,7 @@ std::vector<std::string> Database::bodies() {
 
 std::int64_t Database::save_fit(const FitRecord& fit) {
   store::Transaction transaction(connection_);
-  const std::int64_t body = body_id(fit.body, false);
-  if (body < 0) throw InputError("no body named '" + fit.body + "' in " + path_.string());
+  const std::int64_t body = existing_body_id(fit.body);
   connection_.prepare("DELETE FROM fit WHERE name = ?").bind(1, fit.name).run();
   auto insert = connection_.prepare(
       "INSERT INTO fit(name, body_id, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
@@ -434,8 +433,7 @@ std::int64_t Database::save_fit(const FitRecord& fit) {
     coefficient.bind(1, id).bind(2, static_cast<std::int64_t>(i)).bind(3, c.term).bind(4, c.value).bind(5, c.std_error);
     coefficient.run();
   }
-  auto used = connection_.prepare("INSERT INTO fit_run(fit_id, run_id) VALUES (?, ?)");
-  for (const auto run_id : fit.run_ids) used.bind(1, id).bind(2, run_id).run();
+  link_runs("fit_run", "fit_id", id, fit.run_ids);
   transaction.commit();
   return id;
 }
@@ -468,24 +466,42 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
   }
   auto coefficients =
       connection_.prepare("SELECT term, value, std_error FROM fit_coefficient WHERE fit_id = ? ORDER BY position");
-  auto runs_used = connection_.prepare("SELECT run_id FROM fit_run WHERE fit_id = ? ORDER BY run_id");
   for (auto& fit : out) {
     coefficients.bind(1, fit.id);
     while (coefficients.step())
       fit.coefficients.push_back({coefficients.get_text(0), coefficients.get_double(1),
                                   coefficients.get_optional_double(2)});
     coefficients.reset();
-    runs_used.bind(1, fit.id);
-    while (runs_used.step()) fit.run_ids.push_back(runs_used.get_int(0));
-    runs_used.reset();
+    fit.run_ids = linked_runs("fit_run", "fit_id", fit.id);
   }
+  return out;
+}
+
+std::int64_t Database::existing_body_id(const std::string& name) {
+  const std::int64_t id = body_id(name, false);
+  if (id < 0) throw InputError("no body named '" + name + "' in " + path_.string());
+  return id;
+}
+
+void Database::link_runs(const char* table, const char* owner, std::int64_t id,
+                         const std::vector<std::int64_t>& run_ids) {
+  auto insert =
+      connection_.prepare(std::string("INSERT INTO ") + table + "(" + owner + ", run_id) VALUES (?, ?)");
+  for (const auto run_id : run_ids) insert.bind(1, id).bind(2, run_id).run();
+}
+
+std::vector<std::int64_t> Database::linked_runs(const char* table, const char* owner, std::int64_t id) {
+  auto select = connection_.prepare(std::string("SELECT run_id FROM ") + table + " WHERE " + owner +
+                                    " = ? ORDER BY run_id");
+  select.bind(1, id);
+  std::vector<std::int64_t> out;
+  while (select.step()) out.push_back(select.get_int(0));
   return out;
 }
 
 std::int64_t Database::save_surface(const SurfaceRecord& surface) {
   store::Transaction transaction(connection_);
-  const std::int64_t body = body_id(surface.body, false);
-  if (body < 0) throw InputError("no body named '" + surface.body + "' in " + path_.string());
+  const std::int64_t body = existing_body_id(surface.body);
   connection_.prepare("DELETE FROM surface WHERE name = ?").bind(1, surface.name).run();
   auto insert = connection_.prepare(
       "INSERT INTO surface(name, body_id, kind, method, definition, data, quality, created_at, stale) "
@@ -500,20 +516,22 @@ std::int64_t Database::save_surface(const SurfaceRecord& surface) {
       .bind(8, utc_timestamp_now())
       .run();
   const std::int64_t id = connection_.last_insert_id();
-  auto used = connection_.prepare("INSERT INTO surface_run(surface_id, run_id) VALUES (?, ?)");
-  for (const auto run_id : surface.run_ids) used.bind(1, id).bind(2, run_id).run();
+  link_runs("surface_run", "surface_id", id, surface.run_ids);
   transaction.commit();
   return id;
 }
 
-std::vector<SurfaceRecord> Database::surfaces(const std::optional<std::string>& body) {
+std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::string>& body,
+                                                   const std::optional<std::string>& name) {
   std::string sql =
       "SELECT surface.id, surface.name, body.name, kind, method, definition, data, quality, created_at, stale "
-      "FROM surface JOIN body ON body.id = surface.body_id";
-  if (body) sql += " WHERE body.name = ?1";
+      "FROM surface JOIN body ON body.id = surface.body_id WHERE 1";
+  if (body) sql += " AND body.name = ?1";
+  if (name) sql += " AND surface.name = ?2";
   sql += " ORDER BY surface.name";
   auto select = connection_.prepare(sql);
   if (body) select.bind(1, *body);
+  if (name) select.bind(2, *name);
   std::vector<SurfaceRecord> out;
   while (select.step()) {
     SurfaceRecord record;
@@ -527,23 +545,23 @@ std::vector<SurfaceRecord> Database::surfaces(const std::optional<std::string>& 
     record.quality = select.get_text(7);
     record.created_at = select.get_text(8);
     record.stale = select.get_int(9) != 0;
+    record.run_ids = linked_runs("surface_run", "surface_id", record.id);
     out.push_back(std::move(record));
-  }
-  auto runs_used = connection_.prepare("SELECT run_id FROM surface_run WHERE surface_id = ? ORDER BY run_id");
-  for (auto& record : out) {
-    runs_used.bind(1, record.id);
-    while (runs_used.step()) record.run_ids.push_back(runs_used.get_int(0));
-    runs_used.reset();
   }
   return out;
 }
 
+std::vector<SurfaceRecord> Database::surfaces(const std::optional<std::string>& body) {
+  return load_surfaces(body, std::nullopt);
+}
+
 SurfaceRecord Database::surface(const std::string& name) {
-  auto all = surfaces();
-  for (auto& record : all)
-    if (record.name == name) return std::move(record);
+  auto found = load_surfaces(std::nullopt, name);
+  if (!found.empty()) return std::move(found.front());
+  // Only the names, for the message: no value blobs are read.
+  auto select = connection_.prepare("SELECT name FROM surface ORDER BY name");
   std::string names;
-  for (const auto& record : all) names += (names.empty() ? "'" : ", '") + record.name + "'";
+  while (select.step()) names += (names.empty() ? "'" : ", '") + select.get_text(0) + "'";
   throw InputError("no surface named '" + name + "' in " + path_.string() + "; surfaces there: " +
                    (names.empty() ? "none" : names));
 }

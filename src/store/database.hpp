@@ -150,6 +150,15 @@ class Database {
   std::optional<std::int64_t> find_run_id(std::int64_t body, const RunKey& key);
   /// All runs, or those of one body, or one run; ordered by body and key.
   std::vector<StoredRun> load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run);
+  /// The id of a body that must exist (InputError naming it otherwise).
+  std::int64_t existing_body_id(const std::string& name);
+  /// Records / reads the runs a fit or surface was built from, in a link
+  /// table (fit_run, surface_run) whose owner column is `owner`.
+  void link_runs(const char* table, const char* owner, std::int64_t id, const std::vector<std::int64_t>& run_ids);
+  std::vector<std::int64_t> linked_runs(const char* table, const char* owner, std::int64_t id);
+  /// Surfaces of one body and/or one name (both optional), by name.
+  std::vector<SurfaceRecord> load_surfaces(const std::optional<std::string>& body,
+                                           const std::optional<std::string>& name);
 
   std::filesystem::path path_;
   store::Connection connection_;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/surface/pchip.hpp"
 
 namespace hydrocoef {
 
@@ -28,19 +29,6 @@ std::string quoted(std::string_view name) { return "'" + std::string(name) + "'"
 
 // ---- 1-D slope rules: y at breakpoints x (n >= 3) -> slope d at every breakpoint.
 
-double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
-
-// Shape-preserving three-point end slope (MATLAB pchip, SciPy PchipInterpolator).
-// h0, del0: the end interval and its secant; h1, del1: the next ones.
-double pchip_end_slope(double h0, double h1, double del0, double del1) {
-  double d = ((2.0 * h0 + h1) * del0 - h0 * del1) / (h0 + h1);
-  if (sign(d) != sign(del0)) {
-    d = 0.0;
-  } else if (sign(del0) != sign(del1) && std::abs(d) > std::abs(3.0 * del0)) {
-    d = 3.0 * del0;
-  }
-  return d;
-}
 
 void pchip_slopes(std::span<const double> x, std::span<const double> y, std::span<double> d, std::span<double> h,
                   std::span<double> del) {
@@ -49,18 +37,7 @@ void pchip_slopes(std::span<const double> x, std::span<const double> y, std::spa
     h[i] = x[i + 1] - x[i];
     del[i] = (y[i + 1] - y[i]) / h[i];
   }
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    const double left = del[i - 1];
-    const double right = del[i];
-    if (left == 0.0 || right == 0.0 || (left > 0.0) != (right > 0.0)) {
-      d[i] = 0.0;
-    } else {
-      // Weighted harmonic mean (Fritsch & Butland 1984): the weights favour the shorter interval's secant.
-      const double w_left = h[i - 1] + 2.0 * h[i];
-      const double w_right = 2.0 * h[i - 1] + h[i];
-      d[i] = (w_left + w_right) / (w_left / left + w_right / right);
-    }
-  }
+  for (std::size_t i = 1; i + 1 < n; ++i) d[i] = pchip_interior_slope(h[i - 1], h[i], del[i - 1], del[i]);
   d[0] = pchip_end_slope(h[0], h[1], del[0], del[1]);
   d[n - 1] = pchip_end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
 }

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -136,6 +137,36 @@ TEST(LoadSourceFile, RealExampleHashMatchesItsBytes) {
   const SourceFile file = load_source_file(path);
   EXPECT_EQ(file.bytes, bytes);
   EXPECT_EQ(file.sha256, sha256_hex(bytes));
+}
+
+}  // namespace
+}  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+TEST(DigestFile, StreamsTheSameHashAsTheWholeBytesAcrossManyBlocks) {
+  test::TempDir dir;
+  // 200 KiB + 7 bytes: several 64 KiB read blocks and a short last one.
+  std::string bytes(200 * 1024 + 7, '\0');
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 2654435761u) >> 13);
+  const auto path = dir / "big.bin";
+  std::ofstream(path, std::ios::binary) << bytes;
+  const FileDigest digest = digest_file(path);
+  EXPECT_EQ(digest.sha256, sha256_hex(bytes));
+  EXPECT_EQ(digest.size_bytes, bytes.size());
+  EXPECT_EQ(digest.sha256, load_source_file(path).sha256);
+  // An empty file hashes to SHA-256 of nothing.
+  std::ofstream(dir / "empty.bin", std::ios::binary).close();
+  EXPECT_EQ(digest_file(dir / "empty.bin").sha256,
+            "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  try {
+    digest_file(dir / "missing.bin");
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("missing.bin"), std::string::npos) << error.what();
+  }
+  EXPECT_THROW(digest_file(dir.path()), InputError);
 }
 
 }  // namespace

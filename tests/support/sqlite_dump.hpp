@@ -1,5 +1,5 @@
 // Test support: the whole content of an SQLite file as text (schema, user
-// version and every row of every table in rowid/primary-key order), so a test
+// version and every row of every table, sorted), so a test
 // can assert that a failed operation left a database exactly as it was.
 #pragma once
 
@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef::test {
 
@@ -49,27 +51,5 @@ inline std::string dump_database(const std::filesystem::path& path) {
   sqlite3_close(db);
   return out;
 }
-
-/// A fresh, empty temporary directory removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    auto base = std::filesystem::temp_directory_path() / "hydrocoef-test-XXXXXX";
-    std::string pattern = base.string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace hydrocoef::test

@@ -38,19 +38,7 @@
 
 #include "src/core/error.hpp"
 
-// Counts every allocation through operator new, to check that evaluation makes none.
-namespace {
-std::atomic<long> allocation_count{0};
-}  // namespace
-
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-// Out of line, so that GCC does not pair an inlined free() with new and warn (-Wmismatched-new-delete).
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "tests/support/count_allocations.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -1044,13 +1032,13 @@ TEST(GridTable, EvaluationAllocatesNothing) {
     std::vector<double> out(6);
     std::vector<double> gradient(18);
     double sum = 0.0;
-    const long before = allocation_count.load();
+    const std::size_t before = test::allocation_count();
     for (const Point& p : points) {
       table.evaluate(p, out);
       table.evaluate_with_gradient(p, out, gradient);
       sum += table.evaluate_one(p, 3) + out[0] + gradient[17];
     }
-    EXPECT_EQ(allocation_count.load() - before, 0) << method_label(method);
+    EXPECT_EQ(test::allocation_count() - before, 0u) << method_label(method);
     EXPECT_TRUE(std::isfinite(sum));
   }
 }

@@ -29,20 +29,7 @@
 
 #include "src/core/error.hpp"
 
-// Counts global allocations so that a test can check evaluation makes none.
-namespace {
-std::atomic<std::size_t> g_allocations{0};
-}  // namespace
-
-// Not inlined, so that GCC does not pair the free() below with a new-expression
-// at the call site (-Wmismatched-new-delete).
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "tests/support/count_allocations.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -561,15 +548,15 @@ TEST(RbfSurface, EvaluationAllocatesNothingAndIsThreadSafe) {
 
   std::array<double, 2> out{};
   std::array<double, 4> gradient{};
-  const std::size_t before = g_allocations.load();
+  const std::size_t before = test::allocation_count();
   for (std::size_t q = 0; q < 400; ++q) {
     surface.evaluate(std::span<const double>(&queries[2 * q], 2), out);
     surface.evaluate_with_gradient(std::span<const double>(&queries[2 * q], 2), out, gradient);
   }
-  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_EQ(test::allocation_count(), before);
   // The counter does see allocations (so the check above is not vacuous).
   const auto probe = std::make_unique<std::vector<double>>(8);
-  EXPECT_GT(g_allocations.load(), before);
+  EXPECT_GT(test::allocation_count(), before);
 
   std::vector<std::vector<double>> results(4, std::vector<double>(800));
   std::vector<std::thread> threads;
