@@ -16,7 +16,8 @@ packages=(
   ninja-build
   libbenchmark-dev      # bench/
   libcli11-dev          # command line
-  nlohmann-json3-dev    # --json output
+  nlohmann-json3-dev    # --json output, surface definitions, vehicle files
+  libmatio-dev          # MATLAB .mat export
 )
 
 missing=()
