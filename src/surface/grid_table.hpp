@@ -135,6 +135,16 @@ class GridTable {
   /// The tabulated values, laid out as in the constructor.
   const std::vector<double>& values() const noexcept { return values_; }
   Interpolation method() const noexcept { return method_; }
+  /// For the cubic methods (Pchip, Akima, NaturalSpline): what evaluation
+  /// reads, per node the value and every mixed derivative of every output,
+  ///   hermite_data()[(node * 2^n + S) * output_count() + k],
+  /// node as in the values layout, S a bit set over the axes (bit a set: one
+  /// derivative along axis a, in output unit per axis unit; S = 0 the value).
+  /// In a cell, along each axis, the interpolant is the cubic Hermite form of
+  /// the two end nodes' values and slopes; N-D is the tensor product. An
+  /// exporter that writes these numbers reproduces the table exactly. Empty
+  /// for Nearest and Linear, which read values().
+  const std::vector<double>& hermite_data() const noexcept { return hermite_; }
   /// True when the axis's breakpoints were found evenly spaced (to 1e-12 of
   /// their magnitude) and are located by direct index rather than by search.
   /// A performance detail only: both ways give the same cell. Throws

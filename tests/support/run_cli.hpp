@@ -35,13 +35,15 @@ inline std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-/// Runs HYDROCOEF_CLI with `args` in directory `cwd`; scratch files go in `cwd`.
-inline CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd) {
+/// Runs HYDROCOEF_CLI with `args` in directory `cwd`; scratch files go in
+/// `cwd`. Standard input is `stdin_path`, or empty.
+inline CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                         const std::filesystem::path& stdin_path = "/dev/null") {
   std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_quote(HYDROCOEF_CLI);
   for (const auto& arg : args) command += " " + shell_quote(arg);
   const auto out_path = cwd / ".cli-stdout";
   const auto err_path = cwd / ".cli-stderr";
-  command += " >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string()) + " </dev/null";
+  command += " >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string()) + " <" + shell_quote(stdin_path.string());
   const int status = std::system(command.c_str());
   CliResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

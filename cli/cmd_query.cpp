@@ -1,0 +1,315 @@
+// hydrocoef query: a stored surface at one point (NAME u=0.2 v=0.07), or at
+// every row of a CSV file or standard input, written as CSV.
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "cli/common.hpp"
+#include "src/core/error.hpp"
+#include "src/surface/stored_surface.hpp"
+
+namespace hydrocoef::cli {
+namespace {
+
+struct QueryArgs {
+  std::string name;
+  std::vector<std::string> point;
+  std::string input;
+  std::string output = "-";
+  bool gradient = false;
+  bool json = false;
+};
+
+void warn_if_stale(const SurfaceRecord& record) {
+  if (record.stale)
+    std::cerr << "hydrocoef: warning: surface '" << record.name
+              << "' is stale: forces of its body changed since it was built (hydrocoef surface rebuild " << record.name
+              << ")\n";
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+void query_point(const QueryArgs& args, const StoredSurface& stored) {
+  const CoefficientSurface& surface = stored.surface;
+  const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
+  std::vector<double> point(n_axes, std::nan(""));
+  for (const auto& text : args.point) {
+    const auto [axis, value] = parse_assignment(text, "point");
+    const std::size_t a = surface.axis_index(axis);
+    if (!std::isnan(point[a])) throw InputError("axis '" + axis + "' is given twice");
+    point[a] = value;
+  }
+  for (std::size_t a = 0; a < n_axes; ++a)
+    if (std::isnan(point[a]))
+      throw InputError("no value for axis '" + surface.axis_names()[a] + "'; surface '" + args.name +
+                       "' needs one value for each of its axes: " + join(surface.axis_names()) +
+                       " (e.g. " + surface.axis_names()[a] + "=0.1)");
+  std::vector<double> out(n_out), gradient(n_out * n_axes);
+  if (args.gradient)
+    surface.evaluate_with_gradient(point, out, gradient);
+  else
+    surface.evaluate(point, out);
+
+  if (args.json) {
+    nlohmann::json json = {{"surface", args.name}, {"stale", stored.record.stale}};
+    for (std::size_t a = 0; a < n_axes; ++a) json["point"][surface.axis_names()[a]] = point[a];
+    for (std::size_t k = 0; k < n_out; ++k) {
+      json["values"][surface.output_names()[k]] = out[k];
+      json["units"][surface.output_names()[k]] = surface.output_units()[k];
+      if (args.gradient)
+        for (std::size_t a = 0; a < n_axes; ++a)
+          json["gradient"][surface.output_names()[k]][surface.axis_names()[a]] = gradient[k * n_axes + a];
+    }
+    std::cout << json.dump(2) << '\n';
+    return;
+  }
+  std::cout << args.name << " at";
+  for (std::size_t a = 0; a < n_axes; ++a)
+    std::cout << " " << surface.axis_names()[a] << "=" << significant(point[a], 8);
+  std::cout << " (forces on the body)\n";
+  for (std::size_t k = 0; k < n_out; ++k) {
+    std::cout << "  " << std::left << std::setw(4) << surface.output_names()[k] << std::setw(16)
+              << significant(out[k], 9) << surface.output_units()[k] << '\n';
+    if (args.gradient)
+      for (std::size_t a = 0; a < n_axes; ++a) {
+        const std::string& unit = surface.axis_units()[a];
+        std::cout << "      d" << surface.output_names()[k] << "/d" << std::setw(10) << surface.axis_names()[a]
+                  << std::setw(16) << significant(gradient[k * n_axes + a], 9) << surface.output_units()[k]
+                  << (unit.empty() ? "" : " per " + unit) << '\n';
+      }
+  }
+}
+
+/// Reads a whole file or standard input ("-").
+std::string read_all(const std::string& path) {
+  std::FILE* file = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
+  if (!file) throw InputError(path + ": cannot open for reading");
+  std::string data;
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) data.append(buffer, n);
+  const bool failed = std::ferror(file) != 0;
+  if (file != stdin) std::fclose(file);
+  if (failed) throw InputError(path + ": read error");
+  return data;
+}
+
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
+  return text;
+}
+
+/// Buffered output to a file or standard output; the file is written under
+/// a temporary name and renamed at the end, so a failed batch leaves no file.
+class Output {
+ public:
+  explicit Output(const std::string& path) : path_(path) {
+    if (path_ == "-") {
+      file_ = stdout;
+    } else {
+      temporary_ = path_ + ".partial";
+      file_ = std::fopen(temporary_.c_str(), "wb");
+      if (!file_) throw InputError(path_ + ": cannot open for writing");
+    }
+    buffer_.reserve(kFlushAt + 4096);
+  }
+  ~Output() {
+    if (file_ && file_ != stdout) {
+      std::fclose(file_);
+      std::remove(temporary_.c_str());
+    }
+  }
+  Output(const Output&) = delete;
+  Output& operator=(const Output&) = delete;
+
+  void text(std::string_view s) {
+    buffer_.append(s);
+    if (buffer_.size() >= kFlushAt) flush();
+  }
+  void number(double value) {
+    char digits[32];
+    const auto [end, ec] = std::to_chars(digits, digits + sizeof digits, value);
+    (void)ec;
+    buffer_.append(digits, end);
+  }
+  void finish() {
+    flush();
+    if (std::fflush(file_) != 0) throw InputError(path_ + ": write error");
+    if (file_ != stdout) {
+      const bool closed = std::fclose(file_) == 0;
+      file_ = nullptr;
+      if (!closed || std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+        std::remove(temporary_.c_str());
+        throw InputError(path_ + ": cannot write");
+      }
+    }
+  }
+
+ private:
+  static constexpr std::size_t kFlushAt = 1 << 20;
+  void flush() {
+    if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
+      throw InputError(path_ + ": write error");
+    buffer_.clear();
+  }
+  std::string path_, temporary_;
+  std::FILE* file_ = nullptr;
+  std::string buffer_;
+};
+
+void query_batch(const QueryArgs& args, const StoredSurface& stored) {
+  const CoefficientSurface& surface = stored.surface;
+  const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
+  const std::string source = args.input == "-" ? "<stdin>" : args.input;
+  const std::string data = read_all(args.input);
+  std::string_view rest = data;
+  std::size_t line_number = 0;
+  const auto next_line = [&]() -> std::string_view {
+    const auto end = rest.find('\n');
+    std::string_view line = rest.substr(0, end);
+    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    return line;
+  };
+  // Header: one column per axis, in any order.
+  std::string_view header;
+  while (!rest.empty() && (header = trim(next_line())).empty()) {
+  }
+  if (header.empty())
+    throw InputError(source + ": empty; expected a header naming the axes (" + join(surface.axis_names()) + ")");
+  std::vector<std::size_t> column_axis;
+  std::vector<bool> seen(n_axes, false);
+  for (std::size_t start = 0; start <= header.size();) {
+    const auto comma = header.find(',', start);
+    const std::string name(trim(header.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    std::size_t a = n_axes;
+    for (std::size_t i = 0; i < n_axes; ++i)
+      if (surface.axis_names()[i] == name) a = i;
+    if (a == n_axes)
+      throw InputError(SourceLocation{source, line_number, start + 1},
+                       "column '" + name + "' is not an axis of surface '" + args.name + "'; expected the axes " +
+                           join(surface.axis_names()));
+    if (seen[a]) throw InputError(SourceLocation{source, line_number, start + 1}, "column '" + name + "' repeats");
+    seen[a] = true;
+    column_axis.push_back(a);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  for (std::size_t a = 0; a < n_axes; ++a)
+    if (!seen[a])
+      throw InputError(SourceLocation{source, line_number, 0},
+                       "no column for axis '" + surface.axis_names()[a] + "'; expected columns " +
+                           join(surface.axis_names()));
+
+  Output out(args.output);
+  for (std::size_t a = 0; a < n_axes; ++a) out.text((a ? "," : "") + surface.axis_names()[a]);
+  for (std::size_t k = 0; k < n_out; ++k) out.text("," + surface.output_names()[k]);
+  if (args.gradient)
+    for (std::size_t k = 0; k < n_out; ++k)
+      for (std::size_t a = 0; a < n_axes; ++a)
+        out.text(",d" + surface.output_names()[k] + "/d" + surface.axis_names()[a]);
+  out.text("\n");
+
+  std::vector<double> point(n_axes), values(n_out), gradient(n_out * n_axes);
+  std::size_t points = 0;
+  while (!rest.empty()) {
+    const std::string_view line = next_line();
+    if (trim(line).empty()) continue;
+    const char* p = line.data();
+    const char* const end = line.data() + line.size();
+    for (std::size_t c = 0; c < column_axis.size(); ++c) {
+      while (p < end && (*p == ' ' || *p == '\t')) ++p;
+      if (p < end && *p == '+') ++p;
+      double value = 0.0;
+      const auto [stop, ec] = std::from_chars(p, end, value);
+      const std::size_t column = static_cast<std::size_t>(p - line.data()) + 1;
+      if (ec != std::errc{} || !std::isfinite(value)) {
+        const auto cell_end = std::find(p, end, ',');
+        throw InputError(SourceLocation{source, line_number, column},
+                         "'" + std::string(p, cell_end) + "' in column '" + surface.axis_names()[column_axis[c]] +
+                             "'; expected a finite number");
+      }
+      p = stop;
+      while (p < end && (*p == ' ' || *p == '\t')) ++p;
+      const bool last = c + 1 == column_axis.size();
+      if (last ? p != end : (p == end || *p != ','))
+        throw InputError(SourceLocation{source, line_number, static_cast<std::size_t>(p - line.data()) + 1},
+                         "row has " + std::string(last ? "more" : "fewer") + " than " +
+                             std::to_string(column_axis.size()) + " numbers; expected one per header column");
+      ++p;
+      point[column_axis[c]] = value;
+    }
+    try {
+      if (args.gradient)
+        surface.evaluate_with_gradient(point, values, gradient);
+      else
+        surface.evaluate(point, values);
+    } catch (const InputError& error) {
+      throw InputError(SourceLocation{source, line_number, 0}, error.what());
+    }
+    for (std::size_t a = 0; a < n_axes; ++a) {
+      if (a) out.text(",");
+      out.number(point[a]);
+    }
+    for (std::size_t k = 0; k < n_out; ++k) {
+      out.text(",");
+      out.number(values[k]);
+    }
+    if (args.gradient)
+      for (double g : gradient) {
+        out.text(",");
+        out.number(g);
+      }
+    out.text("\n");
+    ++points;
+  }
+  out.finish();
+  if (args.output != "-" && !args.json)
+    std::cerr << "hydrocoef: " << points << " points of surface '" << args.name << "' written to " << args.output
+              << '\n';
+  if (args.json && args.output != "-")
+    std::cout << nlohmann::json{{"surface", args.name}, {"points", points}, {"output", args.output}}.dump(2) << '\n';
+}
+
+void run_query(const QueryArgs& args, const GlobalOptions& global) {
+  if (!args.input.empty() && !args.point.empty())
+    throw InputError("give either a point (AXIS=VALUE ...) or --input, not both");
+  if (args.input.empty() && args.point.empty())
+    throw InputError("no point; expected AXIS=VALUE for each axis of the surface, or --input FILE (- for stdin)");
+  Database database(global.database, Database::OpenMode::MustExist);
+  const StoredSurface stored = load_surface(database, args.name);
+  warn_if_stale(stored.record);
+  if (args.input.empty())
+    query_point(args, stored);
+  else
+    query_batch(args, stored);
+}
+
+}  // namespace
+
+void add_query_command(CLI::App& app, const GlobalOptions& global) {
+  auto args = std::make_shared<QueryArgs>();
+  auto* query = app.add_subcommand(
+      "query",
+      "Evaluate a stored surface: at one point (hydrocoef query NAME u=0.2 v=0.07), or at every row of a CSV whose "
+      "header names the axes (--input FILE, - for stdin), written as CSV (--output FILE, default stdout). Values are "
+      "forces on the body in N or N m; out-of-range points follow the surface's policy.");
+  query->add_option("name", args->name, "Surface name")->required();
+  query->add_option("point", args->point, "AXIS=VALUE for each axis (SI units)");
+  query->add_option("--input", args->input, "CSV of points (header: axis names), - for standard input");
+  query->add_option("--output", args->output, "CSV of results, - for standard output")->capture_default_str();
+  query->add_flag("--gradient", args->gradient, "Also the derivative of each output along each axis");
+  query->add_flag("--json", args->json, "Machine-readable output (single point)");
+  query->callback([args, &global] { run_query(*args, global); });
+}
+
+}  // namespace hydrocoef::cli

@@ -1,0 +1,112 @@
+#include "src/surface/coefficient_surface.hpp"
+
+#include <stdexcept>
+
+#include "src/core/error.hpp"
+#include "src/core/run.hpp"
+
+namespace hydrocoef {
+namespace {
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+std::vector<std::string> units_or_default(std::vector<std::string> units, const std::vector<std::string>& names,
+                                          const char* what) {
+  if (units.empty()) {
+    for (const auto& name : names) units.push_back(default_unit(name));
+    return units;
+  }
+  if (units.size() != names.size())
+    throw InputError(std::string("a surface has ") + std::to_string(names.size()) + " " + what + "s but " +
+                     std::to_string(units.size()) + " " + what + " units; expected one unit per " + what);
+  return units;
+}
+
+std::size_t find_name(const std::vector<std::string>& names, std::string_view name, const char* what) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return i;
+  throw InputError(std::string("the surface has no ") + what + " '" + std::string(name) + "'; its " + what +
+                   "s are " + join(names));
+}
+
+}  // namespace
+
+std::string default_unit(std::string_view name) {
+  if (const auto v = velocity_index(name)) return *v < 3 ? "m/s" : "rad/s";
+  if (const auto f = force_index(name)) return *f < 3 ? "N" : "N m";
+  return "";
+}
+
+CoefficientSurface::CoefficientSurface(GridTable table, std::vector<std::string> axis_units,
+                                       std::vector<std::string> output_units) {
+  for (const auto& axis : table.axes()) axis_names_.push_back(axis.name);
+  output_names_ = table.outputs();
+  axis_units_ = units_or_default(std::move(axis_units), axis_names_, "axis");
+  output_units_ = units_or_default(std::move(output_units), output_names_, "output");
+  grid_ = std::make_shared<const GridTable>(std::move(table));
+}
+
+CoefficientSurface::CoefficientSurface(RbfSurface rbf, std::vector<std::string> axis_names,
+                                       std::vector<std::string> output_names, std::vector<std::string> axis_units,
+                                       std::vector<std::string> output_units)
+    : axis_names_(std::move(axis_names)), output_names_(std::move(output_names)) {
+  if (axis_names_.size() != rbf.axis_count() || output_names_.size() != rbf.output_count())
+    throw InputError("an RBF surface of " + std::to_string(rbf.axis_count()) + " axes and " +
+                     std::to_string(rbf.output_count()) + " outputs was given " + std::to_string(axis_names_.size()) +
+                     " axis names and " + std::to_string(output_names_.size()) + " output names; expected as many");
+  axis_units_ = units_or_default(std::move(axis_units), axis_names_, "axis");
+  output_units_ = units_or_default(std::move(output_units), output_names_, "output");
+  rbf_ = std::make_shared<const RbfSurface>(std::move(rbf));
+}
+
+std::size_t CoefficientSurface::axis_index(std::string_view name) const { return find_name(axis_names_, name, "axis"); }
+
+std::size_t CoefficientSurface::output_index(std::string_view name) const {
+  return find_name(output_names_, name, "output");
+}
+
+double CoefficientSurface::lower(std::size_t axis) const {
+  if (axis >= axis_count()) throw std::out_of_range("CoefficientSurface::lower: axis out of range");
+  return grid_ ? grid_->axes()[axis].breakpoints.front() : rbf_->lower(axis);
+}
+
+double CoefficientSurface::upper(std::size_t axis) const {
+  if (axis >= axis_count()) throw std::out_of_range("CoefficientSurface::upper: axis out of range");
+  return grid_ ? grid_->axes()[axis].breakpoints.back() : rbf_->upper(axis);
+}
+
+std::string CoefficientSurface::out_of_range_name(std::size_t axis) const {
+  if (axis >= axis_count()) throw std::out_of_range("CoefficientSurface::out_of_range_name: axis out of range");
+  if (grid_) return std::string(extrapolation_name(grid_->axes()[axis].extrapolation));
+  switch (rbf_->out_of_range(axis)) {
+    case RbfOutOfRange::Error: return "error";
+    case RbfOutOfRange::Clamp: return "clamp";
+    case RbfOutOfRange::Extrapolate: return "extrapolate";
+  }
+  return "error";
+}
+
+std::string CoefficientSurface::method_name() const {
+  return grid_ ? std::string(interpolation_name(grid_->method())) : std::string("rbf");
+}
+
+void CoefficientSurface::evaluate(std::span<const double> point, std::span<double> out) const {
+  if (grid_)
+    grid_->evaluate(point, out);
+  else
+    rbf_->evaluate(point, out);
+}
+
+void CoefficientSurface::evaluate_with_gradient(std::span<const double> point, std::span<double> out,
+                                                std::span<double> gradient) const {
+  if (grid_)
+    grid_->evaluate_with_gradient(point, out, gradient);
+  else
+    rbf_->evaluate_with_gradient(point, out, gradient);
+}
+
+}  // namespace hydrocoef
