@@ -27,6 +27,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global);
 void add_integrate_command(CLI::App& app);
 void add_surface_command(CLI::App& app, const GlobalOptions& global);
 void add_query_command(CLI::App& app, const GlobalOptions& global);
+void add_export_command(CLI::App& app, const GlobalOptions& global);
 
 
 /// Parses "NAME=VALUE" (VALUE a finite number); InputError naming the option otherwise.

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   cli::add_integrate_command(app);
   cli::add_surface_command(app, global);
   cli::add_query_command(app, global);
+  cli::add_export_command(app, global);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,203 @@
+#include "src/export/export.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "src/core/error.hpp"
+#include "src/core/source_file.hpp"
+#include "src/export/c_header_export.hpp"
+#include "src/export/csv_export.hpp"
+#include "src/export/jsbsim_export.hpp"
+#include "src/export/json_export.hpp"
+#include "src/export/mat_export.hpp"
+#include "src/export/vtk_export.hpp"
+
+namespace hydrocoef {
+
+namespace {
+
+std::string data_bytes(const std::vector<double>& data) {
+  std::string bytes(data.size() * sizeof(double), '\0');
+  if (!data.empty()) std::memcpy(bytes.data(), data.data(), bytes.size());
+  return bytes;
+}
+
+std::filesystem::path directory_of(const std::filesystem::path& path) {
+  const std::filesystem::path parent = path.parent_path();
+  return parent.empty() ? std::filesystem::path(".") : parent;
+}
+
+}  // namespace
+
+std::string content_sha256(const SurfaceRecord& record) {
+  return sha256_hex(record.definition + data_bytes(record.data));
+}
+
+ExportMetadata metadata_from_record(const SurfaceRecord& record, const CoefficientSurface& surface) {
+  if (surface.kind() != CoefficientSurface::Kind::Grid) {
+    throw InputError("surface '" + record.name + "' is an RBF surface (scattered samples); only gridded surfaces " +
+                     "can be exported as tables; expected a grid: tabulate it with `hydrocoef surface build NAME ... "
+                     "--method rbf --resample AXIS=FROM:TO:COUNT` (one per axis) and export that");
+  }
+  ExportMetadata metadata;
+  metadata.surface_name = record.name;
+  metadata.body = record.body;
+  metadata.axis_units = surface.axis_units();
+  metadata.output_units = surface.output_units();
+  metadata.sign_convention = "on-body";
+  metadata.run_ids = record.run_ids;
+  metadata.content_sha256 = content_sha256(record);
+  metadata.created_at = record.created_at;
+  metadata.quality_json = record.quality;
+  metadata.stale = record.stale;
+  return metadata;
+}
+
+ExportMetadata metadata_for_table(const GridTable& table, std::string surface_name) {
+  ExportMetadata metadata;
+  metadata.surface_name = std::move(surface_name);
+  for (const GridAxis& axis : table.axes()) metadata.axis_units.push_back(default_unit(axis.name));
+  for (const std::string& output : table.outputs()) metadata.output_units.push_back(default_unit(output));
+  metadata.content_sha256 = sha256_hex(data_bytes(table.values()));
+  return metadata;
+}
+
+std::string_view export_format_name(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::Csv: return "csv";
+    case ExportFormat::CsvWide: return "csv-wide";
+    case ExportFormat::Json: return "json";
+    case ExportFormat::CHeader: return "c";
+    case ExportFormat::Mat: return "mat";
+    case ExportFormat::Jsbsim: return "jsbsim";
+    case ExportFormat::Vtk: return "vtk";
+  }
+  return "?";
+}
+
+ExportFormat parse_export_format(std::string_view text) {
+  for (ExportFormat format : {ExportFormat::Csv, ExportFormat::CsvWide, ExportFormat::Json, ExportFormat::CHeader,
+                              ExportFormat::Mat, ExportFormat::Jsbsim, ExportFormat::Vtk}) {
+    if (text == export_format_name(format)) return format;
+  }
+  throw InputError("unknown export format '" + std::string(text) +
+                   "'; expected csv, csv-wide, json, c, mat, jsbsim or vtk");
+}
+
+void check_metadata(const GridTable& table, const ExportMetadata& metadata) {
+  if (metadata.axis_units.size() != table.axis_count() || metadata.output_units.size() != table.output_count()) {
+    throw InputError("export of '" + metadata.surface_name + "': " + std::to_string(metadata.axis_units.size()) +
+                     " axis units and " + std::to_string(metadata.output_units.size()) + " output units; expected " +
+                     std::to_string(table.axis_count()) + " and " + std::to_string(table.output_count()));
+  }
+}
+
+std::vector<std::filesystem::path> export_table(const GridTable& table, const ExportMetadata& metadata,
+                                                ExportFormat format, const std::filesystem::path& path,
+                                                const ExportOptions& options) {
+  check_metadata(table, metadata);
+  // Every format's text is made (and every refusal thrown) before a byte is written.
+  switch (format) {
+    case ExportFormat::Csv:
+      write_file_atomically(path, csv_long_text(table, metadata));
+      return {path};
+    case ExportFormat::CsvWide:
+      write_file_atomically(path, csv_wide_text(table, metadata));
+      return {path};
+    case ExportFormat::Json:
+      write_file_atomically(path, json_text(table, metadata));
+      return {path};
+    case ExportFormat::CHeader: {
+      CHeaderOptions c_options;
+      c_options.single_precision = options.single_precision;
+      c_options.identifier = options.c_identifier;
+      write_file_atomically(path, c_header_text(table, metadata, c_options));
+      return {path};
+    }
+    case ExportFormat::Mat:
+      return write_mat(table, metadata, path);
+    case ExportFormat::Jsbsim:
+      write_file_atomically(path, jsbsim_text(table, metadata));
+      return {path};
+    case ExportFormat::Vtk:
+      write_vtk(table, metadata, path);
+      return {path};
+  }
+  return {};
+}
+
+std::filesystem::path temporary_beside(const std::filesystem::path& path) {
+  static std::atomic<unsigned> counter{0};
+  const std::filesystem::path directory = directory_of(path);
+  std::error_code ec;
+  if (path.filename().empty()) {
+    throw InputError("cannot write '" + path.string() + "': it names a directory; expected a file name");
+  }
+  if (!std::filesystem::is_directory(directory, ec)) {
+    const bool exists = std::filesystem::exists(directory, ec);
+    throw InputError("cannot write '" + path.string() + "': '" + directory.string() + "' " +
+                     (exists ? "is not a directory" : "does not exist") + "; expected an existing directory");
+  }
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError("cannot write '" + path.string() + "': it is a directory; expected a file name");
+  }
+  return directory / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                      std::to_string(counter.fetch_add(1)));
+}
+
+void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) {
+    std::filesystem::remove(temporary, ec);
+    throw InputError("cannot write '" + path.string() + "': " + ec.message());
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  const std::filesystem::path temporary = temporary_beside(path);
+  std::FILE* file = std::fopen(temporary.c_str(), "wb");
+  if (!file) {
+    throw InputError("cannot write '" + path.string() + "': " + std::strerror(errno) +
+                     "; expected a writable directory");
+  }
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed) {
+    const int error = errno;
+    std::error_code ec;
+    std::filesystem::remove(temporary, ec);
+    throw InputError("cannot write '" + path.string() + "': " + std::strerror(error));
+  }
+  commit_temporary(temporary, path);
+}
+
+std::string shortest_number(double value) {
+  std::array<char, 32> buffer{};
+  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  if (ec != std::errc()) return "nan";
+  return std::string(buffer.data(), end);
+}
+
+std::string provenance_line(const ExportMetadata& metadata) {
+  std::string runs;
+  for (std::size_t i = 0; i < metadata.run_ids.size(); ++i) runs += (i ? "," : "") + std::to_string(metadata.run_ids[i]);
+  return "surface '" + metadata.surface_name + "'" + (metadata.body.empty() ? "" : " of body '" + metadata.body + "'") +
+         "; runs [" + runs + "]; content sha256 " + metadata.content_sha256 +
+         (metadata.created_at.empty() ? "" : "; built " + metadata.created_at) +
+         (metadata.stale ? "; STALE: forces changed since it was built" : "");
+}
+
+std::string sign_convention_text(const std::string& convention) {
+  if (convention == "opposing") return "opposing: a damping magnitude, positive opposes motion";
+  return "on-body: the force of the fluid on the body (SNAME), damping is negative";
+}
+
+}  // namespace hydrocoef
