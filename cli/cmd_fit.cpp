@@ -9,6 +9,7 @@
 
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
+#include "src/fit/coefficient_curve.hpp"
 #include "src/fit/damping_law.hpp"
 #include "src/store/database.hpp"
 
@@ -22,6 +23,8 @@ struct FitArgs {
   std::string loss = "squared";
   std::vector<std::string> where;
   std::optional<std::string> name;
+  std::optional<std::string> by;
+  std::string curve = "polynomial:2";
   bool no_store = false;
   bool json = false;
 };
@@ -69,6 +72,140 @@ std::vector<std::string> varying_conditions(const std::vector<StoredRun>& runs, 
   return out;
 }
 
+/// The value of a velocity component or disturbance in a run's key.
+double condition_value(const StoredRun& run, const std::string& name) {
+  if (const auto v = velocity_index(name)) return run.key.nu_b[*v];
+  const auto it = run.key.disturbances.find(name);
+  if (it == run.key.disturbances.end())
+    throw InputError("--by " + name + ": run " + std::to_string(run.id) + " (" + describe(run.key) +
+                     ") has no disturbance '" + name + "'; expected a velocity component or a disturbance every run has");
+  return it->second;
+}
+
+struct LawSetup {
+  DampingLawSpec spec;
+  FitOptions options;
+  std::size_t dof = 0;
+  std::size_t variable = 0;
+  SignConvention sign = SignConvention::OnBody;
+  std::string filter_text;
+};
+
+/// "polynomial:D" or "pchip".
+std::pair<CurveKind, int> parse_curve(const std::string& text) {
+  if (text == "pchip") return {CurveKind::Pchip, 3};
+  if (text.rfind("polynomial:", 0) == 0) {
+    const std::string degree = text.substr(11);
+    if (degree.size() == 1 && degree[0] >= '0' && degree[0] <= '9') return {CurveKind::Polynomial, degree[0] - '0'};
+  }
+  throw InputError("--curve '" + text + "': expected polynomial:D (D a degree 0 to 9) or pchip");
+}
+
+/// hydrocoef fit --by NAME: the law at each level of NAME, then each
+/// coefficient as a curve of the level (the paper's Fig. 7 and 10).
+void run_fit_by_level(const FitArgs& args, const GlobalOptions& global, Database& database, const LawSetup& law,
+                      const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& levels,
+                      const std::vector<std::int64_t>& run_ids) {
+  const auto [kind, degree] = parse_curve(args.curve);
+  if (*args.by == law.spec.variable)
+    throw InputError("--by " + *args.by + " is the law's own variable; expected another velocity component or a "
+                     "disturbance");
+  const auto fits = fit_per_level(law.spec, x, y, levels, law.options);
+  const auto curves = fit_coefficient_curves(fits, kind, degree);
+  const std::string terms = format_damping_terms(law.spec);
+  const std::string base = args.name.value_or(args.body + ":" + args.dof + "(" + terms + ")" +
+                                              (law.filter_text.empty() ? "" : "@" + law.filter_text));
+  std::vector<std::optional<std::int64_t>> ids;
+  std::vector<std::string> names;
+  for (const auto& level : fits) {
+    const std::string condition = *args.by + "=" + number(level.level);
+    names.push_back(base + "@" + condition);
+    if (args.no_store) {
+      ids.emplace_back();
+      continue;
+    }
+    FitRecord record;
+    record.name = names.back();
+    record.body = args.body;
+    record.dof = args.dof;
+    record.variable = law.spec.variable;
+    record.terms = terms;
+    record.loss = level.fit.loss;
+    record.run_filter = law.filter_text.empty() ? condition : law.filter_text + "," + condition;
+    record.sign = law.sign;
+    record.n = level.fit.n;
+    record.rmse = level.fit.rmse;
+    record.r2 = level.fit.r2;
+    for (std::size_t k = 0; k < law.spec.terms.size(); ++k) {
+      FitRecord::Coefficient c{term_name(law.spec.terms[k], law.spec.variable), level.fit.coefficients[k], std::nullopt};
+      if (std::isfinite(level.fit.std_errors[k])) c.std_error = level.fit.std_errors[k];
+      record.coefficients.push_back(c);
+    }
+    for (std::size_t i = 0; i < levels.size(); ++i)
+      if (levels[i] == level.level) record.run_ids.push_back(run_ids[i]);
+    ids.emplace_back(database.save_fit(record));
+  }
+
+  if (args.json) {
+    nlohmann::json out = {{"name", base},          {"body", args.body},  {"dof", args.dof},
+                          {"variable", law.spec.variable}, {"terms", terms}, {"by", *args.by},
+                          {"curve", args.curve},   {"where", law.filter_text},
+                          {"sign_convention", std::string(to_string(law.sign))}};
+    out["levels"] = nlohmann::json::array();
+    for (std::size_t l = 0; l < fits.size(); ++l) {
+      nlohmann::json item = {{"level", fits[l].level}, {"name", names[l]},      {"n", fits[l].fit.n},
+                             {"rmse", fits[l].fit.rmse}, {"r2", optional_number(fits[l].fit.r2)},
+                             {"stored", ids[l].has_value()}};
+      for (std::size_t k = 0; k < law.spec.terms.size(); ++k) {
+        const std::string term = term_name(law.spec.terms[k], law.spec.variable);
+        item["coefficients"][term] = fits[l].fit.coefficients[k];
+        item["std_errors"][term] = optional_number(fits[l].fit.std_errors[k]);
+      }
+      if (ids[l]) item["fit_id"] = *ids[l];
+      out["levels"].push_back(item);
+    }
+    out["curves"] = nlohmann::json::array();
+    for (std::size_t k = 0; k < curves.size(); ++k)
+      out["curves"].push_back({{"term", curves[k].term},
+                               {"kind", curves[k].kind == CurveKind::Pchip ? "pchip" : "polynomial"},
+                               {"degree", curves[k].degree},
+                               {"polynomial", curves[k].polynomial},
+                               {"levels", curves[k].levels},
+                               {"values", curves[k].values},
+                               {"rmse", curves[k].rmse},
+                               {"unit", coefficient_unit(law.spec.terms[k], law.dof, law.variable)}});
+    std::cout << out.dump(2) << '\n';
+    return;
+  }
+  std::cout << "fit " << base << " at each level of " << *args.by << " (" << fits.size() << " levels)\n\n  "
+            << std::left << std::setw(12) << *args.by;
+  for (std::size_t k = 0; k < law.spec.terms.size(); ++k)
+    std::cout << std::setw(16) << term_name(law.spec.terms[k], law.spec.variable);
+  std::cout << std::setw(6) << "n" << "R^2\n";
+  for (const auto& level : fits) {
+    std::cout << "  " << std::setw(12) << significant(level.level, 6);
+    for (double c : level.fit.coefficients) std::cout << std::setw(16) << significant(c, 7);
+    std::cout << std::setw(6) << level.fit.n << significant(level.fit.r2, 6) << '\n';
+  }
+  std::cout << "\n  coefficient curves over " << *args.by << " (" << args.curve << "):\n";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    std::cout << "    " << std::setw(8) << curves[k].term;
+    if (curves[k].kind == CurveKind::Pchip) {
+      std::cout << "PCHIP through the " << curves[k].levels.size() << " per-level values";
+    } else {
+      for (std::size_t j = 0; j < curves[k].polynomial.size(); ++j) {
+        const double c = curves[k].polynomial[j];
+        std::cout << (j == 0 ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ")) << significant(std::abs(c), 6);
+        if (j >= 1) std::cout << " " << *args.by;
+        if (j >= 2) std::cout << "^" << j;
+      }
+      std::cout << "   (RMSE " << significant(curves[k].rmse, 3) << ")";
+    }
+    std::cout << "  [" << coefficient_unit(law.spec.terms[k], law.dof, law.variable) << "]\n";
+  }
+  if (!args.no_store) std::cout << "  stored " << fits.size() << " per-level fits in " << global.database << '\n';
+}
+
 void run_fit(const FitArgs& args, const GlobalOptions& global) {
   const auto dof = force_index(args.dof);
   if (!dof) throw InputError("--dof '" + args.dof + "': expected one of X Y Z K M N");
@@ -103,8 +240,14 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
     y.push_back(force.sign == sign ? force.value.total : -force.value.total);
     run_ids.push_back(run.id);
   }
-  const DampingLawFit fit = fit_damping_law(spec, x, y, options);
   const std::string terms = format_damping_terms(spec);
+  if (args.by) {
+    std::vector<double> levels;
+    for (const auto& run : runs) levels.push_back(condition_value(run, *args.by));
+    run_fit_by_level(args, global, database, {spec, options, *dof, variable, sign, filter_text}, x, y, levels, run_ids);
+    return;
+  }
+  const DampingLawFit fit = fit_damping_law(spec, x, y, options);
   const std::string name =
       args.name.value_or(args.body + ":" + args.dof + "(" + terms + ")" + (filter_text.empty() ? "" : "@" + filter_text));
   const auto varying = varying_conditions(runs, variable);
@@ -244,6 +387,11 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command->add_option("--where", args->where, "Only runs with NAME=VALUE (velocity or disturbance; repeatable)");
   command->add_option("--name", args->name, "Name to store the fit under (default body:dof(terms))");
+  command->add_option("--by", args->by,
+                      "Fit the law separately at each level of this velocity component or disturbance, then each "
+                      "coefficient as a curve of the level");
+  command->add_option("--curve", args->curve, "With --by: polynomial:D (least squares, degree D) or pchip")
+      ->capture_default_str();
   command->add_flag("--no-store", args->no_store, "Do not store the fit");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_fit(*args, global); });

@@ -3,8 +3,10 @@
 // leaving the database exactly as it was.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sqlite_dump.hpp"
@@ -183,6 +185,61 @@ TEST(Cli, UnitsInHeadersAreConvertedToSi) {
   ASSERT_EQ(runs.size(), 1u);
   EXPECT_DOUBLE_EQ(runs[0]["u"].get<double>(), 0.1);
   EXPECT_DOUBLE_EQ(runs[0]["forces"]["X"]["total"].get<double>(), 2.0);
+}
+
+TEST(Cli, FitByLevelRecoversCoefficientsThatVaryWithTheDisturbance) {
+  // X = a(c) u + b(c) u|u| under a current c, with a = 0.1 + 2 c^2 and
+  // b = 11 + 5 c: each level's law is exact, and a degree-2 polynomial
+  // through the levels' coefficients gives a and b back.
+  TempDir dir;
+  std::ostringstream table;
+  table.precision(17);
+  table << "u [m s^-1],current_v [m s^-1],X [N]\n";
+  const std::vector<double> levels{0.0, 0.05, 0.1, 0.2};
+  for (double c : levels)
+    for (double u : {-0.2, 0.05, 0.1, 0.2, 0.3}) table << u << "," << c << "," << (0.1 + 2 * c * c) * u + (11 + 5 * c) * u * std::abs(u) << "\n";
+  write(dir / "sweep.csv", table.str());
+  ASSERT_EQ(run_cli({"import", "sweep.csv", "--body", "b", "--disturbance", "current_v"}, dir.path()).exit_code, 0);
+  const auto result = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v",
+                               "--curve", "polynomial:2", "--json"},
+                              dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto out = nlohmann::json::parse(result.out);
+  ASSERT_EQ(out["levels"].size(), levels.size());
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const double c = levels[l];
+    EXPECT_NEAR(out["levels"][l]["level"].get<double>(), c, 1e-15);
+    EXPECT_NEAR(out["levels"][l]["coefficients"]["u"].get<double>(), 0.1 + 2 * c * c, 1e-9);
+    EXPECT_NEAR(out["levels"][l]["coefficients"]["u|u|"].get<double>(), 11 + 5 * c, 1e-9);
+  }
+  const auto a = out["curves"][0]["polynomial"].get<std::vector<double>>();
+  const auto b = out["curves"][1]["polynomial"].get<std::vector<double>>();
+  ASSERT_EQ(a.size(), 3u);
+  EXPECT_NEAR(a[0], 0.1, 1e-8);
+  EXPECT_NEAR(a[1], 0.0, 1e-7);
+  EXPECT_NEAR(a[2], 2.0, 1e-6);
+  EXPECT_NEAR(b[0], 11.0, 1e-8);
+  EXPECT_NEAR(b[1], 5.0, 1e-7);
+  EXPECT_NEAR(b[2], 0.0, 1e-6);
+  EXPECT_EQ(out["curves"][1]["unit"], "N/(m/s)^2");
+  // Each level is stored as a fit of its own.
+  const auto fits = nlohmann::json::parse(run_cli({"fits", "--json"}, dir.path()).out);
+  EXPECT_EQ(fits.size(), levels.size());
+  EXPECT_EQ(fits[1]["where"], "current_v=0.05");
+
+  const auto text = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v", "--curve",
+                             "pchip", "--no-store"},
+                            dir.path());
+  EXPECT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("PCHIP"), std::string::npos);
+  const auto bad = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_w"}, dir.path());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("no disturbance 'current_w'"), std::string::npos) << bad.err;
+  const auto bad_curve =
+      run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v", "--curve", "spline"},
+              dir.path());
+  EXPECT_EQ(bad_curve.exit_code, 2);
+  EXPECT_NE(bad_curve.err.find("polynomial:D"), std::string::npos) << bad_curve.err;
 }
 
 }  // namespace
