@@ -5,6 +5,10 @@
 #
 #   examples/asr-v/run.sh HYDROCOEF_BINARY DATABASE
 #
+# Then coefficient surfaces over the surge speed and the yaw rate are built
+# from the runs, queried with their gradients, and exported (JSON, a C header,
+# MATLAB) into asr-v-export/ beside the database.
+#
 # What to expect (paper eq. 5 and 6, sign as in each table):
 #   surge  X(u) = c + 0.01551 u + 11.0364 u|u|      (positive opposes motion)
 #   yaw    N(r) = c - 0.006075 r - 0.07714 r|r|     (force on the body)
@@ -40,3 +44,24 @@ h fit --body asr-v --dof N --terms "1,r,r|r|"
 echo
 echo "== stored fits"
 h fits --body asr-v
+
+echo
+echo "== surfaces: surge force X(u) and yaw moment N(r), monotone cubic (PCHIP) through the runs"
+h surface build asr-v-surge --body asr-v --outputs X --axes u --method pchip
+h surface build asr-v-yaw --body asr-v --outputs N --axes r --method pchip --extrapolate linear
+h surface list --body asr-v
+
+echo
+echo "== query: between the runs, with the local damping slope a controller linearises with"
+h query asr-v-surge u=0.25 --gradient
+h query asr-v-yaw r=0.15 --gradient
+echo "   outside the CFD range the surge surface refuses (policy: error):"
+h query asr-v-surge u=0.6 || true
+
+out=$(dirname "$db")/asr-v-export
+mkdir -p "$out"
+echo
+echo "== export into $out"
+h export asr-v-yaw --format json -o "$out/asr-v-yaw.json"
+h export asr-v-yaw --format c -o "$out/asr_v_yaw.h"
+h export asr-v-surge --format csv -o "$out/asr-v-surge.csv"
