@@ -25,6 +25,8 @@ void add_import_command(CLI::App& app, const GlobalOptions& global);
 void add_runs_command(CLI::App& app, const GlobalOptions& global);
 void add_fit_command(CLI::App& app, const GlobalOptions& global);
 void add_integrate_command(CLI::App& app);
+void add_simulate_command(CLI::App& app, const GlobalOptions& global);
+void add_equilibrium_command(CLI::App& app, const GlobalOptions& global);
 void add_surface_command(CLI::App& app, const GlobalOptions& global);
 void add_query_command(CLI::App& app, const GlobalOptions& global);
 void add_export_command(CLI::App& app, const GlobalOptions& global);

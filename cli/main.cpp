@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   cli::add_runs_command(app, global);
   cli::add_fit_command(app, global);
   cli::add_integrate_command(app);
+  cli::add_simulate_command(app, global);
+  cli::add_equilibrium_command(app, global);
   cli::add_surface_command(app, global);
   cli::add_query_command(app, global);
   cli::add_export_command(app, global);

@@ -1,0 +1,154 @@
+#include "src/dynamics/damping.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+namespace {
+
+std::string dof_context(std::size_t dof) { return "damping of " + std::string(kForceNames[dof]); }
+
+double sign_factor(SignConvention sign) { return sign == SignConvention::OnBody ? 1.0 : -1.0; }
+
+// The source name bound to each axis of a surface: the explicit binding or
+// the axis's own name.
+std::vector<std::string> axis_bindings(const CoefficientSurface& surface, const DofDamping& damping,
+                                       std::size_t dof) {
+  for (const auto& [axis, source] : damping.axis_sources) {
+    const auto& names = surface.axis_names();
+    if (std::find(names.begin(), names.end(), axis) == names.end()) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw InputError(dof_context(dof) + ": surface '" + damping.surface + "' has no axis '" + axis +
+                       "' (its axes: " + list + ")");
+    }
+    if (source.empty()) throw InputError(dof_context(dof) + ": axis '" + axis + "' is bound to an empty name");
+  }
+  std::vector<std::string> out;
+  for (const auto& axis : surface.axis_names()) {
+    const auto it = damping.axis_sources.find(axis);
+    out.push_back(it == damping.axis_sources.end() ? axis : it->second);
+  }
+  return out;
+}
+
+}  // namespace
+
+DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resolver) {
+  // Pass 1: laws, and the surfaces with their bindings.
+  struct Pending {
+    std::size_t dof;
+    CoefficientSurface surface;
+    std::vector<std::string> bindings;
+  };
+  std::vector<Pending> pending;
+  std::map<std::string, CoefficientSurface> resolved;
+  std::set<std::string> disturbances;
+  for (std::size_t dof = 0; dof < 6; ++dof) {
+    const DofDamping& d = spec[dof];
+    switch (d.kind) {
+      case DofDamping::Kind::None: break;
+      case DofDamping::Kind::Law: {
+        const auto variable = velocity_index(d.law.variable);
+        if (!variable || d.law.terms.empty() || d.law.terms.size() > 6)
+          throw InputError(dof_context(dof) + ": a law needs 1 to 6 terms of one velocity component u, v, w, p, q, r");
+        if (d.coefficients.size() != d.law.terms.size())
+          throw InputError(dof_context(dof) + ": found " + std::to_string(d.coefficients.size()) +
+                           " coefficients for " + std::to_string(d.law.terms.size()) + " terms, expected one per term");
+        Law law;
+        law.dof = dof;
+        law.variable = *variable;
+        law.count = d.law.terms.size();
+        for (std::size_t k = 0; k < law.count; ++k) {
+          law.terms[k] = d.law.terms[k];
+          law.coefficients[k] = sign_factor(d.sign) * d.coefficients[k];
+        }
+        laws_.push_back(law);
+        damped_[dof] = true;
+        break;
+      }
+      case DofDamping::Kind::Surface: {
+        if (!resolver)
+          throw InputError(dof_context(dof) + ": surface '" + d.surface +
+                           "' is needed but no surface source was given (a run database)");
+        auto it = resolved.find(d.surface);
+        if (it == resolved.end()) {
+          try {
+            it = resolved.emplace(d.surface, resolver(d.surface)).first;
+          } catch (const InputError& e) {
+            throw InputError(dof_context(dof) + ": " + e.what());
+          }
+        }
+        const CoefficientSurface& surface = it->second;
+        if (surface.axis_count() > kMaxAxes || surface.output_count() > kMaxOutputs)
+          throw InputError(dof_context(dof) + ": surface '" + d.surface + "' has " +
+                           std::to_string(surface.axis_count()) + " axes and " + std::to_string(surface.output_count()) +
+                           " outputs; at most " + std::to_string(kMaxAxes) + " and " + std::to_string(kMaxOutputs) +
+                           " are supported for damping");
+        try {
+          (void)surface.output_index(d.output);
+        } catch (const InputError& e) {
+          throw InputError(dof_context(dof) + ": surface '" + d.surface + "': " + e.what());
+        }
+        auto bindings = axis_bindings(surface, d, dof);
+        for (const auto& b : bindings)
+          if (!velocity_index(b)) disturbances.insert(b);
+        pending.push_back({dof, surface, std::move(bindings)});
+        damped_[dof] = true;
+        break;
+      }
+    }
+  }
+  disturbance_names_.assign(disturbances.begin(), disturbances.end());
+
+  // Pass 2: one lookup per (surface, bindings); each DOF adds its output.
+  for (const auto& p : pending) {
+    const DofDamping& d = spec[p.dof];
+    std::string key = d.surface;
+    for (const auto& b : p.bindings) key += "|" + b;
+    auto lookup = std::find_if(lookups_.begin(), lookups_.end(), [&](const Lookup& l) { return l.key == key; });
+    if (lookup == lookups_.end()) {
+      Lookup l{p.surface, key};
+      l.axis_count = p.bindings.size();
+      for (std::size_t a = 0; a < p.bindings.size(); ++a) {
+        if (const auto v = velocity_index(p.bindings[a])) {
+          l.source[a] = *v;
+        } else {
+          const auto pos = std::lower_bound(disturbance_names_.begin(), disturbance_names_.end(), p.bindings[a]);
+          l.source[a] = 6 + static_cast<std::size_t>(pos - disturbance_names_.begin());
+        }
+      }
+      lookups_.push_back(std::move(l));
+      lookup = std::prev(lookups_.end());
+    }
+    lookup->output[lookup->used] = p.surface.output_index(d.output);
+    lookup->dof[lookup->used] = p.dof;
+    lookup->sign[lookup->used] = sign_factor(d.sign);
+    ++lookup->used;
+  }
+}
+
+Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> disturbances) const {
+  Vector6 tau = Vector6::Zero();
+  for (const Law& law : laws_) {
+    const double x = nu_r_b[static_cast<Eigen::Index>(law.variable)];
+    double sum = 0.0;
+    for (std::size_t k = 0; k < law.count; ++k) sum += law.coefficients[k] * basis_value(law.terms[k], x);
+    tau[static_cast<Eigen::Index>(law.dof)] += sum;
+  }
+  // Written before they are read; left uninitialised on purpose (hot path).
+  std::array<double, kMaxAxes> point;
+  std::array<double, kMaxOutputs> out;
+  for (const Lookup& l : lookups_) {
+    for (std::size_t a = 0; a < l.axis_count; ++a)
+      point[a] = l.source[a] < 6 ? nu_r_b[static_cast<Eigen::Index>(l.source[a])] : disturbances[l.source[a] - 6];
+    l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),
+                       std::span<double>(out.data(), l.surface.output_count()));
+    for (std::size_t k = 0; k < l.used; ++k) tau[static_cast<Eigen::Index>(l.dof[k])] += l.sign[k] * out[l.output[k]];
+  }
+  return tau;
+}
+
+}  // namespace hydrocoef

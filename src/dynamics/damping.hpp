@@ -1,0 +1,117 @@
+// Hydrodynamic damping of each degree of freedom, D(nu_r) nu_r of Fossen's
+// model, as the dynamics model evaluates it: per generalized-force component
+// either a constant damping law (terms of one relative velocity component, as
+// src/fit/damping_law.hpp fits them) or one output of a coefficient surface
+// whose axes are relative velocity components or named disturbance
+// parameters supplied by the scenario (e.g. "current_v").
+//
+// The description (DampingSpec) is plain data read from a vehicle file; a
+// DampingModel is built from it once, resolving surface names through a
+// callback so that this module knows no database, and is then immutable:
+// evaluate() is const, thread-safe and allocates nothing. DOFs that read the
+// same surface with the same axis bindings share one lookup (GridTable
+// interleaves outputs, so six outputs cost under twice one).
+//
+// Units and signs: nu_r_b = nu_b - nu_c_b, the body velocity relative to the
+// water (u, v, w [m/s], p, q, r [rad/s]); the result is the damping force ON
+// THE BODY (X, Y, Z [N], K, M, N [N m]; SNAME, damping is negative). A law or
+// surface given as "opposing" (a damping magnitude, positive opposes motion)
+// is negated on evaluation.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "src/core/run.hpp"
+#include "src/dynamics/rigid_body.hpp"
+#include "src/fit/damping_law.hpp"
+#include "src/surface/coefficient_surface.hpp"
+
+namespace hydrocoef {
+
+/// Where the damping of one generalized-force component comes from.
+struct DofDamping {
+  enum class Kind {
+    None,    ///< no damping in this DOF
+    Law,     ///< F = sum_k c_k term_k(x), x one relative velocity component
+    Surface  ///< one output of a coefficient surface
+  };
+  Kind kind = Kind::None;
+  // Law: the terms (their variable is the relative velocity component) and
+  // one coefficient per term [force unit / term unit].
+  DampingLawSpec law;
+  std::vector<double> coefficients;
+  // Surface: its name (for the resolver), the output read ("X".."N" or any
+  // output name), and for each surface axis where its value comes from: a
+  // relative velocity component "u".."r" or a disturbance parameter name.
+  // Axes not listed bind by their own name (velocity names to the relative
+  // velocity, any other name to the disturbance of that name).
+  std::string surface;
+  std::string output;
+  std::map<std::string, std::string> axis_sources;
+  /// How the law's or surface's numbers are signed.
+  SignConvention sign = SignConvention::OnBody;
+};
+
+/// The damping of X, Y, Z, K, M, N in that order.
+using DampingSpec = std::array<DofDamping, 6>;
+
+/// Resolves a surface name to a surface (for example from the run database,
+/// see src/surface/stored_surface.hpp); throws InputError when it has none.
+using SurfaceResolver = std::function<CoefficientSurface(const std::string& name)>;
+
+class DampingModel {
+ public:
+  /// The most axes and outputs a surface used for damping may have.
+  static constexpr std::size_t kMaxAxes = 8;
+  static constexpr std::size_t kMaxOutputs = 32;
+
+  DampingModel() = default;
+  /// Resolves every surface of `spec` once. Throws InputError naming the DOF
+  /// ("damping of N") when a law has no terms or a coefficient count differs,
+  /// a surface is needed but `resolver` is empty or fails, an output or an
+  /// axis binding names nothing the surface has, or a surface is too large.
+  DampingModel(const DampingSpec& spec, const SurfaceResolver& resolver);
+
+  /// Disturbance parameters the surfaces read, sorted by name. evaluate()
+  /// takes their values in this order.
+  const std::vector<std::string>& disturbance_names() const noexcept { return disturbance_names_; }
+  /// True when the DOF (0..5 = X..N) has a law or a surface.
+  bool damped(std::size_t dof) const noexcept { return damped_[dof]; }
+
+  /// The damping force on the body at relative velocity nu_r_b with the given
+  /// disturbance values (SI, disturbance_names() order). Throws as the
+  /// surfaces do (InputError outside a surface's range under policy "error").
+  Vector6 evaluate(const Vector6& nu_r_b, std::span<const double> disturbances) const;
+
+ private:
+  struct Law {
+    std::size_t dof = 0;
+    std::size_t variable = 0;
+    std::size_t count = 0;
+    std::array<DampingTerm, 6> terms{};
+    std::array<double, 6> coefficients{};  // sign folded in: force on the body
+  };
+  struct Lookup {
+    CoefficientSurface surface;
+    std::string key;  // surface name + bindings: DOFs with equal keys share the lookup
+    std::size_t axis_count = 0;
+    std::array<std::size_t, kMaxAxes> source{};  // 0..5: nu_r component; 6 + k: disturbance k
+    std::size_t used = 0;                          // outputs read
+    std::array<std::size_t, 6> output{};
+    std::array<std::size_t, 6> dof{};
+    std::array<double, 6> sign{};
+  };
+
+  std::array<bool, 6> damped_{};
+  std::vector<Law> laws_;
+  std::vector<Lookup> lookups_;
+  std::vector<std::string> disturbance_names_;
+};
+
+}  // namespace hydrocoef

@@ -1,0 +1,175 @@
+#include "src/dynamics/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "src/core/error.hpp"
+#include "src/dynamics/integrators.hpp"
+
+namespace hydrocoef {
+namespace {
+
+[[noreturn]] void fail(const Scenario& scenario, const std::string& key, const std::string& message) {
+  throw InputError(SourceLocation{scenario.file}, "key '" + key + "': " + message);
+}
+
+std::string list_or_none(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out.empty() ? "none" : out;
+}
+
+struct Event {
+  double t = 0.0;
+  bool output = false;
+  std::size_t segment = 0;  // segment that starts here, 0 = none (segment 0 starts at t = 0)
+};
+
+std::vector<Event> event_times(const Scenario& scenario) {
+  std::vector<Event> events;
+  const double duration = scenario.duration_s;
+  const double rate = scenario.output_rate_Hz;
+  const auto outputs = static_cast<std::size_t>(std::floor(duration * rate * (1.0 + 1e-12)));
+  for (std::size_t k = 1; k <= outputs; ++k) events.push_back({static_cast<double>(k) / rate, true, 0});
+  if (events.empty() || events.back().t < duration * (1.0 - 1e-12)) events.push_back({duration, true, 0});
+  else events.back().t = std::min(events.back().t, duration);
+  for (std::size_t i = 1; i < scenario.segments.size(); ++i) {
+    const double start = scenario.segments[i].start_s;
+    auto it = std::lower_bound(events.begin(), events.end(), start, [](const Event& e, double t) { return e.t < t; });
+    const double tolerance = 1e-12 * std::max(1.0, duration);
+    if (it != events.end() && std::abs(it->t - start) <= tolerance) {
+      it->segment = i;
+    } else if (it != events.begin() && std::abs(std::prev(it)->t - start) <= tolerance) {
+      std::prev(it)->segment = i;
+    } else {
+      events.insert(it, {start, false, i});
+    }
+  }
+  return events;
+}
+
+}  // namespace
+
+SegmentInputs segment_inputs(const VehicleModel& model, const Scenario& scenario, std::size_t segment,
+                             std::vector<std::string>* notes) {
+  const ScenarioSegment& s = scenario.segments.at(segment);
+  const std::string path = "segments[" + std::to_string(segment) + "]";
+  const auto& thrusters = model.description().thrusters;
+  std::vector<std::string> names;
+  for (const auto& t : thrusters) names.push_back(t.name);
+
+  SegmentInputs in;
+  in.tau_b = s.tau_b;
+  in.current_n = s.current_n;
+  std::vector<double> thrust(thrusters.size(), 0.0);
+  if (!s.thrust_N.empty()) {
+    if (s.thrust_N.size() != thrusters.size())
+      fail(scenario, path + ".thrusters",
+           "found " + std::to_string(s.thrust_N.size()) + " thrust values, expected one per thruster of the vehicle (" +
+               std::to_string(thrusters.size()) + ": " + list_or_none(names) + ")");
+    thrust = s.thrust_N;
+  }
+  for (const auto& [name, value] : s.thrust_by_name_N) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end())
+      fail(scenario, path + ".thrusters." + name, "unknown thruster, the vehicle has: " + list_or_none(names));
+    thrust[static_cast<std::size_t>(it - names.begin())] = value;
+  }
+  for (std::size_t i = 0; i < thrust.size(); ++i) {
+    const double clamped = model.clamp_thrust(i, thrust[i]);
+    if (clamped != thrust[i] && notes)
+      notes->push_back(path + ": thruster '" + names[i] + "' command " + std::to_string(thrust[i]) + " N clamped to " +
+                       std::to_string(clamped) + " N");
+    thrust[i] = clamped;
+  }
+  if (!thrust.empty()) in.tau_b += model.thrust_force(thrust);
+
+  const auto& disturbance_names = model.disturbance_names();
+  in.disturbances.assign(disturbance_names.size(), 0.0);
+  for (const auto& [name, value] : s.disturbances) {
+    const auto it = std::find(disturbance_names.begin(), disturbance_names.end(), name);
+    if (it == disturbance_names.end())
+      fail(scenario, path + ".disturbances." + name,
+           "unknown disturbance, the vehicle's surfaces read: " + list_or_none(disturbance_names));
+    in.disturbances[static_cast<std::size_t>(it - disturbance_names.begin())] = value;
+  }
+  return in;
+}
+
+SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress) {
+  if (scenario.segments.empty() || !(scenario.duration_s > 0.0) || !(scenario.output_rate_Hz > 0.0))
+    throw InputError(SourceLocation{scenario.file}, "a scenario needs a positive duration and output rate and a segment");
+  SimulationResult result;
+  // Every segment's inputs are checked before the first step.
+  std::vector<SegmentInputs> segments;
+  for (std::size_t i = 0; i < scenario.segments.size(); ++i)
+    segments.push_back(segment_inputs(model, scenario, i, &result.notes));
+
+  StateVector x = make_state(scenario.initial_position_n, quaternion_from_euler(scenario.initial_euler_rad),
+                             scenario.initial_nu_b);
+  std::size_t active = 0;
+  ModelInputs inputs;
+  auto activate = [&](std::size_t segment) {
+    active = segment;
+    inputs.tau_b = segments[active].tau_b;
+    inputs.current_n = segments[active].current_n;
+    inputs.disturbances = segments[active].disturbances;
+  };
+  activate(0);
+  auto f = [&](double, const StateVector& state, StateVector& state_dot) {
+    model.derivative(state, inputs, state_dot);
+  };
+  auto track_norm = [&](const StateVector& state) {
+    result.max_attitude_norm_error =
+        std::max(result.max_attitude_norm_error, std::abs(attitude_nb(state).norm() - 1.0));
+  };
+
+  const std::vector<Event> events = event_times(scenario);
+  result.samples.reserve(events.size() + 1);
+  result.samples.push_back(make_sample(model, 0.0, x, inputs));
+
+  const IntegratorSettings& settings = scenario.integrator;
+  Rk4Workspace<StateVector> rk4;
+  AdaptiveOptions adaptive;
+  adaptive.relative_tolerance = settings.relative_tolerance;
+  adaptive.absolute_tolerance = settings.absolute_tolerance;
+  adaptive.max_step = settings.max_step_s;
+  DormandPrince45<StateVector> dopri(adaptive);
+
+  double t = 0.0;
+  for (const Event& event : events) {
+    if (settings.method == IntegratorSettings::Method::Rk4) {
+      const double span = event.t - t;
+      const auto steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(span / settings.step_s - 1e-9)));
+      const double h = span / static_cast<double>(steps);
+      for (std::size_t k = 0; k < steps; ++k) {
+        rk4_step(f, t + static_cast<double>(k) * h, h, x, rk4);
+        track_norm(x);
+        normalize_attitude(x);
+      }
+      result.steps += steps;
+      result.evaluations += 4 * steps;
+    } else {
+      double t_local = t;
+      dopri.advance(f, t_local, event.t, x);
+      track_norm(x);
+      normalize_attitude(x);
+    }
+    t = event.t;
+    if (event.segment != 0) {
+      activate(event.segment);
+      dopri.reset_step();
+    }
+    if (event.output) result.samples.push_back(make_sample(model, t, x, inputs));
+    if (progress) progress(t, scenario.duration_s);
+  }
+  if (settings.method == IntegratorSettings::Method::DormandPrince45) {
+    result.steps = dopri.stats().accepted;
+    result.rejected_steps = dopri.stats().rejected;
+    result.evaluations = dopri.stats().evaluations;
+  }
+  result.final_state = x;
+  return result;
+}
+
+}  // namespace hydrocoef

@@ -1,0 +1,79 @@
+#include "src/dynamics/trajectory.hpp"
+
+#include <array>
+#include <charconv>
+#include <fstream>
+#include <string>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+namespace {
+
+void append_number(std::string& line, double value) {
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  line.append(buffer.data(), result.ptr);
+}
+
+template <class Vector>
+void append_all(std::string& line, const Vector& v) {
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    line += ',';
+    append_number(line, v[i]);
+  }
+}
+
+}  // namespace
+
+TrajectorySample make_sample(const VehicleModel& model, double t_s, const StateVector& x, const ModelInputs& inputs) {
+  TrajectorySample s;
+  s.t_s = t_s;
+  s.p_n = position_n(x);
+  s.q_nb = attitude_nb(x).normalized();
+  s.euler_rad = euler_from_quaternion(s.q_nb);
+  s.nu_b = velocity_b(x);
+  s.forces = model.forces(x, inputs);
+  return s;
+}
+
+std::string trajectory_csv_header() {
+  std::string h = "t [s],x_n [m],y_n [m],z_n [m],phi [rad],theta [rad],psi [rad],q_eta,q_eps1,q_eps2,q_eps3,"
+                  "u [m s^-1],v [m s^-1],w [m s^-1],p [rad s^-1],q [rad s^-1],r [rad s^-1],"
+                  "u_r [m s^-1],v_r [m s^-1],w_r [m s^-1],p_r [rad s^-1],q_r [rad s^-1],r_r [rad s^-1]";
+  for (const char* term : {"control", "damping", "hydrostatic", "coriolis"}) {
+    for (const char* f : {"X", "Y", "Z"}) h += std::string(",") + f + "_" + term + " [N]";
+    for (const char* m : {"K", "M", "N"}) h += std::string(",") + m + "_" + term + " [N m]";
+  }
+  return h;
+}
+
+void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>& samples) {
+  out << trajectory_csv_header() << '\n';
+  std::string line;
+  for (const auto& s : samples) {
+    line.clear();
+    append_number(line, s.t_s);
+    append_all(line, s.p_n);
+    append_all(line, s.euler_rad);
+    append_all(line, s.q_nb);
+    append_all(line, s.nu_b);
+    append_all(line, s.forces.nu_r_b);
+    append_all(line, s.forces.control_b);
+    append_all(line, s.forces.damping_b);
+    append_all(line, s.forces.hydrostatic_b);
+    append_all(line, s.forces.coriolis_b);
+    line += '\n';
+    out << line;
+  }
+}
+
+void write_trajectory_csv(const std::filesystem::path& path, const std::vector<TrajectorySample>& samples) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw InputError(SourceLocation{path.string()}, "cannot open the file for writing");
+  write_trajectory_csv(out, samples);
+  out.flush();
+  if (!out) throw InputError(SourceLocation{path.string()}, "writing the trajectory failed");
+}
+
+}  // namespace hydrocoef

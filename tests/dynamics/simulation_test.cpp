@@ -1,0 +1,146 @@
+// Scenario runs: the ASR-V constant-torque yaw test (0.0027 and 0.0045 N m,
+// RK4 and Dormand–Prince) settles at the root of the fitted damping law;
+// output timing; piecewise inputs; drift with a current; thruster commands
+// (clamped, named) and inputs the vehicle cannot take.
+#include "src/dynamics/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/dynamics/asr_v_fixture.hpp"
+#include "tests/support/expect_input_error.hpp"
+
+namespace hydrocoef {
+namespace {
+
+using test::expect_input_error;
+
+Scenario yaw_scenario(double tau, IntegratorSettings::Method method) {
+  Scenario s = load_scenario(std::string(HYDROCOEF_SOURCE_DIR "/examples/asr-v/scenario-yaw-") +
+                             (tau == 0.0027 ? "0.0027" : "0.0045") + ".json");
+  s.integrator.method = method;
+  // The example's 1 ms RK4 step, coarsened for the sanitizer build's speed: the
+  // steady state is a fixed point of RK4 whatever the step.
+  s.integrator.step_s = 0.005;
+  return s;
+}
+
+class AsrVYaw : public ::testing::TestWithParam<std::tuple<double, IntegratorSettings::Method>> {};
+
+TEST_P(AsrVYaw, SettlesAtTheRootOfTheDampingLaw) {
+  const auto [tau, method] = GetParam();
+  const test::YawLaw law = test::fit_asr_v_yaw_law();
+  const VehicleModel model(test::asr_v_vehicle(law));
+  const Scenario scenario = yaw_scenario(tau, method);
+  ASSERT_EQ(scenario.segments[0].tau_b[5], tau);
+  const SimulationResult result = simulate(model, scenario);
+  ASSERT_EQ(result.samples.size(), 601u);  // 60 s at 10 Hz, and t = 0
+  const double root = test::positive_yaw_root(law, tau);
+  EXPECT_NEAR(velocity_b(result.final_state)[5], root, 1e-6);
+  EXPECT_NEAR(result.samples.back().nu_b[5], root, 1e-6);
+  // From rest, yaw acceleration (tau + c) / I_z (a sphere adds no yaw inertia),
+  // then rising with decreasing acceleration, never overshooting.
+  const double i_z = 0.4 * 6.7 * 0.15 * 0.15;
+  const auto& first = result.samples.front();
+  EXPECT_NEAR((model.mass_matrix_inverse() * first.forces.total())[5], (tau + law.c) / i_z, 1e-12);
+  for (std::size_t k = 1; k < result.samples.size(); ++k) {
+    EXPECT_GE(result.samples[k].nu_b[5], result.samples[k - 1].nu_b[5] - 1e-12);
+    EXPECT_LE(result.samples[k].nu_b[5], root + 1e-9);
+  }
+  // A pure yaw: nothing else moves.
+  EXPECT_LT(result.samples.back().nu_b.head<5>().cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT(result.max_attitude_norm_error, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(PaperTorques, AsrVYaw,
+                         ::testing::Combine(::testing::Values(0.0027, 0.0045),
+                                            ::testing::Values(IntegratorSettings::Method::Rk4,
+                                                              IntegratorSettings::Method::DormandPrince45)));
+
+TEST(Simulation, OutputTimesAndPiecewiseInputs) {
+  const VehicleModel model(test::asr_v_vehicle(test::fit_asr_v_yaw_law()));
+  Scenario s;
+  s.file = "inline.json";
+  s.duration_s = 2.05;
+  s.output_rate_Hz = 4.0;
+  s.integrator.step_s = 0.01;
+  s.segments.resize(2);
+  s.segments[0].tau_b[5] = 0.004;
+  s.segments[1].start_s = 1.3;  // between two output times
+  const SimulationResult result = simulate(model, s);
+  // 0, 0.25, ..., 2.0 and the end 2.05.
+  ASSERT_EQ(result.samples.size(), 10u);
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_EQ(result.samples[k].t_s, 0.25 * static_cast<double>(k));
+  EXPECT_EQ(result.samples.back().t_s, 2.05);
+  EXPECT_EQ(result.samples[5].forces.control_b[5], 0.004);  // t = 1.25
+  EXPECT_EQ(result.samples[6].forces.control_b[5], 0.0);    // t = 1.5
+  // The steps fit the intervals: 0..1.25 (125 steps), 1.25..1.3 (5), 1.3..1.5 (20), ... 2.05 (5).
+  EXPECT_EQ(result.steps, 205u);
+  // After the torque is removed the rate falls.
+  EXPECT_LT(result.samples.back().nu_b[5], result.samples[5].nu_b[5]);
+}
+
+TEST(Simulation, DriftsWithTheCurrent) {
+  VehicleDescription d = test::asr_v_vehicle(test::fit_asr_v_yaw_law());
+  // Strong linear terms so that it settles in seconds, and damped roll, pitch
+  // and yaw (an undamped bottom-heavy body would keep rocking after the
+  // initial push and move CO to and fro).
+  for (std::size_t k = 0; k < 6; ++k) {
+    d.damping[k].kind = DofDamping::Kind::Law;
+    const std::string x(1, "uvwpqr"[k]);
+    d.damping[k].law = parse_damping_terms(x + "," + x + "|" + x + "|");
+    d.damping[k].coefficients = {k < 3 ? -5.0 : -0.5, -1.0};
+  }
+  const VehicleModel model(d);
+  Scenario s;
+  s.duration_s = 60.0;
+  s.output_rate_Hz = 1.0;
+  s.integrator.method = IntegratorSettings::Method::DormandPrince45;
+  s.initial_euler_rad = Vector3(0.0, 0.0, 0.5);
+  s.segments.resize(1);
+  s.segments[0].current_n = Vector3(0.1, 0.05, 0.0);
+  const SimulationResult result = simulate(model, s);
+  const auto& last = result.samples.back();
+  const Vector3 current_b = rotation_body_to_ned(last.q_nb).transpose() * Vector3(0.1, 0.05, 0.0);
+  EXPECT_LT((last.nu_b.head<2>() - current_b.head<2>()).cwiseAbs().maxCoeff(), 1e-7);
+  EXPECT_LT(last.forces.nu_r_b.head<3>().norm(), 1e-7);
+  // Carried along: the position grows at the current's speed.
+  const auto& before = result.samples[result.samples.size() - 11];
+  EXPECT_NEAR((last.p_n - before.p_n).x() / 10.0, 0.1, 1e-6);
+  EXPECT_NEAR((last.p_n - before.p_n).y() / 10.0, 0.05, 1e-6);
+}
+
+TEST(Simulation, ThrusterCommands) {
+  VehicleDescription d = test::asr_v_vehicle(test::fit_asr_v_yaw_law());
+  d.thrusters.push_back({"port", Vector3(0.0, -0.12, 0.0), Vector3::UnitX(), -1.0, 1.0});
+  d.thrusters.push_back({"starboard", Vector3(0.0, 0.12, 0.0), Vector3::UnitX(), -1.0, 1.0});
+  const VehicleModel model(d);
+  Scenario s;
+  s.file = "thrust.json";
+  s.duration_s = 1.0;
+  s.segments.resize(2);
+  s.segments[0].thrust_N = {0.01, -2.0};  // the second is clamped to -1 N
+  s.segments[1].start_s = 0.5;
+  s.segments[1].thrust_by_name_N = {{"port", 0.02}};
+  std::vector<std::string> notes;
+  const SegmentInputs first = segment_inputs(model, s, 0, &notes);
+  EXPECT_NEAR(first.tau_b[0], 0.01 - 1.0, 1e-15);
+  EXPECT_NEAR(first.tau_b[5], 0.12 * 0.01 + 0.12 * 1.0, 1e-15);  // N = -y f
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("starboard"), std::string::npos);
+  const SegmentInputs second = segment_inputs(model, s, 1, nullptr);
+  EXPECT_NEAR(second.tau_b[0], 0.02, 1e-15);
+
+  s.segments[1].thrust_by_name_N = {{"bow", 0.02}};
+  expect_input_error([&] { simulate(model, s); }, {"thrust.json", "segments[1].thrusters.bow", "port, starboard"});
+  s.segments[1].thrust_by_name_N = {};
+  s.segments[1].thrust_N = {0.1};
+  expect_input_error([&] { simulate(model, s); }, {"thrust.json", "segments[1].thrusters", "found 1", "(2"});
+  s.segments[1].thrust_N = {};
+  s.segments[1].disturbances = {{"current_v", 0.1}};
+  expect_input_error([&] { simulate(model, s); }, {"thrust.json", "segments[1].disturbances.current_v", "none"});
+}
+
+}  // namespace
+}  // namespace hydrocoef
