@@ -30,6 +30,7 @@ void add_equilibrium_command(CLI::App& app, const GlobalOptions& global);
 void add_surface_command(CLI::App& app, const GlobalOptions& global);
 void add_query_command(CLI::App& app, const GlobalOptions& global);
 void add_export_command(CLI::App& app, const GlobalOptions& global);
+void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global);
 
 
 /// Parses "NAME=VALUE" (VALUE a finite number); InputError naming the option otherwise.

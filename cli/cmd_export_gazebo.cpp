@@ -1,0 +1,239 @@
+// hydrocoef export-gazebo: a body's stored damping-law fits and an added-mass
+// matrix as the hydrodynamics parameters of Gazebo's underwater plugins
+// (uuv_simulator's fossen model or gz-sim's Hydrodynamics system).
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <tuple>
+
+#include "cli/common.hpp"
+#include "src/core/error.hpp"
+#include "src/export/export.hpp"
+#include "src/export/gazebo_export.hpp"
+#include "src/store/database.hpp"
+
+namespace hydrocoef::cli {
+namespace {
+
+struct GazeboArgs {
+  std::string body;
+  std::string flavor;
+  std::string output;
+  std::vector<std::string> fits;
+  std::optional<std::string> added_mass;
+  std::optional<std::string> added_mass_matrix;
+  std::optional<double> sphere_radius;
+  std::optional<double> rho;
+  std::optional<std::string> rotation;
+  bool drop_constant = false;
+  bool allow_missing = false;
+  std::optional<double> linearize_at;
+  std::optional<std::string> link;
+  std::optional<std::string> link_axes;
+  bool json = false;
+};
+
+std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& option,
+                                  const std::string& what) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
+    if (item.empty() || ec != std::errc() || end != item.data() + item.size() || !std::isfinite(value))
+      throw InputError(option + " '" + text + "': found '" + item + "', expected " + what);
+    out.push_back(value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (out.size() != count)
+    throw InputError(option + " '" + text + "': " + std::to_string(out.size()) + " numbers; expected " + what);
+  return out;
+}
+
+// The added-mass matrix from exactly one of the three ways to give it.
+std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args) {
+  const int sources = int(args.added_mass.has_value()) + int(args.added_mass_matrix.has_value()) +
+                      int(args.sphere_radius.has_value());
+  if (sources != 1) {
+    throw InputError(std::string(sources == 0 ? "no added mass given" : "more than one added mass given") +
+                     "; expected exactly one of --added-mass d1,...,d6, --added-mass-matrix FILE or --sphere-radius "
+                     "R --rho RHO --added-mass-rotation a,b,c");
+  }
+  if (args.rho && !args.sphere_radius) throw InputError("--rho applies to --sphere-radius only; expected both");
+  if (args.rotation && !args.sphere_radius)
+    throw InputError("--added-mass-rotation applies to --sphere-radius only; expected both (or give the whole "
+                     "diagonal with --added-mass)");
+  if (args.added_mass) {
+    const auto d = parse_numbers(*args.added_mass, 6, "--added-mass",
+                                 "six numbers Xu' Yv' Zw' (kg) Kp' Mq' Nr' (kg m^2), comma-separated");
+    return {added_mass_diagonal({d[0], d[1], d[2], d[3], d[4], d[5]}), "diagonal " + *args.added_mass +
+                                                                           " (kg x3, kg m^2 x3)"};
+  }
+  if (args.added_mass_matrix) {
+    return {read_added_mass_matrix(*args.added_mass_matrix),
+            "6x6 matrix from '" + *args.added_mass_matrix + "' (kg, kg m, kg m^2)"};
+  }
+  if (!args.rho) throw InputError("--sphere-radius needs --rho RHO (fluid density, kg/m^3)");
+  std::optional<std::array<double, 3>> rotation;
+  std::string rotation_text;
+  if (args.rotation) {
+    const auto r = parse_numbers(*args.rotation, 3, "--added-mass-rotation", "three numbers a,b,c in kg m^2");
+    rotation = std::array<double, 3>{r[0], r[1], r[2]};
+    rotation_text = ", rotation " + *args.rotation + " kg m^2 as given";
+  }
+  const Matrix6 ma = sphere_added_mass(*args.sphere_radius, *args.rho, rotation);
+  return {ma, "sphere of radius " + number(*args.sphere_radius) + " m in fluid of density " + number(*args.rho) +
+                  " kg/m^3: 2/3 pi rho R^3 = " + significant(ma[0]) + " kg in each translation" + rotation_text};
+}
+
+void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
+  GazeboWriteOptions options;
+  options.flavor = parse_gazebo_flavor(args.flavor);
+  if (options.flavor == GazeboFlavor::Uuv && (args.link || args.link_axes)) {
+    throw InputError(std::string(args.link ? "--link" : "--link-axes") +
+                     " applies to --flavor gz only; expected it with gz (uuv_simulator assumes an FLU link and "
+                     "converts to FRD itself)");
+  }
+  if (args.link) options.link_name = *args.link;
+  if (args.link_axes) options.link_axes = parse_gazebo_link_axes(*args.link_axes);
+
+  GazeboRequest request;
+  request.body = args.body;
+  for (const std::string& choice : args.fits) request.fits.push_back(parse_text_assignment(choice, "--fit"));
+  request.drop_constant = args.drop_constant;
+  request.allow_missing = args.allow_missing;
+  request.linearize_at = args.linearize_at;
+  std::tie(request.added_mass, request.added_mass_source) = added_mass_from(args);
+
+  Database database(global.database, Database::OpenMode::MustExist);
+  const auto bodies = database.bodies();
+  if (std::find(bodies.begin(), bodies.end(), args.body) == bodies.end()) {
+    std::string names;
+    for (const auto& name : bodies) names += (names.empty() ? "" : ", ") + name;
+    throw InputError("no body '" + args.body + "' in " + database.path().string() + "; expected one of: " +
+                     (names.empty() ? "(none)" : names));
+  }
+  const GazeboCoefficients coefficients = gazebo_coefficients(database.fits(args.body), request);
+  const std::vector<GazeboElement> elements = gazebo_elements(coefficients, options);
+  write_gazebo(coefficients, options, args.output);
+
+  const bool gz = options.flavor == GazeboFlavor::Gz;
+  if (args.json) {
+    nlohmann::json out = {{"body", coefficients.body},
+                          {"flavor", std::string(gazebo_flavor_name(options.flavor))},
+                          {"file", args.output},
+                          {"sign_convention", "on-body"},
+                          {"frame", gz ? (options.link_axes == GazeboLinkAxes::Flu ? "flu" : "frd") : "frd"},
+                          {"linear_b", coefficients.linear_b},
+                          {"quadratic_b", coefficients.quadratic_b},
+                          {"added_mass_b", coefficients.added_mass_b},
+                          {"added_mass_source", coefficients.added_mass_source},
+                          {"notes", coefficients.notes}};
+    if (gz) out["link_name"] = options.link_name;
+    out["linearized_at"] = coefficients.linearized_at ? nlohmann::json(*coefficients.linearized_at) : nlohmann::json();
+    out["fits"] = nlohmann::json::array();
+    for (const GazeboFitSource& s : coefficients.sources) {
+      nlohmann::json fit = {{"dof", std::string(gazebo_dof_name(s.dof))},
+                            {"variable", std::string(gazebo_velocity_name(s.variable))},
+                            {"name", s.fit_name},
+                            {"id", s.fit_id},
+                            {"terms", s.terms},
+                            {"stored_sign", std::string(to_string(s.stored_sign))},
+                            {"linear", s.linear},
+                            {"quadratic", s.quadratic},
+                            {"units", {{"linear", damping_unit(s.dof, s.variable, false)},
+                                       {"quadratic", damping_unit(s.dof, s.variable, true)}}},
+                            {"runs", s.run_ids}};
+      fit["dropped_constant"] = s.dropped_constant ? nlohmann::json(*s.dropped_constant) : nlohmann::json();
+      out["fits"].push_back(fit);
+    }
+    out["missing"] = nlohmann::json::array();
+    for (std::size_t dof : coefficients.missing_dofs) out["missing"].push_back(std::string(gazebo_dof_name(dof)));
+    for (const GazeboElement& e : elements) {
+      out["elements"][e.name] = e.values.size() == 1 ? nlohmann::json(e.values.front()) : nlohmann::json(e.values);
+      out["units"][e.name] = e.unit;
+    }
+    std::cout << out.dump(2) << '\n';
+    return;
+  }
+
+  std::cout << "exported body " << coefficients.body << " as "
+            << (gz ? "gz-sim Hydrodynamics parameters (link '" + options.link_name + "', link axes " +
+                         (options.link_axes == GazeboLinkAxes::Flu ? "FLU" : "FRD") + ")"
+                   : std::string("a uuv_simulator fossen model (FRD)"))
+            << ", on-body SNAME signs (damping negative)\n";
+  static const std::string kForceLetters = "xyzkmn";
+  for (std::size_t dof = 0; dof < 6; ++dof) {
+    std::cout << "  " << gazebo_dof_name(dof) << ":";
+    if (gz) {
+      bool first = true;
+      for (const GazeboElement& e : elements) {
+        if (kForceLetters.find(e.name.front()) != dof) continue;
+        std::cout << (first ? " " : ", ") << e.name << " = " << significant(e.values.front()) << " " << e.unit;
+        first = false;
+      }
+    } else {
+      std::cout << " linear " << significant(coefficients.linear_b[6 * dof + dof]) << " "
+                << damping_unit(dof, dof, false) << ", quadratic "
+                << significant(coefficients.quadratic_b[6 * dof + dof]) << " " << damping_unit(dof, dof, true)
+                << ", added mass " << significant(coefficients.added_mass_b[6 * dof + dof]) << " "
+                << (dof < 3 ? "kg" : "kg m^2");
+    }
+    std::cout << '\n';
+    for (const GazeboFitSource& s : coefficients.sources) {
+      if (s.dof != dof) continue;
+      std::cout << "     " << gazebo_dof_name(s.dof) << " in " << gazebo_velocity_name(s.variable) << " from fit '"
+                << s.fit_name << "' (" << to_string(s.stored_sign)
+                << (s.stored_sign == SignConvention::OpposingMotion ? ", negated to on-body" : "") << ", "
+                << s.run_ids.size() << " runs)\n";
+    }
+  }
+  std::cout << "  added mass: " << coefficients.added_mass_source << "; symmetric positive definite\n";
+  for (const std::string& note : coefficients.notes) std::cout << "  note: " << note << '\n';
+  std::cout << "  wrote " << args.output << '\n';
+}
+
+}  // namespace
+
+void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global) {
+  auto args = std::make_shared<GazeboArgs>();
+  auto* command = app.add_subcommand(
+      "export-gazebo",
+      "Write a body's damping-law fits and an added-mass matrix as Gazebo hydrodynamics parameters: uuv "
+      "(uuv_simulator <hydrodynamic_model> fossen) or gz (gz-sim Hydrodynamics plugin). Laws a x + b x|x| only; "
+      "on-body SNAME signs; a refused export writes nothing");
+  command->add_option("body", args->body, "Body whose fits are exported")->required();
+  command->add_option("--flavor", args->flavor, "uuv or gz")->required();
+  command->add_option("-o,--output", args->output, "File to write (written whole or not at all)")->required();
+  command->add_option("--fit", args->fits,
+                      "DOF=FITNAME: the law for a force component (repeatable; several per DOF when in different "
+                      "velocities, e.g. N=... in r and N=... in v). Default: the body's single fit of each DOF in "
+                      "its own velocity");
+  command->add_option("--added-mass", args->added_mass, "Diagonal added mass d1,...,d6 (kg x3, kg m^2 x3), positive");
+  command->add_option("--added-mass-matrix", args->added_mass_matrix,
+                      "File of 36 numbers, the 6x6 added mass row by row (kg, kg m, kg m^2; '#' comments)");
+  command->add_option("--sphere-radius", args->sphere_radius,
+                      "Added mass of a sphere of this radius [m]: 2/3 pi rho R^3 in each translation (needs --rho "
+                      "and --added-mass-rotation)");
+  command->add_option("--rho", args->rho, "Fluid density for --sphere-radius [kg/m^3]");
+  command->add_option("--added-mass-rotation", args->rotation,
+                      "With --sphere-radius: rotational added mass a,b,c [kg m^2] (a sphere has none)");
+  command->add_flag("--drop-constant", args->drop_constant,
+                    "Drop a law's constant term '1' (a CFD bias) instead of refusing; reported in the output");
+  command->add_flag("--allow-missing", args->allow_missing,
+                    "Write 0 for a DOF without a law in its own velocity instead of refusing");
+  command->add_option("--linearize-at", args->linearize_at,
+                      "Forward speed U0 [m/s]: replace each b x|x| by its slope at (U0,0,0,0,0,0), i.e. add 2 b |U0| "
+                      "to the linear term of laws in u; quadratic terms become 0");
+  command->add_option("--link", args->link, "gz: <link_name> of the plugin (default base_link)");
+  command->add_option("--link-axes", args->link_axes, "gz: axes of that link, flu (default) or frd");
+  command->add_flag("--json", args->json, "Print JSON");
+  command->callback([args, &global] { run_export_gazebo(*args, global); });
+}
+
+}  // namespace hydrocoef::cli
