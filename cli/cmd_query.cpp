@@ -1,11 +1,14 @@
 // hydrocoef query: a stored surface at one point (NAME u=0.2 v=0.07), or at
 // every row of a CSV file or standard input, written as CSV.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <thread>
 
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
@@ -92,6 +95,11 @@ std::string read_all(const std::string& path) {
   std::FILE* file = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
   if (!file) throw InputError(path + ": cannot open for reading");
   std::string data;
+  if (file != stdin && std::fseek(file, 0, SEEK_END) == 0) {
+    const long size = std::ftell(file);
+    if (size > 0) data.reserve(static_cast<std::size_t>(size));
+    std::rewind(file);
+  }
   char buffer[1 << 16];
   std::size_t n;
   while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) data.append(buffer, n);
@@ -131,14 +139,13 @@ class Output {
   Output& operator=(const Output&) = delete;
 
   void text(std::string_view s) {
+    if (s.size() >= kFlushAt) {  // a whole slice of answers: written as it is
+      flush();
+      write(s);
+      return;
+    }
     buffer_.append(s);
     if (buffer_.size() >= kFlushAt) flush();
-  }
-  void number(double value) {
-    char digits[32];
-    const auto [end, ec] = std::to_chars(digits, digits + sizeof digits, value);
-    (void)ec;
-    buffer_.append(digits, end);
   }
   void finish() {
     flush();
@@ -155,9 +162,11 @@ class Output {
 
  private:
   static constexpr std::size_t kFlushAt = 1 << 20;
+  void write(std::string_view s) {
+    if (std::fwrite(s.data(), 1, s.size(), file_) != s.size()) throw InputError(path_ + ": write error");
+  }
   void flush() {
-    if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
-      throw InputError(path_ + ": write error");
+    write(buffer_);
     buffer_.clear();
   }
   std::string path_, temporary_;
@@ -165,6 +174,96 @@ class Output {
   std::string buffer_;
 };
 
+/// One slice of the batch's rows, answered on its own thread: the CSV text
+/// of its answers, how many lines it spans, and the first error, if any,
+/// with its line counted from the slice's start (1 = first line).
+struct SliceResult {
+  std::string text;
+  std::size_t lines = 0;
+  std::size_t points = 0;
+  std::optional<std::size_t> error_line;
+  std::size_t error_column = 0;
+  std::string error;
+};
+
+void answer_slice(const CoefficientSurface& surface, const std::vector<std::size_t>& column_axis, bool with_gradient,
+                  std::string_view rows, SliceResult& result) {
+  const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
+  std::vector<double> point(n_axes), values(n_out), gradient(n_out * n_axes);
+  result.text.reserve(rows.size() * (with_gradient ? 6 : 3) / 2 + 64);
+  const auto append_number = [&](double value) {
+    char digits[32];
+    const auto [end, ec] = std::to_chars(digits, digits + sizeof digits, value);
+    (void)ec;
+    result.text.append(digits, end);
+  };
+  while (!rows.empty()) {
+    const auto newline = rows.find('\n');
+    std::string_view line = rows.substr(0, newline);
+    rows = newline == std::string_view::npos ? std::string_view() : rows.substr(newline + 1);
+    ++result.lines;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (trim(line).empty()) continue;
+    const char* p = line.data();
+    const char* const end = line.data() + line.size();
+    const auto fail = [&](const char* at, std::string message) {
+      result.error_line = result.lines;
+      result.error_column = at ? static_cast<std::size_t>(at - line.data()) + 1 : 0;
+      result.error = std::move(message);
+    };
+    for (std::size_t c = 0; c < column_axis.size(); ++c) {
+      while (p < end && (*p == ' ' || *p == '\t')) ++p;
+      if (p < end && *p == '+') ++p;
+      double value = 0.0;
+      const auto [stop, ec] = std::from_chars(p, end, value);
+      if (ec != std::errc{} || !std::isfinite(value)) {
+        const auto cell_end = std::find(p, end, ',');
+        fail(p, "'" + std::string(p, cell_end) + "' in column '" + surface.axis_names()[column_axis[c]] +
+                    "'; expected a finite number");
+        return;
+      }
+      p = stop;
+      while (p < end && (*p == ' ' || *p == '\t')) ++p;
+      const bool last = c + 1 == column_axis.size();
+      if (last ? p != end : (p == end || *p != ',')) {
+        fail(p, "row has " + std::string(last ? "more" : "fewer") + " than " + std::to_string(column_axis.size()) +
+                    " numbers; expected one per header column");
+        return;
+      }
+      ++p;
+      point[column_axis[c]] = value;
+    }
+    try {
+      if (with_gradient)
+        surface.evaluate_with_gradient(point, values, gradient);
+      else
+        surface.evaluate(point, values);
+    } catch (const InputError& error) {
+      fail(nullptr, error.what());
+      return;
+    }
+    for (std::size_t a = 0; a < n_axes; ++a) {
+      if (a) result.text += ',';
+      append_number(point[a]);
+    }
+    for (std::size_t k = 0; k < n_out; ++k) {
+      result.text += ',';
+      append_number(values[k]);
+    }
+    if (with_gradient)
+      for (double g : gradient) {
+        result.text += ',';
+        append_number(g);
+      }
+    result.text += '\n';
+    ++result.points;
+  }
+}
+
+/// Answers every row of a CSV of points. Rows are split into slices at line
+/// ends and answered on all cores (a surface is thread-safe to evaluate);
+/// the answers are written in input order, and the first bad row (in input
+/// order) is the one reported.
 void query_batch(const QueryArgs& args, const StoredSurface& stored) {
   const CoefficientSurface& surface = stored.surface;
   const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
@@ -219,58 +318,40 @@ void query_batch(const QueryArgs& args, const StoredSurface& stored) {
         out.text(",d" + surface.output_names()[k] + "/d" + surface.axis_names()[a]);
   out.text("\n");
 
-  std::vector<double> point(n_axes), values(n_out), gradient(n_out * n_axes);
+  // Rounds of one slice per thread, each slice about 4 MB of input.
+  const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
+  constexpr std::size_t kSliceBytes = std::size_t{4} << 20;
   std::size_t points = 0;
+  std::vector<SliceResult> results(threads);
   while (!rest.empty()) {
-    const std::string_view line = next_line();
-    if (trim(line).empty()) continue;
-    const char* p = line.data();
-    const char* const end = line.data() + line.size();
-    for (std::size_t c = 0; c < column_axis.size(); ++c) {
-      while (p < end && (*p == ' ' || *p == '\t')) ++p;
-      if (p < end && *p == '+') ++p;
-      double value = 0.0;
-      const auto [stop, ec] = std::from_chars(p, end, value);
-      const std::size_t column = static_cast<std::size_t>(p - line.data()) + 1;
-      if (ec != std::errc{} || !std::isfinite(value)) {
-        const auto cell_end = std::find(p, end, ',');
-        throw InputError(SourceLocation{source, line_number, column},
-                         "'" + std::string(p, cell_end) + "' in column '" + surface.axis_names()[column_axis[c]] +
-                             "'; expected a finite number");
+    std::vector<std::string_view> slices;
+    for (std::size_t t = 0; t < threads && !rest.empty(); ++t) {
+      std::size_t cut = std::min(rest.size(), kSliceBytes);
+      if (cut < rest.size()) {
+        const auto newline = rest.find('\n', cut);
+        cut = newline == std::string_view::npos ? rest.size() : newline + 1;
       }
-      p = stop;
-      while (p < end && (*p == ' ' || *p == '\t')) ++p;
-      const bool last = c + 1 == column_axis.size();
-      if (last ? p != end : (p == end || *p != ','))
-        throw InputError(SourceLocation{source, line_number, static_cast<std::size_t>(p - line.data()) + 1},
-                         "row has " + std::string(last ? "more" : "fewer") + " than " +
-                             std::to_string(column_axis.size()) + " numbers; expected one per header column");
-      ++p;
-      point[column_axis[c]] = value;
+      slices.push_back(rest.substr(0, cut));
+      rest.remove_prefix(cut);
     }
-    try {
-      if (args.gradient)
-        surface.evaluate_with_gradient(point, values, gradient);
+    std::vector<std::thread> workers;
+    for (std::size_t t = 0; t < slices.size(); ++t) {
+      results[t] = SliceResult{};
+      if (t + 1 == slices.size())
+        answer_slice(surface, column_axis, args.gradient, slices[t], results[t]);
       else
-        surface.evaluate(point, values);
-    } catch (const InputError& error) {
-      throw InputError(SourceLocation{source, line_number, 0}, error.what());
+        workers.emplace_back(answer_slice, std::cref(surface), std::cref(column_axis), args.gradient, slices[t],
+                             std::ref(results[t]));
     }
-    for (std::size_t a = 0; a < n_axes; ++a) {
-      if (a) out.text(",");
-      out.number(point[a]);
+    for (auto& worker : workers) worker.join();
+    for (std::size_t t = 0; t < slices.size(); ++t) {
+      const SliceResult& result = results[t];
+      if (result.error_line)
+        throw InputError(SourceLocation{source, line_number + *result.error_line, result.error_column}, result.error);
+      out.text(result.text);
+      line_number += result.lines;
+      points += result.points;
     }
-    for (std::size_t k = 0; k < n_out; ++k) {
-      out.text(",");
-      out.number(values[k]);
-    }
-    if (args.gradient)
-      for (double g : gradient) {
-        out.text(",");
-        out.number(g);
-      }
-    out.text("\n");
-    ++points;
   }
   out.finish();
   if (args.output != "-" && !args.json)
