@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace hydrocoef {
 
@@ -17,7 +18,14 @@ struct SourceLocation {
   std::size_t column = 0;
 };
 
-/// Bad input: what was found and what was expected, and where.
+/// Text as it may appear in a one-line message: control characters (newlines
+/// included) and bytes that are not UTF-8 become \xNN; valid UTF-8 such as
+/// "µN" is kept; text longer than max_characters is cut and ends in "...".
+std::string printable_text(std::string_view text, std::size_t max_characters = std::string_view::npos);
+
+/// Bad input: what was found and what was expected, and where. The message
+/// is made printable (printable_text), so that text quoted from a binary or
+/// damaged file still gives one readable line.
 class InputError : public std::runtime_error {
  public:
   explicit InputError(const std::string& message);

@@ -111,6 +111,12 @@ void apply_factor(std::string_view whole, std::string_view factor, int sign, Uni
     }
   }
   if (symbol == "1" && exponent == 1) return;
+  // Physical units never need large powers; a bound keeps the dimension
+  // arithmetic far from integer overflow and the scale finite.
+  constexpr int kMaxExponent = 12;
+  if (exponent < -kMaxExponent || exponent > kMaxExponent)
+    fail(whole, "exponent " + std::to_string(exponent) + " in '" + std::string(factor) + "'; expected -" +
+                    std::to_string(kMaxExponent) + " to " + std::to_string(kMaxExponent));
   const auto found = find_symbol(symbol);
   if (!found)
     fail(whole, "unknown unit symbol '" + std::string(symbol) +
@@ -163,6 +169,10 @@ Unit parse_unit(std::string_view text) {
     apply_factor(body, body.substr(i, j - i), sign, unit);
     i = j;
   }
+  for (const int e : unit.dimension.exponents)
+    if (e < -24 || e > 24) fail(body, "a base unit is raised to the power " + std::to_string(e) + "; expected a physical unit");
+  if (!std::isfinite(unit.scale) || unit.scale == 0.0 || std::abs(std::log10(unit.scale)) > 60)
+    fail(body, "its factor to SI is out of range; expected a physical unit");
   return unit;
 }
 

@@ -27,6 +27,11 @@ Json parse(std::string_view text, const std::string& file) {
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 2, column 3: syntax error ..."
     if (const auto colon = message.find(": "); colon != std::string::npos) message = message.substr(colon + 2);
     throw InputError(where, "not valid JSON: " + message);
+  } catch (const Json::exception& e) {
+    // Anything else the parser rejects, e.g. a number beyond double's range (1e999).
+    std::string message = e.what();
+    if (const auto bracket = message.find("] "); bracket != std::string::npos) message = message.substr(bracket + 2);
+    throw InputError(SourceLocation{file}, "not valid JSON: " + message + "; expected finite numbers");
   }
 }
 

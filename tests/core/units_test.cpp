@@ -123,6 +123,16 @@ TEST(ParseUnit, BadExponentNamesTheFactor) {
   EXPECT_NE(parse_unit_error("m2x").find("m2x"), std::string::npos);
 }
 
+TEST(ParseUnit, HugeExponentsAndScalesAreRefusedNotOverflowed) {
+  // Found by fuzzing: the exponent once overflowed an int (undefined
+  // behaviour), and mm400 m^-400 once gave a scale of 0, storing every force as 0.
+  EXPECT_NE(parse_unit_error("J2000000000").find("exponent 2000000000"), std::string::npos);
+  EXPECT_NE(parse_unit_error("N mm400 m^-400").find("exponent 400"), std::string::npos);
+  EXPECT_NE(parse_unit_error("m^-13").find("-12 to 12"), std::string::npos);
+  EXPECT_NE(parse_unit_error("m12 m12 m12").find("power 36"), std::string::npos);
+  EXPECT_DOUBLE_EQ(parse_unit("mm^3").scale, 1e-9);
+}
+
 TEST(ParseUnit, TwoSlashesAreRefused) {
   const std::string message = parse_unit_error("kg/m/s");
   EXPECT_NE(message.find("kg/m/s"), std::string::npos) << message;

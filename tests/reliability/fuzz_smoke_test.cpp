@@ -1,0 +1,89 @@
+// Smoke run of the libFuzzer targets (tests/fuzz), when scripts/fuzz.sh has
+// built them in build/fuzz (they need Clang; this suite may be built with
+// GCC): each target replays its regression files in
+// tests/data/bad/fuzz-regressions/TARGET/ (every crash a fuzzer ever found)
+// and then fuzzes for a few seconds from the malformed-input corpus. Without
+// the fuzz build the test is skipped, saying so.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "tests/support/run_cli.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace hydrocoef::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource(HYDROCOEF_SOURCE_DIR);
+
+fs::path fuzz_dir() {
+  if (const char *dir = std::getenv("HYDROCOEF_FUZZ_DIR"))
+    return dir;
+  return kSource / "build" / "fuzz" / "tests" / "fuzz";
+}
+
+struct Run {
+  int exit_code = -1;
+  std::string log;
+};
+
+Run run(const std::string &command, const fs::path &log) {
+  const int status = std::system(
+      (command + " >" + shell_quote(log.string()) + " 2>&1").c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log)};
+}
+
+class FuzzSmoke : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
+  const fs::path exe = fuzz_dir() / GetParam();
+  if (!fs::exists(exe))
+    GTEST_SKIP() << exe
+                 << " is not built (it needs Clang): run scripts/fuzz.sh, "
+                    "which scripts/test.sh runs after "
+                    "ctest";
+  TempDir dir;
+  const fs::path regressions =
+      kSource / "tests" / "data" / "bad" / "fuzz-regressions" / GetParam();
+  if (fs::is_directory(regressions) && !fs::is_empty(regressions)) {
+    const auto replay = run(shell_quote(exe.string()) + " -runs=0 " +
+                                shell_quote(regressions.string()),
+                            dir / "replay.log");
+    EXPECT_EQ(replay.exit_code, 0) << replay.log;
+  }
+  fs::create_directory(dir / "corpus");
+  for (const auto &entry :
+       fs::directory_iterator(kSource / "tests" / "data" / "bad"))
+    if (entry.is_regular_file() && entry.path().extension() == ".csv")
+      fs::copy_file(entry.path(), dir / "corpus" / entry.path().filename());
+  const auto fuzz =
+      run(shell_quote(exe.string()) +
+              " -seed=1 -max_total_time=3 -max_len=4096 -timeout=10 " +
+              "-print_final_stats=1 -artifact_prefix=" +
+              shell_quote((dir / "").string()) + " " +
+              shell_quote((dir / "corpus").string()),
+          dir / "fuzz.log");
+  EXPECT_EQ(fuzz.exit_code, 0) << fuzz.log;
+  std::smatch executed;
+  ASSERT_TRUE(std::regex_search(
+      fuzz.log, executed,
+      std::regex("stat::number_of_executed_units: *([0-9]+)")))
+      << fuzz.log;
+  EXPECT_GT(std::stol(executed[1]), 100) << fuzz.log;
+  std::cout << GetParam() << ": " << executed[1] << " executions in 3 s\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke,
+                         ::testing::Values("cfdpost_export_fuzz",
+                                           "cfx_monitor_fuzz",
+                                           "force_table_fuzz", "units_fuzz",
+                                           "vehicle_fuzz", "scenario_fuzz"));
+
+} // namespace
+} // namespace hydrocoef::test
