@@ -91,15 +91,6 @@ struct LawSetup {
   std::string filter_text;
 };
 
-/// "polynomial:D" or "pchip".
-std::pair<CurveKind, int> parse_curve(const std::string& text) {
-  if (text == "pchip") return {CurveKind::Pchip, 3};
-  if (text.rfind("polynomial:", 0) == 0) {
-    const std::string degree = text.substr(11);
-    if (degree.size() == 1 && degree[0] >= '0' && degree[0] <= '9') return {CurveKind::Polynomial, degree[0] - '0'};
-  }
-  throw InputError("--curve '" + text + "': expected polynomial:D (D a degree 0 to 9) or pchip");
-}
 
 /// hydrocoef fit --by NAME: the law at each level of NAME, then each
 /// coefficient as a curve of the level (the paper's Fig. 7 and 10).

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "src/core/run.hpp"
+#include "src/fit/coefficient_curve.hpp"
 
 namespace hydrocoef::cli {
 
@@ -31,6 +32,8 @@ void add_surface_command(CLI::App& app, const GlobalOptions& global);
 void add_query_command(CLI::App& app, const GlobalOptions& global);
 void add_export_command(CLI::App& app, const GlobalOptions& global);
 void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global);
+void add_plot_command(CLI::App& app, const GlobalOptions& global);
+void add_report_command(CLI::App& app, const GlobalOptions& global);
 
 
 /// Parses "NAME=VALUE" (VALUE a finite number); InputError naming the option otherwise.
@@ -39,6 +42,9 @@ std::pair<std::string, double> parse_assignment(const std::string& text, const s
 std::pair<std::string, std::string> parse_text_assignment(const std::string& text, const std::string& option);
 /// Parses "x,y,z" into three finite numbers.
 std::array<double, 3> parse_triple(const std::string& text, const std::string& option);
+
+/// --curve: "polynomial:D" (least squares, degree D 0..9) or "pchip" (degree 3).
+std::pair<CurveKind, int> parse_curve(const std::string& text);
 
 /// Shortest text that reads back as the same double.
 std::string number(double value);

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   cli::add_query_command(app, global);
   cli::add_export_command(app, global);
   cli::add_export_gazebo_command(app, global);
+  cli::add_plot_command(app, global);
+  cli::add_report_command(app, global);
 
   try {
     app.parse(argc, argv);

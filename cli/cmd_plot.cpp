@@ -1,0 +1,240 @@
+// hydrocoef plot fit|curves|surface|simulation|steady: PNG or SVG pictures of
+// stored fits, coefficient curves, surfaces and simulations, drawn by gnuplot,
+// with the plotted values beside the image (NAME.dat) and the script (NAME.gp).
+#include <iostream>
+#include <memory>
+
+#include "cli/common.hpp"
+#include "src/core/error.hpp"
+#include "src/dynamics/vehicle.hpp"
+#include "src/plot/plots.hpp"
+#include "src/store/database.hpp"
+#include "src/surface/stored_surface.hpp"
+
+namespace hydrocoef::cli {
+namespace {
+
+struct CommonPlotArgs {
+  std::optional<std::string> output;
+  std::string size = "900x600";
+  bool json = false;
+};
+
+plot::RenderOptions parse_size(const std::string& text) {
+  const auto x = text.find('x');
+  plot::RenderOptions options;
+  try {
+    if (x == std::string::npos) throw std::invalid_argument(text);
+    std::size_t used_w = 0, used_h = 0;
+    options.width = std::stoi(text.substr(0, x), &used_w);
+    options.height = std::stoi(text.substr(x + 1), &used_h);
+    if (used_w != x || used_h != text.size() - x - 1) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT in pixels, e.g. 900x600");
+  }
+  return options;
+}
+
+/// "asr-v:X(1,u,u|u|)" -> "asr-v_X_1_u_u_u_.png": a default image name.
+std::string default_image(const std::string& kind, const std::string& name) {
+  std::string out = kind + "-";
+  for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.') ? c : '_';
+  return out + ".png";
+}
+
+void print_result(const plot::Figure& figure, const plot::RenderedFiles& files, const CommonPlotArgs& args) {
+  const char* format = files.format == plot::ImageFormat::Png ? "png" : "svg";
+  if (args.json) {
+    nlohmann::json out = {{"title", figure.title},
+                          {"image", files.image.string()},
+                          {"data", files.data.string()},
+                          {"script", files.script.string()},
+                          {"format", format},
+                          {"width", files.width},
+                          {"height", files.height}};
+    out["series"] = nlohmann::json::array();
+    for (const auto& panel : figure.panels) {
+      if (panel.map)
+        out["series"].push_back(
+            {{"panel", panel.title}, {"title", "colour map"}, {"points", panel.map->x.size() * panel.map->y.size()}});
+      for (const auto& s : panel.series)
+        out["series"].push_back({{"panel", panel.title}, {"title", s.title}, {"points", s.x.size()}});
+    }
+    std::cout << out.dump(2) << '\n';
+    return;
+  }
+  std::cout << "plot " << figure.title << "\n  wrote " << files.image.string() << " (" << format << ", " << files.width
+            << "x" << files.height << " px)\n  values " << files.data.string() << ", gnuplot script "
+            << files.script.string() << '\n';
+}
+
+void render_and_print(const plot::Figure& figure, const std::string& default_name, const CommonPlotArgs& args) {
+  const std::string image = args.output.value_or(default_name);
+  plot::image_format(image);  // refuse a bad name before drawing anything
+  const auto files = plot::render(figure, image, parse_size(args.size));
+  print_result(figure, files, args);
+}
+
+/// surface_style: the image is -o only, since --output names the surface's output there.
+void add_common(CLI::App* command, CommonPlotArgs& args, bool surface_style = false) {
+  command->add_option(surface_style ? "-o" : "-o,--output", args.output,
+                      "Image to write: FILE.png or FILE.svg (FILE.dat, FILE.gp beside it)");
+  command->add_option("--size", args.size, "Image size WIDTHxHEIGHT [pixels]")->capture_default_str();
+  command->add_flag("--json", args.json, "Print JSON: the files written and the series drawn");
+}
+
+
+struct FitPlotArgs : CommonPlotArgs {
+  std::string name;
+};
+struct CurvesPlotArgs : CommonPlotArgs {
+  std::optional<std::string> name;
+  std::optional<std::string> body, dof, terms, by;
+  std::string curve = "polynomial:2";
+};
+struct SurfacePlotArgs : CommonPlotArgs {
+  std::string name;
+  std::optional<std::string> surface_output;
+};
+struct SimulationPlotArgs : CommonPlotArgs {
+  std::string trajectory;
+  std::optional<std::string> experiment;
+  std::string component = "r";
+};
+struct SteadyPlotArgs : CommonPlotArgs {
+  std::string vehicle;
+  std::string dof = "N";
+  std::vector<double> taus;
+  std::optional<double> tau_from, tau_to;
+  std::size_t count = 6;
+  std::optional<std::string> points;
+};
+
+}  // namespace
+
+void add_plot_command(CLI::App& app, const GlobalOptions& global) {
+  auto* plot_cmd = app.add_subcommand("plot",
+                                      "Draw fits, coefficient curves, surfaces and simulations (PNG or SVG, "
+                                      "through gnuplot)");
+  plot_cmd->require_subcommand(1);
+
+  auto fit_args = std::make_shared<FitPlotArgs>();
+  auto* fit = plot_cmd->add_subcommand("fit",
+                                       "Force against velocity: CFD runs as points, the fitted law as a "
+                                       "curve, one per level of a fit --by");
+  fit->add_option("name", fit_args->name, "Stored fit name (per-level fits NAME@LEVEL=VALUE are drawn together)")
+      ->required();
+  add_common(fit, *fit_args);
+  fit->callback([fit_args, &global] {
+    Database database(global.database, Database::OpenMode::MustExist);
+    render_and_print(plot::fit_figure(database, fit_args->name), default_image("fit", fit_args->name), *fit_args);
+  });
+
+  auto curves_args = std::make_shared<CurvesPlotArgs>();
+  auto* curves = plot_cmd->add_subcommand("curves",
+                                          "Each damping coefficient against a disturbance: per-level "
+                                          "values and the fitted curve");
+  curves->add_option("name", curves_args->name, "Base name of stored per-level fits (NAME@LEVEL=VALUE)");
+  curves->add_option("--body", curves_args->body, "Without a name: the body of the fits");
+  curves->add_option("--dof", curves_args->dof, "Without a name: force component X..N");
+  curves->add_option("--terms", curves_args->terms, "Without a name: the law's terms, e.g. u,u|u|");
+  curves->add_option("--by", curves_args->by, "The disturbance the fits were made per level of (checked)");
+  curves->add_option("--curve", curves_args->curve, "polynomial:D (least squares, degree D) or pchip")
+      ->capture_default_str();
+  add_common(curves, *curves_args);
+  curves->callback([curves_args, &global] {
+    const auto& a = *curves_args;
+    std::string base;
+    if (a.name) {
+      base = *a.name;
+    } else {
+      if (!a.body || !a.dof || !a.terms)
+        throw InputError(
+            "plot curves: give a fit name, or --body, --dof and "
+            "--terms as given to fit --by");
+      base = *a.body + ":" + *a.dof + "(" + format_damping_terms(parse_damping_terms(*a.terms)) + ")";
+    }
+    const auto [kind, degree] = parse_curve(a.curve);
+    Database database(global.database, Database::OpenMode::MustExist);
+    if (a.by) {
+      bool found = false;
+      for (const auto& record : database.fits())
+        if (record.name.rfind(base + "@" + *a.by + "=", 0) == 0) found = true;
+      if (!found)
+        throw InputError("no per-level fits '" + base + "@" + *a.by + "=...' in " + global.database +
+                         " (hydrocoef fit ... --by " + *a.by + " stores them)");
+    }
+    render_and_print(plot::curves_figure(database, base, kind, degree), default_image("curves", base), a);
+  });
+
+  auto surface_args = std::make_shared<SurfacePlotArgs>();
+  auto* surface = plot_cmd->add_subcommand("surface",
+                                           "A stored surface: a curve (1 axis) or a colour map (2 axes) "
+                                           "with its runs and the out-of-range regions");
+  surface->add_option("name", surface_args->name, "Stored surface name")->required();
+  surface->add_option("--output", surface_args->surface_output, "The surface's output to draw (default: its first)");
+  add_common(surface, *surface_args, true);
+  surface->callback([surface_args, &global] {
+    Database database(global.database, Database::OpenMode::MustExist);
+    render_and_print(plot::surface_figure(database, surface_args->name, surface_args->surface_output),
+                     default_image("surface", surface_args->name), *surface_args);
+  });
+
+  auto sim_args = std::make_shared<SimulationPlotArgs>();
+  auto* sim = plot_cmd->add_subcommand("simulation",
+                                       "Velocity against time from hydrocoef simulate --out, with "
+                                       "a measured record overlaid");
+  sim->add_option("--trajectory", sim_args->trajectory, "Trajectory CSV (hydrocoef simulate --out)")->required();
+  sim->add_option("--experiment", sim_args->experiment, "Measured CSV (t and velocity columns, units in brackets)");
+  sim->add_option("--component", sim_args->component, "Velocity component u, v, w, p, q or r")->capture_default_str();
+  add_common(sim, *sim_args);
+  sim->callback([sim_args] {
+    std::optional<std::filesystem::path> experiment;
+    if (sim_args->experiment) experiment = *sim_args->experiment;
+    render_and_print(plot::simulation_figure(sim_args->trajectory, experiment, sim_args->component),
+                     default_image("simulation", sim_args->component), *sim_args);
+  });
+
+  auto steady_args = std::make_shared<SteadyPlotArgs>();
+  auto* steady = plot_cmd->add_subcommand("steady",
+                                          "Steady velocity against a constant force in one DOF "
+                                          "(equilibrium solver, attitude held)");
+  steady->add_option("--vehicle", steady_args->vehicle, "Vehicle description (JSON)")->required();
+  steady->add_option("--dof", steady_args->dof, "Force component X..N; its own velocity is drawn (N -> r)")
+      ->capture_default_str();
+  steady->add_option("--tau", steady_args->taus, "Forces to solve at [N or N m] (repeatable)");
+  steady->add_option("--tau-from", steady_args->tau_from, "First force of an even range [N or N m]");
+  steady->add_option("--tau-to", steady_args->tau_to, "Last force of an even range [N or N m]");
+  steady->add_option("--count", steady_args->count, "Number of forces in the range")->capture_default_str();
+  steady->add_option("--experiment-points", steady_args->points,
+                     "Measured steady points: CSV with a header and rows force,velocity (SI)");
+  add_common(steady, *steady_args);
+  steady->callback([steady_args, &global] {
+    const auto& a = *steady_args;
+    const auto dof = force_index(a.dof);
+    if (!dof) throw InputError("--dof '" + a.dof + "': expected X, Y, Z, K, M or N");
+    std::vector<double> taus = a.taus;
+    if (a.tau_from || a.tau_to) {
+      if (!a.tau_from || !a.tau_to || !(*a.tau_to > *a.tau_from) || a.count < 2 || a.count > 1000)
+        throw InputError(
+            "--tau-from/--tau-to/--count: expected FROM < TO and "
+            "a count of 2 to 1000");
+      for (std::size_t i = 0; i < a.count; ++i)
+        taus.push_back(*a.tau_from +
+                       (*a.tau_to - *a.tau_from) * static_cast<double>(i) / static_cast<double>(a.count - 1));
+    }
+    if (taus.empty()) throw InputError("plot steady: give --tau values or --tau-from, --tau-to and --count");
+    auto database = std::make_shared<std::unique_ptr<Database>>();
+    const SurfaceResolver resolver = [database, &global](const std::string& name) {
+      if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::MustExist);
+      return load_surface(**database, name).surface;
+    };
+    const VehicleModel model(load_vehicle(a.vehicle), resolver);
+    std::vector<plot::SteadyPoint> measured;
+    if (a.points) measured = plot::read_steady_points(*a.points);
+    const std::string name = model.description().name.empty() ? a.vehicle : model.description().name;
+    render_and_print(plot::steady_figure(model, *dof, taus, measured, name), default_image("steady", a.dof), a);
+  });
+}
+
+}  // namespace hydrocoef::cli

@@ -1,0 +1,499 @@
+#include "src/plot/plots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "src/core/error.hpp"
+#include "src/dynamics/equilibrium.hpp"
+#include "src/dynamics/experiment.hpp"
+#include "src/fit/damping_law.hpp"
+#include "src/surface/stored_surface.hpp"
+
+namespace hydrocoef::plot {
+namespace {
+
+constexpr std::array<const char*, 6> kVelocityUnits{"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
+constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
+
+std::string short_number(double value, int digits = 6) {
+  std::ostringstream out;
+  out.precision(digits);
+  out << value;
+  return out.str();
+}
+
+std::string sign_note(SignConvention sign) {
+  return sign == SignConvention::OnBody ? "on body: damping negative" : "opposing: positive opposes motion";
+}
+
+std::vector<double> linspace(double from, double to, std::size_t count) {
+  std::vector<double> out(count);
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = count == 1 ? from : from + (to - from) * static_cast<double>(i) / static_cast<double>(count - 1);
+  if (count > 1) out.back() = to;
+  return out;
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+/// "X = 0.0155 u + 11 u|u|" from a stored fit.
+std::string law_text(const FitRecord& fit) {
+  std::string out = fit.dof + " =";
+  bool first = true;
+  for (const auto& c : fit.coefficients) {
+    const double v = c.value;
+    out += first ? (v < 0 ? " -" : " ") : (v < 0 ? " - " : " + ");
+    out += short_number(std::abs(v), 6);
+    if (c.term != "1") out += " " + c.term;
+    first = false;
+  }
+  return out;
+}
+
+/// The value of a velocity component or disturbance in a run's key; nullopt
+/// when the run has no such disturbance.
+std::optional<double> key_value(const RunKey& key, const std::string& name) {
+  if (const auto v = velocity_index(name)) return key.nu_b[*v];
+  const auto it = key.disturbances.find(name);
+  if (it == key.disturbances.end()) return std::nullopt;
+  return it->second;
+}
+
+std::vector<StoredRun> runs_by_id(Database& database, const std::string& body, const std::vector<std::int64_t>& ids) {
+  const std::set<std::int64_t> wanted(ids.begin(), ids.end());
+  RunFilter filter;
+  filter.body = body;
+  std::vector<StoredRun> out;
+  for (auto& run : database.runs(filter))
+    if (wanted.count(run.id)) out.push_back(std::move(run));
+  return out;
+}
+
+std::string axis_label(const std::string& name, const std::string& unit) {
+  return unit.empty() ? name : name + " [" + unit + "]";
+}
+
+/// "current_v=0.05" from "base@current_v=0.05": the level part of a per-level fit's name.
+std::optional<std::pair<std::string, double>> level_of(const std::string& fit_name, const std::string& base) {
+  if (fit_name.size() <= base.size() + 1 || fit_name.compare(0, base.size(), base) != 0 || fit_name[base.size()] != '@')
+    return std::nullopt;
+  const std::string condition = fit_name.substr(base.size() + 1);
+  const auto eq = condition.find('=');
+  if (eq == std::string::npos || condition.find('@') != std::string::npos) return std::nullopt;
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(condition.substr(eq + 1), &used);
+    if (used != condition.size() - eq - 1) return std::nullopt;
+    return std::make_pair(condition.substr(0, eq), value);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+double evaluate_fit(const FitRecord& fit, double x) {
+  const DampingLawSpec spec = parse_damping_terms(fit.terms);
+  double sum = 0.0;
+  for (const auto term : spec.terms) {
+    const std::string name = term_name(term, spec.variable);
+    const auto it = std::find_if(fit.coefficients.begin(), fit.coefficients.end(),
+                                 [&](const FitRecord::Coefficient& c) { return c.term == name; });
+    if (it == fit.coefficients.end())
+      throw InputError("fit '" + fit.name + "': no coefficient for term " + name + " of its law " + fit.terms);
+    sum += it->value * basis_value(term, x);
+  }
+  return sum;
+}
+
+std::vector<FitRecord> fit_family(Database& database, const std::string& name) {
+  if (database.runs().empty())
+    throw InputError("database " + database.path().string() +
+                     " has no runs: import CFD results first (hydrocoef import)");
+  auto fits = database.fits();
+  if (fits.empty())
+    throw InputError("database " + database.path().string() + " has no fits: fit a law first (hydrocoef fit)");
+  std::vector<FitRecord> family;
+  for (auto& fit : fits)
+    if (fit.name == name || level_of(fit.name, name)) family.push_back(fit);
+  if (family.empty()) {
+    std::vector<std::string> names;
+    for (const auto& fit : fits) names.push_back(fit.name);
+    throw InputError("no fit '" + name + "' in " + database.path().string() + "; stored fits: " + join(names));
+  }
+  // The pooled fit first, then the levels in increasing order.
+  std::stable_sort(family.begin(), family.end(), [&](const FitRecord& a, const FitRecord& b) {
+    const auto la = level_of(a.name, name), lb = level_of(b.name, name);
+    if (!la || !lb) return !la && lb;
+    return la->second < lb->second;
+  });
+  return family;
+}
+
+Figure fit_figure(Database& database, const std::string& name) {
+  const auto family = fit_family(database, name);
+  const FitRecord& first = family.front();
+  const auto dof = force_index(first.dof);
+  const auto variable = velocity_index(first.variable);
+  if (!dof || !variable)
+    throw InputError("fit '" + first.name + "': unknown force " + first.dof + " or velocity " + first.variable);
+  Figure figure;
+  figure.title = "fit " + name + " (" + first.body + ")";
+  Panel panel;
+  panel.x_label = axis_label(first.variable, kVelocityUnits[*variable]);
+  panel.y_label = first.dof + " [" + kForceUnits[*dof] + "] (" + sign_note(first.sign) + ")";
+  panel.title = "CFD runs as points, fitted law as curves";
+  std::size_t colour = 0;
+  for (const auto& fit : family) {
+    const auto level = level_of(fit.name, name);
+    const std::string tag = level ? level->first + "=" + short_number(level->second) + ": " : "";
+    Series points;
+    points.title = tag + "CFD runs (" + std::to_string(fit.run_ids.size()) + ")";
+    points.style = Series::Style::Points;
+    points.colour = colour;
+    for (const auto& run : runs_by_id(database, fit.body, fit.run_ids)) {
+      const auto& force = run.tau_b[*dof];
+      if (!force) continue;
+      points.x.push_back(run.key.nu_b[*variable]);
+      points.y.push_back(force->sign == fit.sign ? force->value.total : -force->value.total);
+    }
+    double lo = 0.0, hi = 0.0;
+    if (!points.x.empty()) {
+      lo = *std::min_element(points.x.begin(), points.x.end());
+      hi = *std::max_element(points.x.begin(), points.x.end());
+    }
+    if (!(hi > lo)) {
+      lo -= 1.0;
+      hi += 1.0;
+    }
+    Series curve;
+    curve.title = tag + law_text(fit) + ", R² = " + (std::isfinite(fit.r2) ? short_number(fit.r2, 8) : "n/a");
+    curve.style = Series::Style::Line;
+    curve.colour = colour;
+    curve.x = linspace(lo, hi, 101);
+    for (double x : curve.x) curve.y.push_back(evaluate_fit(fit, x));
+    panel.series.push_back(std::move(points));
+    panel.series.push_back(std::move(curve));
+    ++colour;
+  }
+  figure.panels.push_back(std::move(panel));
+  return figure;
+}
+
+Figure curves_figure(Database& database, const std::string& base, CurveKind kind, int degree) {
+  auto family = fit_family(database, base);
+  std::vector<LevelFit> levels;
+  std::string by;
+  for (const auto& fit : family) {
+    const auto level = level_of(fit.name, base);
+    if (!level) continue;
+    if (!by.empty() && level->first != by)
+      throw InputError("fits under '" + base + "' are per level of both " + by + " and " + level->first +
+                       "; expected one disturbance");
+    by = level->first;
+    LevelFit lf;
+    lf.level = level->second;
+    lf.fit.spec = parse_damping_terms(fit.terms);
+    for (const auto term : lf.fit.spec.terms) {
+      const std::string tn = term_name(term, lf.fit.spec.variable);
+      const auto it = std::find_if(fit.coefficients.begin(), fit.coefficients.end(),
+                                   [&](const FitRecord::Coefficient& c) { return c.term == tn; });
+      if (it == fit.coefficients.end()) throw InputError("fit '" + fit.name + "': no coefficient for term " + tn);
+      lf.fit.coefficients.push_back(it->value);
+    }
+    lf.fit.n = fit.n;
+    lf.fit.rmse = fit.rmse;
+    lf.fit.r2 = fit.r2;
+    levels.push_back(std::move(lf));
+  }
+  if (levels.size() < 2)
+    throw InputError("coefficient curves of '" + base + "': found " + std::to_string(levels.size()) +
+                     " per-level fit(s) named '" + base +
+                     "@NAME=VALUE'; expected at least 2 (hydrocoef fit ... --by NAME)");
+  const auto curves = fit_coefficient_curves(levels, kind, degree);
+  const FitRecord& first = family.back();
+  const auto dof = force_index(first.dof);
+  const auto variable = velocity_index(first.variable);
+  Figure figure;
+  figure.title = "coefficients of " + base + " against " + by + " (" +
+                 (kind == CurveKind::Pchip ? std::string("PCHIP") : "polynomial of degree " + std::to_string(degree)) +
+                 "; " + sign_note(first.sign) + ")";
+  std::size_t colour = 0;
+  for (const auto& curve : curves) {
+    Panel panel;
+    panel.title = "coefficient of " + curve.term +
+                  (kind == CurveKind::Polynomial ? ", curve RMSE " + short_number(curve.rmse, 3) : std::string());
+    panel.x_label = by;
+    std::string unit = dof ? kForceUnits[*dof] : "";
+    if (curve.term != "1" && variable) {
+      const int power = curve.term.find('|') != std::string::npos && curve.term.front() != '|' ? 2
+                        : curve.term.find("^2") != std::string::npos                           ? 2
+                        : curve.term.find("^3") != std::string::npos                           ? 3
+                                                                                               : 1;
+      unit += std::string("/(") + kVelocityUnits[*variable] + ")" + (power > 1 ? "^" + std::to_string(power) : "");
+    }
+    panel.y_label = "c(" + curve.term + ") [" + unit + "]";
+    Series points;
+    points.title = "per-level fit";
+    points.style = Series::Style::Points;
+    points.colour = colour;
+    points.x = curve.levels;
+    points.y = curve.values;
+    Series line;
+    line.title = kind == CurveKind::Pchip ? "PCHIP" : "polynomial, degree " + std::to_string(curve.degree);
+    line.style = Series::Style::Line;
+    line.colour = colour;
+    line.x = linspace(curve.levels.front(), curve.levels.back(), 101);
+    for (double l : line.x) line.y.push_back(curve.evaluate(l));
+    panel.series.push_back(std::move(points));
+    panel.series.push_back(std::move(line));
+    figure.panels.push_back(std::move(panel));
+    ++colour;
+  }
+  return figure;
+}
+
+Figure surface_figure(Database& database, const std::string& name, const std::optional<std::string>& output) {
+  const StoredSurface stored = load_surface(database, name);
+  const CoefficientSurface& surface = stored.surface;
+  if (surface.axis_count() > 2)
+    throw InputError("surface '" + name + "' has " + std::to_string(surface.axis_count()) + " axes (" +
+                     join(surface.axis_names()) + "); plots draw 1 or 2 axes");
+  const std::size_t k = output ? surface.output_index(*output) : 0;
+  const std::string out_name = surface.output_names()[k];
+  const std::string out_label = axis_label(out_name, surface.output_units()[k]) + " (on body: damping negative)";
+  std::vector<double> values(surface.output_count());
+  auto eval = [&](std::span<const double> point) {
+    surface.evaluate(point, values);
+    return values[k];
+  };
+
+  // The runs it was built from, at their coordinates, with the output's force
+  // value brought to forces on the body.
+  Series runs;
+  runs.title = "CFD runs (" + std::to_string(stored.record.run_ids.size()) + ")";
+  runs.style = Series::Style::Points;
+  runs.colour = 6;
+  std::vector<double> run_values;
+  const auto force = force_index(out_name);
+  for (const auto& run : runs_by_id(database, stored.record.body, stored.record.run_ids)) {
+    std::vector<double> point;
+    for (const auto& axis : surface.axis_names()) {
+      const auto v = key_value(run.key, axis);
+      if (v) point.push_back(*v);
+    }
+    if (point.size() != surface.axis_count()) continue;
+    double value = std::nan("");
+    if (force && run.tau_b[*force])
+      value = run.tau_b[*force]->sign == SignConvention::OnBody ? run.tau_b[*force]->value.total
+                                                                : -run.tau_b[*force]->value.total;
+    runs.x.push_back(point[0]);
+    runs.y.push_back(surface.axis_count() == 1 ? value : point[1]);
+    run_values.push_back(value);
+  }
+
+  Figure figure;
+  figure.title = "surface " + name + " (" + stored.record.body + ", " + surface.method_name() + ")" +
+                 (stored.record.stale ? " STALE: forces changed since it was built" : "");
+  Panel panel;
+  const double x0 = surface.lower(0), x1 = surface.upper(0);
+  const double xm = 0.12 * (x1 - x0 > 0 ? x1 - x0 : 1.0);
+  panel.x_range = std::array<double, 2>{x0 - xm, x1 + xm};
+  panel.x_label = axis_label(surface.axis_names()[0], surface.axis_units()[0]);
+  if (surface.axis_count() == 1) {
+    panel.title =
+        out_name + " against " + surface.axis_names()[0] + "; outside the range: " + surface.out_of_range_name(0);
+    panel.y_label = out_label;
+    Series line;
+    line.title = "surface";
+    line.x = linspace(x0, x1, 201);
+    for (double x : line.x) line.y.push_back(eval(std::span<const double>(&x, 1)));
+    // The continuation beyond the range, where the policy gives one.
+    bool titled = false;
+    for (const auto& [from, to] : {std::pair{x0 - xm, x0}, std::pair{x1, x1 + xm}}) {
+      Series beyond;
+      beyond.style = Series::Style::DashedLine;
+      try {
+        for (double x : linspace(from, to, 21)) {
+          const double y = eval(std::span<const double>(&x, 1));
+          beyond.x.push_back(x);
+          beyond.y.push_back(y);
+        }
+      } catch (const InputError&) {
+        beyond.x.clear();
+        beyond.y.clear();
+      }
+      if (!beyond.x.empty()) {
+        if (!titled) beyond.title = "beyond the range (" + surface.out_of_range_name(0) + ")";
+        titled = true;
+        panel.series.push_back(std::move(beyond));
+      }
+    }
+    panel.series.insert(panel.series.begin(), std::move(line));
+  } else {
+    const double y0 = surface.lower(1), y1 = surface.upper(1);
+    const double ym = 0.12 * (y1 - y0 > 0 ? y1 - y0 : 1.0);
+    panel.y_range = std::array<double, 2>{y0 - ym, y1 + ym};
+    panel.y_label = axis_label(surface.axis_names()[1], surface.axis_units()[1]);
+    panel.title = out_name + " over " + surface.axis_names()[0] + ", " + surface.axis_names()[1] +
+                  "; outside: " + surface.out_of_range_name(0) + " / " + surface.out_of_range_name(1);
+    ColourMap map;
+    map.z_label = out_label;
+    map.x = linspace(x0, x1, 81);
+    map.y = linspace(y0, y1, 81);
+    for (double y : map.y)
+      for (double x : map.x) {
+        const std::array<double, 2> point{x, y};
+        map.z.push_back(eval(point));
+      }
+    panel.map = std::move(map);
+    panel.shaded.push_back({x0 - xm, x1 + xm, y0 - ym, y0});
+    panel.shaded.push_back({x0 - xm, x1 + xm, y1, y1 + ym});
+  }
+  panel.shaded.push_back({x0 - xm, x0, std::nullopt, std::nullopt});
+  panel.shaded.push_back({x1, x1 + xm, std::nullopt, std::nullopt});
+  panel.shaded_title = "outside the surface's range";
+  panel.series.push_back(std::move(runs));
+  figure.panels.push_back(std::move(panel));
+  return figure;
+}
+
+Figure simulation_figure(const std::filesystem::path& trajectory,
+                         const std::optional<std::filesystem::path>& experiment, const std::string& component) {
+  const auto index = velocity_index(component);
+  if (!index) throw InputError("--component '" + component + "': expected one of u, v, w, p, q, r");
+  const MeasuredTrajectory simulated = read_measured_trajectory(trajectory);
+  if (simulated.nu_b[*index].empty())
+    throw InputError(trajectory.string() + ": no column " + component +
+                     " (expected a trajectory from hydrocoef simulate --out)");
+  Figure figure;
+  figure.title = "simulation: " + component + " against time";
+  Panel panel;
+  panel.x_label = "t [s]";
+  panel.y_label = axis_label(component, kVelocityUnits[*index]) + " (body axes)";
+  panel.title = trajectory.filename().string() + (experiment ? " and " + experiment->filename().string() : "");
+  Series sim;
+  sim.title = "simulated (" + trajectory.filename().string() + ")";
+  sim.x = simulated.t_s;
+  sim.y = simulated.nu_b[*index];
+  panel.series.push_back(std::move(sim));
+  if (experiment) {
+    const MeasuredTrajectory measured = read_measured_trajectory(*experiment);
+    if (measured.nu_b[*index].empty())
+      throw InputError(experiment->string() + ": no column " + component + " to compare with");
+    Series points;
+    points.title = "measured (" + experiment->filename().string() + ")";
+    points.style = Series::Style::Points;
+    points.colour = 1;
+    points.x = measured.t_s;
+    points.y = measured.nu_b[*index];
+    panel.series.push_back(std::move(points));
+  }
+  figure.panels.push_back(std::move(panel));
+  return figure;
+}
+
+std::vector<SteadyPoint> steady_curve(const VehicleModel& model, std::size_t dof, const std::vector<double>& taus) {
+  if (dof > 5) throw InputError("steady curve: DOF index " + std::to_string(dof) + " is not one of X..N");
+  std::vector<SteadyPoint> out;
+  Vector6 guess = Vector6::Zero();
+  for (double tau : taus) {
+    EquilibriumInputs in;
+    in.tau_b[static_cast<Eigen::Index>(dof)] = tau;
+    in.disturbances.assign(model.disturbance_names().size(), 0.0);
+    in.initial_guess_b = guess;
+    const EquilibriumResult eq = solve_equilibrium(model, in);
+    if (!eq.converged)
+      throw InputError("no steady state under " + std::string(kForceNames[dof]) + " = " + short_number(tau) + " " +
+                       kForceUnits[dof] + " (the solver's residual stays at " +
+                       short_number(eq.residual_b.cwiseAbs().maxCoeff(), 3) + ")");
+    guess = eq.nu_b;
+    out.push_back({tau, eq.nu_b[static_cast<Eigen::Index>(dof)]});
+  }
+  return out;
+}
+
+Figure steady_figure(const VehicleModel& model, std::size_t dof, const std::vector<double>& taus,
+                     const std::vector<SteadyPoint>& measured, const std::string& vehicle_name) {
+  if (taus.empty()) throw InputError("steady curve: no forces to solve for");
+  const auto points = steady_curve(model, dof, taus);
+  Figure figure;
+  figure.title = "steady " + std::string(kVelocityNames[dof]) + " against " + std::string(kForceNames[dof]) + " (" +
+                 vehicle_name + ", equilibrium, attitude held)";
+  Panel panel;
+  panel.x_label = std::string(kForceNames[dof]) + " [" + kForceUnits[dof] + "] (applied, on body)";
+  panel.y_label = axis_label(std::string(kVelocityNames[dof]), kVelocityUnits[dof]);
+  Series line;
+  line.title = "model (equilibrium)";
+  for (const auto& p : points) {
+    line.x.push_back(p.tau);
+    line.y.push_back(p.velocity);
+  }
+  panel.series.push_back(line);
+  if (points.size() <= 12) {
+    line.title = "";
+    line.style = Series::Style::Points;
+    panel.series.push_back(line);
+  }
+  if (!measured.empty()) {
+    Series m;
+    m.title = "measured";
+    m.style = Series::Style::Points;
+    m.colour = 1;
+    for (const auto& p : measured) {
+      m.x.push_back(p.tau);
+      m.y.push_back(p.velocity);
+    }
+    panel.series.push_back(std::move(m));
+  }
+  figure.panels.push_back(std::move(panel));
+  return figure;
+}
+
+std::vector<SteadyPoint> read_steady_points(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": cannot open the measured steady points");
+  std::vector<SteadyPoint> out;
+  std::string line;
+  std::size_t number = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#') continue;
+    if (!header) {
+      header = true;
+      continue;
+    }
+    for (char& c : line)
+      if (c == ';' || c == '\t') c = ',';
+    const auto comma = line.find(',');
+    SteadyPoint p;
+    try {
+      if (comma == std::string::npos) throw std::invalid_argument("one column");
+      std::size_t used = 0;
+      p.tau = std::stod(line.substr(0, comma), &used);
+      p.velocity = std::stod(line.substr(comma + 1), &used);
+    } catch (const std::exception&) {
+      throw InputError(SourceLocation{path.string(), number, 0}, "found '" + line +
+                                                                     "', expected two numbers: force [N or N m], "
+                                                                     "velocity [m/s or rad/s]");
+    }
+    if (!std::isfinite(p.tau) || !std::isfinite(p.velocity))
+      throw InputError(SourceLocation{path.string(), number, 0}, "a value is not finite");
+    out.push_back(p);
+  }
+  if (out.empty()) throw InputError(path.string() + ": no rows after the header (expected force,velocity rows)");
+  return out;
+}
+
+}  // namespace hydrocoef::plot

@@ -1,0 +1,409 @@
+#include "src/report/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "src/core/error.hpp"
+#include "src/plot/plots.hpp"
+#include "src/surface/stored_surface.hpp"
+
+namespace hydrocoef::report {
+namespace {
+
+constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
+
+constexpr const char* kStyle = R"css(
+body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;margin:0 auto;max-width:1100px;padding:0 1.2em 3em;color:#222;line-height:1.4}
+h1{font-size:1.6em;margin-top:1em}h2{border-bottom:2px solid #0072B2;padding-bottom:.2em;margin-top:2em}
+h3{font-size:1.05em;margin-bottom:.3em}
+nav a{margin-right:1em}
+.scroll{overflow-x:auto;max-height:32em;overflow-y:auto;border:1px solid #ddd}
+table{border-collapse:collapse;font-size:.9em;width:100%}
+th,td{padding:.25em .6em;border-bottom:1px solid #eee;text-align:left;vertical-align:top}
+th{background:#f4f6f8;position:sticky;top:0}
+td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+figure{margin:1em 0}figure img{max-width:100%;height:auto;border:1px solid #eee}
+figcaption{font-size:.85em;color:#555}
+.stale{color:#b00;font-weight:bold}.note{color:#555;font-size:.9em}
+code{background:#f4f6f8;padding:0 .2em}
+)css";
+
+// Records script errors and broken images inside the page itself, so a
+// headless browser's DOM dump shows them.
+constexpr const char* kCheckScript = R"js(
+window.addEventListener('error', function (e) {
+  var list = document.getElementById('js-errors');
+  var item = document.createElement('li');
+  item.className = 'js-error';
+  item.textContent = (e.message || 'resource failed to load') + (e.filename ? ' at ' + e.filename + ':' + e.lineno : '');
+  list.appendChild(item);
+}, true);
+window.addEventListener('load', function () {
+  var images = document.images, broken = 0;
+  for (var i = 0; i < images.length; ++i) if (!images[i].complete || images[i].naturalWidth === 0) ++broken;
+  var status = document.getElementById('report-status');
+  status.setAttribute('data-images', String(images.length));
+  status.setAttribute('data-broken-images', String(broken));
+  status.setAttribute('data-ready', 'yes');
+});
+)js";
+
+std::string num(double value, int digits = 6) {
+  if (!std::isfinite(value)) return std::isnan(value) ? "n/a" : (value > 0 ? "inf" : "-inf");
+  std::ostringstream out;
+  out.precision(digits);
+  out << value;
+  return out.str();
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// A file name for a plot from a fit or surface name ("asr-v:X(1,u,u|u|)" -> "asr-v_X_1_u_u_u__").
+std::string file_stem(const std::string& kind, const std::string& name) {
+  std::string out = kind + "-";
+  for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.') ? c : '_';
+  return out;
+}
+
+/// The group a fit is plotted in: its name without a trailing "@NAME=VALUE"
+/// level (fit --by), or its own name.
+std::string fit_group(const std::string& name) {
+  const auto at = name.rfind('@');
+  if (at == std::string::npos || at == 0) return name;
+  const std::string condition = name.substr(at + 1);
+  const auto eq = condition.find('=');
+  if (eq == std::string::npos || condition.find(',') != std::string::npos) return name;
+  try {
+    std::size_t used = 0;
+    (void)std::stod(condition.substr(eq + 1), &used);
+    if (used != condition.size() - eq - 1) return name;
+  } catch (const std::exception&) {
+    return name;
+  }
+  return name.substr(0, at);
+}
+
+/// The stored leave-one-out figures of a surface, per output in its unit.
+std::string quality_html(const SurfaceRecord& surface) {
+  nlohmann::json q;
+  try {
+    q = nlohmann::json::parse(surface.quality.empty() ? "{}" : surface.quality);
+  } catch (const nlohmann::json::exception&) {
+    return html_escape(surface.quality);
+  }
+  if (!q.is_object()) return html_escape(surface.quality);
+  std::vector<std::string> units;
+  std::vector<std::string> names;
+  try {
+    const auto built = surface_from_record(surface);
+    names = built.output_names();
+    units = built.output_units();
+  } catch (const InputError&) {
+  }
+  std::ostringstream out;
+  const std::string method = q.value("loo_method", "");
+  out << "leave-one-out (" << (method == "rbf-exact" ? "exact, RBF" : "along grid lines") << ", "
+      << q.value("loo_defined", 0) << " of " << q.value("runs", 0) << " runs):<br>";
+  if (q.contains("outputs") && q["outputs"].is_object())
+    for (const auto& item : q["outputs"].items()) {
+      const std::string name = item.key();
+      const nlohmann::json& entry = item.value();
+      auto figure = [&](const char* key) {
+        return entry.contains(key) && entry[key].is_number() ? num(entry[key].get<double>(), 4) : std::string("n/a");
+      };
+      const auto at = std::find(names.begin(), names.end(), name);
+      const std::string unit = at == names.end() ? "" : " " + units[static_cast<std::size_t>(at - names.begin())];
+      out << html_escape(name) << ": max " << figure("loo_max") << ", RMS " << figure("loo_rms") << html_escape(unit)
+          << "<br>";
+    }
+  if (q.contains("far_from_data") && q["far_from_data"].is_array())
+    out << q["far_from_data"].size() << " of " << q.value("grid_points", 0) << " grid points far from every run<br>";
+  return out.str();
+}
+
+class Page {
+ public:
+  Page(std::filesystem::path plots_dir, ReportResult& result) : plots_dir_(std::move(plots_dir)), result_(result) {}
+  std::ostringstream html;
+
+  /// Renders a figure to plots/STEM.svg and embeds it; a failure becomes a note.
+  template <typename MakeFigure>
+  void figure(const std::string& stem, const std::string& caption, MakeFigure make, int height = 560) {
+    try {
+      const plot::Figure fig = make();
+      plot::RenderOptions options;
+      options.width = 960;
+      options.height = height;
+      const auto files = plot::render(fig, plots_dir_ / (stem + ".svg"), options);
+      result_.plots.push_back(files.image);
+      html << "<figure><img alt=\"" << html_escape(caption) << "\" width=\"" << options.width << "\" height=\""
+           << options.height << "\" src=\"data:image/svg+xml;base64," << base64(read_file(files.image))
+           << "\"><figcaption>" << html_escape(caption) << " (values: <code>plots/" << html_escape(stem)
+           << ".dat</code>)</figcaption></figure>\n";
+    } catch (const InputError& e) {
+      result_.notes.push_back(caption + ": " + e.what());
+      html << "<p class=\"note\">" << html_escape(caption) << ": not drawn (" << html_escape(e.what()) << ")</p>\n";
+    }
+  }
+
+ private:
+  std::filesystem::path plots_dir_;
+  ReportResult& result_;
+};
+
+}  // namespace
+
+std::string html_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += kAlphabet[(v >> 6) & 63];
+    out += kAlphabet[v & 63];
+  }
+  if (i < bytes.size()) {
+    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+ReportResult write_report(Database& database, const std::filesystem::path& dir, const ReportOptions& options) {
+  RunFilter filter;
+  filter.body = options.body;
+  const auto bodies = database.bodies();
+  if (options.body && std::find(bodies.begin(), bodies.end(), *options.body) == bodies.end()) {
+    std::string list;
+    for (const auto& b : bodies) list += (list.empty() ? "" : ", ") + b;
+    throw InputError("no body '" + *options.body + "' in " + database.path().string() +
+                     "; bodies: " + (list.empty() ? "none" : list));
+  }
+  const auto runs = database.runs(filter);
+  if (runs.empty())
+    throw InputError("database " + database.path().string() + " has no runs" +
+                     (options.body ? " of body " + *options.body : std::string()) +
+                     ": import CFD results first (hydrocoef import)");
+  const auto fits = database.fits(options.body);
+  const auto surfaces = database.surfaces(options.body);
+
+  ReportResult result;
+  result.runs = runs.size();
+  result.fits = fits.size();
+  result.surfaces = surfaces.size();
+  std::error_code ec;
+  std::filesystem::create_directories(dir / "plots", ec);
+  if (ec) throw InputError((dir / "plots").string() + ": cannot create the directory (" + ec.message() + ")");
+  result.index = std::filesystem::absolute(dir / "index.html");
+  Page page(std::filesystem::absolute(dir / "plots"), result);
+  auto& h = page.html;
+  const std::string title = "hydrocoef report: " + database.path().filename().string() +
+                            (options.body ? " (" + *options.body + ")" : std::string());
+
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+       "<meta name=\"viewport\" content=\"width=device-width, "
+       "initial-scale=1\">\n<title>"
+    << html_escape(title) << "</title>\n<style>" << kStyle << "</style>\n<script>" << kCheckScript
+    << "</script>\n</head><body>\n";
+  h << "<h1>" << html_escape(title) << "</h1>\n";
+  h << "<nav><a href=\"#runs\">Runs</a><a href=\"#fits\">Fits</a><a "
+       "href=\"#surfaces\">Surfaces</a>"
+       "<a href=\"#simulations\">Simulations</a></nav>\n";
+
+  // ---- summary
+  h << "<section id=\"summary\"><h2>Summary</h2>\n<p>Database <code>" << html_escape(database.path().string())
+    << "</code>: " << runs.size() << " runs, " << fits.size() << " fits, " << surfaces.size()
+    << " surfaces. Body axes x forward, y starboard, z down (SNAME); SI units; "
+       "velocities u, v, w in m/s and p, q, r "
+       "in rad/s; forces X, Y, Z in N and moments K, M, N in N m. Each fit "
+       "states its sign convention "
+       "(<em>on-body</em>: the force of the fluid on the body, damping "
+       "negative; <em>opposing</em>: a damping "
+       "magnitude, positive opposes motion); surfaces hold forces on the "
+       "body.</p>\n";
+  h << "<div id=\"report-status\" data-ready=\"no\"><ul "
+       "id=\"js-errors\"></ul></div>\n</section>\n";
+
+  // ---- runs
+  h << "<section id=\"runs\"><h2>Runs</h2>\n<div "
+       "class=\"scroll\"><table><thead><tr><th>id</th><th>key</th>";
+  for (std::size_t i = 0; i < 6; ++i) h << "<th>" << kForceNames[i] << " [" << kForceUnits[i] << "]</th>";
+  h << "<th>source</th></tr></thead><tbody>\n";
+  for (std::size_t r = 0; r < runs.size() && r < options.max_run_rows; ++r) {
+    const auto& run = runs[r];
+    h << "<tr><td class=\"num\">" << run.id << "</td><td>" << html_escape(describe(run.key)) << "</td>";
+    std::string source;
+    for (const auto& force : run.tau_b) {
+      if (!force) {
+        h << "<td></td>";
+        continue;
+      }
+      h << "<td class=\"num\">" << num(force->value.total) << (force->sign == SignConvention::OnBody ? "" : " (opp.)")
+        << "</td>";
+      const std::string file =
+          std::filesystem::path(force->source_path).filename().string() + ":" + std::to_string(force->source_line);
+      if (source.find(file) == std::string::npos) source += (source.empty() ? "" : " ") + file;
+    }
+    h << "<td>" << html_escape(source) << "</td></tr>\n";
+  }
+  h << "</tbody></table></div>\n";
+  if (runs.size() > options.max_run_rows)
+    h << "<p class=\"note\">" << runs.size() - options.max_run_rows << " more runs not listed.</p>\n";
+  h << "</section>\n";
+
+  // ---- fits
+  h << "<section id=\"fits\"><h2>Fits</h2>\n";
+  if (fits.empty()) {
+    h << "<p>No fits stored (hydrocoef fit).</p>\n";
+  } else {
+    h << "<div "
+         "class=\"scroll\"><table><thead><tr><th>name</th><th>law</"
+         "th><th>coefficients (± std. error)</th>"
+         "<th>R²</th><th>RMSE</th><th>n</th><th>sign</th><th>runs "
+         "used</th></tr></thead><tbody>\n";
+    for (const auto& fit : fits) {
+      h << "<tr><td>" << html_escape(fit.name) << "</td><td>" << html_escape(fit.dof + "(" + fit.terms + ")")
+        << "</td><td>";
+      for (const auto& c : fit.coefficients)
+        h << html_escape(c.term) << ": " << num(c.value) << (c.std_error ? " ± " + num(*c.std_error, 3) : std::string())
+          << "<br>";
+      const std::size_t dof = force_index(fit.dof).value_or(0);
+      h << "</td><td class=\"num\">" << num(fit.r2, 8) << "</td><td class=\"num\">" << num(fit.rmse, 4) << " "
+        << kForceUnits[dof] << "</td><td class=\"num\">" << fit.n << "</td><td>" << to_string(fit.sign) << "</td><td>"
+        << html_escape(fit.run_filter.empty() ? "all of " + fit.body : fit.run_filter) << "</td></tr>\n";
+    }
+    h << "</tbody></table></div>\n";
+    std::map<std::string, std::size_t> levels;  // group name -> number of per-level fits in it
+    std::vector<std::string> order;
+    for (const auto& fit : fits) {
+      const std::string g = fit_group(fit.name);
+      if (std::find(order.begin(), order.end(), g) == order.end()) order.push_back(g);
+      if (g != fit.name) ++levels[g];
+    }
+    for (const auto& g : order) {
+      h << "<h3>" << html_escape(g) << "</h3>\n";
+      page.figure(file_stem("fit", g), "force against velocity: " + g, [&] { return plot::fit_figure(database, g); });
+      if (levels[g] >= 2) {
+        const int degree = static_cast<int>(std::min<std::size_t>(2, levels[g] - 1));
+        page.figure(
+            file_stem("curves", g), "coefficient curves of " + g,
+            [&] { return plot::curves_figure(database, g, CurveKind::Polynomial, degree); }, 720);
+      }
+    }
+  }
+  h << "</section>\n";
+
+  // ---- surfaces
+  h << "<section id=\"surfaces\"><h2>Surfaces</h2>\n";
+  if (surfaces.empty()) {
+    h << "<p>No surfaces stored (hydrocoef surface build).</p>\n";
+  } else {
+    h << "<div "
+         "class=\"scroll\"><table><thead><tr><th>name</th><th>body</"
+         "th><th>kind / method</th><th>runs</th>"
+         "<th>leave-one-out quality</th><th>state</th></tr></thead><tbody>\n";
+    for (const auto& s : surfaces) {
+      h << "<tr><td>" << html_escape(s.name) << "</td><td>" << html_escape(s.body) << "</td><td>" << html_escape(s.kind)
+        << " / " << html_escape(s.method) << "</td><td class=\"num\">" << s.run_ids.size() << "</td><td>";
+      h << quality_html(s);
+      h << "</td><td>"
+        << (s.stale ? "<span class=\"stale\">stale</span> (rebuild: hydrocoef "
+                      "surface rebuild --stale)"
+                    : "current")
+        << "</td></tr>\n";
+    }
+    h << "</tbody></table></div>\n";
+    for (const auto& s : surfaces) {
+      h << "<h3>" << html_escape(s.name) << (s.stale ? " <span class=\"stale\">(stale)</span>" : "") << "</h3>\n";
+      std::vector<std::string> outputs;
+      try {
+        outputs = surface_from_record(s).output_names();
+      } catch (const InputError& e) {
+        h << "<p class=\"note\">not drawn (" << html_escape(e.what()) << ")</p>\n";
+        result.notes.push_back("surface " + s.name + ": " + e.what());
+        continue;
+      }
+      for (std::size_t k = 0; k < outputs.size() && k < 6; ++k) {
+        const std::string output = outputs[k];
+        page.figure(file_stem("surface", s.name + (outputs.size() > 1 ? "-" + output : std::string())),
+                    "surface " + s.name + ", output " + output,
+                    [&] { return plot::surface_figure(database, s.name, output); });
+      }
+    }
+  }
+  h << "</section>\n";
+
+  // ---- simulations
+  h << "<section id=\"simulations\"><h2>Simulations</h2>\n";
+  if (options.trajectories.empty())
+    h << "<p>No trajectories given (hydrocoef report --trajectory FILE, from "
+         "hydrocoef simulate --out).</p>\n";
+  for (const auto& trajectory : options.trajectories) {
+    const std::string stem = trajectory.stem().string();
+    page.figure(file_stem("simulation", stem + "-" + options.component),
+                options.component + " against time: " + trajectory.filename().string(),
+                [&] { return plot::simulation_figure(trajectory, options.experiment, options.component); });
+  }
+  h << "</section>\n";
+  h << "<p class=\"note\">Written by hydrocoef; plots drawn by gnuplot; this "
+       "page needs no network access.</p>\n"
+       "</body></html>\n";
+
+  const std::filesystem::path temp = result.index.string() + ".tmp";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(temp.string() + ": cannot write");
+    out << h.str();
+    if (!out.flush()) throw InputError(temp.string() + ": write failed");
+  }
+  std::filesystem::rename(temp, result.index, ec);
+  if (ec) throw InputError(result.index.string() + ": cannot write (" + ec.message() + ")");
+  return result;
+}
+
+}  // namespace hydrocoef::report

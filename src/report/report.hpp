@@ -1,0 +1,56 @@
+// A shareable report of a run database: one self-contained HTML page (no
+// network access needed: inline CSS, plots embedded as SVG data URIs) with the
+// runs, the fitted laws with their coefficients and R², the coefficient
+// surfaces with their leave-one-out errors and stale flags, and the plots of
+// src/plot (fits, coefficient curves, surfaces, simulations).
+//
+// Layout of DIR: index.html (the page; it alone is enough to share) and
+// plots/NAME.svg with NAME.dat and NAME.gp (the plotted values and the gnuplot
+// script, as src/plot writes them).
+//
+// The page's sections have the ids "summary", "runs", "fits", "surfaces" and
+// "simulations". A small inline script records JavaScript errors and images
+// that failed to load in the page itself (element "report-status":
+// data-ready, data-images, data-broken-images, and li.js-error entries), so a
+// headless browser can check the page.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "src/store/database.hpp"
+
+namespace hydrocoef::report {
+
+struct ReportOptions {
+  std::optional<std::string> body;  ///< only this body's runs, fits and surfaces
+  /// Simulated trajectories (hydrocoef simulate --out) to plot, component
+  /// `component` against time, with `experiment` overlaid when given.
+  std::vector<std::filesystem::path> trajectories;
+  std::optional<std::filesystem::path> experiment;
+  std::string component = "r";
+  std::size_t max_run_rows = 1000;  ///< longer run tables are cut, with a note
+};
+
+struct ReportResult {
+  std::filesystem::path index;               ///< DIR/index.html
+  std::vector<std::filesystem::path> plots;  ///< the SVG files embedded
+  std::vector<std::string> notes;            ///< plots that could not be drawn, and why
+  std::size_t runs = 0, fits = 0, surfaces = 0;
+};
+
+/// Writes the report into `dir` (created if needed; index.html replaced).
+/// InputError when the database (or the body) has no runs, naming the bodies
+/// there are, or when a file cannot be written. A plot that cannot be drawn
+/// (e.g. a 3-axis surface) is left out with a note on the page and in notes.
+ReportResult write_report(Database& database, const std::filesystem::path& dir, const ReportOptions& options = {});
+
+/// Text made safe for HTML element content and attribute values.
+std::string html_escape(std::string_view text);
+/// RFC 4648 base64.
+std::string base64(std::string_view bytes);
+
+}  // namespace hydrocoef::report
