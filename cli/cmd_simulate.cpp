@@ -60,11 +60,11 @@ nlohmann::json units_json() {
 nlohmann::json optional_number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
 
 void print_velocity_table(const Vector6& nu, const ForceBreakdown& forces) {
-  std::cout << "  " << std::left << std::setw(4) << "" << std::setw(15) << "velocity" << std::setw(7) << ""
+  std::cout << "  " << std::left << std::setw(4) << "" << std::setw(17) << "velocity" << std::setw(7) << ""
             << std::setw(4) << "" << std::setw(15) << "damping" << std::setw(15) << "control" << "\n";
   for (std::size_t i = 0; i < 6; ++i) {
     const auto k = static_cast<Eigen::Index>(i);
-    std::cout << "  " << std::setw(4) << kVelocityNames[i] << std::setw(15) << significant(nu[k], 9) << std::setw(7)
+    std::cout << "  " << std::setw(4) << kVelocityNames[i] << std::setw(17) << significant(nu[k], 9) << std::setw(7)
               << kVelocityUnits[i] << std::setw(4) << kForceNames[i] << std::setw(15)
               << significant(forces.damping_b[k], 6) << std::setw(15) << significant(forces.control_b[k], 6)
               << kForceUnits[i] << '\n';
