@@ -200,4 +200,26 @@ std::string sign_convention_text(const std::string& convention) {
   return "on-body: the force of the fluid on the body (SNAME), damping is negative";
 }
 
+std::string xml_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string xml_comment_safe(std::string text) {
+  for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at)) text.replace(at, 2, "- -");
+  if (!text.empty() && text.back() == '-') text += ' ';
+  return text;
+}
+
 }  // namespace hydrocoef

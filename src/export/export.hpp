@@ -90,6 +90,11 @@ void check_metadata(const GridTable& table, const ExportMetadata& metadata);
 /// writable.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
+/// Text for an XML attribute or element: & < > " ' as entities.
+std::string xml_escape(std::string_view text);
+/// Text safe inside an XML comment: no "--" (written "- -") and no trailing "-".
+std::string xml_comment_safe(std::string text);
+
 /// A temporary name beside `path` for writers that write files themselves
 /// (matio, VTK): ".NAME.tmp-PID-N" in the same directory. Throws InputError
 /// when the directory does not exist.

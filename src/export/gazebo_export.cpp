@@ -31,30 +31,8 @@ std::string join_ids(const std::vector<std::int64_t>& ids) {
   return out;
 }
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// Text safe inside an XML comment: no "--", and no trailing "-".
-std::string comment_safe(std::string text) {
-  for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at)) text.replace(at, 2, "- -");
-  if (!text.empty() && text.back() == '-') text += ' ';
-  return text;
-}
-
 std::string comment(const std::string& text, const std::string& indent = "") {
-  return indent + "<!-- " + comment_safe(text) + " -->\n";
+  return indent + "<!-- " + xml_comment_safe(text) + " -->\n";
 }
 
 std::string added_mass_unit(std::size_t i, std::size_t j) {
@@ -496,7 +474,7 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
     text += "  <link_name>" + xml_escape(options.link_name) + "</link_name>\n";
     for (const GazeboElement& e : elements) {
       text += "  <" + e.name + ">" + shortest_number(e.values.front()) + "</" + e.name + ">  <!-- " +
-              comment_safe(e.unit) + " -->\n";
+              xml_comment_safe(e.unit) + " -->\n";
     }
     text += "</plugin>\n";
   }

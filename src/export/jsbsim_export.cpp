@@ -5,31 +5,6 @@
 
 namespace hydrocoef {
 
-namespace {
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// Text safe inside an XML comment (no "--").
-std::string comment_safe(std::string text) {
-  for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at)) text.replace(at, 2, "- -");
-  return text;
-}
-
-}  // namespace
-
 std::string jsbsim_text(const GridTable& table, const ExportMetadata& metadata) {
   check_metadata(table, metadata);
   const std::size_t n = table.axis_count();
@@ -55,8 +30,9 @@ std::string jsbsim_text(const GridTable& table, const ExportMetadata& metadata) 
   const std::vector<double>& values = table.values();
   const auto& x = [&](std::size_t a) -> const std::vector<double>& { return table.axes()[a].breakpoints; };
   std::string text = "<?xml version=\"1.0\"?>\n";
-  text += "<!-- hydrocoef " + std::string(kVersion) + " export of " + comment_safe(provenance_line(metadata)) + " -->\n";
-  text += "<!-- outputs in sign convention " + comment_safe(sign_convention_text(metadata.sign_convention)) +
+  text += "<!-- hydrocoef " + std::string(kVersion) + " export of " + xml_comment_safe(provenance_line(metadata)) +
+          " -->\n";
+  text += "<!-- outputs in sign convention " + xml_comment_safe(sign_convention_text(metadata.sign_convention)) +
           "; body axes x forward, y starboard, z down (SNAME); SI units -->\n";
   text += "<hydrocoef_tables surface=\"" + xml_escape(metadata.surface_name) + "\" body=\"" +
           xml_escape(metadata.body) + "\" sha256=\"" + metadata.content_sha256 + "\">\n";

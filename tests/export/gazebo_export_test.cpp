@@ -19,6 +19,7 @@
 #include "tests/support/expect_input_error.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/xml_numbers.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -64,33 +65,9 @@ GazeboRequest request_with_mass() {
   return request;
 }
 
-vtkSmartPointer<vtkXMLDataElement> read_xml(const std::filesystem::path& path) {
-  return vtkSmartPointer<vtkXMLDataElement>::Take(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
-}
-
-std::vector<double> numbers_of(vtkXMLDataElement* root, const std::string& name) {
-  vtkXMLDataElement* element = root->FindNestedElementWithName(name.c_str());
-  if (!element) {
-    ADD_FAILURE() << "no element <" << name << ">";
-    return {};
-  }
-  std::vector<double> out;
-  const char* at = element->GetCharacterData();
-  while (at && *at) {
-    char* end = nullptr;
-    const double value = std::strtod(at, &end);
-    if (end == at) break;
-    out.push_back(value);
-    at = end;
-  }
-  return out;
-}
-
-double number_of(vtkXMLDataElement* root, const std::string& name) {
-  const auto values = numbers_of(root, name);
-  EXPECT_EQ(values.size(), 1u) << name;
-  return values.empty() ? std::nan("") : values.front();
-}
+using test::number_of;
+using test::numbers_of;
+using test::read_xml;
 
 TEST(GazeboExport, UuvFileRoundTripsToTheFittedCoefficients) {
   TempDir dir;
