@@ -62,6 +62,7 @@
 #include <utility>
 #include <vector>
 
+#include "importers/vtk_xml_polydata.hpp"
 #include "src/core/error.hpp"
 #include "src/core/huge_pages.hpp"
 
@@ -1750,6 +1751,10 @@ std::string vtk_warnings_note(const FileContents& contents) {
 
 SurfaceMesh read_vtk_surface(const std::filesystem::path& file, const VtkSurfaceOptions& options) {
   const std::string file_name = file.string();
+  if (options.direct_vtp && lower_case(file.extension().string()) == ".vtp" &&
+      std::all_of(options.locations.begin(), options.locations.end(),
+                  [&file](const std::string& location) { return location == file.stem().string(); }))
+    if (std::optional<SurfaceMesh> mesh = read_vtp_surface(file)) return std::move(*mesh);
   ScopedVtkMessageCapture capture;
   const FileContents contents = read_file(file, capture);
   const std::vector<Leaf>& leaves = contents.leaves;

@@ -21,6 +21,10 @@ struct VtkSurfaceOptions {
   /// patches), named as list_vtk_locations names them; empty = the default
   /// set described at read_vtk_surface.
   std::vector<std::string> locations;
+  /// Read .vtp files of one piece of polygons with read_vtp_surface
+  /// (importers/vtk_xml_polydata.hpp), which decodes on every core, and only
+  /// the others through VTK's reader; false reads every file through VTK.
+  bool direct_vtp = true;
 };
 
 /// Reads .vtk (legacy: polydata or unstructured grid), .vtp, .vtu, .vtm

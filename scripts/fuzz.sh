@@ -33,6 +33,7 @@ seed_files() {
     cfdpost_export_fuzz) ls "$root"/tests/data/bad/cfdpost-*.csv "$root"/../shared/reference/cfx-samples/*.csv 2>/dev/null || true ;;
     vehicle_fuzz) ls "$root"/examples/asr-v/vehicle*.json 2>/dev/null || true ;;
     scenario_fuzz) ls "$root"/examples/asr-v/scenario*.json 2>/dev/null || true ;;
+    vtp_fuzz) ls "$root"/tests/data/vtp-encodings/*.vtp "$root"/tests/data/bad/vtp-*.vtp ;;
   esac
 }
 write_seeds() {  # target seed-dir

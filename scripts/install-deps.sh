@@ -18,6 +18,7 @@ packages=(
   libcli11-dev          # command line
   nlohmann-json3-dev    # --json output, surface definitions, vehicle files
   libmatio-dev          # MATLAB .mat export
+  libdeflate-dev        # zlib blocks of .vtp files, decompressed in parallel
   gnuplot-nox           # hydrocoef plot / report: PNG and SVG (pngcairo, svg terminals)
   chromium              # tests: the HTML report rendered headless
   clang libclang-rt-14-dev  # libFuzzer targets in tests/fuzz (scripts/fuzz.sh)

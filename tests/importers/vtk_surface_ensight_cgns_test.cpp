@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "src/core/error.hpp"
+#include "tests/support/file_bytes.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -45,15 +46,8 @@ namespace fs = std::filesystem;
 
 using test::TempDir;
 
-std::string read_bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_bytes(const fs::path& file, const std::string& bytes) {
-  std::ofstream out(file, std::ios::binary);
-  out << bytes;
-}
+using test::read_bytes;
+using test::write_bytes;
 
 /// The message of the InputError that reading `file` throws, "" if none.
 std::string read_error(const fs::path& file, const VtkSurfaceOptions& options = {}) {

@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "src/core/error.hpp"
+#include "tests/support/file_bytes.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -60,15 +61,8 @@ constexpr std::size_t kFullSphereFaces = 4024;
 
 using test::TempDir;
 
-std::string read_bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_bytes(const fs::path& file, const std::string& bytes) {
-  std::ofstream out(file, std::ios::binary);
-  out << bytes;
-}
+using test::read_bytes;
+using test::write_bytes;
 
 using Vec3 = std::array<double, 3>;
 

@@ -58,10 +58,13 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
     EXPECT_EQ(replay.exit_code, 0) << replay.log;
   }
   fs::create_directory(dir / "corpus");
-  for (const auto &entry :
-       fs::directory_iterator(kSource / "tests" / "data" / "bad"))
-    if (entry.is_regular_file() && entry.path().extension() == ".csv")
-      fs::copy_file(entry.path(), dir / "corpus" / entry.path().filename());
+  for (const char *folder : {"bad", "vtp-encodings"})
+    for (const auto &entry :
+         fs::directory_iterator(kSource / "tests" / "data" / folder))
+      if (entry.is_regular_file() && (entry.path().extension() == ".csv" ||
+                                      entry.path().extension() == ".vtp"))
+        fs::copy_file(entry.path(), dir / "corpus" / entry.path().filename(),
+                      fs::copy_options::skip_existing);
   const auto fuzz =
       run(shell_quote(exe.string()) +
               " -seed=1 -max_total_time=3 -max_len=4096 -timeout=10 " +
@@ -83,7 +86,8 @@ INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke,
                          ::testing::Values("cfdpost_export_fuzz",
                                            "cfx_monitor_fuzz",
                                            "force_table_fuzz", "units_fuzz",
-                                           "vehicle_fuzz", "scenario_fuzz"));
+                                           "vehicle_fuzz", "scenario_fuzz",
+                                           "vtp_fuzz"));
 
 } // namespace
 } // namespace hydrocoef::test
