@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <barrier>
 #include <cmath>
 #include <exception>
-#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -37,6 +37,8 @@ struct FieldView {
   const double* component[3] = {nullptr, nullptr, nullptr};
   std::size_t stride = 1;
   bool per_point = true;
+  const FieldArray* arrays[3] = {nullptr, nullptr, nullptr};  ///< the distinct arrays behind it
+  const char* role = "";
   bool present() const { return component[0] != nullptr; }
   double scalar(std::size_t i) const { return component[0][i * stride]; }
   Vec3 vector(std::size_t i) const {
@@ -68,13 +70,18 @@ const FieldArray& find_array(const SurfaceMesh& mesh, const std::string& name, i
     throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->size()) +
                      " values, expected " + std::to_string(expected) + " (one per " +
                      (field->association == FieldAssociation::Point ? "point" : "face") + ")");
-  for (std::size_t i = 0; i < field->values.size(); ++i)
-    if (!std::isfinite(field->values[i]))
-      throw InputError(std::string(role) + " array '" + name + "' holds " +
-                       (std::isnan(field->values[i]) ? "NaN" : "Inf") + " at " +
-                       (field->association == FieldAssociation::Point ? "point " : "face ") +
-                       std::to_string(i / static_cast<std::size_t>(components)) + "; expected finite values");
   return *field;
+}
+
+/// The InputError for the first value of `field` that is NaN or Inf.
+[[noreturn]] void throw_not_finite(const FieldArray& field, const char* role) {
+  std::size_t i = 0;
+  while (i < field.values.size() && std::isfinite(field.values[i])) ++i;
+  if (i == field.values.size()) throw std::logic_error("throw_not_finite: every value is finite");
+  throw InputError(std::string(role) + " array '" + field.name + "' holds " +
+                   (std::isnan(field.values[i]) ? "NaN" : "Inf") + " at " +
+                   (field.association == FieldAssociation::Point ? "point " : "face ") +
+                   std::to_string(i / static_cast<std::size_t>(field.components)) + "; expected finite values");
 }
 
 FieldView pressure_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
@@ -82,17 +89,21 @@ FieldView pressure_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& optio
   FieldView view;
   view.component[0] = field.values.data();
   view.per_point = field.association == FieldAssociation::Point;
+  view.arrays[0] = &field;
+  view.role = "pressure";
   return view;
 }
 
 FieldView shear_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
   FieldView view;
+  view.role = "wall shear";
   if (options.shear_fields.empty()) return view;
   if (options.shear_fields.size() == 1) {
     const FieldArray& field = find_array(mesh, options.shear_fields[0], 3, "wall shear");
     for (int c = 0; c < 3; ++c) view.component[c] = field.values.data() + c;
     view.stride = 3;
     view.per_point = field.association == FieldAssociation::Point;
+    view.arrays[0] = &field;
     return view;
   }
   if (options.shear_fields.size() != 3)
@@ -101,6 +112,7 @@ FieldView shear_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options)
   for (int c = 0; c < 3; ++c) {
     const FieldArray& field = find_array(mesh, options.shear_fields[static_cast<std::size_t>(c)], 1, "wall shear");
     view.component[c] = field.values.data();
+    view.arrays[c] = &field;
     const bool per_point = field.association == FieldAssociation::Point;
     if (c > 0 && per_point != view.per_point)
       throw InputError("wall shear arrays mix point and face data; expected all three alike");
@@ -121,8 +133,10 @@ struct Sums {
   /// oriented), a random 64-bit number otherwise (see edge_hash).
   std::uint64_t edge_residue = 0;
   std::size_t triangles = 0, quads = 0, polygons = 0;
+  bool invalid = false;  ///< the block has an offset that goes back or a point index out of range
 
   void add(const Sums& o) {
+    invalid = invalid || o.invalid;
     edge_residue += o.edge_residue;
     triangles += o.triangles;
     quads += o.quads;
@@ -161,6 +175,124 @@ inline std::uint64_t edge_residue(const std::uint32_t* indices, std::size_t k) {
     g_prev = g;
   }
   return residue;
+}
+
+// ---- triangles with point data, eight at a time ---------------------------
+//
+// Most surfaces are all triangles with point data. Their faces are gathered
+// eight at a time into plain arrays, lane by lane, and the arithmetic of
+// Integrator::triangle_point_data then runs on whole arrays, which the
+// compiler turns into SIMD instructions (AVX2 and FMA where the processor
+// has them, chosen when the program starts). Each lane keeps its own sums,
+// added in lane order at the end of a block, so results do not depend on
+// the instruction set beyond rounding, nor on threads at all.
+
+constexpr int kLanes = 8;
+
+struct TriangleLanes {
+  double y[3][3][kLanes];    ///< vertex, axis, lane: x - x_ref [m]
+  double p[3][kLanes];       ///< vertex, lane: p - p_ref [Pa]
+  double tau[3][3][kLanes];  ///< vertex, axis, lane [Pa]
+  std::uint64_t ids[3][kLanes];  ///< vertex, lane: point index
+};
+
+struct LaneSums {
+  double force_p[3][kLanes]{}, force_v[3][kLanes]{}, moment_p[3][kLanes]{}, moment_v[3][kLanes]{};
+  double n_dA[3][kLanes]{}, y_cross_n_dA[3][kLanes]{};
+  double area[kLanes]{}, y_dot_n_dA[kLanes]{}, degenerate[kLanes]{};
+  std::uint64_t edge_residue[kLanes]{};
+
+  void add_to(Sums& s) const {
+    for (int j = 0; j < kLanes; ++j) {
+      Sums lane;
+      for (int c = 0; c < 3; ++c) {
+        lane.force_p[c] = force_p[c][j];
+        lane.force_v[c] = force_v[c][j];
+        lane.moment_p[c] = moment_p[c][j];
+        lane.moment_v[c] = moment_v[c][j];
+        lane.n_dA[c] = n_dA[c][j];
+        lane.y_cross_n_dA[c] = y_cross_n_dA[c][j];
+      }
+      lane.area = area[j];
+      lane.y_dot_n_dA = y_dot_n_dA[j];
+      lane.degenerate = static_cast<std::size_t>(degenerate[j]);
+      lane.edge_residue = edge_residue[j];
+      s.add(lane);
+    }
+  }
+};
+
+// The formulas of Integrator::triangle_point_data, lane j.
+// (__restrict: without it GCC gives up proving the inputs and sums apart.)
+template <bool Shear>
+[[gnu::always_inline]] inline void triangle_lanes(const TriangleLanes& __restrict in, double shear_sign,
+                                                  double degenerate_area, LaneSums& __restrict s) {
+  for (int j = 0; j < kLanes; ++j) {
+    const double y0x = in.y[0][0][j], y0y = in.y[0][1][j], y0z = in.y[0][2][j];
+    const double y1x = in.y[1][0][j], y1y = in.y[1][1][j], y1z = in.y[1][2][j];
+    const double y2x = in.y[2][0][j], y2y = in.y[2][1][j], y2z = in.y[2][2][j];
+    const double ax = y1x - y0x, ay = y1y - y0y, az = y1z - y0z;
+    const double bx = y2x - y0x, by = y2y - y0y, bz = y2z - y0z;
+    const double Sx = 0.5 * (ay * bz - az * by), Sy = 0.5 * (az * bx - ax * bz), Sz = 0.5 * (ax * by - ay * bx);
+    const double a = std::sqrt(Sx * Sx + Sy * Sy + Sz * Sz);
+    const double Yx = y0x + y1x + y2x, Yy = y0y + y1y + y2y, Yz = y0z + y1z + y2z;
+    const double p0 = in.p[0][j], p1 = in.p[1][j], p2 = in.p[2][j];
+    const double P = p0 + p1 + p2;
+    const double mx = (1.0 / 12.0) * (p0 * y0x + p1 * y1x + p2 * y2x + P * Yx);
+    const double my = (1.0 / 12.0) * (p0 * y0y + p1 * y1y + p2 * y2y + P * Yy);
+    const double mz = (1.0 / 12.0) * (p0 * y0z + p1 * y1z + p2 * y2z + P * Yz);
+    const double f = -P / 3.0;
+    s.force_p[0][j] += f * Sx;
+    s.force_p[1][j] += f * Sy;
+    s.force_p[2][j] += f * Sz;
+    s.moment_p[0][j] += -(my * Sz - mz * Sy);
+    s.moment_p[1][j] += -(mz * Sx - mx * Sz);
+    s.moment_p[2][j] += -(mx * Sy - my * Sx);
+    const double cx = (1.0 / 3.0) * Yx, cy = (1.0 / 3.0) * Yy, cz = (1.0 / 3.0) * Yz;
+    s.area[j] += a;
+    s.n_dA[0][j] += Sx;
+    s.n_dA[1][j] += Sy;
+    s.n_dA[2][j] += Sz;
+    s.y_cross_n_dA[0][j] += cy * Sz - cz * Sy;
+    s.y_cross_n_dA[1][j] += cz * Sx - cx * Sz;
+    s.y_cross_n_dA[2][j] += cx * Sy - cy * Sx;
+    s.y_dot_n_dA[j] += cx * Sx + cy * Sy + cz * Sz;
+    s.degenerate[j] += a <= degenerate_area ? 1.0 : 0.0;
+    // The triangle's share of the edge residue (see edge_residue()).
+    const std::uint64_t g0 = in.ids[0][j], g1 = in.ids[1][j], g2 = in.ids[2][j];
+    const std::uint64_t h0 = mix64(g0), h1 = mix64(g1), h2 = mix64(g2);
+    s.edge_residue[j] += (h0 * g1 - h1 * g0) + (h1 * g2 - h2 * g1) + (h2 * g0 - h0 * g2);
+    if constexpr (Shear) {
+      const double t0x = in.tau[0][0][j], t0y = in.tau[0][1][j], t0z = in.tau[0][2][j];
+      const double t1x = in.tau[1][0][j], t1y = in.tau[1][1][j], t1z = in.tau[1][2][j];
+      const double t2x = in.tau[2][0][j], t2y = in.tau[2][1][j], t2z = in.tau[2][2][j];
+      const double Tx = t0x + t1x + t2x, Ty = t0y + t1y + t2y, Tz = t0z + t1z + t2z;
+      const double fv = shear_sign * a / 3.0;
+      s.force_v[0][j] += fv * Tx;
+      s.force_v[1][j] += fv * Ty;
+      s.force_v[2][j] += fv * Tz;
+      const double mv = shear_sign * a / 12.0;
+      s.moment_v[0][j] += mv * ((y0y * t0z - y0z * t0y) + (y1y * t1z - y1z * t1y) + (y2y * t2z - y2z * t2y) +
+                                (Yy * Tz - Yz * Ty));
+      s.moment_v[1][j] += mv * ((y0z * t0x - y0x * t0z) + (y1z * t1x - y1x * t1z) + (y2z * t2x - y2x * t2z) +
+                                (Yz * Tx - Yx * Tz));
+      s.moment_v[2][j] += mv * ((y0x * t0y - y0y * t0x) + (y1x * t1y - y1y * t1x) + (y2x * t2y - y2y * t2x) +
+                                (Yx * Ty - Yy * Tx));
+    }
+  }
+}
+
+[[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_with_shear(const TriangleLanes& in,
+                                                                                    double shear_sign,
+                                                                                    double degenerate_area,
+                                                                                    LaneSums& s) {
+  triangle_lanes<true>(in, shear_sign, degenerate_area, s);
+}
+
+[[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_pressure_only(const TriangleLanes& in,
+                                                                                       double degenerate_area,
+                                                                                       LaneSums& s) {
+  triangle_lanes<false>(in, 1.0, degenerate_area, s);
 }
 
 /// Everything a face contributes, computed by one of the rules below.
@@ -376,94 +508,182 @@ struct Integrator {
     s.add(parts);
   }
 
+  /// Faces [f, f + kLanes), all triangles with point pressure (and point
+  /// shear when there is shear), through the lane kernel.
+  void triangle_group(std::size_t f, LaneSums& lanes, Sums& s) const {
+    TriangleLanes in;
+    const std::uint32_t* ids = mesh.face_indices.data() + mesh.face_offsets[f];
+    const bool with_shear = shear.present();
+    for (int j = 0; j < kLanes; ++j) {
+      const std::uint32_t* v = ids + 3 * j;
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t i = v[k];
+        const double* x = xyz + 3 * i;
+        in.y[k][0][j] = x[0] - x_ref[0];
+        in.y[k][1][j] = x[1] - x_ref[1];
+        in.y[k][2][j] = x[2] - x_ref[2];
+        in.p[k][j] = pressure.component[0][i] - p_ref;
+        in.ids[k][j] = i;
+        if (with_shear)
+          for (int c = 0; c < 3; ++c) in.tau[k][c][j] = shear.component[c][i * shear.stride];
+      }
+    }
+    if (with_shear) triangle_lanes_with_shear(in, shear_sign, degenerate_area, lanes);
+    else triangle_lanes_pressure_only(in, degenerate_area, lanes);
+    s.triangles += kLanes;
+  }
+
   static constexpr std::size_t kBlock = 4096;
 
-  // Sums in a local and stored once: the block results of neighbouring
-  // blocks share cache lines, and updating them in place from two threads
-  // made every face bounce a line between the cores.
+  /// Checks the block's faces can be read (offsets never go back, point
+  /// indices in range) and integrates them. Sums are kept in a local and
+  /// stored once: the block results of neighbouring blocks share cache
+  /// lines, and updating them in place from two threads made every face
+  /// bounce a line between the cores.
   void run_block(std::size_t block, Sums& out) const {
     const std::size_t start = block * kBlock;
     const std::size_t stop = std::min(mesh.face_count(), start + kBlock);
+    const std::uint32_t* offsets = mesh.face_offsets.data();
+    bool forward = true, triangles_only = true;
+    for (std::size_t f = start; f < stop; ++f) {
+      forward &= offsets[f + 1] >= offsets[f];
+      triangles_only &= offsets[f + 1] - offsets[f] == 3u;
+    }
     Sums local;
-    for (std::size_t f = start; f < stop; ++f) face(f, local);
+    if (!forward || offsets[stop] > mesh.face_indices.size()) {
+      local.invalid = true;
+      out = local;
+      return;
+    }
+    std::uint32_t largest = 0;
+    for (std::size_t i = offsets[start]; i < offsets[stop]; ++i) largest = std::max(largest, mesh.face_indices[i]);
+    if (offsets[stop] > offsets[start] && largest >= mesh.point_count()) {
+      local.invalid = true;
+      out = local;
+      return;
+    }
+    std::size_t f = start;
+    const bool lanes_apply = triangles_only && pressure.present() && pressure.per_point &&
+                             (!shear.present() || shear.per_point);
+    if (lanes_apply) {
+      LaneSums lanes;
+      for (; f + kLanes <= stop; f += kLanes) triangle_group(f, lanes, local);
+      lanes.add_to(local);
+    }
+    for (; f < stop; ++f) face(f, local);
     out = local;
   }
 };
 
-/// Runs the integration blocks on the calling thread and, for large meshes,
-/// on a second thread; each thread first does its share of the side work
-/// (the edge topology, split by vertex range). Block results are summed in
-/// block order, so the totals do not depend on which thread ran what.
-template <typename SideWork>
-Sums integrate_blocks(const Integrator& integrator, SideWork main_side_work, SideWork helper_side_work) {
-  const std::size_t faces = integrator.mesh.face_count();
+/// What one thread finds in its share of the points before integrating:
+/// their bounding box, and whether every coordinate is finite.
+struct PointScan {
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  bool coordinates_finite = true;
+
+  void add(const PointScan& o) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], o.lo[c]);
+      hi[c] = std::max(hi[c], o.hi[c]);
+    }
+    coordinates_finite = coordinates_finite && o.coordinates_finite;
+  }
+};
+
+/// Part `part` of `parts` of the points. (x - x is 0 exactly when x is
+/// finite: a test the compiler vectorizes.)
+PointScan scan_points(const SurfaceMesh& mesh, std::size_t part, std::size_t parts) {
+  PointScan scan;
+  const std::size_t n = mesh.point_count();
+  const double* x = mesh.points_xyz.data();
+  bool finite = true;
+  for (std::size_t i = n * part / parts; i < n * (part + 1) / parts; ++i)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double v = x[3 * i + c];
+      finite &= v - v == 0.0;
+      scan.lo[c] = std::min(scan.lo[c], v);
+      scan.hi[c] = std::max(scan.hi[c], v);
+    }
+  scan.coordinates_finite = finite;
+  return scan;
+}
+
+/// Runs the integration on the calling thread and, for large meshes, on a
+/// second one. Each first scans its share of the points and values; they
+/// meet, since the degenerate-face threshold needs the whole bounding box;
+/// then both take blocks of faces. Block results are summed in block order,
+/// so the totals do not depend on which thread ran what.
+Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
+  const SurfaceMesh& mesh = integrator.mesh;
+  const std::size_t faces = mesh.face_count();
   const std::size_t blocks = (faces + Integrator::kBlock - 1) / Integrator::kBlock;
+  const std::size_t threads = faces >= 50000 && std::thread::hardware_concurrency() > 1 ? 2 : 1;
   std::vector<Sums> block_sums(blocks);
+  PointScan parts[2];
+  auto meet = [&]() noexcept {
+    scanned = parts[0];
+    if (threads == 2) scanned.add(parts[1]);
+    const double diagonal =
+        mesh.point_count() > 0 && scanned.coordinates_finite ? norm(scanned.hi - scanned.lo) : 0.0;
+    integrator.degenerate_area = 1e-14 * diagonal * diagonal;
+  };
+  std::barrier<decltype(meet)> sync(static_cast<std::ptrdiff_t>(threads), meet);
   std::atomic<std::size_t> next{0};
-  auto worker = [&] {
+  auto work = [&](std::size_t thread) {
+    parts[thread] = scan_points(mesh, thread, threads);
+    sync.arrive_and_wait();
     for (std::size_t b = next++; b < blocks; b = next++) integrator.run_block(b, block_sums[b]);
   };
-  if (faces >= 50000 && std::thread::hardware_concurrency() > 1) {
-    std::exception_ptr side_error;
-    std::thread helper([&] {
-      try {
-        helper_side_work();
-      } catch (...) {
-        side_error = std::current_exception();
-      }
-      worker();
-    });
-    try {
-      main_side_work();
-    } catch (...) {
-      worker();  // let the helper finish before the error leaves
-      helper.join();
-      throw;
-    }
-    worker();
+  if (threads == 2) {
+    std::thread helper(work, 1);
+    work(0);
     helper.join();
-    if (side_error) std::rethrow_exception(side_error);
   } else {
-    main_side_work();
-    helper_side_work();
-    worker();
+    work(0);
   }
   Sums total;
   for (const auto& block : block_sums) total.add(block);
   return total;
 }
 
-void check_mesh_indices(const SurfaceMesh& mesh) {
+/// Whether every sum is finite (their total is, unless one is not or a
+/// finite total overflows, which only costs a search of the arrays).
+bool all_finite(const Sums& s) {
+  double total = s.area + s.y_dot_n_dA;
+  for (const Vec3* v : {&s.force_p, &s.force_v, &s.moment_p, &s.moment_v, &s.n_dA, &s.y_cross_n_dA})
+    total += (*v)[0] + (*v)[1] + (*v)[2];
+  return std::isfinite(total);
+}
+
+/// The checks that cost nothing per face; the rest (offsets that go back,
+/// point indices out of range) are made block by block while integrating.
+void check_mesh_shape(const SurfaceMesh& mesh) {
   if (mesh.face_count() == 0) throw InputError("the surface has no faces; expected a body surface of polygons");
   if (mesh.points_xyz.size() % 3 != 0) throw InputError("point coordinates are not a multiple of 3");
+  if (mesh.face_offsets.front() != 0)
+    throw InputError("face offsets start at " + std::to_string(mesh.face_offsets.front()) + "; expected 0");
   if (mesh.face_offsets.back() != mesh.face_indices.size())
     throw InputError("face offsets end at " + std::to_string(mesh.face_offsets.back()) + " but there are " +
                      std::to_string(mesh.face_indices.size()) + " face indices");
-  const std::size_t points = mesh.point_count();
   // Edge entries pack a point index and a direction bit into 32 bits.
-  if (points >= (std::size_t{1} << 31))
-    throw InputError("the surface has " + std::to_string(points) + " points; expected fewer than 2^31");
-  for (std::size_t i = 0; i < mesh.face_indices.size(); ++i)
-    if (mesh.face_indices[i] >= points)
-      throw InputError("a face refers to point " + std::to_string(mesh.face_indices[i]) + " but the surface has " +
-                       std::to_string(points) + " points");
+  if (mesh.point_count() >= (std::size_t{1} << 31))
+    throw InputError("the surface has " + std::to_string(mesh.point_count()) + " points; expected fewer than 2^31");
 }
 
-/// The diagonal of the points' bounding box, checking on the way that every
-/// coordinate is finite (one pass over the points for both).
-double bounding_box_diagonal(const SurfaceMesh& mesh) {
-  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  bool finite = true;
-  const double* x = mesh.points_xyz.data();
-  for (std::size_t i = 0; i < mesh.point_count(); ++i)
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double v = x[3 * i + c];
-      finite = finite && std::isfinite(v);
-      lo[c] = std::min(lo[c], v);
-      hi[c] = std::max(hi[c], v);
-    }
-  if (!finite) throw InputError("point coordinates hold NaN or Inf; expected finite coordinates");
-  return mesh.point_count() ? norm(hi - lo) : 0.0;
+/// The InputError for the first face a block could not read.
+[[noreturn]] void throw_unreadable_faces(const SurfaceMesh& mesh) {
+  const std::size_t points = mesh.point_count();
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.face_offsets[f + 1] < mesh.face_offsets[f])
+      throw InputError("face offsets go back at face " + std::to_string(f) + " (" +
+                       std::to_string(mesh.face_offsets[f + 1]) + " after " + std::to_string(mesh.face_offsets[f]) +
+                       "); expected offsets that never decrease");
+    for (std::size_t i = mesh.face_offsets[f]; i < mesh.face_offsets[f + 1]; ++i)
+      if (mesh.face_indices[i] >= points)
+        throw InputError("a face refers to point " + std::to_string(mesh.face_indices[i]) + " but the surface has " +
+                         std::to_string(points) + " points");
+  }
+  throw std::logic_error("throw_unreadable_faces: every face can be read");
 }
 
 /// Edge counts of the edges whose smaller vertex lies in [first, last).
@@ -529,7 +749,7 @@ EdgeCounts count_edges(const SurfaceMesh& mesh, std::uint32_t first, std::uint32
 }
 
 SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& options, bool with_fields) {
-  check_mesh_indices(mesh);
+  check_mesh_shape(mesh);
   Integrator integrator{mesh, mesh.points_xyz.data(), options.reference_point, {}, {}, 0.0, 1.0, 0.0};
   if (with_fields) {
     integrator.pressure = pressure_view(mesh, options);
@@ -537,12 +757,20 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   }
   integrator.p_ref = options.reference_pressure;
   integrator.shear_sign = options.shear_convention == ShearConvention::OnWall ? 1.0 : -1.0;
-  const double diagonal = bounding_box_diagonal(mesh);
-  integrator.degenerate_area = 1e-14 * diagonal * diagonal;
 
   SurfaceLoads loads;
-  const std::function<void()> nothing = [] {};
-  const Sums sums = integrate_blocks(integrator, nothing, nothing);
+  PointScan scanned;
+  const Sums sums = integrate_blocks(integrator, scanned);
+  if (sums.invalid) throw_unreadable_faces(mesh);
+  if (!scanned.coordinates_finite) throw InputError("point coordinates hold NaN or Inf; expected finite coordinates");
+  // A NaN or Inf in a value that a face uses makes its sums NaN or Inf (times
+  // a zero area too), so the arrays are searched only when a sum is.
+  if (!all_finite(sums))
+    for (const FieldView* view : {&integrator.pressure, &integrator.shear})
+      for (const FieldArray* array : view->arrays)
+        if (array != nullptr &&
+            !std::all_of(array->values.begin(), array->values.end(), [](double v) { return std::isfinite(v); }))
+          throw_not_finite(*array, view->role);
   // Topology: a zero edge residue proves every edge is walked once each way
   // (the surface is closed and consistently oriented; only a mesh built to
   // cancel the 64-bit hash sums could fake it). Anything else is counted

@@ -90,10 +90,15 @@ struct SurfaceLoads {
 };
 
 /// Integrates the loads. Throws InputError naming the array when a named
-/// array is missing, has the wrong number of components, holds NaN/Inf (the
-/// first bad index is named), or the mesh has no faces; and when the normals
-/// are inconsistent (some faces reversed relative to their neighbours) under
+/// array is missing, has the wrong number of components, or holds NaN/Inf
+/// where a face uses it (the first bad index of the array is named); when the
+/// mesh has no faces, a point index out of range, offsets that go back or
+/// coordinates that are not finite; and when the normals are inconsistent
+/// (some faces reversed relative to their neighbours) under
 /// NormalPolicy::Auto.
+///
+/// Large meshes are integrated on two threads; surfaces of triangles with
+/// point data go through a SIMD kernel (AVX2 where the processor has it).
 SurfaceLoads integrate_surface_loads(const SurfaceMesh& mesh, const SurfaceLoadOptions& options);
 
 /// Geometry checks alone (no fields needed).

@@ -24,6 +24,7 @@
 
 #include "importers/vtk_surface.hpp"
 #include "src/core/error.hpp"
+#include "tests/support/expect_input_error.hpp"
 #include "tests/support/meshes.hpp"
 #include "tests/support/vtk_polydata.hpp"
 
@@ -426,6 +427,121 @@ TEST(SurfaceLoads, BadArraysAreNamed) {
   expect_error(with_shear, "has 1 components, expected 3");
   mesh.fields[0].values[7] = std::nan("");
   expect_error(pressure_only(), "NaN at point 7");
+}
+
+// Blocks of triangles with point data go through the eight-lane SIMD
+// kernel; any other face sends its block through the face-by-face rules.
+// Writing one triangle (a, b, c) of every block as the collapsed quad
+// (a, b, c, c), which 2x2 Gauss integrates exactly as the same triangle,
+// sends every block the other way: the two implementations must agree.
+TEST(SurfaceLoads, TheTriangleKernelAgreesWithTheFaceByFaceRules) {
+  SurfaceMesh triangles = test::make_icosphere(0.4, 5, {0.3, -0.1, 0.2});  // 20,480 faces: 5 blocks, both threads
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> noise(-30.0, 30.0);
+  test::add_point_scalar(triangles, "p", [&](const P3& x) { return 500.0 * x[0] - 90.0 * x[1] * x[2] + noise(random); });
+  test::add_point_vector(triangles, "tau", [&](const P3& x) { return P3{0.2 + x[2], noise(random) * 1e-3, -x[0]}; });
+  SurfaceMesh mixed = triangles;
+  mixed.face_indices.clear();
+  mixed.face_offsets = {0};
+  for (std::size_t f = 0; f < triangles.face_count(); ++f) {
+    const std::uint32_t* v = &triangles.face_indices[3 * f];
+    if (f % 4096 == 1000) test::add_face(mixed, {v[0], v[1], v[2], v[2]});
+    else test::add_face(mixed, {v[0], v[1], v[2]});
+  }
+  for (const bool with_shear : {false, true}) {
+    auto options = pressure_only();
+    if (with_shear) options.shear_fields = {"tau"};
+    options.reference_point = {0.05, 0.02, -0.03};
+    const auto lanes = integrate_surface_loads(triangles, options);
+    const auto faces = integrate_surface_loads(mixed, options);
+    EXPECT_EQ(lanes.geometry.triangles, 20480u);
+    EXPECT_EQ(faces.geometry.quads, 5u);
+    const double F = length(lanes.force_pressure), M = 0.4 * F;
+    expect_near(lanes.force_pressure, faces.force_pressure, 1e-12 * F, "pressure force");
+    expect_near(lanes.moment_pressure, faces.moment_pressure, 1e-12 * M, "pressure moment");
+    expect_near(lanes.force_viscous, faces.force_viscous, 1e-12 * (1.0 + length(lanes.force_viscous)), "viscous force");
+    expect_near(lanes.moment_viscous, faces.moment_viscous, 1e-12 * (1.0 + length(lanes.moment_viscous)),
+                "viscous moment");
+    EXPECT_NEAR(lanes.geometry.area, faces.geometry.area, 1e-13 * lanes.geometry.area);
+    EXPECT_NEAR(lanes.geometry.signed_volume, faces.geometry.signed_volume, 1e-13 * lanes.geometry.signed_volume);
+    expect_near(lanes.geometry.integral_x_cross_n_dA, faces.geometry.integral_x_cross_n_dA, 1e-15, "x cross n");
+    EXPECT_TRUE(lanes.geometry.closed);
+    EXPECT_TRUE(faces.geometry.closed) << "the collapsed quad's repeated edge cancels";
+  }
+}
+
+TEST(SurfaceLoads, DegenerateTrianglesAreCountedOnBothPaths) {
+  // Zero-area triangles (a repeated point, or three points on a line) added to
+  // a closed surface: counted, and they add nothing.
+  SurfaceMesh mesh = test::make_icosphere(0.2, 2);  // 320 triangles: one block
+  test::add_point_scalar(mesh, "p", [](const P3& x) { return 1e3 * x[2]; });
+  const auto clean = integrate_surface_loads(mesh, pressure_only());
+  const std::uint32_t a = 0, b = 1;
+  const std::uint32_t middle = test::add_point(mesh, {0.5 * (mesh.points_xyz[0] + mesh.points_xyz[3]),
+                                                      0.5 * (mesh.points_xyz[1] + mesh.points_xyz[4]),
+                                                      0.5 * (mesh.points_xyz[2] + mesh.points_xyz[5])});
+  mesh.fields[0].values.push_back(0.0);
+  for (int i = 0; i < 5; ++i) test::add_face(mesh, {a, b, b});
+  for (int i = 0; i < 4; ++i) test::add_face(mesh, {a, middle, b});
+  auto as_given = pressure_only();
+  as_given.normals = NormalPolicy::AsGiven;
+  const auto lanes = integrate_surface_loads(mesh, as_given);
+  EXPECT_EQ(lanes.geometry.degenerate_faces, 9u);
+  EXPECT_EQ(lanes.geometry.faces, 329u);
+  expect_near(lanes.force_pressure, clean.force_pressure, 1e-12, "zero-area faces add no force");
+  // A quad in the block sends it face by face: the same count.
+  test::add_face(mesh, {a, a, b, b});
+  const auto faces = integrate_surface_loads(mesh, as_given);
+  EXPECT_EQ(faces.geometry.degenerate_faces, 10u);
+  expect_near(faces.force_pressure, clean.force_pressure, 1e-12, "face by face");
+}
+
+TEST(SurfaceLoads, FacesThatCannotBeReadAreRefusedOnBothThreads) {
+  SurfaceMesh mesh = test::make_icosphere(0.3, 6);  // 81,920 triangles: two threads
+  test::add_point_scalar(mesh, "p", [](const P3& x) { return x[0]; });
+  SurfaceMesh bad_index = mesh;
+  bad_index.face_indices[3 * 70000 + 1] = static_cast<std::uint32_t>(mesh.point_count() + 5);
+  test::expect_input_error([&] { integrate_surface_loads(bad_index, pressure_only()); },
+                           {"a face refers to point " + std::to_string(mesh.point_count() + 5),
+                            "the surface has " + std::to_string(mesh.point_count()) + " points"});
+  SurfaceMesh backwards = mesh;
+  std::swap(backwards.face_offsets[50001], backwards.face_offsets[50002]);
+  test::expect_input_error([&] { integrate_surface_loads(backwards, pressure_only()); },
+                           {"face offsets go back at face 50001", "expected offsets that never decrease"});
+  SurfaceMesh not_from_zero = mesh;
+  not_from_zero.face_offsets[0] = 1;
+  test::expect_input_error([&] { integrate_surface_loads(not_from_zero, pressure_only()); },
+                           {"face offsets start at 1; expected 0"});
+  SurfaceMesh infinite = mesh;
+  infinite.points_xyz[3 * 123 + 2] = HUGE_VAL;
+  test::expect_input_error([&] { integrate_surface_loads(infinite, pressure_only()); },
+                           {"point coordinates hold NaN or Inf"});
+}
+
+TEST(SurfaceLoads, NonFiniteValuesCountOnlyWhereAFaceUsesThem) {
+  SurfaceMesh mesh = test::make_icosphere(0.3, 3);
+  test::add_point_scalar(mesh, "p", [](const P3& x) { return 100.0 * x[2]; });
+  test::add_point_vector(mesh, "tau", [](const P3& x) { return P3{x[1], 0.0, 0.0}; });
+  auto options = pressure_only();
+  options.shear_fields = {"tau"};
+  const auto reference = integrate_surface_loads(mesh, options);
+  // A point no face uses may hold anything.
+  SurfaceMesh unused = mesh;
+  test::add_point(unused, {9.0, 9.0, 9.0});
+  unused.fields[0].values.push_back(std::nan(""));
+  unused.fields[1].values.insert(unused.fields[1].values.end(), {HUGE_VAL, 0.0, 0.0});
+  const auto loads = integrate_surface_loads(unused, options);
+  EXPECT_EQ(loads.force_pressure, reference.force_pressure);
+  EXPECT_EQ(loads.force_viscous, reference.force_viscous);
+  // One that a face uses is named, NaN or Inf, in pressure or shear.
+  SurfaceMesh nan_pressure = mesh;
+  nan_pressure.fields[0].values[40] = std::nan("");
+  test::expect_input_error([&] { integrate_surface_loads(nan_pressure, options); },
+                           {"pressure array 'p' holds NaN at point 40; expected finite values"});
+  SurfaceMesh inf_shear = mesh;
+  inf_shear.fields[1].values[3 * 17 + 2] = -HUGE_VAL;
+  test::expect_input_error([&] { integrate_surface_loads(inf_shear, options); },
+                           {"wall shear array 'tau' holds Inf at point 17"});
 }
 
 TEST(SurfaceLoads, AgreesWithVtkIntegrateAttributes) {
