@@ -4,14 +4,22 @@
 //                              1.3 million triangles with point pressure and
 //                              point wall shear (goal: >= 50 M triangles/s)
 //   BM_VtpReadOnly             vtkXMLPolyDataReader alone on that surface as
-//                              a .vtp: the floor for any .vtp import
-//   BM_VtpImportAndIntegrate   hydrocoef's path: read_vtk_surface (VTK reader
-//                              plus the copy into a SurfaceMesh) and
+//                              a .vtp: the floor the goal below is set against
+//   BM_VtpImportAndIntegrate   hydrocoef's path: read_vtk_surface (the direct
+//                              .vtp reader, importers/vtk_xml_polydata) and
 //                              integrate_surface_loads (goal: <= 1.3x read)
+//   BM_VtpImportRun            import_surface_run: the same plus the file's
+//                              SHA-256 and the unit and axes handling, all
+//                              that `hydrocoef import` does before storing
+//   BM_VtpImportThroughVtkAndIntegrate
+//                              read_vtk_surface through VTK's reader (what
+//                              every other VTK format takes) and the integration
 //   BM_VtpVtkFilters           the same forces with VTK's own filters:
 //                              vtkPointDataToCellData, vtkPolyDataNormals,
 //                              vtkArrayCalculator, vtkIntegrateAttributes
 //                              (goal: hydrocoef >= 3x faster)
+//
+// Each .vtp case runs on three layouts of the same surface (see big_vtp).
 #include <benchmark/benchmark.h>
 #include <vtkArrayCalculator.h>
 #include <vtkCellArray.h>
@@ -33,6 +41,7 @@
 
 #include "importers/vtk_surface.hpp"
 #include "src/loads/surface_loads.hpp"
+#include "src/pipeline/surface_run.hpp"
 #include "tests/support/meshes.hpp"
 #include "tests/support/vtk_polydata.hpp"
 
@@ -129,6 +138,35 @@ void BM_VtpImportAndIntegrate(benchmark::State& state) {
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
 }
 BENCHMARK(BM_VtpImportAndIntegrate)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What `hydrocoef import` does with the file before it writes the run: the
+// read and integration above plus the file's SHA-256 (taken on another
+// thread meanwhile), the arrays' unit handling and the axes.
+void BM_VtpImportRun(benchmark::State& state) {
+  const auto& file = big_vtp(static_cast<int>(state.range(0)));
+  SurfaceRunOptions run_options;
+  run_options.pressure = "p";
+  run_options.shear = {"tau"};
+  run_options.pressure_kind = PressureKind::Static;
+  for (auto _ : state) benchmark::DoNotOptimize(import_surface_run(file, run_options));
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
+}
+BENCHMARK(BM_VtpImportRun)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same through VTK's reader and the copy into a SurfaceMesh (the path
+// every other VTK format takes).
+void BM_VtpImportThroughVtkAndIntegrate(benchmark::State& state) {
+  const auto& file = big_vtp(static_cast<int>(state.range(0)));
+  const auto o = options();
+  VtkSurfaceOptions through_vtk;
+  through_vtk.direct_vtp = false;
+  for (auto _ : state) {
+    const SurfaceMesh mesh = read_vtk_surface(file, through_vtk);
+    benchmark::DoNotOptimize(integrate_surface_loads(mesh, o));
+  }
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(std::filesystem::file_size(file)));
+}
+BENCHMARK(BM_VtpImportThroughVtkAndIntegrate)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_VtpVtkFilters(benchmark::State& state) {
   const auto& file = big_vtp(static_cast<int>(state.range(0)));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <future>
 #include <mutex>
 #include <nlohmann/json.hpp>
 
@@ -69,8 +70,8 @@ double json_number(const nlohmann::json& value, const std::string& where, const 
 }
 
 /// Reads the mesh and the file's SHA-256 and size: text formats are read
-/// once, hashed and parsed from the same bytes; VTK reads its files itself,
-/// so those are hashed block by block without being held.
+/// once, hashed and parsed from the same bytes; VTK-family files are read by
+/// their reader while another thread hashes them block by block.
 SurfaceMesh read_mesh(const std::filesystem::path& file, const std::string& format,
                       const std::vector<std::string>& locations, FileDigest& digest) {
   if (format == "cfdpost") {
@@ -80,11 +81,19 @@ SurfaceMesh read_mesh(const std::filesystem::path& file, const std::string& form
     options.locations = locations;
     return parse_cfdpost_export(source.bytes, file.string(), options);
   }
-  digest = digest_file(file);
+  std::future<FileDigest> hashing = std::async(std::launch::async, [&file] { return digest_file(file); });
   VtkSurfaceOptions options;
   options.locations = locations;
-  const std::lock_guard<std::mutex> lock(vtk_read_mutex());
-  return read_vtk_surface(file, options);
+  SurfaceMesh mesh;
+  try {
+    const std::lock_guard<std::mutex> lock(vtk_read_mutex());
+    mesh = read_vtk_surface(file, options);
+  } catch (...) {
+    hashing.get();  // a file that cannot be opened is reported as digest_file reports it
+    throw;
+  }
+  digest = hashing.get();
+  return mesh;
 }
 
 }  // namespace
