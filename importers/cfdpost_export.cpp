@@ -1,13 +1,7 @@
 #include "importers/cfdpost_export.hpp"
 
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -16,10 +10,10 @@
 #include <iterator>
 #include <limits>
 #include <memory>
-#include <system_error>
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
 #include "src/core/units.hpp"
 
@@ -667,75 +661,6 @@ void bind_fields(const std::vector<const Block*>& blocks, std::vector<Header>& h
     }
   }
 }
-
-// The bytes of a file. A regular file is read with read(2) into an anonymous
-// mapping that may use huge pages (see prefer_huge_pages). The bytes
-// are copied rather than mapped from the file so that a file truncated while
-// being parsed cannot raise SIGBUS.
-class FileBytes {
-  struct Descriptor {
-    int fd;
-    ~Descriptor() { ::close(fd); }
-  };
-
- public:
-  explicit FileBytes(const std::filesystem::path& path) : name_(path.string()) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw InputError(SourceLocation{name_}, "no such file");
-    if (std::filesystem::is_directory(path, ec))
-      throw InputError(SourceLocation{name_}, "is a directory, expected a CFD-Post export file");
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) throw InputError(SourceLocation{name_}, std::string("cannot open: ") + std::strerror(errno));
-    const Descriptor closer{fd};
-    struct stat info {};
-    if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
-      const auto size = static_cast<std::size_t>(info.st_size);
-      void* map = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-      if (map != MAP_FAILED) {
-        map_ = static_cast<char*>(map);
-        mapped_ = size;
-        prefer_huge_pages(map, size);
-        size_ = read_into(fd, map_, size);  // a file that shrank meanwhile gives fewer bytes
-        return;
-      }
-    }
-    // Pipes and special files have no size to trust: read in chunks.
-    std::array<char, 1 << 16> chunk{};
-    while (const std::size_t got = read_into(fd, chunk.data(), chunk.size())) {
-      fallback_.append(chunk.data(), got);
-      if (got < chunk.size()) break;
-    }
-  }
-  ~FileBytes() {
-    if (map_ != nullptr) ::munmap(map_, mapped_);
-  }
-  FileBytes(const FileBytes&) = delete;
-  FileBytes& operator=(const FileBytes&) = delete;
-
-  std::string_view view() const { return map_ != nullptr ? std::string_view(map_, size_) : fallback_; }
-
- private:
-  // Reads up to `size` bytes, fewer only at the end of the file.
-  std::size_t read_into(int fd, char* buffer, std::size_t size) const {
-    std::size_t used = 0;
-    while (used < size) {
-      const ssize_t got = ::read(fd, buffer + used, size - used);
-      if (got == 0) break;
-      if (got < 0) {
-        if (errno == EINTR) continue;
-        throw InputError(SourceLocation{name_}, std::string("read error: ") + std::strerror(errno));
-      }
-      used += static_cast<std::size_t>(got);
-    }
-    return used;
-  }
-
-  std::string name_;
-  char* map_ = nullptr;
-  std::size_t mapped_ = 0;
-  std::size_t size_ = 0;
-  std::string fallback_;
-};
 
 }  // namespace
 

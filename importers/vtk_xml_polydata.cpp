@@ -1,24 +1,22 @@
 #include "importers/vtk_xml_polydata.hpp"
 
-#include <fcntl.h>
 #include <libdeflate.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <iterator>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -28,6 +26,7 @@
 
 #include "src/core/base64.hpp"
 #include "src/core/error.hpp"
+#include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
 
 namespace hydrocoef {
@@ -35,77 +34,6 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr auto npos = std::string_view::npos;
-
-// --- the file's bytes ----------------------------------------------------------
-
-/// The whole file in anonymous memory (huge pages where the kernel gives
-/// them), read by two threads at once. Copied rather than mapped from the
-/// file, so that a file truncated while it is decoded cannot raise SIGBUS.
-class FileBytes {
- public:
-  explicit FileBytes(std::size_t capacity) : capacity_(capacity) {
-    void* map = ::mmap(nullptr, capacity, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (map == MAP_FAILED) throw std::bad_alloc();
-    data_ = static_cast<char*>(map);
-    prefer_huge_pages(data_, capacity);
-  }
-  FileBytes(FileBytes&& other) noexcept
-      : data_(std::exchange(other.data_, nullptr)), capacity_(other.capacity_), size_(other.size_) {}
-  FileBytes(const FileBytes&) = delete;
-  FileBytes& operator=(const FileBytes&) = delete;
-  FileBytes& operator=(FileBytes&&) = delete;
-  ~FileBytes() {
-    if (data_ != nullptr) ::munmap(data_, capacity_);
-  }
-  char* data() { return data_; }
-  void set_size(std::size_t size) { size_ = size; }
-  std::string_view view() const { return {data_, size_}; }
-
- private:
-  char* data_ = nullptr;
-  std::size_t capacity_ = 0;
-  std::size_t size_ = 0;
-};
-
-/// Bytes [offset, offset + size) of the file; fewer only where the file ends.
-std::optional<std::size_t> read_range(int fd, char* out, std::size_t offset, std::size_t size) {
-  std::size_t done = 0;
-  while (done < size) {
-    const ssize_t got = ::pread(fd, out + done, size - done, static_cast<off_t>(offset + done));
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) return std::nullopt;
-    if (got == 0) break;
-    done += static_cast<std::size_t>(got);
-  }
-  return done;
-}
-
-/// The file's bytes, or nothing when it cannot be read (VTK's reader then says why).
-std::optional<FileBytes> read_whole_file(const fs::path& file) {
-  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return std::nullopt;
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat info {};
-  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) || info.st_size <= 0) return std::nullopt;
-  const auto size = static_cast<std::size_t>(info.st_size);
-  FileBytes bytes(size);
-  // Two halves at once: the copy and the first touch of fresh memory (page
-  // faults, which virtual machines make costly) are shared by two cores.
-  const bool split = size >= (std::size_t{1} << 21);
-  const std::size_t half = split ? size / 2 : size;
-  std::optional<std::size_t> second = 0;
-  std::thread helper;
-  if (split) helper = std::thread([&] { second = read_range(fd, bytes.data() + half, half, size - half); });
-  const std::optional<std::size_t> first = read_range(fd, bytes.data(), 0, half);
-  if (split) helper.join();
-  if (!first || !second) return std::nullopt;
-  // A file that shrank meanwhile gives what was read up to the first gap.
-  bytes.set_size(*first < half ? *first : half + *second);
-  return bytes;
-}
 
 // --- the XML up to the appended data ------------------------------------------
 
@@ -147,6 +75,7 @@ class XmlHeader {
 
  private:
   static constexpr int kMaxDepth = 32;
+  static constexpr std::size_t kMaxAttributes = 64;
 
   static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
   static bool is_name_char(char c) {
@@ -265,7 +194,9 @@ class XmlHeader {
       std::string value;
       if (!decode_attribute(in_.substr(pos_, end - pos_), value)) return false;
       pos_ = end + 1;
-      if (element.attribute(key) != nullptr) return false;  // a repeated attribute is not XML
+      // A repeated attribute is not XML; VTK's elements have a handful (the
+      // limit keeps the repeat check cheap on hostile input).
+      if (element.attributes.size() >= kMaxAttributes || element.attribute(key) != nullptr) return false;
       element.attributes.emplace_back(std::move(key), std::move(value));
     }
     if (element.name == "AppendedData") {
@@ -398,6 +329,8 @@ struct ArrayJob {
   bool swap = false;
   std::string_view source;  ///< raw bytes or base64 text, from the array's start on
   bool base64 = false;
+  std::optional<std::uint64_t> appended_offset;  ///< where it starts in the appended data, if there
+  std::uint64_t extent = 0;                      ///< bytes (or base64 characters) of `source` it uses
   bool compressed = false;
   std::size_t data_origin = 0;  ///< where the value (or block) stream starts in `source`
   std::size_t header_bytes = 0;  ///< uncompressed: bytes of the count before the values in that stream
@@ -463,12 +396,49 @@ bool read_stream(const ArrayJob& job, std::size_t origin, std::uint64_t first, s
   return decode_base64_range(stream, static_cast<std::size_t>(first), static_cast<std::size_t>(last), out);
 }
 
+/// The InputError for base64 text that did not decode in bytes [first,
+/// last) of the stream at `origin`: the character at fault, and where.
+[[noreturn]] void fail_base64(const FileFormat& format, const ArrayJob& job, std::size_t origin, std::uint64_t first,
+                              std::uint64_t last) {
+  const std::string_view stream = job.source.substr(std::min(origin, job.source.size()));
+  const std::size_t begin = std::min<std::size_t>(first / 3 * 4, stream.size());
+  const std::size_t end = std::min<std::size_t>((last + 2) / 3 * 4, stream.size());
+  std::vector<unsigned char> scratch(3 * (end - begin) / 4 + 3);
+  const Base64Decoded decoded = decode_base64(stream.substr(begin, end - begin), scratch.data());
+  if (decoded.ok())
+    fail(format, job.what + ": the base64 text ends after " + std::to_string(stream.size()) +
+                     " characters, inside the array; the file is cut short");
+  const std::size_t at = std::min(origin, job.source.size()) + begin + decoded.bad_offset;
+  const char c = job.source[at];
+  fail(format, job.what + ": character " + std::to_string(at) + " of the array's base64 text is " +
+                   (c == '=' ? std::string("'=' before its end") : "'" + std::string(1, c) + "'") +
+                   "; expected only A-Z a-z 0-9 + / and '=' padding at the end");
+}
+
+bool plan_array_unchecked(const XmlElement& array, const FileFormat& format, std::string what,
+                          std::optional<std::uint64_t> needed, ArrayJob& job);
+
 /// Decides how to decode `array`, reading its header. `needed` is the number
 /// of values the piece calls for, or nothing to take all the array holds.
 /// Returns false to leave the file to VTK's reader; throws InputError for
 /// data that cannot be right.
 bool plan_array(const XmlElement& array, const FileFormat& format, std::string what,
                 std::optional<std::uint64_t> needed, ArrayJob& job) {
+  try {
+    return plan_array_unchecked(array, format, std::move(what), needed, job);
+  } catch (const InputError&) {
+    // Inline base64 broken by whitespace does not decode here; VTK's reader
+    // has the last word on it.
+    const std::string* data_format = array.attribute("format");
+    if (data_format != nullptr && *data_format == "binary" &&
+        array.text.find_first_of(" \t\r\n") != std::string_view::npos)
+      return false;
+    throw;
+  }
+}
+
+bool plan_array_unchecked(const XmlElement& array, const FileFormat& format, std::string what,
+                          std::optional<std::uint64_t> needed, ArrayJob& job) {
   const std::string* type_name = array.attribute("type");
   const std::string* data_format = array.attribute("format");
   if (type_name == nullptr || data_format == nullptr) return false;
@@ -489,6 +459,7 @@ bool plan_array(const XmlElement& array, const FileFormat& format, std::string w
                        std::to_string(format.appended.size()) + " bytes; the file is cut short");
     job.source = format.appended.substr(static_cast<std::size_t>(*offset));
     job.base64 = format.appended_base64;
+    job.appended_offset = *offset;
   } else {
     return false;  // ascii: VTK's reader
   }
@@ -512,7 +483,10 @@ bool plan_array(const XmlElement& array, const FileFormat& format, std::string w
     job.block_size = header_word(head + h, h, format.swap);
     job.last_block_size = header_word(head + 2 * h, h, format.swap);
     const std::uint64_t max_blocks = job.source.size() / h;  // each block needs a header word
-    if (blocks > max_blocks) fail(format, cut_short);
+    if (blocks > max_blocks)
+      fail(format, job.what + ": the compression header gives " + std::to_string(blocks) +
+                       " blocks; the array's data hold room for the sizes of " + std::to_string(max_blocks) +
+                       " at most (a damaged header, or the file is cut short)");
     if (blocks > 0 && (job.block_size == 0 || job.last_block_size > job.block_size))
       fail(format, job.what + ": the compression header gives blocks of " + std::to_string(job.block_size) +
                        " bytes and a last block of " + std::to_string(job.last_block_size) +
@@ -562,10 +536,14 @@ bool plan_array(const XmlElement& array, const FileFormat& format, std::string w
     } else if (stream_bytes > job.source.size()) {
       fail(format, cut_short);
     }
-  } else if (*data_format == "binary") {
-    std::uint64_t compressed_total = 0;
-    for (const auto b : job.block_bytes) compressed_total += b;
-    if (job.source.size() != job.data_origin + base64_chars(compressed_total)) return false;
+  }
+  if (!format.compressed) {
+    const std::uint64_t bytes = h + job.stored_words * job.word;
+    job.extent = job.base64 ? base64_chars(bytes) : bytes;
+  } else {
+    const std::uint64_t compressed = job.block_bytes.empty() ? 0 : job.block_start.back() + job.block_bytes.back();
+    job.extent = job.data_origin + (job.base64 ? base64_chars(compressed) : compressed);
+    if (*data_format == "binary" && job.source.size() != job.extent) return false;
   }
   return true;
 }
@@ -694,7 +672,7 @@ void run_task(const Task& task, const FileFormat& format, Scratch& scratch) {
     }
     scratch.decoded.resize(static_cast<std::size_t>(bytes));
     if (!read_stream(job, 0, first_byte, first_byte + bytes, scratch.decoded.data()))
-      fail(format, job.what + ": the base64 text holds a character outside the base64 alphabet");
+      fail_base64(format, job, 0, first_byte, first_byte + bytes);
     convert(job, scratch.decoded.data(), task.first, task.count);
     return;
   }
@@ -705,7 +683,7 @@ void run_task(const Task& task, const FileFormat& format, Scratch& scratch) {
     scratch.encoded.resize(compressed_bytes);
     if (!read_stream(job, job.data_origin, job.block_start[b], job.block_start[b] + compressed_bytes,
                      scratch.encoded.data()))
-      fail(format, job.what + ": the base64 text holds a character outside the base64 alphabet");
+      fail_base64(format, job, job.data_origin, job.block_start[b], job.block_start[b] + compressed_bytes);
     compressed = scratch.encoded.data();
   } else {
     compressed = reinterpret_cast<const unsigned char*>(job.source.data()) + job.data_origin + job.block_start[b];
@@ -767,7 +745,7 @@ void run_parallel(std::size_t count, Body body) {
 /// (a type this reader does not decode, a name used twice).
 bool field_arrays(const XmlElement* attributes, std::vector<const XmlElement*>& out) {
   if (attributes == nullptr) return true;
-  std::vector<std::string> names;
+  std::set<std::string> names;
   for (const auto& array : attributes->children) {
     const std::string* name = array.attribute("Name");
     const std::string* type = array.attribute("type");
@@ -776,8 +754,7 @@ bool field_arrays(const XmlElement* attributes, std::vector<const XmlElement*>& 
     if (array.name == "Array" && *type == "String") continue;
     if (array.name != "DataArray") return false;
     if (name != nullptr) {
-      if (std::find(names.begin(), names.end(), *name) != names.end()) return false;
-      names.push_back(*name);
+      if (!names.insert(*name).second) return false;
     }
     if (!parse_word_type(*type)) return false;
     const auto components = count_attribute(array, "NumberOfComponents", 1);
@@ -803,11 +780,36 @@ const XmlElement* array_named(const XmlElement& cells, std::string_view name) {
 
 std::string in_quotes(const std::string& name) { return "'" + name + "'"; }
 
+/// The appended bytes the arrays planned so far use, as [begin, end) by
+/// begin. VTK's writers never let two arrays share bytes; a file that does
+/// is left to VTK's reader, so that a few bytes cannot stand for many arrays
+/// (and many times the memory).
+class AppendedRanges {
+ public:
+  /// False when the job's bytes overlap an earlier array's.
+  bool add(const ArrayJob& job) {
+    if (!job.appended_offset) return true;
+    const std::uint64_t begin = *job.appended_offset, end = begin + std::max<std::uint64_t>(job.extent, 1);
+    const auto next = ranges_.lower_bound(begin);
+    if (next != ranges_.end() && next->first < end) return false;
+    if (next != ranges_.begin() && std::prev(next)->second > begin) return false;
+    ranges_.emplace(begin, end);
+    return true;
+  }
+
+ private:
+  std::map<std::uint64_t, std::uint64_t> ranges_;
+};
+
 }  // namespace
 
 std::optional<SurfaceMesh> read_vtp_surface(const std::filesystem::path& file) {
-  const std::optional<FileBytes> bytes = read_whole_file(file);
-  if (!bytes) return std::nullopt;
+  std::optional<FileBytes> bytes;
+  try {
+    bytes.emplace(file);
+  } catch (const InputError&) {
+    return std::nullopt;  // VTK's reader says why, as for every other VTK format
+  }
   return parse_vtp_surface(bytes->view(), file.string(), file.stem().string());
 }
 
@@ -874,17 +876,22 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
 
   // Plans, all before any decoding, so that leaving the file to VTK costs nothing.
   constexpr std::uint64_t kMax32 = std::numeric_limits<std::uint32_t>::max();
-  if (*point_count > kMax32 || *polygon_count >= kMax32)
-    fail(format, std::to_string(*point_count) + " points and " + std::to_string(*polygon_count) +
-                     " polygons; at most " + std::to_string(kMax32) + " of each are supported");
+  if (*point_count > kMax32)
+    fail(format, "NumberOfPoints is " + std::to_string(*point_count) + "; at most " + std::to_string(kMax32) +
+                     " points are supported");
+  if (*polygon_count >= kMax32)
+    fail(format, "NumberOfPolys is " + std::to_string(*polygon_count) + "; fewer than " + std::to_string(kMax32) +
+                     " polygons are supported");
   const std::size_t points_n = static_cast<std::size_t>(*point_count);
   const std::size_t polygons_n = static_cast<std::size_t>(*polygon_count);
   std::vector<std::unique_ptr<ArrayJob>> jobs;
+  AppendedRanges appended_ranges;
   auto plan = [&](const XmlElement& array, std::string what, std::optional<std::uint64_t> needed) -> ArrayJob* {
     jobs.push_back(std::make_unique<ArrayJob>());
     ArrayJob& job = *jobs.back();
     job.compressed = format.compressed;
-    return plan_array(array, format, std::move(what), needed, job) ? &job : nullptr;
+    const bool planned = plan_array(array, format, std::move(what), needed, job) && appended_ranges.add(job);
+    return planned ? &job : nullptr;
   };
   ArrayJob* point_job = plan(point_array, "the points array", 3 * *point_count);
   ArrayJob* offsets_job = plan(*offsets_array, "the Polys offsets array", *polygon_count);
@@ -938,7 +945,14 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
     allocate(plan_entry.field->values, static_cast<std::size_t>(plan_entry.job->words));
   std::stable_sort(allocations.begin(), allocations.end(),
                    [](const auto& a, const auto& b) { return a.first > b.first; });
-  run_parallel(allocations.size(), [&allocations](std::size_t i, Scratch&) { allocations[i].second(); });
+  try {
+    run_parallel(allocations.size(), [&allocations](std::size_t i, Scratch&) { allocations[i].second(); });
+  } catch (const std::bad_alloc&) {
+    std::size_t total = 0;
+    for (const auto& allocation : allocations) total += allocation.first;
+    fail(format, "the arrays the file declares need " + std::to_string(total >> 20) +
+                     " MiB, more memory than there is");
+  }
 
   point_job->out = mesh.points_xyz.data();
   offsets_job->out = mesh.face_offsets.data() + 1;
@@ -977,8 +991,9 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
         std::upper_bound(offsets, offsets + polygons_n + 1, static_cast<std::uint32_t>(connectivity_job->bad_position)) -
         offsets - 1);
     fail(format, block + "cell " + std::to_string(cell) + " refers to point " + connectivity_job->bad_value +
-                     "; expected 0.." + std::to_string(static_cast<long long>(*point_count) - 1) + " (the block has " +
-                     std::to_string(*point_count) + " points)");
+                     (*point_count == 0 ? std::string("; the block has no points")
+                                        : "; expected 0.." + std::to_string(*point_count - 1) + " (the block has " +
+                                              std::to_string(*point_count) + " points)"));
   }
   mesh.face_indices.resize(index_count);
   return mesh;
