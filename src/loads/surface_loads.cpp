@@ -671,19 +671,30 @@ void check_mesh_shape(const SurfaceMesh& mesh) {
 }
 
 /// The InputError for the first face a block could not read.
+/// The offsets first (only offsets that never go back keep the index reads
+/// inside the array), then the indices.
 [[noreturn]] void throw_unreadable_faces(const SurfaceMesh& mesh) {
-  const std::size_t points = mesh.point_count();
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
     if (mesh.face_offsets[f + 1] < mesh.face_offsets[f])
       throw InputError("face offsets go back at face " + std::to_string(f) + " (" +
                        std::to_string(mesh.face_offsets[f + 1]) + " after " + std::to_string(mesh.face_offsets[f]) +
                        "); expected offsets that never decrease");
+  const std::size_t points = mesh.point_count();
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
     for (std::size_t i = mesh.face_offsets[f]; i < mesh.face_offsets[f + 1]; ++i)
       if (mesh.face_indices[i] >= points)
-        throw InputError("a face refers to point " + std::to_string(mesh.face_indices[i]) + " but the surface has " +
-                         std::to_string(points) + " points");
-  }
+        throw InputError("face " + std::to_string(f) + " refers to point " + std::to_string(mesh.face_indices[i]) +
+                         " but the surface has " + std::to_string(points) + " points");
   throw std::logic_error("throw_unreadable_faces: every face can be read");
+}
+
+/// The InputError for the first point with a coordinate that is NaN or Inf.
+[[noreturn]] void throw_not_finite_point(const SurfaceMesh& mesh) {
+  for (std::size_t i = 0; i < mesh.points_xyz.size(); ++i)
+    if (!std::isfinite(mesh.points_xyz[i]))
+      throw InputError("point " + std::to_string(i / 3) + " has " + "xyz"[i % 3] + " = " +
+                       (std::isnan(mesh.points_xyz[i]) ? "NaN" : "Inf") + "; expected finite coordinates");
+  throw std::logic_error("throw_not_finite_point: every coordinate is finite");
 }
 
 /// Edge counts of the edges whose smaller vertex lies in [first, last).
@@ -762,15 +773,18 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   PointScan scanned;
   const Sums sums = integrate_blocks(integrator, scanned);
   if (sums.invalid) throw_unreadable_faces(mesh);
-  if (!scanned.coordinates_finite) throw InputError("point coordinates hold NaN or Inf; expected finite coordinates");
+  if (!scanned.coordinates_finite) throw_not_finite_point(mesh);
   // A NaN or Inf in a value that a face uses makes its sums NaN or Inf (times
   // a zero area too), so the arrays are searched only when a sum is.
-  if (!all_finite(sums))
+  if (!all_finite(sums)) {
     for (const FieldView* view : {&integrator.pressure, &integrator.shear})
       for (const FieldArray* array : view->arrays)
         if (array != nullptr &&
             !std::all_of(array->values.begin(), array->values.end(), [](double v) { return std::isfinite(v); }))
           throw_not_finite(*array, view->role);
+    throw InputError("the integrals overflow (coordinates or values near the largest double); expected a surface "
+                     "of finite area and forces");
+  }
   // Topology: a zero edge residue proves every edge is walked once each way
   // (the surface is closed and consistently oriented; only a mesh built to
   // cancel the 64-bit hash sums could fake it). Anything else is counted

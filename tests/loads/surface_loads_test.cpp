@@ -502,12 +502,21 @@ TEST(SurfaceLoads, FacesThatCannotBeReadAreRefusedOnBothThreads) {
   SurfaceMesh bad_index = mesh;
   bad_index.face_indices[3 * 70000 + 1] = static_cast<std::uint32_t>(mesh.point_count() + 5);
   test::expect_input_error([&] { integrate_surface_loads(bad_index, pressure_only()); },
-                           {"a face refers to point " + std::to_string(mesh.point_count() + 5),
+                           {"face 70000 refers to point " + std::to_string(mesh.point_count() + 5),
                             "the surface has " + std::to_string(mesh.point_count()) + " points"});
   SurfaceMesh backwards = mesh;
   std::swap(backwards.face_offsets[50001], backwards.face_offsets[50002]);
   test::expect_input_error([&] { integrate_surface_loads(backwards, pressure_only()); },
                            {"face offsets go back at face 50001", "expected offsets that never decrease"});
+  // Offsets that jump past the indices and come back: refused without
+  // reading past the end of the indices.
+  SurfaceMesh jumping = mesh;
+  jumping.face_offsets[1] = static_cast<std::uint32_t>(jumping.face_indices.size() + 1000);
+  test::expect_input_error([&] { integrate_surface_loads(jumping, pressure_only()); },
+                           {"face offsets go back at face 1"});
+  SurfaceMesh huge = mesh;
+  for (std::size_t i = 0; i < 3 * 40; ++i) huge.points_xyz[i] *= 1e300;
+  test::expect_input_error([&] { integrate_surface_loads(huge, pressure_only()); }, {"the integrals overflow"});
   SurfaceMesh not_from_zero = mesh;
   not_from_zero.face_offsets[0] = 1;
   test::expect_input_error([&] { integrate_surface_loads(not_from_zero, pressure_only()); },
@@ -515,7 +524,7 @@ TEST(SurfaceLoads, FacesThatCannotBeReadAreRefusedOnBothThreads) {
   SurfaceMesh infinite = mesh;
   infinite.points_xyz[3 * 123 + 2] = HUGE_VAL;
   test::expect_input_error([&] { integrate_surface_loads(infinite, pressure_only()); },
-                           {"point coordinates hold NaN or Inf"});
+                           {"point 123 has z = Inf; expected finite coordinates"});
 }
 
 TEST(SurfaceLoads, NonFiniteValuesCountOnlyWhereAFaceUsesThem) {
