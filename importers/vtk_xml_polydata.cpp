@@ -32,7 +32,6 @@
 namespace hydrocoef {
 namespace {
 
-namespace fs = std::filesystem;
 constexpr auto npos = std::string_view::npos;
 
 // --- the XML up to the appended data ------------------------------------------
@@ -331,7 +330,6 @@ struct ArrayJob {
   bool base64 = false;
   std::optional<std::uint64_t> appended_offset;  ///< where it starts in the appended data, if there
   std::uint64_t extent = 0;                      ///< bytes (or base64 characters) of `source` it uses
-  bool compressed = false;
   std::size_t data_origin = 0;  ///< where the value (or block) stream starts in `source`
   std::size_t header_bytes = 0;  ///< uncompressed: bytes of the count before the values in that stream
   std::uint64_t block_size = 0, last_block_size = 0;     ///< uncompressed; 0 = the last block is whole
@@ -646,9 +644,9 @@ struct Task {
 
 constexpr std::uint64_t kChunkBytes = std::uint64_t{1} << 18;
 
-void add_tasks(ArrayJob& job, std::vector<Task>& tasks) {
+void add_tasks(ArrayJob& job, const FileFormat& format, std::vector<Task>& tasks) {
   if (job.words == 0) return;
-  if (job.compressed) {
+  if (format.compressed) {
     for (std::size_t b = 0; b < job.block_bytes.size(); ++b) {
       const std::uint64_t count = job.block_words(b);
       if (count == 0) break;
@@ -664,7 +662,7 @@ void add_tasks(ArrayJob& job, std::vector<Task>& tasks) {
 void run_task(const Task& task, const FileFormat& format, Scratch& scratch) {
   ArrayJob& job = *task.job;
   const std::uint64_t bytes = task.count * job.word;
-  if (!job.compressed) {
+  if (!format.compressed) {
     const std::uint64_t first_byte = job.header_bytes + task.first * job.word;
     if (!job.base64) {
       convert(job, reinterpret_cast<const unsigned char*>(job.source.data()) + first_byte, task.first, task.count);
@@ -889,7 +887,6 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
   auto plan = [&](const XmlElement& array, std::string what, std::optional<std::uint64_t> needed) -> ArrayJob* {
     jobs.push_back(std::make_unique<ArrayJob>());
     ArrayJob& job = *jobs.back();
-    job.compressed = format.compressed;
     const bool planned = plan_array(array, format, std::move(what), needed, job) && appended_ranges.add(job);
     return planned ? &job : nullptr;
   };
@@ -963,7 +960,7 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
   connectivity_job->index_limit = *point_count;
   for (const auto& plan_entry : field_plans) plan_entry.job->out = plan_entry.field->values.data();
   std::vector<Task> tasks;
-  for (const auto& job : jobs) add_tasks(*job, tasks);
+  for (const auto& job : jobs) add_tasks(*job, format, tasks);
   run_parallel(tasks.size(), [&tasks, &format](std::size_t i, Scratch& scratch) { run_task(tasks[i], format, scratch); });
 
   // Offsets: from 0, never back, at least 3 points a polygon, within the connectivity.

@@ -609,8 +609,8 @@ PointScan scan_points(const SurfaceMesh& mesh, std::size_t part, std::size_t par
 }
 
 /// Runs the integration on the calling thread and, for large meshes, on a
-/// second one. Each first scans its share of the points and values; they
-/// meet, since the degenerate-face threshold needs the whole bounding box;
+/// second one. Each first scans its share of the points; they meet, since
+/// the degenerate-face threshold needs the whole bounding box;
 /// then both take blocks of faces. Block results are summed in block order,
 /// so the totals do not depend on which thread ran what.
 Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
@@ -646,13 +646,12 @@ Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
   return total;
 }
 
-/// Whether every sum is finite (their total is, unless one is not or a
-/// finite total overflows, which only costs a search of the arrays).
+/// Whether every sum is finite.
 bool all_finite(const Sums& s) {
-  double total = s.area + s.y_dot_n_dA;
+  bool finite = std::isfinite(s.area) && std::isfinite(s.y_dot_n_dA);
   for (const Vec3* v : {&s.force_p, &s.force_v, &s.moment_p, &s.moment_v, &s.n_dA, &s.y_cross_n_dA})
-    total += (*v)[0] + (*v)[1] + (*v)[2];
-  return std::isfinite(total);
+    for (const double x : *v) finite = finite && std::isfinite(x);
+  return finite;
 }
 
 /// The checks that cost nothing per face; the rest (offsets that go back,

@@ -460,5 +460,40 @@ TEST(VtkXmlPolyData, RefusesAFileWithoutPolygons) {
   expect_refused(crafted_vtp(3, 0, kTriangle, {}, {}), {"no faces"});
 }
 
+// Headers that claim more than any file holds are refused before anything is
+// allocated for them; an element with more attributes than VTK writes is left
+// to VTK's parser.
+TEST(VtkXmlPolyData, RefusesOrLeavesHeadersThatClaimTooMuch) {
+  TempDir dir;
+  const std::string triangle = crafted_vtp(3, 1, kTriangle, {0, 1, 2}, {3});
+  auto with_points = [&](const std::string& count) {
+    std::string bytes = triangle;
+    const auto at = bytes.find("NumberOfPoints=\"3\"");
+    return bytes.replace(at, 18, "NumberOfPoints=\"" + count + "\"");
+  };
+  expect_input_error([&] { parse_vtp_surface(with_points("5000000000"), "big.vtp", "big"); },
+                     {"big.vtp", "NumberOfPoints is 5000000000; at most 4294967295 points are supported"});
+
+  // A zlib header stating 10^12 blocks, in a file of a few hundred bytes.
+  std::string compressed = triangle;
+  compressed.insert(compressed.find("header_type"), "compressor=\"vtkZLibDataCompressor\" ");
+  std::string header(24, '\0');
+  const std::uint64_t words[3] = {1000000000000, 32768, 0};
+  std::memcpy(header.data(), words, 24);
+  const auto points = compressed.find("Name=\"Points\"");
+  const auto text = compressed.find('>', points) + 1;
+  compressed.replace(text, compressed.find('<', text) - text, base64(header));
+  expect_input_error([&] { parse_vtp_surface(compressed, "blocks.vtp", "blocks"); },
+                     {"blocks.vtp", "the points array: the compression header gives 1000000000000 blocks"});
+
+  std::string attributes;
+  for (int i = 0; i < 65; ++i) attributes += " a" + std::to_string(i) + "=\"0\"";
+  std::string many = triangle;
+  many.insert(many.find("NumberOfPolys"), attributes.substr(1) + " ");
+  EXPECT_FALSE(parse_vtp_surface(many, "many.vtp", "many").has_value());
+  write_bytes(dir / "many.vtp", many);
+  EXPECT_EQ(read_vtk_surface(dir / "many.vtp").face_count(), 1u) << "VTK's reader reads it";
+}
+
 }  // namespace
 }  // namespace hydrocoef
