@@ -3,7 +3,7 @@
 // Export Connectivity = On) into a SurfaceMesh of nodal values, converted to
 // SI at this edge. It is the route from a CFX wall to integrated loads when no
 // CGNS or EnSight export is at hand. Layout and pitfalls:
-// /work/shared/reference/cfx-export-formats.md, sections 1 and 5.
+// docs/reference/cfx-export-formats.md, sections 1 and 5.
 #pragma once
 
 #include <filesystem>

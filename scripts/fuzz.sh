@@ -30,7 +30,7 @@ seed_files() {
   case "$1" in
     force_table_fuzz) ls "$root"/examples/asr-v/*.csv "$root"/tests/data/bad/table-*.csv ;;
     cfx_monitor_fuzz) ls "$root"/tests/data/bad/monitor-*.csv ;;
-    cfdpost_export_fuzz) ls "$root"/tests/data/bad/cfdpost-*.csv "$root"/../shared/reference/cfx-samples/*.csv 2>/dev/null || true ;;
+    cfdpost_export_fuzz) ls "$root"/tests/data/bad/cfdpost-*.csv "$root"/data/cfx-samples/*.csv 2>/dev/null || true ;;
     vehicle_fuzz) ls "$root"/examples/asr-v/vehicle*.json 2>/dev/null || true ;;
     scenario_fuzz) ls "$root"/examples/asr-v/scenario*.json 2>/dev/null || true ;;
     vtp_fuzz) ls "$root"/tests/data/vtp-encodings/*.vtp "$root"/tests/data/bad/vtp-*.vtp ;;

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Real CFD surfaces: the OpenFOAM runs of a 0.15 m sphere in shared/data
-# (simpleFoam, k-omega SST; see shared/data/openfoam-sphere/README.md),
+# Real CFD surfaces: the OpenFOAM runs of a 0.15 m sphere in data/
+# (simpleFoam, k-omega SST; see data/openfoam-sphere/README.md),
 # integrated from their .vtp patches and stored as runs in body axes.
 #
-#   examples/openfoam-sphere/run.sh HYDROCOEF_BINARY DATABASE [SHARED_DIR]
+#   examples/openfoam-sphere/run.sh HYDROCOEF_BINARY DATABASE
 #
 # OpenFOAM's axes: x along the free stream, z up. Body axes: x forward (into
 # the stream), z down, so --axes -x,y,-z; the body moves at minus the free
@@ -14,10 +14,9 @@
 # shows the pressure and viscous parts and a closed surface of 4024 faces.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-hydrocoef=${1:?usage: run.sh HYDROCOEF_BINARY DATABASE [SHARED_DIR]}
-db=${2:?usage: run.sh HYDROCOEF_BINARY DATABASE [SHARED_DIR]}
-shared=${3:-$here/../../../shared}
-data="$shared/data/openfoam-sphere/full"
+hydrocoef=${1:?usage: run.sh HYDROCOEF_BINARY DATABASE}
+db=${2:?usage: run.sh HYDROCOEF_BINARY DATABASE}
+data="$here/../../data/openfoam-sphere/full"
 rm -f "$db"
 
 echo "== integrate one run (not stored), body axes, moments about the centre"

@@ -1,36 +1,8 @@
 #include "src/core/error.hpp"
 
+#include "src/core/utf8.hpp"
+
 namespace hydrocoef {
-namespace {
-
-// Length of a valid UTF-8 sequence of two or more bytes starting at text[i],
-// or 0, so that names such as "µN" survive while stray bytes are escaped.
-std::size_t utf8_length(std::string_view text, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  const unsigned char lead = byte(i);
-  std::size_t length = 0;
-  unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
-  if (lead >= 0xC2 && lead <= 0xDF) {
-    length = 2;
-    if (lead == 0xC2) low = 0xA0;  // U+0080..U+009F are control characters
-  } else if (lead >= 0xE0 && lead <= 0xEF) {
-    length = 3;
-    if (lead == 0xE0) low = 0xA0;   // overlong
-    if (lead == 0xED) high = 0x9F;  // surrogates
-  } else if (lead >= 0xF0 && lead <= 0xF4) {
-    length = 4;
-    if (lead == 0xF0) low = 0x90;   // overlong
-    if (lead == 0xF4) high = 0x8F;  // beyond U+10FFFF
-  } else {
-    return 0;
-  }
-  if (i + length > text.size() || byte(i + 1) < low || byte(i + 1) > high) return 0;
-  for (std::size_t k = 2; k < length; ++k)
-    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
-  return length;
-}
-
-}  // namespace
 
 std::string printable_text(std::string_view text, std::size_t max_characters) {
   static constexpr char kHex[] = "0123456789abcdef";
@@ -42,17 +14,22 @@ std::string printable_text(std::string_view text, std::size_t max_characters) {
       out += "...";
       break;
     }
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7F) {
-      out += text[i++];
-    } else if (const std::size_t length = utf8_length(text, i); length > 0) {
-      out.append(text.substr(i, length));
-      i += length;
+    const auto decoded = decode_utf8(text, i);
+    if (decoded && !is_format_or_control(decoded->value)) {
+      // Printable ASCII, or valid UTF-8 such as "µN".
+      out.append(text.substr(i, decoded->length));
+      i += decoded->length;
     } else {
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 0x0F];
-      ++i;
+      // Control and bidirectional formatting characters and stray bytes,
+      // byte by byte, so that the message stays one line shown as written.
+      const std::size_t length = decoded ? decoded->length : 1;
+      for (std::size_t k = 0; k < length; ++k) {
+        const auto c = static_cast<unsigned char>(text[i + k]);
+        out += "\\x";
+        out += kHex[c >> 4];
+        out += kHex[c & 0x0F];
+      }
+      i += length;
     }
   }
   return out;
@@ -67,11 +44,13 @@ std::string format_location(const SourceLocation& where) {
   return out;
 }
 
-InputError::InputError(const std::string& message) : std::runtime_error(printable_text(message)) {}
+InputError::InputError(const std::string& message)
+    : std::runtime_error(printable_text(message, kMaxMessageCharacters)) {}
 
 InputError::InputError(const SourceLocation& where, const std::string& message)
-    : std::runtime_error(printable_text(where.file.empty() && where.line == 0 ? message
-                                                                              : format_location(where) + ": " + message)),
+    : std::runtime_error(printable_text(
+          where.file.empty() && where.line == 0 ? message : format_location(where) + ": " + message,
+          kMaxMessageCharacters)),
       where_(where) {}
 
 }  // namespace hydrocoef

@@ -19,13 +19,17 @@ struct SourceLocation {
 };
 
 /// Text as it may appear in a one-line message: control characters (newlines
-/// included) and bytes that are not UTF-8 become \xNN; valid UTF-8 such as
-/// "µN" is kept; text longer than max_characters is cut and ends in "...".
+/// included), bidirectional formatting characters and bytes that are not
+/// UTF-8 become \xNN (byte by byte); valid UTF-8 such as "µN" is kept; text
+/// longer than max_characters is cut and ends in "...".
 std::string printable_text(std::string_view text, std::size_t max_characters = std::string_view::npos);
 
 /// Bad input: what was found and what was expected, and where. The message
 /// is made printable (printable_text), so that text quoted from a binary or
-/// damaged file still gives one readable line.
+/// damaged file still gives one readable line, and is cut at
+/// kMaxMessageCharacters (callers quote short excerpts; this is the backstop).
+inline constexpr std::size_t kMaxMessageCharacters = 2000;
+
 class InputError : public std::runtime_error {
  public:
   explicit InputError(const std::string& message);

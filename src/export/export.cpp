@@ -1,9 +1,6 @@
 #include "src/export/export.hpp"
 
-#include <unistd.h>
-
 #include <array>
-#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -27,11 +24,6 @@ std::string data_bytes(const std::vector<double>& data) {
   std::string bytes(data.size() * sizeof(double), '\0');
   if (!data.empty()) std::memcpy(bytes.data(), data.data(), bytes.size());
   return bytes;
-}
-
-std::filesystem::path directory_of(const std::filesystem::path& path) {
-  const std::filesystem::path parent = path.parent_path();
-  return parent.empty() ? std::filesystem::path(".") : parent;
 }
 
 }  // namespace
@@ -131,52 +123,6 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
       return {path};
   }
   return {};
-}
-
-std::filesystem::path temporary_beside(const std::filesystem::path& path) {
-  static std::atomic<unsigned> counter{0};
-  const std::filesystem::path directory = directory_of(path);
-  std::error_code ec;
-  if (path.filename().empty()) {
-    throw InputError("cannot write '" + path.string() + "': it names a directory; expected a file name");
-  }
-  if (!std::filesystem::is_directory(directory, ec)) {
-    const bool exists = std::filesystem::exists(directory, ec);
-    throw InputError("cannot write '" + path.string() + "': '" + directory.string() + "' " +
-                     (exists ? "is not a directory" : "does not exist") + "; expected an existing directory");
-  }
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError("cannot write '" + path.string() + "': it is a directory; expected a file name");
-  }
-  return directory / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                      std::to_string(counter.fetch_add(1)));
-}
-
-void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& path) {
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw InputError("cannot write '" + path.string() + "': " + ec.message());
-  }
-}
-
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  const std::filesystem::path temporary = temporary_beside(path);
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (!file) {
-    throw InputError("cannot write '" + path.string() + "': " + std::strerror(errno) +
-                     "; expected a writable directory");
-  }
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) {
-    const int error = errno;
-    std::error_code ec;
-    std::filesystem::remove(temporary, ec);
-    throw InputError("cannot write '" + path.string() + "': " + std::strerror(error));
-  }
-  commit_temporary(temporary, path);
 }
 
 std::string shortest_number(double value) {

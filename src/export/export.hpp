@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "src/core/atomic_file.hpp"
 #include "src/store/database.hpp"
 #include "src/surface/coefficient_surface.hpp"
 #include "src/surface/grid_table.hpp"
@@ -84,25 +85,10 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
 /// InputError otherwise.
 void check_metadata(const GridTable& table, const ExportMetadata& metadata);
 
-/// Writes bytes to `path` through a temporary file in the same directory and
-/// a rename, so that `path` is either the complete new file or untouched.
-/// Throws InputError naming the path when the directory is missing or not
-/// writable.
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
-
 /// Text for an XML attribute or element: & < > " ' as entities.
 std::string xml_escape(std::string_view text);
 /// Text safe inside an XML comment: no "--" (written "- -") and no trailing "-".
 std::string xml_comment_safe(std::string text);
-
-/// A temporary name beside `path` for writers that write files themselves
-/// (matio, VTK): ".NAME.tmp-PID-N" in the same directory. Throws InputError
-/// when the directory does not exist.
-std::filesystem::path temporary_beside(const std::filesystem::path& path);
-
-/// Renames a finished temporary onto `path`; removes the temporary and
-/// throws InputError naming `path` if that fails.
-void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& path);
 
 /// Shortest decimal text that reads back as the same double ("0.1", "1e-300").
 std::string shortest_number(double value);

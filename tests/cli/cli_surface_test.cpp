@@ -15,7 +15,7 @@ namespace {
 using test::run_cli;
 using test::TempDir;
 
-const std::string kSphere = HYDROCOEF_SHARED_DIR "/data/openfoam-sphere/";
+const std::string kSphere = HYDROCOEF_DATA_DIR "/openfoam-sphere/";
 
 nlohmann::json case_info(const std::string& folder) {
   std::ifstream in(kSphere + folder + "/case.json");

@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 using Strings = std::vector<std::string>;
 using Indices = std::vector<std::uint32_t>;
 
-const fs::path kSampleDir = fs::path(HYDROCOEF_SHARED_DIR) / "reference" / "cfx-samples";
+const fs::path kSampleDir = fs::path(HYDROCOEF_DATA_DIR) / "cfx-samples";
 const fs::path kSample = kSampleDir / "cfdpost-wall-export-head100.csv";
 constexpr const char* kPascal = "kg m^-1 s^-2";  // si_unit_name of a pressure
 

@@ -52,7 +52,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSphereDir = fs::path(HYDROCOEF_SHARED_DIR) / "data" / "openfoam-sphere";
+const fs::path kSphereDir = fs::path(HYDROCOEF_DATA_DIR) / "openfoam-sphere";
 const fs::path kFullVtp = kSphereDir / "full" / "u0.10_v0.00" / "u0.10_v0.00_sphere_t1000.vtp";
 const fs::path kFullVtk = kSphereDir / "full" / "u0.10_v0.00" / "u0.10_v0.00_sphere_t1000.vtk";
 const fs::path kQuarterVtp = kSphereDir / "quarter" / "U0.1000" / "U0.1000_sphere_t145.vtp";

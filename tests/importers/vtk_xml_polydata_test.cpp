@@ -189,7 +189,7 @@ TEST(VtkXmlPolyData, GivesVtksMeshForEveryEncodingVtkWrites) {
 }
 
 TEST(VtkXmlPolyData, GivesVtksMeshForTheOpenFoamExports) {
-  const fs::path data = fs::path(HYDROCOEF_SHARED_DIR) / "data" / "openfoam-sphere";
+  const fs::path data = fs::path(HYDROCOEF_DATA_DIR) / "openfoam-sphere";
   int files = 0;
   for (const auto& entry : fs::recursive_directory_iterator(data)) {
     if (entry.path().extension() != ".vtp") continue;

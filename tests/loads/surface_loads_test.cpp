@@ -617,7 +617,7 @@ struct OpenFoamCase {
 class OpenFoamForces : public ::testing::TestWithParam<OpenFoamCase> {};
 
 TEST_P(OpenFoamForces, ReproduceTheSolversOwnIntegratedForces) {
-  const std::string folder = std::string(HYDROCOEF_SHARED_DIR) + "/data/openfoam-sphere/" + GetParam().folder;
+  const std::string folder = std::string(HYDROCOEF_DATA_DIR) + "/openfoam-sphere/" + GetParam().folder;
   std::ifstream json_file(folder + "/case.json");
   ASSERT_TRUE(json_file.good()) << folder;
   const auto info = nlohmann::json::parse(json_file);

@@ -1,0 +1,87 @@
+// Files written whole or not at all: a committed file has every byte, an
+// abandoned one leaves the destination as it was and no temporary behind, a
+// symbolic link at the destination is replaced rather than written through,
+// and a full device is called "disk full".
+#include "src/core/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+
+#include "src/core/error.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace hydrocoef {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::size_t entries(const fs::path& directory) {
+  return static_cast<std::size_t>(std::distance(fs::directory_iterator(directory), fs::directory_iterator()));
+}
+
+TEST(AtomicFile, CommittedFileHasEveryByte) {
+  test::TempDir dir;
+  const std::string bytes(3 << 20, 'z');
+  write_file_atomically(dir / "out.txt", bytes);
+  EXPECT_EQ(read_all(dir / "out.txt"), bytes);
+  EXPECT_EQ(entries(dir.path()), 1u);
+}
+
+TEST(AtomicFile, AbandonedFileLeavesTheOldOneAndNoTemporary) {
+  test::TempDir dir;
+  write_file_atomically(dir / "out.txt", "old");
+  try {
+    AtomicFile file(dir / "out.txt");
+    file.write("new, half");
+    throw std::runtime_error("producer failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(read_all(dir / "out.txt"), "old");
+  EXPECT_EQ(entries(dir.path()), 1u);
+}
+
+TEST(AtomicFile, ReplacesASymbolicLinkInsteadOfItsTarget) {
+  test::TempDir dir;
+  write_file_atomically(dir / "target.txt", "precious");
+  fs::create_symlink(dir / "target.txt", dir / "plot.dat");
+  write_file_atomically(dir / "plot.dat", "plot data");
+  EXPECT_EQ(read_all(dir / "target.txt"), "precious");
+  EXPECT_FALSE(fs::is_symlink(dir / "plot.dat"));
+  EXPECT_EQ(read_all(dir / "plot.dat"), "plot data");
+}
+
+TEST(AtomicFile, MissingDirectoryIsAnInputError) {
+  test::TempDir dir;
+  EXPECT_THROW(write_file_atomically(dir / "no" / "such.txt", "x"), InputError);
+  EXPECT_THROW(write_file_atomically(dir.path(), "x"), InputError);
+}
+
+TEST(AtomicFile, FullDeviceIsCalledDiskFull) {
+  // /dev/full answers every write with ENOSPC; a temporary cannot be made
+  // beside it, so the error text itself is checked, then a stream on it.
+  EXPECT_EQ(write_error_text(ENOSPC), "disk full (no space left on device)");
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this machine";
+  std::FILE* full = std::fopen("/dev/full", "wb");
+  ASSERT_NE(full, nullptr);
+  const std::string bytes(1 << 16, 'x');
+  std::fwrite(bytes.data(), 1, bytes.size(), full);
+  errno = 0;
+  const int flushed = std::fflush(full);
+  const int error = errno;
+  std::fclose(full);
+  ASSERT_NE(flushed, 0);
+  EXPECT_EQ(write_error_text(error), "disk full (no space left on device)");
+}
+
+}  // namespace
+}  // namespace hydrocoef
