@@ -4,7 +4,9 @@
 // and a full device is called "disk full".
 #include "src/core/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -67,20 +69,30 @@ TEST(AtomicFile, MissingDirectoryIsAnInputError) {
 }
 
 TEST(AtomicFile, FullDeviceIsCalledDiskFull) {
-  // /dev/full answers every write with ENOSPC; a temporary cannot be made
-  // beside it, so the error text itself is checked, then a stream on it.
+  // /dev/full answers every write with ENOSPC: the errno a full disk gives.
   EXPECT_EQ(write_error_text(ENOSPC), "disk full (no space left on device)");
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this machine";
-  std::FILE* full = std::fopen("/dev/full", "wb");
-  ASSERT_NE(full, nullptr);
-  const std::string bytes(1 << 16, 'x');
-  std::fwrite(bytes.data(), 1, bytes.size(), full);
+  const int fd = ::open("/dev/full", O_WRONLY);
+  ASSERT_GE(fd, 0);
+  const char byte = 'x';
   errno = 0;
-  const int flushed = std::fflush(full);
+  const auto written = ::write(fd, &byte, 1);
   const int error = errno;
-  std::fclose(full);
-  ASSERT_NE(flushed, 0);
+  ::close(fd);
+  ASSERT_EQ(written, -1);
   EXPECT_EQ(write_error_text(error), "disk full (no space left on device)");
+}
+
+TEST(AtomicFile, DirectoryRemovedBeforeCommitLeavesNothing) {
+  test::TempDir dir;
+  const fs::path sub = dir / "sub";
+  fs::create_directory(sub);
+  AtomicFile file(sub / "out.txt");
+  file.write("data");
+  fs::remove(file.temporary());
+  fs::remove(sub);
+  EXPECT_THROW(file.commit(), InputError);
+  EXPECT_FALSE(fs::exists(sub));
 }
 
 }  // namespace

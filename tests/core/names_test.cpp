@@ -36,7 +36,7 @@ TEST(Names, ControlAndFormattingCharactersAreRefused) {
 }
 
 TEST(Names, InvalidUtf8IsRefused) {
-  for (const std::string name : {std::string("a\xff"), std::string("\xc0\xaf"), std::string("\xed\xa0\x80"),
+  for (const std::string& name : {std::string("a\xff"), std::string("\xc0\xaf"), std::string("\xed\xa0\x80"),
                                  std::string("cut \xe2\x82")}) {
     const auto problem = name_problem(NameKind::Body, name);
     ASSERT_TRUE(problem.has_value()) << printable_text(name);
