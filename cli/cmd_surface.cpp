@@ -8,6 +8,7 @@
 
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
+#include "src/surface/breakpoints.hpp"
 #include "src/surface/stored_surface.hpp"
 #include "src/surface/surface_builder.hpp"
 
@@ -62,9 +63,7 @@ std::pair<std::string, std::vector<double>> parse_resample(const std::string& te
     const double count = parse_number(parts[2], "--resample", text);
     if (!(to > from) || count < 2 || count != std::floor(count) || count > 100000)
       throw InputError("--resample '" + text + "': expected FROM < TO and a whole COUNT from 2 to 100000");
-    const auto n = static_cast<std::size_t>(count);
-    for (std::size_t i = 0; i < n; ++i)
-      out.push_back(i + 1 == n ? to : from + (to - from) * static_cast<double>(i) / static_cast<double>(n - 1));
+    out = evenly_spaced(from, to, static_cast<std::size_t>(count));
   } else {
     for (const auto& part : split(spec, ',')) out.push_back(parse_number(part, "--resample", text));
   }
