@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets (tests/fuzz) with Clang in build/fuzz and runs
 # each for SECONDS (default 60), printing the executions per target.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]      e.g. scripts/fuzz.sh 600 cfdpost_export_fuzz
+#   scripts/fuzz.sh --build-only               build them for the test suite's smoke run
 # Each target first replays its regression files (tests/data/bad/fuzz-regressions/
 # TARGET/) and its seeds, then fuzzes with a fixed seed from a working corpus
 # kept in build/fuzz/corpus/TARGET. An input that crashes, leaks or hangs is
@@ -9,6 +10,8 @@
 # parser) and the script exits with status 1.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build_only=false
+if [[ ${1:-} == --build-only ]]; then build_only=true; shift; fi
 seconds=${1:-60}
 shift || true
 dir=${HYDROCOEF_FUZZ_BUILD_DIR:-$root/build/fuzz}
@@ -24,6 +27,7 @@ if [[ ! -f "$dir/CMakeCache.txt" ]]; then
     -DHYDROCOEF_BUILD_TESTS=OFF -DHYDROCOEF_BUILD_BENCH=OFF >/dev/null
 fi
 cmake --build "$dir" -j "$jobs" --target hydrocoef_fuzz
+if $build_only; then exit 0; fi
 
 # Seeds: the good and bad files the project already has, per parser.
 seed_files() {

@@ -952,11 +952,8 @@ TEST(VtkSurfaceCgns, ReadsAVolumeZoneAsItsBoundaryAndItsPatchesOnRequest) {
 
 // VTK 9.1 reads a boundary condition given as a list of faces (PointList) on
 // another path than a range, one that leaks a vtkIdList for every face: under
-// LeakSanitizer this test needs the suppression "leak:vtkCGNSReader::RequestData".
+// LeakSanitizer this test runs with the suppression in tests/lsan.supp.
 TEST(VtkSurfaceCgns, ReadsAPatchGivenAsAListOfFaces) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "VTK 9.1's vtkCGNSReader leaks a vtkIdList per face of a PointList boundary condition";
-#endif
   TempDir dir;
   const fs::path file = dir / "fluid.cgns";
   write_volume_zone(file, true);
