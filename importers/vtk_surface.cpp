@@ -53,7 +53,6 @@
 #include <memory>
 #include <numeric>
 #include <optional>
-#include <regex>
 #include <set>
 #include <string>
 #include <string_view>
@@ -152,15 +151,28 @@ std::string clean_vtk_message(std::string text) {
     const auto end_of_line = text.find('\n');
     text = end_of_line == std::string::npos ? std::string() : text.substr(end_of_line + 1);
   }
-  static const std::regex address(R"(\s*\(0x[0-9a-fA-F]+\))");
-  static const std::regex whitespace(R"(\s+)");
-  text = std::regex_replace(text, address, "");
-  // A reader may quote what it found, which in a garbage file is binary.
-  for (char& c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if ((byte < 0x20 && std::isspace(byte) == 0) || byte >= 0x7f) c = '?';
+  // Object addresses "(0x55d0c1e2a3b0)" and the blanks before them go;
+  // bytes a garbage file may quote become '?'; runs of blanks become one space.
+  std::string cleaned;
+  cleaned.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    if (text.compare(i, 3, "(0x") == 0) {
+      std::size_t end = i + 3;
+      while (end < text.size() && std::isxdigit(static_cast<unsigned char>(text[end]))) ++end;
+      if (end > i + 3 && end < text.size() && text[end] == ')') {
+        while (!cleaned.empty() && cleaned.back() == ' ') cleaned.pop_back();
+        i = end + 1;
+        continue;
+      }
+    }
+    const auto byte = static_cast<unsigned char>(text[i++]);
+    if (std::isspace(byte) != 0) {
+      if (cleaned.empty() || cleaned.back() != ' ') cleaned += ' ';
+    } else {
+      cleaned += byte < 0x20 || byte >= 0x7f ? '?' : static_cast<char>(byte);
+    }
   }
-  text = std::regex_replace(text, whitespace, " ");
+  text = std::move(cleaned);
   const auto first = text.find_first_not_of(' ');
   const auto last = text.find_last_not_of(' ');
   text = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);

@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, builds the test
 # configuration (AddressSanitizer + UBSan) and the libFuzzer targets (Clang),
-# and runs the whole GoogleTest suite through ctest, the fuzz smoke run of
-# every target included.
+# runs the GoogleTest suite through ctest (the fuzz smoke run of every target
+# included), then builds and runs the heavy tests in an optimized build.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/build.sh" test
 bash "$root/scripts/fuzz.sh" --build-only
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-ctest --test-dir "$root/build/test" --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" "$@"
+jobs=$(nproc 2>/dev/null || echo 2)
+ctest --test-dir "$root/build/test" --output-on-failure -j "$jobs" "$@"
+# The heavy tests (statistical checks with hundreds of fits) in an optimized
+# build without sanitizers.
+bash "$root/scripts/build.sh" heavy
+ctest --test-dir "$root/build/heavy" --output-on-failure -j "$jobs" "$@"
