@@ -1,0 +1,64 @@
+#include "src/surface/gp_design.hpp"
+
+#include <cmath>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+
+std::vector<double> halton_point(std::size_t i, std::size_t dims) {
+  static constexpr unsigned kBases[6] = {2, 3, 5, 7, 11, 13};
+  std::vector<double> out(dims);
+  for (std::size_t a = 0; a < dims && a < 6; ++a) {
+    double f = 1.0, r = 0.0;
+    for (std::size_t k = i + 1; k > 0; k /= kBases[a]) {
+      f /= kBases[a];
+      r += f * static_cast<double>(k % kBases[a]);
+    }
+    out[a] = r;
+  }
+  return out;
+}
+
+std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
+                                       const std::vector<double>& upper, std::size_t count, std::size_t candidates) {
+  const std::size_t d = surface.dims();
+  if (lower.size() != d || upper.size() != d)
+    throw InputError("suggest: " + std::to_string(lower.size()) + " bounds for a surface of " + std::to_string(d) + " axes");
+  for (std::size_t a = 0; a < d; ++a)
+    if (!std::isfinite(lower[a]) || !std::isfinite(upper[a]) || !(lower[a] < upper[a]))
+      throw InputError("suggest: the bounds of axis " + std::to_string(a) + " must be finite with lower < upper");
+  if (count == 0 || count > 1000) throw InputError("suggest: count must be 1 to 1000");
+  if (candidates < count) throw InputError("suggest: fewer candidate points than runs asked for");
+
+  // Candidates: the corners, then a Halton sequence through the box.
+  std::vector<double> points;
+  const std::size_t corners = d <= 10 ? (std::size_t{1} << d) : 0;
+  for (std::size_t c = 0; c < corners && c < candidates; ++c)
+    for (std::size_t a = 0; a < d; ++a) points.push_back((c >> a) & 1 ? upper[a] : lower[a]);
+  for (std::size_t i = 0; points.size() < candidates * d; ++i) {
+    const auto h = halton_point(i, d);
+    for (std::size_t a = 0; a < d; ++a) points.push_back(lower[a] + h[a] * (upper[a] - lower[a]));
+  }
+  std::vector<bool> taken(candidates, false);
+  GpSurface design = surface;
+  std::vector<SuggestedRun> out;
+  for (std::size_t k = 0; k < count; ++k) {
+    GpSurface::Workspace workspace(design);
+    double best = -1.0;
+    std::size_t best_index = 0;
+    for (std::size_t c = 0; c < candidates; ++c) {
+      if (taken[c]) continue;
+      double sd = 0.0;
+      design.evaluate(&points[c * d], workspace, &sd);
+      if (sd > best) best = sd, best_index = c;
+    }
+    taken[best_index] = true;
+    const double* x = &points[best_index * d];
+    out.push_back({std::vector<double>(x, x + d), best});
+    design.add_pseudo_run(x);
+  }
+  return out;
+}
+
+}  // namespace hydrocoef

@@ -1,0 +1,39 @@
+// Where to run CFD next: the run keys that most reduce a Gaussian-process
+// surface's largest predictive uncertainty inside given bounds. CFD runs
+// cost hours each; choosing them where the surface knows least is worth more
+// than any speed-up.
+//
+// Sequential maximum-variance design: among candidate points (a Halton
+// sequence filling the bounds, plus the bounds' corners), take the one where
+// the surface's standard deviation is largest, add it to the surface as a
+// pseudo-run (its value is the current mean, so the mean does not change
+// while the uncertainty around it falls; GpSurface::add_pseudo_run), and
+// repeat. The variance of a GP does not depend on the values at the runs,
+// only on where they are, so the pseudo-run stands exactly for the run to
+// come until its result is known.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "src/surface/gp_surface.hpp"
+
+namespace hydrocoef {
+
+struct SuggestedRun {
+  std::vector<double> point;        ///< one value per axis, in the axes' units
+  double standard_deviation = 0.0;  ///< the surface's before this run was added
+};
+
+/// `count` run keys inside [lower, upper] (one bound per axis, lower < upper),
+/// chosen from `candidates` points. InputError for bounds of the wrong size
+/// or order, count 0 or above 1000, or candidates below count.
+std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
+                                       const std::vector<double>& upper, std::size_t count,
+                                       std::size_t candidates = 4096);
+
+/// Point i of the Halton sequence in `dims` dimensions (bases 2, 3, 5, 7, 11,
+/// 13), each coordinate in [0, 1).
+std::vector<double> halton_point(std::size_t i, std::size_t dims);
+
+}  // namespace hydrocoef
