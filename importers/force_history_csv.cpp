@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -258,10 +259,31 @@ std::string key_of(const Target& t) {
   return key;
 }
 
-}  // namespace
+struct Used {
+  std::size_t cell;
+  Target target;
+};
 
-ForceHistory parse_force_history_csv(std::string_view text, const std::string& file, const ForceHistoryCsvOptions& options) {
-  const HeaderFound header = find_header(text, file);
+// The header read and the places the rows go; the sink points into it, so it
+// is made on the heap and never moved.
+struct CsvState {
+  std::string file;
+  HeaderFound header;
+  HistoryAbscissa kind = HistoryAbscissa::Time;
+  std::vector<Used> used;
+  std::vector<std::string> notes;
+  history_text::FileLayout rows;
+  ForceHistory history;
+  std::vector<std::uint32_t> lines;
+  std::vector<double> scale_of_field;   // per parsed field
+  std::vector<std::size_t> field_cell;  // per parsed field
+};
+
+std::unique_ptr<CsvState> prepare(std::string_view text, const std::string& file, const ForceHistoryCsvOptions& options) {
+  auto state = std::make_unique<CsvState>();
+  state->file = file;
+  state->header = find_header(text, file);
+  const HeaderFound& header = state->header;
   const std::vector<Cell>& cells = header.cells;
   const auto at = [&](const Cell& cell) { return SourceLocation{file, header.line, cell.column}; };
   if (cells.size() < 2)
@@ -309,11 +331,7 @@ ForceHistory parse_force_history_csv(std::string_view text, const std::string& f
   if (options.abscissa) kind = *options.abscissa;
 
   // The components.
-  struct Used {
-    std::size_t cell;
-    Target target;
-  };
-  std::vector<Used> used;
+  std::vector<Used>& used = state->used;
   if (!options.columns.empty()) {
     for (const auto& [key, header_text] : options.columns) {
       const Target target = mapping_key(key);
@@ -351,7 +369,7 @@ ForceHistory parse_force_history_csv(std::string_view text, const std::string& f
   }
 
   // Units.
-  std::vector<std::string> notes;
+  std::vector<std::string>& notes = state->notes;
   const auto scale_of = [&](const Cell& cell, const std::string& unit_key, const Dimension& expected,
                             const char* kind_name) -> double {
     std::string unit_text = cell.name.has_unit ? cell.name.unit : "";
@@ -388,57 +406,82 @@ ForceHistory parse_force_history_csv(std::string_view text, const std::string& f
                               u.target.component < 3 ? "a force" : "a moment"));
 
   // Rows.
-  history_text::RowSyntax syntax;
+  state->kind = kind;
+  history_text::RowSyntax& syntax = state->rows.syntax;
   syntax.columns = cells.size();
   syntax.delimiter = header.delimiter;
   syntax.skip.assign(cells.size(), true);
   syntax.skip[*abscissa_column] = false;
   for (const Used& u : used) syntax.skip[u.cell] = false;
   for (const Cell& cell : cells) syntax.names.push_back(cell.text);
+  state->rows.data_offset = header.data_offset;
+  state->rows.first_line = header.line + 1;
+  ForceHistory& history = state->history;
+  history.abscissa = kind;
+  history_text::RowSink& sink = state->rows.sink;
+  sink.lines = &state->lines;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    if (syntax.skip[c]) continue;
+    state->field_cell.push_back(c);
+    if (c == *abscissa_column) {
+      sink.columns.push_back(&history.abscissa_values);
+      state->scale_of_field.push_back(abscissa_scale);
+      continue;
+    }
+    for (std::size_t k = 0; k < used.size(); ++k)
+      if (used[k].cell == c) {
+        sink.columns.push_back(&history.values(used[k].target.part, static_cast<HistoryComponent>(used[k].target.component)));
+        state->scale_of_field.push_back(scales[k]);
+      }
+  }
+  return state;
+}
+
+history_text::RowOptions row_options_of(const ForceHistoryCsvOptions& options) {
   history_text::RowOptions row_options;
   row_options.drop_incomplete_last_row = options.drop_incomplete_last_row;
   row_options.threads = options.threads;
-  const history_text::ParsedRows rows =
-      history_text::parse_rows(text.substr(header.data_offset), header.line + 1, syntax, file, row_options);
-  if (rows.rows() == 0)
+  return row_options;
+}
+
+ForceHistory finish(CsvState& state, const history_text::ParsedRows& rows, std::uint64_t size_bytes) {
+  const std::string& file = state.file;
+  const HeaderFound& header = state.header;
+  const std::vector<Cell>& cells = header.cells;
+  const history_text::RowSyntax& syntax = state.rows.syntax;
+  const history_text::RowSink& sink = state.rows.sink;
+  const std::vector<std::uint32_t>& lines = state.lines;
+  const std::vector<Used>& used = state.used;
+  const HistoryAbscissa kind = state.kind;
+  std::vector<std::string>& notes = state.notes;
+  const auto& scale_of_field = state.scale_of_field;
+  const auto& field_cell = state.field_cell;
+  if (rows.rows == 0)
     throw InputError(SourceLocation{file, header.line, 0}, "no rows after the header; expected at least one sample");
+  const std::size_t n = rows.rows;
 
-  // Parsed numbers come in column order, skipped columns left out.
-  std::vector<std::size_t> position(cells.size(), 0);
-  for (std::size_t c = 0, k = 0; c < cells.size(); ++c)
-    if (!syntax.skip[c]) position[c] = k++;
-
-  ForceHistory history;
-  history.abscissa = kind;
-  const std::size_t n = rows.rows();
-  const std::size_t width = rows.columns;
-  history.abscissa_values.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = rows.values[i * width + position[*abscissa_column]] * abscissa_scale;
-    if (!std::isfinite(t))
-      throw InputError(SourceLocation{file, rows.lines[i], 0}, "the abscissa overflows when converted to SI");
-    if (i > 0 && !(t > history.abscissa_values[i - 1])) {
-      char values[64];
-      std::snprintf(values, sizeof values, "%.9g is not after %.9g", t, history.abscissa_values[i - 1]);
-      throw InputError(SourceLocation{file, rows.lines[i], 0},
-                       std::string(abscissa_name(kind)) + " " + values + " on line " +
-                           std::to_string(rows.lines[i - 1]) + "; expected increasing values");
-    }
-    history.abscissa_values[i] = t;
-  }
-  bool any_force = false, any_moment = false;
-  for (std::size_t k = 0; k < used.size(); ++k) {
-    const Used& u = used[k];
-    auto& series = history.values(u.target.part, static_cast<HistoryComponent>(u.target.component));
-    series.resize(n);
+  // To SI, in place (the sink points into state.history).
+  for (std::size_t k = 0; k < sink.columns.size(); ++k) {
+    if (scale_of_field[k] == 1.0) continue;
+    std::vector<double>& values = *sink.columns[k];
     for (std::size_t i = 0; i < n; ++i) {
-      series[i] = rows.values[i * width + position[u.cell]] * scales[k];
-      if (!std::isfinite(series[i]))
-        throw InputError(SourceLocation{file, rows.lines[i], 0},
-                         "column " + shown(cells[u.cell].text) + " overflows when converted to SI");
+      values[i] *= scale_of_field[k];
+      if (!std::isfinite(values[i]))
+        throw InputError(SourceLocation{file, lines[i], 0},
+                         "column " + shown(cells[field_cell[k]].text) + " overflows when converted to SI");
     }
-    (u.target.component < 3 ? any_force : any_moment) = true;
   }
+  ForceHistory history = std::move(state.history);
+  for (std::size_t i = 1; i < n; ++i)
+    if (!(history.abscissa_values[i] > history.abscissa_values[i - 1])) {
+      char values[64];
+      std::snprintf(values, sizeof values, "%.9g is not after %.9g", history.abscissa_values[i],
+                    history.abscissa_values[i - 1]);
+      throw InputError(SourceLocation{file, lines[i], 0}, std::string(abscissa_name(kind)) + " " + values + " on line " +
+                                                              std::to_string(lines[i - 1]) + "; expected increasing values");
+    }
+  bool any_force = false, any_moment = false;
+  for (const Used& u : used) (u.target.component < 3 ? any_force : any_moment) = true;
   // Totals from parts where the table gives only parts.
   for (std::size_t component = 0; component < kHistoryComponents; ++component) {
     if (!history.series[0][component].empty()) continue;
@@ -464,12 +507,12 @@ ForceHistory parse_force_history_csv(std::string_view text, const std::string& f
   HistorySourceFile source;
   source.path = file;
   source.format = std::string(kForceHistoryCsvImporter);
-  source.size_bytes = text.size();
+  source.size_bytes = size_bytes;
   source.rows = n;
   source.rows_used = n;
   history.files.push_back(std::move(source));
   std::vector<SampleOrigin> origins(n);
-  for (std::size_t i = 0; i < n; ++i) origins[i] = {0, rows.lines[i]};
+  for (std::size_t i = 0; i < n; ++i) origins[i] = {0, lines[i]};
   if (any_force) history.force_origin = origins;
   if (any_moment) history.moment_origin = std::move(origins);
 
@@ -487,21 +530,27 @@ ForceHistory parse_force_history_csv(std::string_view text, const std::string& f
   return history;
 }
 
+}  // namespace
+
+ForceHistory parse_force_history_csv(std::string_view text, const std::string& file, const ForceHistoryCsvOptions& options) {
+  const std::unique_ptr<CsvState> state = prepare(text, file, options);
+  const history_text::ParsedRows rows =
+      history_text::parse_rows(text.substr(state->rows.data_offset), state->rows.first_line, state->rows.syntax, file,
+                               state->rows.sink, row_options_of(options));
+  return finish(*state, rows, text.size());
+}
+
 ForceHistory read_force_history_csv(const std::filesystem::path& file, const ForceHistoryCsvOptions& options) {
-  const FileBytes bytes(file);
-  const std::string_view text = bytes.view();
-  std::string digest;
-  std::thread hasher;
-  if (options.compute_sha256) hasher = std::thread([&] { digest = sha256_hex(text); });
-  ForceHistory history;
-  try {
-    history = parse_force_history_csv(text, file.string(), options);
-  } catch (...) {
-    if (hasher.joinable()) hasher.join();
-    throw;
-  }
-  if (hasher.joinable()) hasher.join();
-  history.files.front().sha256 = std::move(digest);
+  std::unique_ptr<CsvState> state;
+  const history_text::StreamedRows streamed = history_text::parse_file_rows(
+      file,
+      [&](std::string_view head) {
+        state = prepare(head, file.string(), options);
+        return state->rows;
+      },
+      row_options_of(options), options.compute_sha256);
+  ForceHistory history = finish(*state, streamed.rows, streamed.size_bytes);
+  history.files.front().sha256 = streamed.sha256;
   return history;
 }
 

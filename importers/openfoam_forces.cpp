@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <system_error>
 #include <thread>
@@ -81,15 +82,21 @@ Header read_header(std::string_view text) {
   return header;
 }
 
-// "# name : value" lines of the header.
-std::map<std::string, CommentLine> header_values(const Header& header) {
-  std::map<std::string, CommentLine> values;
+// "# name : value" lines of the header, kept after the header's bytes are gone.
+struct HeaderValue {
+  std::size_t line = 0;
+  std::string text;
+};
+using HeaderValues = std::map<std::string, HeaderValue>;
+
+HeaderValues header_values(const Header& header) {
+  HeaderValues values;
   for (const CommentLine& comment : header.comments) {
     const std::size_t colon = comment.text.find(':');
     if (colon == std::string_view::npos) continue;
     const std::string_view key = trim(comment.text.substr(0, colon));
     if (key.empty() || key.find_first_of(" \t") != std::string_view::npos) continue;
-    values[std::string(key)] = {comment.line, trim(comment.text.substr(colon + 1))};
+    values[std::string(key)] = {comment.line, std::string(trim(comment.text.substr(colon + 1)))};
   }
   return values;
 }
@@ -391,7 +398,7 @@ std::string number_text(double value) {
   return buffer;
 }
 
-double reference_value(const std::map<std::string, CommentLine>& values, const char* key, std::optional<double> option,
+double reference_value(const HeaderValues& values, const char* key, std::optional<double> option,
                        const char* option_name, const std::string& file) {
   const auto found = values.find(key);
   if (found != values.end()) {
@@ -413,7 +420,7 @@ double reference_value(const std::map<std::string, CommentLine>& values, const c
                                              option_name + "); expected it to turn coefficients into forces");
 }
 
-std::optional<Vector3> direction(const std::map<std::string, CommentLine>& values, const char* key,
+std::optional<Vector3> direction(const HeaderValues& values, const char* key,
                                  const std::string& file) {
   const auto found = values.find(key);
   if (found == values.end()) return std::nullopt;
@@ -433,77 +440,123 @@ Vector3 cross(const Vector3& a, const Vector3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-ForceHistory parse_file(std::string_view text, const std::string& file, const OpenFoamForcesOptions& options) {
-  const Header header = read_header(text);
-  const Layout layout = layout_of(header, file);
-  const auto values = header_values(header);
+// A file's header read, and the places its rows go. Holds the vectors the
+// sink points into: made on the heap and never moved.
+struct Prepared {
+  std::string file;
+  Layout layout;
+  HeaderValues values;
+  history_text::FileLayout rows;
+  ForceHistory history;
+  std::array<std::array<bool, kHistoryComponents>, kForceParts> present{};
+  std::array<std::vector<double>, 3> centre_column;
+  std::vector<std::uint32_t> lines;
+};
 
-  history_text::RowSyntax syntax;
-  syntax.columns = layout.columns.size();
+std::unique_ptr<Prepared> prepare(std::string_view head, const std::string& file) {
+  auto prepared = std::make_unique<Prepared>();
+  Prepared& p = *prepared;
+  p.file = file;
+  const Header header = read_header(head);
+  p.layout = layout_of(header, file);
+  p.values = header_values(header);
+  p.rows.data_offset = header.data_offset;
+  p.rows.first_line = header.data_line;
+  history_text::RowSyntax& syntax = p.rows.syntax;
+  syntax.columns = p.layout.columns.size();
   syntax.parentheses = true;
   syntax.require_line_end = true;
-  for (const Column& column : layout.columns) syntax.names.push_back(column.name);
+  for (const Column& column : p.layout.columns) syntax.names.push_back(column.name);
+  history_text::RowSink& sink = p.rows.sink;
+  sink.lines = &p.lines;
+  for (const Column& column : p.layout.columns) {
+    switch (column.role) {
+      case Role::Time:
+        sink.columns.push_back(&p.history.abscissa_values);
+        break;
+      case Role::Value:
+      case Role::Coefficient:
+        sink.columns.push_back(&p.history.values(column.part, static_cast<HistoryComponent>(column.component)));
+        p.present[static_cast<std::size_t>(column.part)][column.component] = true;
+        break;
+      case Role::CentreOfRotation:
+        sink.columns.push_back(&p.centre_column[column.component]);
+        break;
+      case Role::Ignored:
+        sink.columns.push_back(nullptr);
+        break;
+    }
+  }
+  return prepared;
+}
+
+history_text::RowOptions row_options_of(const OpenFoamForcesOptions& options) {
   history_text::RowOptions row_options;
   row_options.drop_incomplete_last_row = options.drop_incomplete_last_row;
   row_options.threads = options.threads;
-  const history_text::ParsedRows rows =
-      history_text::parse_rows(text.substr(header.data_offset), header.data_line, syntax, file, row_options);
+  return row_options;
+}
 
-  ForceHistory history;
+// The history from the parsed rows: local rows left out, times checked,
+// totals and coefficients worked out, the frame and the origins.
+ForceHistory finish(Prepared& prepared, const history_text::ParsedRows& rows, std::uint64_t size_bytes,
+                    const OpenFoamForcesOptions& options) {
+  const std::string& file = prepared.file;
+  const Layout& layout = prepared.layout;
+  const HeaderValues& values = prepared.values;
+  ForceHistory history = std::move(prepared.history);
+  const auto& present = prepared.present;
+  auto& centre_column = prepared.centre_column;
+  auto& lines = prepared.lines;
+
   HistorySourceFile source;
   source.path = file;
   source.format = std::string(format_name(layout.kind));
-  source.size_bytes = text.size();
+  source.size_bytes = size_bytes;
   if (rows.dropped_last_row)
     history.notes.push_back(file + ": the last row was cut short (a run stopped while writing) and is left out");
 
-  // Which rows: all, or every other one for Foundation local-system rows.
-  const std::size_t width = rows.columns;
-  std::vector<std::size_t> kept;
-  kept.reserve(rows.rows());
-  for (std::size_t r = 0; r < rows.rows(); r += layout.local_rows ? 2 : 1) {
-    if (layout.local_rows && r + 1 < rows.rows() && rows.values[(r + 1) * width] != rows.values[r * width])
-      throw InputError(SourceLocation{file, rows.lines[r + 1], 0},
-                       "time " + number_text(rows.values[(r + 1) * width]) +
-                           " differs from the row before; expected each time twice (global and local axes, as the "
-                           "header's localForces says)");
-    kept.push_back(r);
-  }
-  if (layout.local_rows)
+  // Foundation local-system rows: every other row, left out.
+  if (layout.local_rows) {
+    const auto& t = history.abscissa_values;
+    for (std::size_t r = 0; r + 1 < rows.rows; r += 2)
+      if (t[r + 1] != t[r])
+        throw InputError(SourceLocation{file, lines[r + 1], 0},
+                         "time " + number_text(t[r + 1]) +
+                             " differs from the row before; expected each time twice (global and local axes, as the "
+                             "header's localForces says)");
+    const auto keep_even = [](auto& series) {
+      std::size_t kept = 0;
+      for (std::size_t r = 0; r < series.size(); r += 2) series[kept++] = series[r];
+      series.resize(kept);
+    };
+    keep_even(history.abscissa_values);
+    keep_even(lines);
+    for (auto& part : history.series)
+      for (auto& series : part)
+        if (!series.empty()) keep_even(series);
+    for (auto& series : centre_column)
+      if (!series.empty()) keep_even(series);
     history.notes.push_back(file + ": rows in the local coordinate system (localForces) are left out; the global "
                                    "axes are kept");
-  const std::size_t n = kept.size();
+  }
+  const std::size_t n = history.abscissa_values.size();
   source.rows = n;
 
-  history.abscissa_values.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = rows.values[kept[i] * width];
-    history.abscissa_values[i] = t;
-    if (i > 0 && !(t > history.abscissa_values[i - 1]))
-      throw InputError(SourceLocation{file, rows.lines[kept[i]], 0},
-                       "time " + number_text(t) + " is not after " + number_text(history.abscissa_values[i - 1]) +
-                           " on line " + std::to_string(rows.lines[kept[i - 1]]) +
+  for (std::size_t i = 1; i < n; ++i)
+    if (!(history.abscissa_values[i] > history.abscissa_values[i - 1]))
+      throw InputError(SourceLocation{file, lines[i], 0},
+                       "time " + number_text(history.abscissa_values[i]) + " is not after " +
+                           number_text(history.abscissa_values[i - 1]) + " on line " + std::to_string(lines[i - 1]) +
                            "; expected increasing times (a restart writes a file of its own)");
-  }
 
-  std::array<std::array<bool, kHistoryComponents>, kForceParts> present{};
   std::optional<Vector3> moving_centre;
   bool centre_moves = false;
-  for (std::size_t c = 1; c < layout.columns.size(); ++c) {
-    const Column& column = layout.columns[c];
-    if (column.role == Role::Ignored) continue;
-    if (column.role == Role::CentreOfRotation) {
-      if (n == 0) continue;
-      if (!moving_centre) moving_centre = Vector3{};
-      (*moving_centre)[column.component] = rows.values[kept[0] * width + c];
-      for (std::size_t i = 1; i < n; ++i)
-        if (rows.values[kept[i] * width + c] != (*moving_centre)[column.component]) centre_moves = true;
-      continue;
-    }
-    auto& series = history.values(column.part, static_cast<HistoryComponent>(column.component));
-    series.resize(n);
-    for (std::size_t i = 0; i < n; ++i) series[i] = rows.values[kept[i] * width + c];
-    present[static_cast<std::size_t>(column.part)][column.component] = true;
+  if (!centre_column[0].empty() && n > 0) {
+    moving_centre = Vector3{centre_column[0][0], centre_column[1][0], centre_column[2][0]};
+    for (std::size_t k = 0; k < 3; ++k)
+      for (const double value : centre_column[k])
+        if (value != (*moving_centre)[k]) centre_moves = true;
   }
 
   // Totals: the sum of the parts where the file does not write them.
@@ -595,7 +648,7 @@ ForceHistory parse_file(std::string_view text, const std::string& file, const Op
 
   // Origins.
   std::vector<SampleOrigin> origins(n);
-  for (std::size_t i = 0; i < n; ++i) origins[i] = {0, rows.lines[kept[i]]};
+  for (std::size_t i = 0; i < n; ++i) origins[i] = {0, lines[i]};
   bool any_force = false, any_moment = false;
   for (std::size_t part = 0; part < kForceParts; ++part)
     for (std::size_t component = 0; component < kHistoryComponents; ++component)
@@ -795,21 +848,27 @@ std::string listing(const fs::path& folder) {
   return text.empty() ? "nothing" : text;
 }
 
+ForceHistory parse_file(std::string_view text, const std::string& file, const OpenFoamForcesOptions& options) {
+  const std::unique_ptr<Prepared> prepared = prepare(text, file);
+  const history_text::ParsedRows rows =
+      history_text::parse_rows(text.substr(prepared->rows.data_offset), prepared->rows.first_line,
+                               prepared->rows.syntax, file, prepared->rows.sink, row_options_of(options));
+  return finish(*prepared, rows, text.size(), options);
+}
+
+// A file streamed from disk: the header from its first block, the rows block
+// by block, the digest on the way.
 ForceHistory read_one(const fs::path& path, const OpenFoamForcesOptions& options) {
-  const FileBytes bytes(path);
-  const std::string_view text = bytes.view();
-  std::string digest;
-  std::thread hasher;
-  if (options.compute_sha256) hasher = std::thread([&] { digest = sha256_hex(text); });
-  ForceHistory history;
-  try {
-    history = parse_file(text, path.string(), options);
-  } catch (...) {
-    if (hasher.joinable()) hasher.join();
-    throw;
-  }
-  if (hasher.joinable()) hasher.join();
-  history.files.front().sha256 = std::move(digest);
+  std::unique_ptr<Prepared> prepared;
+  const history_text::StreamedRows streamed = history_text::parse_file_rows(
+      path,
+      [&](std::string_view head) {
+        prepared = prepare(head, path.string());
+        return prepared->rows;
+      },
+      row_options_of(options), options.compute_sha256);
+  ForceHistory history = finish(*prepared, streamed.rows, streamed.size_bytes, options);
+  history.files.front().sha256 = streamed.sha256;
   return history;
 }
 
