@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -191,6 +192,52 @@ TEST(ForceHistoryCsv, ALastRowCutShortCanBeDropped) {
   const ForceHistory h = parse("Time,Fx\n0,1\n1,", options);
   EXPECT_EQ(h.size(), 1u);
   EXPECT_TRUE(has_note(h, "cut short"));
+}
+
+}  // namespace
+}  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// Damaged tables: read (a valid history) or refused with a one-line InputError.
+TEST(ForceHistoryCsv, DamagedTablesAreReadOrRefusedInOneLine) {
+  const std::vector<std::string> seeds{
+      "Time [s], Fx [kN], Fy [N], Mz [N m], Note\n0.0, 1.5, 2, 3, start\n0.5, 1.25, -2, 4e-1, \"a, b\"\n",
+      "# Iteration Fx My\n1 1 2\n2 3 4\n",
+      "Iteration;Force X;Moment Y\r\n1;1;2\r\n2;3;4\r\n",
+      "t\tX\tY pressure\tN\n0\t1\t2\t3\n1\t1\t2\t3\n"};
+  const std::string alphabet = "0123456789.eE+-[] \t\n#,;\"\rFxyzMNTtime";
+  std::mt19937_64 random(7);
+  int read = 0, refused = 0;
+  for (int i = 0; i < 3000; ++i) {
+    std::string text = seeds[static_cast<std::size_t>(i) % seeds.size()];
+    for (int edits = 1 + static_cast<int>(random() % 3); edits > 0 && !text.empty(); --edits) {
+      const std::size_t at = random() % text.size();
+      switch (random() % 3) {
+        case 0:
+          text[at] = alphabet[random() % alphabet.size()];
+          break;
+        case 1:
+          text.erase(at, 1 + random() % 4);
+          break;
+        default:
+          text.insert(at, 1, alphabet[random() % alphabet.size()]);
+      }
+    }
+    ForceHistoryCsvOptions options;
+    options.drop_incomplete_last_row = i % 2 == 0;
+    try {
+      check_force_history(parse_force_history_csv(text, "h.csv", options));
+      ++read;
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      ASSERT_EQ(message.find('\n'), std::string::npos) << message;
+      ++refused;
+    }
+  }
+  EXPECT_GT(read, 100);
+  EXPECT_GT(refused, 100);
 }
 
 }  // namespace

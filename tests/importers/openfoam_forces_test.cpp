@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -682,6 +683,66 @@ TEST(OpenFoamForces, RecognisesItsFiles) {
   EXPECT_TRUE(looks_like_openfoam_forces("# Force coefficients\n# Time\tCd\tCs\tCl\n"));
   EXPECT_FALSE(looks_like_openfoam_forces("Time,Fx,Fy\n1,2,3\n"));
   EXPECT_FALSE(looks_like_openfoam_forces("# Probe 0 (0 0 0)\n# Time p\n"));
+}
+
+}  // namespace
+}  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// Damaged files: random byte edits of small valid files of every layout must
+// be read (a valid history) or refused with a one-line InputError; nothing
+// else (another exception, a sanitizer report) may happen.
+TEST(OpenFoamForces, DamagedFilesAreReadOrRefusedInOneLine) {
+  const std::vector<std::pair<std::string, std::string>> seeds{
+      {"force.dat", kHead + "1\t(1 2 3)\t(4 5 6)\n2\t(1.5e-3 -2 3)\t(4 5 6)\n3\t(1 2 3)\t(4 5 6)\n"},
+      {"moment.dat", "# Moment\n# CofR : (0 0 1)\n#\n# Time total_x total_y total_z viscous_x viscous_y viscous_z\n"
+                     "0.1 1 2 3 4 5 6\n0.2 1 2 3 4 5 6\n"},
+      {"forces.dat", "# Forces\n# CofR : (0 0 0)\n# Time CofR forces(pressure viscous porous) moment(pressure viscous "
+                     "porous) localForces(pressure,viscous,porous)\n1 (0 0 0) ((1 2 3) (4 5 6) (7 8 9)) ((1 2 3) (4 5 "
+                     "6) (7 8 9))\n1 (0 0 0) ((1 2 3) (4 5 6) (7 8 9)) ((1 2 3) (4 5 6) (7 8 9))\n"},
+      {"coefficient.dat", "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
+                          "# magUInf : 2\n# lRef : 1\n# Aref : 0.5\n# Time Cd Cs Cl CmRoll CmPitch CmYaw Cd(f)\n"
+                          "1 0.1 0.2 0.3 0.4 0.5 0.6 0.7\n2 0.1 0.2 0.3 0.4 0.5 0.6 0.7\n"},
+      {"forceCoeffs.dat", "# Force coefficients\n# liftDir : (0 0 1)\n# dragDir : (1 0 0)\n# pitchAxis : (0 1 0)\n"
+                          "# magUInf : 2\n# lRef : 1\n# Aref : 0.5\n# Time Cm Cd Cl Cl(f) Cl(r)\n1 0.1 0.2 0.3 0.4 0.5\n"}};
+  const std::string alphabet = "0123456789.eE+-() \t\n#:_xyzCdslmtoa,\r";
+  std::mt19937_64 random(2024);
+  OpenFoamForcesOptions options;
+  options.rho = 1000.0;
+  options.threads = 2;
+  int read = 0, refused = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const auto& [name, seed] = seeds[static_cast<std::size_t>(i) % seeds.size()];
+    std::string text = seed;
+    for (int edits = 1 + static_cast<int>(random() % 3); edits > 0 && !text.empty(); --edits) {
+      const std::size_t at = random() % text.size();
+      switch (random() % 3) {
+        case 0:
+          text[at] = alphabet[random() % alphabet.size()];
+          break;
+        case 1:
+          text.erase(at, 1 + random() % 4);
+          break;
+        default:
+          text.insert(at, 1, alphabet[random() % alphabet.size()]);
+      }
+    }
+    options.drop_incomplete_last_row = i % 2 == 0;
+    try {
+      const ForceHistory h = parse_openfoam_force_file(text, name, options);
+      check_force_history(h);
+      ++read;
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      ASSERT_EQ(message.find('\n'), std::string::npos) << message;
+      ASSERT_FALSE(message.empty());
+      ++refused;
+    }
+  }
+  EXPECT_GT(read, 100);
+  EXPECT_GT(refused, 100);
 }
 
 }  // namespace
