@@ -1,20 +1,22 @@
 #include "importers/history_text.hpp"
 
+#include <fcntl.h>
+#include <openssl/evp.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <bit>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <system_error>
 #include <thread>
-#include <optional>
-#include <functional>
-#include <cerrno>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#include <openssl/evp.h>
 
 #include "src/core/error.hpp"
 #include "src/core/huge_pages.hpp"
@@ -33,9 +35,9 @@ const char* line_end(const char* p, const char* end) {
 }
 
 // Clinger's fast path (W. D. Clinger, "How to read floating point numbers
-// accurately", PLDI 1990): a decimal with at most 19 significant digits whose
-// integer mantissa m is below 2^53, scaled by 10^k with |k| <= 22, is m * 10^k
-// or m / 10^-k, one correctly rounded operation on two exact doubles, so the
+// accurately", PLDI 1990): a decimal of at most 19 digits whose integer
+// mantissa m is at most 2^53, scaled by 10^k with |k| <= 22, is m * 10^k or
+// m / 10^-k, one correctly rounded operation on two exact doubles, so the
 // result is the correctly rounded value from_chars gives too. What solvers
 // write ("-1.0238908340e-04") takes this path; anything else goes to
 // from_chars.
@@ -45,7 +47,9 @@ constexpr double kPowersOfTen[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1
 inline bool is_digit(char c) { return static_cast<unsigned char>(c - '0') < 10; }
 
 // Eight ASCII digits at once (SWAR, as in D. Lemire's fast_float): whether
-// the 8 bytes are all digits, and their value.
+// the 8 bytes are all digits, and their value. The first character must be
+// the lowest byte of the word.
+static_assert(std::endian::native == std::endian::little, "the eight-digit parsing assumes little-endian words");
 inline bool eight_digits(std::uint64_t v) {
   return (((v + 0x4646464646464646ULL) | (v - 0x3030303030303030ULL)) & 0x8080808080808080ULL) == 0;
 }

@@ -747,3 +747,21 @@ TEST(OpenFoamForces, DamagedFilesAreReadOrRefusedInOneLine) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// OpenFOAM 2.x wrote commas between the parts of a group.
+TEST(OpenFoamForces, OldFoundationHeadersWithCommas) {
+  const std::string text =
+      "# Time forces(pressure, viscous) moment(pressure, viscous)\n"
+      "0.5\t((1 2 3) (0.1 0.2 0.3)) ((4 5 6) (0.4 0.5 0.6))\n";
+  const ForceHistory h = parse_openfoam_force_file(text, "forces.dat");
+  EXPECT_EQ(h.values(kTotal, HistoryComponent::Fy), std::vector<double>{2.2});
+  EXPECT_EQ(h.values(kViscous, HistoryComponent::Mz), std::vector<double>{0.6});
+  EXPECT_EQ(h.values(kPressure, HistoryComponent::Mx), std::vector<double>{4.0});
+  EXPECT_FALSE(h.frame.moment_centre);  // no CofR line in this header
+}
+
+}  // namespace
+}  // namespace hydrocoef
