@@ -12,7 +12,8 @@
 //                                are read from the page cache after the first
 //                                iteration.
 //   BM_ParseOpenFoamForceFile    parse_openfoam_force_file on one file in
-//                                memory (no file reading, no digest).
+//                                memory (no file reading, no digest), on
+//                                every core (0) and on one thread (1).
 //   BM_AnalyzeHistory/n          analyze_force_history (automatic MSER-5
 //                                window, statistics of every component) on an
 //                                AR(1) history with a start-up, six totals,
@@ -114,14 +115,17 @@ void BM_ReadOpenFoamForces(benchmark::State& state) {
 BENCHMARK(BM_ReadOpenFoamForces)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
 
 void BM_ParseOpenFoamForceFile(benchmark::State& state) {
-  const std::string text = make_file(false);
+  static const std::string text = make_file(false);
+  OpenFoamForcesOptions options;
+  options.threads = static_cast<unsigned>(state.range(0));
   for (auto _ : state) {
-    ForceHistory history = parse_openfoam_force_file(text, "force.dat");
+    ForceHistory history = parse_openfoam_force_file(text, "force.dat", options);
     benchmark::DoNotOptimize(history);
   }
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+  state.SetLabel(options.threads == 0 ? "every core" : "one thread");
 }
-BENCHMARK(BM_ParseOpenFoamForceFile)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
+BENCHMARK(BM_ParseOpenFoamForceFile)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
 
 ForceHistory synthetic_history(std::size_t n, bool parts) {
   ForceHistory h;
