@@ -6,14 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <thread>
 #include <vector>
 
 #include "importers/history_text.hpp"
 #include "importers/text_table.hpp"
 #include "src/core/error.hpp"
-#include "src/core/file_bytes.hpp"
-#include "src/core/source_file.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
@@ -207,7 +204,7 @@ std::optional<Target> recognise(const std::string& name) {
     const std::string w(word);
     if (w.empty()) continue;
     if (lower.size() > w.size() && lower.substr(lower.size() - w.size()) == w) {
-      rest = rest.substr(0, rest.size() - w.size());
+      rest.resize(rest.size() - w.size());
       part = *part_word(w);
       break;
     }

@@ -8,17 +8,13 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <set>
 #include <system_error>
-#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "importers/history_text.hpp"
 #include "src/core/error.hpp"
-#include "src/core/file_bytes.hpp"
-#include "src/core/source_file.hpp"
 
 namespace hydrocoef {
 namespace {

@@ -69,7 +69,7 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
 
   // The window.
   std::size_t first = 0;
-  std::size_t count = n;
+  std::size_t count = 0;  // set by every case below
   switch (options.window.kind) {
     case HistoryWindow::Kind::Automatic: {
       analysis.window_method = "MSER-" + std::to_string(options.mser_batch_size) + " (White 1997), latest component";
