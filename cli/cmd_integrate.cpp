@@ -1,10 +1,12 @@
 // hydrocoef integrate: forces and moments of one surface export, printed and
-// not stored.
+// not stored, with the run key its settings give.
 #include <iostream>
 #include <memory>
 
 #include "cli/common.hpp"
 #include "cli/surface_options.hpp"
+#include "src/core/error.hpp"
+#include "src/pipeline/import_files.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -17,18 +19,29 @@ struct IntegrateArgs {
 };
 
 void run_integrate(const IntegrateArgs& args) {
-  std::optional<std::filesystem::path> sidecar;
-  SurfaceRunOptions options = surface_options_for(args.file, args.surface, sidecar);
-  options.format = args.format;
-  const SurfaceRun run = import_surface_run(args.file, options);
+  ImportRequest request;
+  request.inputs = {args.file};
+  request.command_line = command_line_settings(args.surface);
+  request.format = args.format;
+  request.plan.use_sidecars = !args.surface.no_sidecar;
+  const ImportPlan plan = plan_request(request);
+  const ImportedInput input = read_input(plan.inputs.front(), request);
+  if (!input.surface)
+    throw InputError(SourceLocation{args.file}, "is a " + input.format + ", not a surface export; expected a CFD-Post "
+                                                "export or a VTK-family file (import reads the others)");
+  const auto& key = input.surface->batch.runs.front().key;
   if (args.json) {
-    auto out = surface_run_json(run);
-    out["sidecar"] = sidecar ? nlohmann::json(sidecar->string()) : nlohmann::json();
-    std::cout << out.dump(2) << '\n';
+    auto out = surface_run_json(*input.surface);
+    out["key"] = key_json(key);
+    out["settings"] = nlohmann::json::parse(input.batch.source.settings.empty() ? "{}" : input.batch.source.settings);
+    std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return;
   }
-  std::cout << surface_run_text(run);
-  if (sidecar) std::cout << "  run settings from " << sidecar->string() << '\n';
+  std::cout << surface_run_text(*input.surface);
+  std::cout << "  run key: " << describe(key) << '\n';
+  for (const auto& [name, setting] : input.settings.values)
+    if (setting.origin.source != SettingSource::CommandLine)
+      std::cout << "  setting " << name << " from " << setting.origin.where << '\n';
 }
 
 }  // namespace

@@ -4,6 +4,10 @@
 
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
+#include "src/core/names.hpp"
+#include "src/loads/symmetry.hpp"
+
+#include <cmath>
 
 namespace hydrocoef::cli {
 
@@ -30,68 +34,79 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
   command.add_option("--flow", args.flow,
                      "Free-stream velocity in CFD axes x,y,z [m/s]: sets u,v,w to the body velocity it "
                      "stands for (the negative, in body axes)");
-  command.add_option("--normals", args.normals, "auto (make outward), as-given or flip")->capture_default_str();
+  command.add_option("--normals", args.normals, "auto (make outward; the default), as-given or flip");
+  command.add_option("--symmetry", args.symmetry,
+                     "Planes of symmetry of a half or quarter model in CFD coordinates, e.g. y=0 or y=0,z=0: the "
+                     "whole body's loads");
+  command.add_option("--window", args.window,
+                     "Force histories: auto (the statistically steady part, MSER-5; the default), T0:T1 or last:N");
   command.add_option("--set", args.set,
                      "Run key: velocity (u v w [m/s], p q r [rad/s], body axes) or disturbance, NAME=VALUE "
                      "(repeatable)");
-  command.add_flag("--no-sidecar", args.no_sidecar, "Ignore FILE.json / hydrocoef-run.json beside the file");
+  command.add_flag("--no-sidecar", args.no_sidecar,
+                   "Ignore sidecar files (FILE.json beside a file, hydrocoef-run.json in its folder and the folders above)");
 }
 
-void apply_set(const std::vector<std::string>& set, RunKey& key) {
-  for (const auto& text : set) {
-    const auto [name, value] = parse_assignment(text, "--set");
-    if (const auto i = velocity_index(name)) key.nu_b[*i] = value;
-    else key.disturbances[name] = value;
+SettingsLayer command_line_settings(const SurfaceArgs& args) {
+  SettingsLayer layer;
+  layer.origin = SettingOrigin{SettingSource::CommandLine, "command line"};
+  const auto set_text = [&](const char* name, const std::optional<std::string>& value, const char* option) {
+    if (value) layer.set(name, *value, option);
+  };
+  const auto set_number = [&](const char* name, const std::optional<double>& value, const char* option) {
+    if (!value) return;
+    if (!std::isfinite(*value)) throw InputError(std::string(option) + ": expected a finite number");
+    layer.set(name, *value, option);
+  };
+  const auto set_triple = [&](const char* name, const std::optional<std::string>& value, const char* option) {
+    if (!value) return;
+    const auto xyz = parse_triple(*value, option);
+    layer.set(name, std::vector<double>(xyz.begin(), xyz.end()), option);
+  };
+  if (!args.body.empty()) layer.set("body", std::string(check_name(NameKind::Body, args.body, {}, "--body")), "--body");
+  if (!args.locations.empty()) {
+    for (const auto& name : args.locations) check_name(NameKind::Field, name, {}, "--location");
+    layer.set("locations", args.locations, "--location");
   }
-}
-
-SurfaceRunOptions surface_options_for(const std::filesystem::path& file, const SurfaceArgs& args,
-                                      std::optional<std::filesystem::path>& sidecar) {
-  SurfaceRunOptions options;
-  options.key.body = "vehicle";
-  if (!args.no_sidecar) sidecar = apply_sidecar(file, options);
-  if (!args.body.empty()) options.key.body = args.body;
-  options.locations = args.locations;
-  options.pressure = args.pressure;
+  set_text("pressure", args.pressure, "--pressure");
   if (args.shear) {
-    options.shear.clear();
-    std::stringstream names(*args.shear);
-    for (std::string name; std::getline(names, name, ',');) options.shear.push_back(name);
-    if (options.shear.size() != 1 && options.shear.size() != 3)
+    std::vector<std::string> names;
+    std::stringstream list(*args.shear);
+    for (std::string name; std::getline(list, name, ',');) names.push_back(name);
+    if (names.size() != 1 && names.size() != 3)
       throw InputError("--shear '" + *args.shear + "': expected one vector array, three arrays x,y,z, or none");
+    layer.set("shear", names, "--shear");
   }
-  if (args.pressure_kind) {
-    if (*args.pressure_kind == "static") options.pressure_kind = PressureKind::Static;
-    else if (*args.pressure_kind == "kinematic") options.pressure_kind = PressureKind::Kinematic;
-    else throw InputError("--pressure-kind '" + *args.pressure_kind + "': expected static or kinematic");
-  }
-  if (args.shear_convention) {
-    if (*args.shear_convention == "on-wall") options.shear_convention = ShearConvention::OnWall;
-    else if (*args.shear_convention == "on-fluid") options.shear_convention = ShearConvention::OnFluid;
-    else throw InputError("--shear-convention '" + *args.shear_convention + "': expected on-wall or on-fluid");
-  }
-  if (args.rho) options.density = *args.rho;
-  if (args.nu) options.kinematic_viscosity = *args.nu;
-  if (args.p_ref) options.reference_pressure = *args.p_ref;
-  if (args.ref_point) options.reference_point_b = parse_triple(*args.ref_point, "--ref-point");
-  options.length_unit = args.length_unit;
-  options.pressure_unit = args.pressure_unit;
+  set_text("pressure_kind", args.pressure_kind, "--pressure-kind");
+  set_text("shear_convention", args.shear_convention, "--shear-convention");
+  set_number("rho", args.rho, "--rho");
+  set_number("nu", args.nu, "--nu");
+  set_number("p_ref", args.p_ref, "--p-ref");
+  set_triple("ref_point", args.ref_point, "--ref-point");
+  set_text("length_unit", args.length_unit, "--length-unit");
+  set_text("pressure_unit", args.pressure_unit, "--pressure-unit");
   if (args.axes) {
-    const Vec3 origin = options.frame.origin_cfd;
-    options.frame = parse_axes(*args.axes);
-    options.frame.origin_cfd = origin;
+    parse_axes(*args.axes);  // refused here, naming the option, rather than later
+    layer.set("axes", *args.axes, "--axes");
   }
-  if (args.origin) options.frame.origin_cfd = parse_triple(*args.origin, "--origin");
-  if (args.flow) {
-    const Vec3 flow_b = options.frame.vector_to_body(parse_triple(*args.flow, "--flow"));
-    for (std::size_t i = 0; i < 3; ++i) options.key.nu_b[i] = flow_b[i] == 0.0 ? 0.0 : -flow_b[i];
+  set_triple("origin", args.origin, "--origin");
+  set_triple("flow", args.flow, "--flow");
+  set_text("normals", args.normals, "--normals");
+  if (args.symmetry) {
+    parse_symmetry(*args.symmetry);
+    layer.set("symmetry", *args.symmetry, "--symmetry");
   }
-  if (args.normals == "auto") options.normals = NormalPolicy::Auto;
-  else if (args.normals == "as-given") options.normals = NormalPolicy::AsGiven;
-  else if (args.normals == "flip") options.normals = NormalPolicy::Flip;
-  else throw InputError("--normals '" + args.normals + "': expected auto, as-given or flip");
-  apply_set(args.set, options.key);
-  return options;
+  set_text("window", args.window, "--window");
+  for (const auto& text : args.set) {
+    const auto [name, value] = parse_assignment(text, "--set");
+    if (velocity_index(name)) {
+      layer.set(name, value, "--set");
+    } else {
+      check_name(NameKind::Parameter, name, {}, "--set");
+      layer.set("disturbance." + name, value, "--set");
+    }
+  }
+  return layer;
 }
 
 nlohmann::json surface_run_json(const SurfaceRun& run) {

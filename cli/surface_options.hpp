@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "src/pipeline/run_settings.hpp"
 #include "src/pipeline/surface_run.hpp"
 
 namespace hydrocoef::cli {
@@ -31,7 +32,9 @@ struct SurfaceArgs {
   std::optional<std::string> axes;
   std::optional<std::string> origin;
   std::optional<std::string> flow;
-  std::string normals = "auto";
+  std::optional<std::string> normals;
+  std::optional<std::string> symmetry;
+  std::optional<std::string> window;
   std::string body;
   std::vector<std::string> set;
   bool no_sidecar = false;
@@ -40,13 +43,10 @@ struct SurfaceArgs {
 /// Adds the surface options to a command.
 void add_surface_options(CLI::App& command, SurfaceArgs& args);
 
-/// Options for one file: defaults, then its sidecar (unless --no-sidecar),
-/// then the command line. `sidecar` receives the sidecar's path if one was read.
-SurfaceRunOptions surface_options_for(const std::filesystem::path& file, const SurfaceArgs& args,
-                                      std::optional<std::filesystem::path>& sidecar);
-
-/// Splits --set NAME=VALUE into body velocity (u..r) and disturbances.
-void apply_set(const std::vector<std::string>& set, RunKey& key);
+/// The command line's settings layer (src/pipeline/run_settings.hpp): each
+/// option given becomes the setting of the same meaning, remembered as coming
+/// from that option. InputError for a malformed value, naming the option.
+SettingsLayer command_line_settings(const SurfaceArgs& args);
 
 /// JSON and text forms of an integration result.
 nlohmann::json surface_run_json(const SurfaceRun& run);

@@ -87,6 +87,28 @@ struct SurfaceIntegrals {
   std::string axes;              ///< CFD axes to body axes, e.g. "-x,y,-z"
 };
 
+/// A force component that is the mean over a window of a force history, with
+/// what its uncertainty and convergence rest on. Body axes, as the component.
+struct ComponentStatistics {
+  double standard_error = 0.0;     ///< of the mean, corrected for autocorrelation [N or N m]
+  double spread = 0.0;             ///< standard deviation over the window [N or N m]
+  double drift = 0.0;              ///< change across the window by its least-squares slope [N or N m]
+  double effective_samples = 0.0;  ///< window samples / integrated autocorrelation time
+};
+
+/// How a run's forces were averaged from a force history.
+struct RunStatistics {
+  std::string abscissa;        ///< "time" [s] or "iteration"
+  std::string window_method;   ///< e.g. "MSER-5 (White 1997)", "range 601:1000", "last 100 samples"
+  double window_first = 0.0;   ///< abscissa of the first and last sample averaged
+  double window_last = 0.0;
+  std::size_t samples = 0;     ///< samples averaged
+  /// Convergence flags of the run: "no-steady-window", "drifting",
+  /// "too-few-effective-samples", "uneven-sampling"; empty when converged.
+  std::vector<std::string> flags;
+  std::array<std::optional<ComponentStatistics>, 6> components;  ///< X..N
+};
+
 /// One run as an importer produced it.
 struct ImportedRun {
   RunKey key;
@@ -96,6 +118,7 @@ struct ImportedRun {
   SignConvention sign = SignConvention::OnBody;
   std::size_t source_line = 0;                              ///< 1-based line in the source, 0 if n/a
   std::optional<SurfaceIntegrals> surface;                  ///< when the forces came from a surface
+  std::optional<RunStatistics> statistics;                  ///< when the forces are means over a history
 };
 
 /// Where a batch of runs came from.
@@ -105,6 +128,14 @@ struct Provenance {
   std::uint64_t size_bytes = 0;
   std::string importer;          ///< importer name, e.g. "force-table"
   std::string importer_version;
+  /// The absolute path with symbolic links resolved ("" when not known).
+  std::string resolved_path;
+  /// Every effective setting with its value, source and place (JSON); "" when
+  /// the importer took no settings.
+  std::string settings;
+  /// The effective settings' values alone, canonical: with the bytes, what
+  /// identifies an import.
+  std::string settings_key;
 };
 
 /// Everything one source file contributes, imported in one go.

@@ -1,10 +1,12 @@
 #include "src/pipeline/surface_run.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include <algorithm>
 #include <fstream>
 #include <future>
 #include <mutex>
-#include <nlohmann/json.hpp>
 
 #include "importers/cfdpost_export.hpp"
 #include "importers/cfx_monitor.hpp"
@@ -58,16 +60,7 @@ void scale_field(SurfaceMesh& mesh, const std::string& name, double factor) {
   for (auto& v : field_named(mesh, name).values) v *= factor;
 }
 
-Vec3 json_triple(const nlohmann::json& value, const std::string& where, const char* key) {
-  if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() || !value[2].is_number())
-    throw InputError(where + ": key '" + key + "': expected an array of three numbers");
-  return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
-}
 
-double json_number(const nlohmann::json& value, const std::string& where, const std::string& key) {
-  if (!value.is_number()) throw InputError(where + ": key '" + key + "': expected a number, found " + value.dump());
-  return value.get<double>();
-}
 
 /// Reads the mesh and the file's SHA-256 and size: text formats are read
 /// once, hashed and parsed from the same bytes; VTK-family files are read by
@@ -121,59 +114,6 @@ std::string detect_format(const std::filesystem::path& file, const std::string& 
                    "cannot tell the format from the extension '" + extension +
                        "'; expected .csv .txt .dat (tables, CFD-Post exports), .vtk .vtp .vtu .vtm .case .cgns, "
                        "or give --format");
-}
-
-std::optional<std::filesystem::path> apply_sidecar(const std::filesystem::path& file, SurfaceRunOptions& options) {
-  std::filesystem::path sidecar = file;
-  sidecar += ".json";
-  if (!std::filesystem::exists(sidecar)) sidecar = file.parent_path() / "hydrocoef-run.json";
-  if (!std::filesystem::exists(sidecar)) return std::nullopt;
-  const std::string where = sidecar.string();
-  nlohmann::json json;
-  try {
-    std::ifstream in(sidecar);
-    json = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& error) {
-    throw InputError(SourceLocation{where}, std::string("not valid JSON: ") + error.what());
-  }
-  if (!json.is_object()) throw InputError(SourceLocation{where}, "expected a JSON object of run settings");
-  static const std::vector<std::string> keys = {"body", "u", "v", "w", "p", "q", "r", "flow", "disturbances", "rho",
-                                                "nu", "ref_point", "axes", "origin", "p_ref"};
-  for (const auto& [key, value] : json.items())
-    if (std::find(keys.begin(), keys.end(), key) == keys.end())
-      throw InputError(SourceLocation{where}, "unknown key '" + key + "'; expected some of body, u, v, w, p, q, r, "
-                                              "flow, disturbances, rho, nu, ref_point, axes, origin, p_ref");
-  if (json.contains("body")) {
-    if (!json["body"].is_string()) throw InputError(SourceLocation{where}, "key 'body': expected a string");
-    options.key.body = json["body"].get<std::string>();
-  }
-  if (json.contains("axes")) {
-    if (!json["axes"].is_string()) throw InputError(SourceLocation{where}, "key 'axes': expected e.g. \"-x,y,-z\"");
-    const Vec3 origin = options.frame.origin_cfd;
-    options.frame = parse_axes(json["axes"].get<std::string>());
-    options.frame.origin_cfd = origin;
-  }
-  if (json.contains("origin")) options.frame.origin_cfd = json_triple(json["origin"], where, "origin");
-  for (std::size_t i = 0; i < 6; ++i) {
-    const std::string name(kVelocityNames[i]);
-    if (json.contains(name)) options.key.nu_b[i] = json_number(json[name], where, name);
-  }
-  if (json.contains("flow")) {
-    // The free stream past a fixed body is the body moving at its negative.
-    const Vec3 flow_b = options.frame.vector_to_body(json_triple(json["flow"], where, "flow"));
-    for (std::size_t i = 0; i < 3; ++i) options.key.nu_b[i] = flow_b[i] == 0.0 ? 0.0 : -flow_b[i];
-  }
-  if (json.contains("disturbances")) {
-    if (!json["disturbances"].is_object())
-      throw InputError(SourceLocation{where}, "key 'disturbances': expected an object {name: value}");
-    for (const auto& [name, value] : json["disturbances"].items())
-      options.key.disturbances[name] = json_number(value, where, "disturbances." + name);
-  }
-  if (json.contains("rho")) options.density = json_number(json["rho"], where, "rho");
-  if (json.contains("nu")) options.kinematic_viscosity = json_number(json["nu"], where, "nu");
-  if (json.contains("ref_point")) options.reference_point_b = json_triple(json["ref_point"], where, "ref_point");
-  if (json.contains("p_ref")) options.reference_pressure = json_number(json["p_ref"], where, "p_ref");
-  return sidecar;
 }
 
 SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRunOptions& options) {
@@ -276,9 +216,26 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
     load_options.reference_pressure = options.reference_pressure;
     load_options.reference_point = options.frame.point_to_cfd(options.reference_point_b);
     load_options.normals = options.normals;
-    const SurfaceLoads loads_cfd = integrate_surface_loads(mesh, load_options);
+    SurfaceLoads loads_cfd = integrate_surface_loads(mesh, load_options);
+    if (!options.symmetry.empty()) {
+      loads_cfd = mirror_loads(loads_cfd, options.symmetry);
+      result.warnings.push_back("the whole body's loads from a model cut by the symmetry planes " +
+                                symmetry_text(options.symmetry) + " (CFD axes): " +
+                                vanishing_components(options.symmetry) + " vanish");
+    }
     result.loads_b = loads_to_body(loads_cfd, options.frame);
     for (const auto& w : result.loads_b.geometry.warnings) result.warnings.push_back(w);
+    // An open surface's pressure force depends on the reference pressure:
+    // each pascal of it adds -∫n dA (a closed surface's ∫n dA is zero).
+    const auto& n_dA = result.loads_b.geometry.integral_n_dA;
+    const double open = std::sqrt(n_dA[0] * n_dA[0] + n_dA[1] * n_dA[1] + n_dA[2] * n_dA[2]);
+    if (open > 1e-9 * std::max(result.loads_b.geometry.area, 1e-300)) {
+      char text[256];
+      std::snprintf(text, sizeof text, "open surface: |∫n dA| = %.4g m^2, so each 1 Pa of reference pressure adds %.4g N "
+                    "to the force; the forces depend on --p-ref (%g Pa used)",
+                    open, open, options.reference_pressure);
+      result.warnings.push_back(text);
+    }
   } catch (const InputError& error) {
     if (!error.where().file.empty()) throw;
     throw InputError(SourceLocation{path}, error.what());

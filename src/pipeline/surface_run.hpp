@@ -12,6 +12,7 @@
 
 #include "src/core/run.hpp"
 #include "src/loads/frame.hpp"
+#include "src/loads/symmetry.hpp"
 #include "src/loads/surface_loads.hpp"
 
 namespace hydrocoef {
@@ -38,6 +39,9 @@ struct SurfaceRunOptions {
   std::optional<std::string> length_unit;             ///< for files that do not say (VTK); default m
   std::optional<std::string> pressure_unit;           ///< for files that do not say; default Pa or m^2 s^-2
   NormalPolicy normals = NormalPolicy::Auto;
+  /// Planes of symmetry of a half or quarter model, in CFD coordinates: the
+  /// loads become the whole body's (src/loads/symmetry.hpp).
+  std::vector<SymmetryPlane> symmetry;
   RunKey key;                                         ///< body, velocity (body axes) and disturbances
 };
 
@@ -62,14 +66,5 @@ std::string detect_format(const std::filesystem::path& file, const std::string& 
 /// the file for anything wrong with it or with the options.
 SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRunOptions& options);
 
-/// Reads a sidecar file of run settings: FILE.json next to the export, else
-/// hydrocoef-run.json in its folder. Keys (all optional): body, u v w p q r
-/// (body velocity), flow [x,y,z] (free stream in CFD axes: the body moves at
-/// its negative), disturbances {name: value}, rho, nu, ref_point [x,y,z],
-/// axes "-x,y,-z", origin [x,y,z], p_ref. Callers apply the sidecar first
-/// and their own settings after, so that the command line wins. Returns the
-/// sidecar's path, or nothing if there is none. InputError names the sidecar
-/// and the key for a malformed file or value.
-std::optional<std::filesystem::path> apply_sidecar(const std::filesystem::path& file, SurfaceRunOptions& options);
 
 }  // namespace hydrocoef

@@ -184,35 +184,6 @@ TEST(SurfaceRun, FramesRotateForcesMomentsAndIntegrals) {
   EXPECT_EQ(run.tau_b[5]->pressure, b.moment_pressure[2]);
 }
 
-TEST(SurfaceRun, SidecarSetsTheKeyAndTheCommandLineWins) {
-  test::TempDir dir;
-  std::ofstream(dir / "case.vtp.json") << R"({"body": "sphere", "axes": "-x,y,-z", "flow": [0.2, 0.1, 0],
-                                           "disturbances": {"current_v": 0.05}, "rho": 998.2, "p_ref": 101325})";
-  SurfaceRunOptions options;
-  const auto sidecar = apply_sidecar(dir / "case.vtp", options);
-  ASSERT_TRUE(sidecar.has_value());
-  EXPECT_EQ(options.key.body, "sphere");
-  EXPECT_DOUBLE_EQ(options.key.nu_b[0], 0.2);
-  EXPECT_DOUBLE_EQ(options.key.nu_b[1], -0.1);
-  EXPECT_EQ(options.key.disturbances.at("current_v"), 0.05);
-  EXPECT_EQ(options.density, 998.2);
-  EXPECT_EQ(options.reference_pressure, 101325.0);
-  EXPECT_EQ(options.frame.axes_text(), "-x,y,-z");
-
-  std::ofstream(dir / "bad.vtp.json") << R"({"body": "sphere", "speed": 3})";
-  try {
-    SurfaceRunOptions other;
-    apply_sidecar(dir / "bad.vtp", other);
-    FAIL() << "expected InputError";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("bad.vtp.json"), std::string::npos) << error.what();
-    EXPECT_NE(std::string(error.what()).find("'speed'"), std::string::npos) << error.what();
-  }
-  std::ofstream(dir / "broken.vtp.json") << R"({"body": )";
-  SurfaceRunOptions third;
-  EXPECT_THROW(apply_sidecar(dir / "broken.vtp", third), InputError);
-}
-
 TEST(SurfaceRun, FormatDetection) {
   test::TempDir dir;
   std::ofstream(dir / "a.csv") << "\n[Name]\nhull\n\n[Data]\nX [ m ], Y [ m ], Z [ m ]\n";

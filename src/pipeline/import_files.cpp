@@ -1,0 +1,561 @@
+#include "src/pipeline/import_files.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "importers/force_history_csv.hpp"
+#include "importers/force_table.hpp"
+#include "importers/openfoam_forces.hpp"
+#include "src/core/error.hpp"
+#include "src/core/source_file.hpp"
+#include "src/core/version.hpp"
+#include "src/loads/symmetry.hpp"
+
+namespace hydrocoef {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::string head_of(const fs::path& file, std::size_t bytes = 4096) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(SourceLocation{file.string()}, "cannot open the file");
+  std::string head(bytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
+/// A table whose header names a time or iteration column is a history. The
+/// header is the first line that is not blank or a comment, or the last
+/// comment before numbers ("# Time Fx Fy Fz").
+bool looks_like_time_history(std::string_view head) {
+  std::string header;
+  std::size_t start = 0;
+  while (start < head.size()) {
+    const auto end = head.find('\n', start);
+    const std::string line(head.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+    start = end == std::string_view::npos ? head.size() : end + 1;
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    if (line[first] == '#') {
+      header = line.substr(first + 1);
+      continue;
+    }
+    const char c = line[first];
+    if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.')) header = line;
+    break;
+  }
+  const auto is_abscissa = [](const std::string& name) {
+    std::string compact;
+    for (const char c : lower(name.substr(0, name.find('['))))
+      if (std::isalnum(static_cast<unsigned char>(c))) compact += c;
+    for (const char* known : {"time", "t", "flowtime", "physicaltime", "solutiontime", "iteration", "iter", "step",
+                              "timestep", "accumulatedtimestep", "outeriteration"})
+      if (compact == known) return true;
+    return false;
+  };
+  std::string cell;
+  for (const char c : header + ",") {
+    if (c == ',' || c == ';' || c == '\t') {
+      if (is_abscissa(cell)) return true;
+      cell.clear();
+    } else {
+      cell += c;
+    }
+  }
+  // Blank-separated: the first word.
+  std::string first_word;
+  for (const char c : header) {
+    if (c == ' ' && !first_word.empty()) break;
+    if (c != ' ') first_word += c;
+  }
+  return is_abscissa(first_word);
+}
+
+/// Refuses (or notes) settings an importer cannot apply: refused when the
+/// user gave them for this file, noted when a shared folder sidecar did.
+void settings_not_applicable(const RunSettings& settings, const std::vector<std::string>& names,
+                             const std::string& what, std::vector<std::string>& notes) {
+  for (const auto& name : names) {
+    const Setting* setting = settings.find(name);
+    if (!setting) continue;
+    const auto source = setting->origin.source;
+    const std::string where = setting->origin.where.empty() ? std::string(setting_source_name(source)) : setting->origin.where;
+    if (source == SettingSource::CommandLine || source == SettingSource::FileSidecar || source == SettingSource::Manifest)
+      throw InputError(where + ": setting '" + name + "' does not apply to " + what + "; expected it left out");
+    notes.push_back("setting '" + name + "' from " + where + " does not apply to " + what + " and was not used");
+  }
+}
+
+Fluid fluid_of(const RunSettings& settings) { return Fluid{settings.number("rho"), settings.number("nu")}; }
+
+SignConvention sign_of(const RunSettings& settings) {
+  const auto text = settings.text("sign");
+  if (!text) return SignConvention::OnBody;
+  try {
+    return parse_sign_convention(*text);
+  } catch (const InputError& e) {
+    throw InputError(settings.find("sign")->origin.where + ": setting 'sign': " + e.what());
+  }
+}
+
+/// The body component fed by each CFD component under a signed-permutation
+/// frame: body[i] = sign[i] * cfd[index[i]].
+struct Permutation {
+  std::array<std::size_t, 3> index{};
+  std::array<double, 3> sign{};
+};
+Permutation permutation_of(const FrameTransform& frame) {
+  Permutation p;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j)
+      if (frame.rotation[i][j] != 0.0) p.index[i] = j, p.sign[i] = frame.rotation[i][j];
+  return p;
+}
+
+void record_settings(ImportBatch& batch, const RunSettings& settings, const std::string& format, const fs::path& path) {
+  nlohmann::json json = settings.provenance_json();
+  batch.source.settings = json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  batch.source.settings_key = format + " " + settings.effective_text();
+  std::error_code ec;
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  batch.source.resolved_path = ec ? fs::absolute(path).lexically_normal().string() : resolved.string();
+}
+
+SurfaceRunOptions surface_options(const RunSettings& settings, const std::string& format, const FrameTransform& frame,
+                                  const RunKey& key, const Vec3& reference_point_b) {
+  SurfaceRunOptions options;
+  options.format = format;
+  options.key = key;
+  options.frame = frame;
+  options.reference_point_b = reference_point_b;
+  if (const auto locations = settings.texts("locations")) options.locations = *locations;
+  options.pressure = settings.text("pressure");
+  if (const auto shear = settings.texts("shear")) {
+    options.shear = *shear;
+    if (options.shear.size() != 1 && options.shear.size() != 3)
+      throw InputError(settings.find("shear")->origin.where +
+                       ": setting 'shear': expected one vector array, three arrays x,y,z, or none");
+  }
+  const auto choice = [&](const char* name, std::initializer_list<const char*> allowed) -> std::optional<std::string> {
+    const auto text = settings.text(name);
+    if (!text) return std::nullopt;
+    for (const char* a : allowed)
+      if (*text == a) return text;
+    std::string list;
+    for (const char* a : allowed) list += (list.empty() ? "" : " or ") + std::string(a);
+    throw InputError(settings.find(name)->origin.where + ": setting '" + name + "' is '" + printable_text(*text, 40) +
+                     "'; expected " + list);
+  };
+  if (const auto kind = choice("pressure_kind", {"static", "kinematic"}))
+    options.pressure_kind = *kind == "static" ? PressureKind::Static : PressureKind::Kinematic;
+  if (const auto convention = choice("shear_convention", {"on-wall", "on-fluid"}))
+    options.shear_convention = *convention == "on-wall" ? ShearConvention::OnWall : ShearConvention::OnFluid;
+  if (const auto normals = choice("normals", {"auto", "as-given", "flip"}))
+    options.normals = *normals == "auto" ? NormalPolicy::Auto : *normals == "flip" ? NormalPolicy::Flip : NormalPolicy::AsGiven;
+  options.density = settings.number("rho");
+  options.kinematic_viscosity = settings.number("nu");
+  options.reference_pressure = settings.number("p_ref").value_or(0.0);
+  options.length_unit = settings.text("length_unit");
+  options.pressure_unit = settings.text("pressure_unit");
+  if (const auto symmetry = settings.text("symmetry")) options.symmetry = parse_symmetry(*symmetry);
+  return options;
+}
+
+HistoryWindow window_of(const RunSettings& settings) {
+  const auto text = settings.text("window");
+  if (!text || *text == "auto") return HistoryWindow::automatic();
+  const std::string where = settings.find("window")->origin.where;
+  const auto refuse = [&] {
+    throw InputError(where + ": setting 'window' is '" + printable_text(*text, 40) +
+                     "'; expected auto, T0:T1 (an abscissa range) or last:N (the last N samples)");
+  };
+  const auto number = [&](std::string_view part) {
+    double value = 0.0;
+    if (!part.empty() && part.front() == '+') part.remove_prefix(1);
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value)) refuse();
+    return value;
+  };
+  const auto colon = text->find(':');
+  if (colon == std::string::npos) refuse();
+  if (text->rfind("last:", 0) == 0) {
+    const double count = number(std::string_view(*text).substr(5));
+    if (count < 2 || count != std::floor(count) || count > 1e15) refuse();
+    return HistoryWindow::last_samples(static_cast<std::size_t>(count));
+  }
+  const double first = number(std::string_view(*text).substr(0, colon));
+  const double last = number(std::string_view(*text).substr(colon + 1));
+  if (!(first < last)) refuse();
+  return HistoryWindow::range(first, last);
+}
+
+/// One provenance record for a history read from one or more files: the
+/// SHA-256 of the files' hashes (one file: its own hash) and their sizes.
+Provenance history_provenance(const ForceHistory& history, const fs::path& path, std::string_view importer,
+                              std::string_view version) {
+  Provenance p;
+  p.path = path.string();
+  p.importer = std::string(importer);
+  p.importer_version = std::string(version);
+  if (history.files.size() == 1) {
+    p.sha256 = history.files.front().sha256;
+    p.size_bytes = history.files.front().size_bytes;
+    return p;
+  }
+  std::vector<std::string> lines;
+  for (const auto& f : history.files) {
+    lines.push_back(f.path.lexically_relative(path).generic_string() + " " + f.sha256);
+    p.size_bytes += f.size_bytes;
+  }
+  std::sort(lines.begin(), lines.end());
+  std::string all;
+  for (const auto& line : lines) all += line + "\n";
+  p.sha256 = sha256_hex(all);
+  return p;
+}
+
+/// The forces function object of an OpenFOAM case: postProcessing/<name>/
+/// holding force files. One is taken; several are refused by name.
+fs::path case_forces_folder(const fs::path& case_folder) {
+  const fs::path post = case_folder / "postProcessing";
+  std::vector<fs::path> found;
+  std::error_code ec;
+  if (fs::is_directory(post, ec)) {
+    for (const auto& entry : fs::directory_iterator(post, ec)) {
+      if (!entry.is_directory()) continue;
+      bool has_forces = false;
+      for (const auto& file : fs::recursive_directory_iterator(entry.path(), ec))
+        if (file.is_regular_file() && (is_force_history_name(file.path()) || file.path().filename() == "forceCoeffs.dat")) {
+          has_forces = true;
+          break;
+        }
+      if (has_forces) found.push_back(entry.path());
+    }
+  }
+  std::sort(found.begin(), found.end());
+  if (found.empty())
+    throw InputError(SourceLocation{case_folder.string()},
+                     "OpenFOAM case without force output: expected postProcessing/<name>/<time>/force.dat (a forces "
+                     "or forceCoeffs function object)");
+  if (found.size() > 1) {
+    // Several function objects: a forces one is preferred to forceCoeffs.
+    std::vector<fs::path> forces;
+    for (const auto& f : found)
+      if (!fs::exists(f / "0" / "coefficient.dat", ec) && f.filename() != "forceCoeffs") forces.push_back(f);
+    if (forces.size() == 1) return forces.front();
+    std::string names;
+    for (const auto& f : found) names += (names.empty() ? "" : ", ") + f.filename().string();
+    throw InputError(SourceLocation{case_folder.string()}, "several function objects write forces (" + names +
+                                                               "); expected one, or name the folder to import");
+  }
+  return found.front();
+}
+
+/// A history's samples turned into the run's frame: moments about the
+/// reference point, the mirror images of a half or quarter model added, then
+/// rotated into body axes.
+ForceHistory history_in_body_axes(ForceHistory history, const RunSettings& settings, const FrameTransform& frame,
+                                  const Vec3& reference_point_b, std::vector<std::string>& notes) {
+  if (history.frame.axes_in_global) history = rotated_to_global_axes(history);
+  const std::size_t n = history.size();
+  if (history.frame.naming == ComponentNaming::BodyAxes) {
+    settings_not_applicable(settings, {"axes", "origin", "cofr", "symmetry"}, "a history in body axes (columns X..N)", notes);
+    return history;
+  }
+  Vec3 centre{};
+  if (history.frame.moment_centre) {
+    centre = *history.frame.moment_centre;
+  } else if (const auto cofr = settings.triple("cofr")) {
+    centre = *cofr;
+  } else {
+    notes.push_back("the history does not state its moment centre; taken as the CFD origin (0 0 0)");
+  }
+  const Vec3 reference_cfd = frame.point_to_cfd(reference_point_b);
+  const Vec3 arm{centre[0] - reference_cfd[0], centre[1] - reference_cfd[1], centre[2] - reference_cfd[2]};
+  const bool transfer = arm != Vec3{};
+  std::vector<SymmetryPlane> planes;
+  if (const auto symmetry = settings.text("symmetry")) planes = parse_symmetry(*symmetry);
+  const Permutation to_body = permutation_of(frame);
+  for (const auto part : kAllForceParts) {
+    const auto p = static_cast<std::size_t>(part);
+    auto& s = history.series[p];
+    const bool forces = !s[0].empty() && !s[1].empty() && !s[2].empty();
+    const bool moments = !s[3].empty() && !s[4].empty() && !s[5].empty();
+    const bool any = std::any_of(s.begin(), s.end(), [](const auto& v) { return !v.empty(); });
+    if (!any) continue;
+    if ((transfer || !planes.empty()) && !(forces && moments))
+      throw InputError(SourceLocation{history.files.empty() ? std::string() : history.files.front().path.string()},
+                       std::string("the ") + std::string(part_name(part)) +
+                           " force or moment lacks components, so its moments cannot be moved to the reference point "
+                           "or mirrored; expected all six");
+    for (std::size_t i = 0; i < n && (forces && moments); ++i) {
+      Vec3 F{s[0][i], s[1][i], s[2][i]}, M{s[3][i], s[4][i], s[5][i]};
+      if (transfer) {
+        M[0] += arm[1] * F[2] - arm[2] * F[1];
+        M[1] += arm[2] * F[0] - arm[0] * F[2];
+        M[2] += arm[0] * F[1] - arm[1] * F[0];
+      }
+      if (!planes.empty()) mirror_force_moment(F, M, reference_cfd, planes);
+      for (std::size_t c = 0; c < 3; ++c) s[c][i] = F[c], s[3 + c][i] = M[c];
+    }
+    // Into body axes: a signed permutation, so missing components stay missing.
+    std::array<std::vector<double>, 6> body;
+    for (std::size_t c = 0; c < 3; ++c) {
+      for (std::size_t offset : {std::size_t{0}, std::size_t{3}}) {
+        body[offset + c] = std::move(s[offset + to_body.index[c]]);
+        if (to_body.sign[c] < 0)
+          for (auto& v : body[offset + c]) v = -v;
+      }
+    }
+    s = std::move(body);
+  }
+  if (!planes.empty())
+    notes.push_back("the whole body's forces from a model cut by the symmetry planes " + symmetry_text(planes) +
+                    " (CFD axes): " + vanishing_components(planes) + " vanish");
+  history.frame.naming = ComponentNaming::BodyAxes;
+  history.frame.moment_centre.reset();
+  history.frame.description = "body axes, moments about the run's reference point";
+  return history;
+}
+
+ImportedRun run_from_history(const ForceHistory& history, const HistoryAnalysis& analysis) {
+  ImportedRun run;
+  RunStatistics statistics;
+  statistics.abscissa = std::string(abscissa_name(analysis.abscissa));
+  statistics.window_method = analysis.window_method;
+  statistics.window_first = analysis.first_abscissa;
+  statistics.window_last = analysis.last_abscissa;
+  statistics.samples = analysis.sample_count;
+  statistics.flags = flag_names(analysis.flags);
+  for (std::size_t c = 0; c < 6; ++c) {
+    const auto& component = analysis.components[c];
+    if (!component.present) continue;
+    const auto& total = component.total();
+    ForceComponent force;
+    force.total = total.mean;
+    if (const auto& p = component.parts[static_cast<std::size_t>(ForcePart::Pressure)]) force.pressure = p->mean;
+    if (const auto& v = component.parts[static_cast<std::size_t>(ForcePart::Viscous)]) force.viscous = v->mean;
+    run.tau_b[c] = force;
+    statistics.components[c] = ComponentStatistics{total.standard_error, total.std_dev, total.drift,
+                                                   total.effective_samples};
+  }
+  (void)history;
+  run.statistics = std::move(statistics);
+  return run;
+}
+
+ImportedInput read_history(const PlannedInput& input, const std::string& format, RunSettings settings,
+                           const ImportRequest& request) {
+  ImportedInput out;
+  out.input = input;
+  out.format = format;
+  const FrameTransform frame = resolve_frame(settings);
+  ForceHistory history;
+  Provenance provenance;
+  if (format == "force-history") {
+    ForceHistoryCsvOptions options;
+    options.columns = request.columns.columns;
+    options.units = request.columns.units;
+    history = read_force_history_csv(input.path, options);
+    provenance = history_provenance(history, input.path, kForceHistoryCsvImporter, kForceHistoryCsvImporterVersion);
+  } else {
+    OpenFoamForcesOptions options;
+    options.rho = settings.number("rho");
+    const fs::path source = format == "openfoam-case" ? case_forces_folder(input.path) : input.path;
+    history = read_openfoam_forces(source, options);
+    provenance = history_provenance(history, source, kOpenFoamForcesImporter, kOpenFoamForcesImporterVersion);
+    provenance.path = input.path.string();
+  }
+  for (const auto& note : history.notes) out.notes.push_back(note);
+  // The run's reference point: the one given, else the solver's moment centre.
+  Vec3 reference_b{};
+  if (settings.find("ref_point") || settings.find("cofr")) reference_b = resolve_reference_point(settings, frame);
+  else if (history.frame.moment_centre) reference_b = frame.point_to_body(*history.frame.moment_centre);
+  const ForceHistory body = history_in_body_axes(std::move(history), settings, frame, reference_b, out.notes);
+  HistoryAnalysisOptions analysis_options;
+  analysis_options.window = window_of(settings);
+  const HistoryAnalysis analysis = analyze_force_history(body, analysis_options);
+  for (const auto& note : analysis.notes) out.notes.push_back(note);
+  ImportedRun run = run_from_history(body, analysis);
+  run.key = resolve_key(settings, frame, request.default_body);
+  run.fluid = fluid_of(settings);
+  run.reference_point_b = reference_b;
+  run.sign = sign_of(settings);
+  out.batch.source = provenance;
+  out.batch.runs.push_back(std::move(run));
+  out.history = analysis;
+  record_settings(out.batch, settings, format, input.path);
+  out.settings = std::move(settings);
+  return out;
+}
+
+}  // namespace
+
+std::string input_format(const PlannedInput& input, const std::string& requested) {
+  static const std::vector<std::string> known = {"auto", "cfdpost", "vtk", "monitor", "table", "history"};
+  if (std::find(known.begin(), known.end(), requested) == known.end())
+    throw InputError("--format '" + requested + "': expected one of auto, table, monitor, history, cfdpost, vtk");
+  if (input.kind == InputKind::OpenFoamCase) return "openfoam-case";
+  std::error_code ec;
+  if (fs::is_directory(input.path, ec)) return "openfoam-forces";  // a function object's folder
+  if (requested == "history") {
+    const std::string name = lower(input.path.filename().string());
+    return is_force_history_name(input.path) || name == "forcecoeffs.dat" || name.rfind("moment", 0) == 0
+               ? "openfoam-forces"
+               : "force-history";
+  }
+  if (requested != "auto") return requested;
+  const std::string extension = lower(input.path.extension().string());
+  if (extension == ".csv" || extension == ".txt" || extension == ".tsv" || extension == ".dat") {
+    const std::string head = head_of(input.path);
+    if (is_force_history_name(input.path) || lower(input.path.filename().string()) == "forcecoeffs.dat" ||
+        looks_like_openfoam_forces(head))
+      return "openfoam-forces";
+    const std::string format = detect_format(input.path, "auto");
+    if (format != "table") return format;
+    return looks_like_time_history(head) ? "force-history" : "table";
+  }
+  return detect_format(input.path, "auto");
+}
+
+ImportPlan plan_request(const ImportRequest& request) { return plan_import(request.inputs, request.plan); }
+
+ImportedInput read_input(const PlannedInput& input, const ImportRequest& request) {
+  std::vector<SettingsLayer> layers;
+  if (!request.command_line.empty()) layers.push_back(request.command_line);
+  layers.insert(layers.end(), input.layers.begin(), input.layers.end());
+  RunSettings settings = merge_settings(layers);
+  const std::string format = input_format(input, request.format);
+  if (format == "openfoam-forces" || format == "force-history" || format == "openfoam-case")
+    return read_history(input, format, std::move(settings), request);
+
+  ImportedInput out;
+  out.input = input;
+  out.format = format;
+  const FrameTransform frame = resolve_frame(settings);
+  const RunKey key = resolve_key(settings, frame, request.default_body);
+  const Vec3 reference_b = resolve_reference_point(settings, frame);
+  if (format == "cfdpost" || format == "vtk") {
+    settings_not_applicable(settings, {"window", "sign"}, "a surface export", out.notes);
+    SurfaceRunOptions options = surface_options(settings, format, frame, key, reference_b);
+    out.surface = import_surface_run(input.path, options);
+    out.batch = out.surface->batch;
+    for (const auto& w : out.surface->warnings) out.notes.push_back(w);
+  } else if (format == "table") {
+    settings_not_applicable(settings,
+                            {"flow", "axes", "origin", "cofr", "symmetry", "window", "pressure", "shear", "pressure_kind",
+                             "shear_convention", "length_unit", "pressure_unit", "normals", "locations"},
+                            "a force table (its rows are in body axes)", out.notes);
+    ForceTableOptions options;
+    options.body = key.body;
+    options.velocity_b = key.nu_b;
+    options.disturbances = key.disturbances;
+    options.columns = request.columns.columns;
+    options.units = request.columns.units;
+    options.disturbance_columns = request.columns.disturbance_columns;
+    options.ignored_columns = request.columns.ignored_columns;
+    options.sign = sign_of(settings);
+    options.fluid = fluid_of(settings);
+    options.reference_point_b = reference_b;
+    out.batch = read_force_table(input.path, options);
+  } else if (format == "monitor") {
+    settings_not_applicable(settings,
+                            {"symmetry", "window", "pressure", "shear", "pressure_kind", "shear_convention",
+                             "length_unit", "pressure_unit", "normals", "locations"},
+                            "a CFX monitor file", out.notes);
+    CfxMonitorOptions options;
+    options.key = key;
+    options.fluid = fluid_of(settings);
+    options.reference_point_b = reference_b;
+    options.sign = sign_of(settings);
+    options.monitors = request.columns.monitors;
+    options.units = request.columns.units;
+    options.average_last = request.columns.average_last;
+    auto imported = read_cfx_monitor(input.path, options);
+    // The monitors are in the case's axes: the same frame as the key.
+    const Permutation to_body = permutation_of(frame);
+    for (auto& run : imported.batch.runs) {
+      std::array<std::optional<ForceComponent>, 6> body;
+      for (std::size_t c = 0; c < 3; ++c)
+        for (std::size_t offset : {std::size_t{0}, std::size_t{3}}) {
+          auto component = run.tau_b[offset + to_body.index[c]];
+          if (component && to_body.sign[c] < 0) {
+            component->total = -component->total;
+            if (component->pressure) *component->pressure = -*component->pressure;
+            if (component->viscous) *component->viscous = -*component->viscous;
+          }
+          body[offset + c] = component;
+        }
+      run.tau_b = body;
+    }
+    auto& summary = imported.summary;
+    for (auto* values : {&summary.mean, &summary.std_dev}) {
+      std::array<std::optional<double>, 6> body;
+      for (std::size_t c = 0; c < 3; ++c)
+        for (std::size_t offset : {std::size_t{0}, std::size_t{3}}) {
+          auto v = (*values)[offset + to_body.index[c]];
+          if (v && to_body.sign[c] < 0) *v = -*v;
+          body[offset + c] = v;
+        }
+      *values = body;
+    }
+    out.batch = std::move(imported.batch);
+    out.monitor = summary;
+  } else {
+    throw InputError(SourceLocation{input.path.string()}, "no importer for format '" + format + "'");
+  }
+  record_settings(out.batch, settings, format, input.path);
+  out.settings = std::move(settings);
+  return out;
+}
+
+std::vector<ImportedInput> read_inputs(const ImportPlan& plan, const ImportRequest& request) {
+  const std::size_t count = plan.inputs.size();
+  std::vector<std::optional<ImportedInput>> results(count);
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> next{0}, done{0};
+  std::mutex progress_mutex;
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned jobs =
+      static_cast<unsigned>(std::clamp<std::size_t>(request.jobs ? request.jobs : hardware, 1, std::max<std::size_t>(count, 1)));
+  auto worker = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      try {
+        results[i] = read_input(plan.inputs[i], request);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+      const std::size_t finished = ++done;
+      if (request.progress) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        request.progress(finished, count, plan.inputs[i].path);
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (unsigned t = 1; t < jobs; ++t) threads.emplace_back(worker);
+  worker();
+  for (auto& thread : threads) thread.join();
+  for (const auto& error : errors)
+    if (error) std::rethrow_exception(error);
+  std::vector<ImportedInput> out;
+  out.reserve(count);
+  for (auto& r : results) out.push_back(std::move(*r));
+  return out;
+}
+
+}  // namespace hydrocoef

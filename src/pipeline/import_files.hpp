@@ -1,0 +1,101 @@
+// The import of CFD results as a library call: what `hydrocoef import` does
+// before it writes the database, for the CLI, the Python module and other
+// programs alike.
+//
+//   plan:  the inputs expanded into files and case folders, each with its
+//          settings layers (src/pipeline/import_plan.hpp);
+//   read:  each input read on a pool of threads: its settings merged by
+//          precedence (command line first, src/pipeline/run_settings.hpp),
+//          the frame and the run key resolved once from them, the file read
+//          by its importer, and the result turned into runs in body axes.
+//
+// What each kind of input becomes:
+//   - a surface export (CFD-Post, VTK family): integrated pressure and shear
+//     (src/pipeline/surface_run.hpp), one run;
+//   - a force table: one run per row, keys from its columns;
+//   - a CFX monitor file: the monitors' last value or mean of the last N
+//     iterations, one run;
+//   - a force history (OpenFOAM's force files or function-object folder, any
+//     CSV of time and forces) and an OpenFOAM case folder (its forces
+//     function object's output): every sample's moments taken to the run's
+//     reference point, mirrored for symmetry planes and turned into body
+//     axes, then averaged over the statistically steady window with the
+//     standard error of each component (src/history/history_analysis.hpp).
+// One frame transform turns the key's velocity and the forces, whatever
+// source each setting came from. A setting an importer cannot apply is
+// refused when the command line or the file's own sidecar or manifest row
+// gives it, and noted when it comes from a folder sidecar shared by other
+// kinds of files.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "importers/cfx_monitor.hpp"
+#include "src/core/run.hpp"
+#include "src/history/history_analysis.hpp"
+#include "src/pipeline/import_plan.hpp"
+#include "src/pipeline/run_settings.hpp"
+#include "src/pipeline/surface_run.hpp"
+
+namespace hydrocoef {
+
+/// Options of the table, monitor and history readers, by column.
+struct ColumnOptions {
+  std::map<std::string, std::string> columns;     ///< component -> header (tables, histories)
+  std::map<std::string, std::string> units;       ///< component -> unit for headers without one
+  std::vector<std::string> disturbance_columns;   ///< tables: headers holding a disturbance
+  std::vector<std::string> ignored_columns;       ///< tables: headers to skip
+  std::map<std::string, std::string> monitors;    ///< monitors: component -> monitor
+  std::size_t average_last = 1;                   ///< monitors: mean of the last N iterations
+};
+
+struct ImportRequest {
+  std::vector<std::filesystem::path> inputs;
+  SettingsLayer command_line;  ///< source CommandLine
+  ImportPlanOptions plan;
+  std::string format = "auto";  ///< auto, table, monitor, cfdpost, vtk, history
+  ColumnOptions columns;
+  std::string default_body = "vehicle";
+  unsigned jobs = 0;  ///< 0: every core
+  /// Called after each input is read (from the reading threads, one at a
+  /// time): inputs done, inputs in all, the input's path.
+  std::function<void(std::size_t, std::size_t, const std::filesystem::path&)> progress;
+};
+
+/// One input read and turned into runs.
+struct ImportedInput {
+  PlannedInput input;
+  std::string format;  ///< table, monitor, cfdpost, vtk, openfoam-forces, force-history, openfoam-case
+  ImportBatch batch;   ///< the runs, in body axes, with provenance and settings
+  RunSettings settings;
+  std::optional<SurfaceRun> surface;
+  std::optional<MonitorSummary> monitor;
+  std::optional<HistoryAnalysis> history;
+  std::vector<std::string> notes;
+};
+
+/// Plans the request (see plan_import).
+ImportPlan plan_request(const ImportRequest& request);
+
+/// Reads one planned input. InputError naming the file for anything wrong
+/// with it, its settings or its contents.
+ImportedInput read_input(const PlannedInput& input, const ImportRequest& request);
+
+/// Reads every planned input on `request.jobs` threads, results in plan
+/// order. After all stop, the first error in plan order is rethrown.
+std::vector<ImportedInput> read_inputs(const ImportPlan& plan, const ImportRequest& request);
+
+/// The format an input will be read as: the requested one (checked), or by
+/// extension and first bytes: "cfdpost", "vtk", "monitor", "table",
+/// "openfoam-forces" (OpenFOAM's force files, or a folder of them),
+/// "force-history" (a table with a time or iteration column),
+/// "openfoam-case".
+std::string input_format(const PlannedInput& input, const std::string& requested);
+
+}  // namespace hydrocoef

@@ -1,0 +1,180 @@
+// The import as a library call, on the real OpenFOAM sphere runs: case
+// folders and force files become runs in body axes with the mean over the
+// steady window and its standard error; the frame of the key and of the
+// forces is one whatever source each setting comes from (the sidecar-flow
+// and --axes bug, and monitors that ignored both); a quarter model with its
+// symmetry planes gives the whole body; settings an importer cannot apply
+// are refused or noted.
+#include "src/pipeline/import_files.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "importers/openfoam_forces.hpp"
+#include "src/core/error.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace hydrocoef {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kSphere = fs::path(HYDROCOEF_DATA_DIR) / "openfoam-sphere";
+
+SettingsLayer command_line(const nlohmann::json& values) {
+  return settings_from_json(values, SettingOrigin{SettingSource::CommandLine, "command line"});
+}
+
+std::vector<ImportedInput> import(const std::vector<fs::path>& inputs, const nlohmann::json& cli,
+                                  const NamePattern* pattern = nullptr) {
+  ImportRequest request;
+  request.inputs = inputs;
+  request.command_line = command_line(cli);
+  request.plan.key_pattern = pattern;
+  request.jobs = 2;
+  return read_inputs(plan_request(request), request);
+}
+
+/// The mean of a component over the samples a history analysis used.
+double window_mean(const ForceHistory& history, HistoryComponent c, const HistoryAnalysis& analysis) {
+  const auto& values = history.values(ForcePart::Total, c);
+  double sum = 0.0;
+  for (std::size_t i = analysis.first_sample; i < analysis.first_sample + analysis.sample_count; ++i) sum += values[i];
+  return sum / static_cast<double>(analysis.sample_count);
+}
+
+TEST(ImportFiles, OpenFoamCaseFoldersBecomeRunsInBodyAxesWithTheirUncertainty) {
+  const NamePattern pattern("u{u}_v{v}");
+  const auto inputs = import({kSphere / "cases"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}, {"rho", 998.2}}, &pattern);
+  ASSERT_EQ(inputs.size(), 4u);
+  for (const auto& input : inputs) {
+    SCOPED_TRACE(input.input.path.string());
+    EXPECT_EQ(input.format, "openfoam-case");
+    ASSERT_EQ(input.batch.runs.size(), 1u);
+    const auto& run = input.batch.runs.front();
+    // The folder name gives the free stream (u, v) in CFD axes; the key here
+    // comes from the pattern as body velocity u, v directly.
+    EXPECT_GT(run.key.nu_b[0], 0.0);
+    EXPECT_EQ(run.key.body, "sphere");
+    // Drag on a body moving forward points aft: X < 0, and equals minus the
+    // solver's Fx averaged over the same window.
+    ASSERT_TRUE(run.tau_b[0]);
+    EXPECT_LT(run.tau_b[0]->total, 0.0);
+    const ForceHistory history = read_openfoam_forces(input.input.path / "postProcessing" / "forces");
+    ASSERT_TRUE(input.history);
+    EXPECT_NEAR(run.tau_b[0]->total, -window_mean(history, HistoryComponent::Fx, *input.history), 1e-12);
+    EXPECT_NEAR(run.tau_b[2]->total, -window_mean(history, HistoryComponent::Fz, *input.history), 1e-12);
+    EXPECT_NEAR(run.tau_b[1]->total, window_mean(history, HistoryComponent::Fy, *input.history), 1e-12);
+    // Pressure + viscous = total; a standard error; the provenance names the settings.
+    EXPECT_NEAR(*run.tau_b[0]->pressure + *run.tau_b[0]->viscous, run.tau_b[0]->total, 1e-12);
+    ASSERT_TRUE(run.statistics);
+    ASSERT_TRUE(run.statistics->components[0]);
+    EXPECT_GT(run.statistics->components[0]->standard_error, 0.0);
+    EXPECT_LT(run.statistics->components[0]->standard_error, 0.05 * std::abs(run.tau_b[0]->total));
+    const auto settings = nlohmann::json::parse(input.batch.source.settings);
+    EXPECT_EQ(settings["axes"]["source"], "command line");
+    EXPECT_EQ(settings["u"]["source"], "name pattern");
+    EXPECT_EQ(input.batch.source.sha256.size(), 64u);
+  }
+}
+
+TEST(ImportFiles, AQuarterModelWithItsSymmetryPlanesGivesTheWholeBody) {
+  const NamePattern pattern("U{u}");
+  const auto quarter = import({kSphere / "quarter-cases" / "U0.1000"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}}, &pattern);
+  const auto whole = import({kSphere / "quarter-cases" / "U0.1000"},
+                            {{"body", "sphere"}, {"axes", "-x,y,-z"}, {"symmetry", "y=0,z=0"}}, &pattern);
+  const auto& q = quarter.front().batch.runs.front();
+  const auto& w = whole.front().batch.runs.front();
+  EXPECT_NEAR(w.tau_b[0]->total, 4.0 * q.tau_b[0]->total, 1e-9 * std::abs(q.tau_b[0]->total));
+  EXPECT_EQ(w.tau_b[1]->total, 0.0);
+  EXPECT_EQ(w.tau_b[2]->total, 0.0);
+  for (std::size_t i = 3; i < 6; ++i) EXPECT_EQ(w.tau_b[i]->total, 0.0) << i;
+  EXPECT_LT(w.tau_b[0]->total, 0.0);
+  bool noted = false;
+  for (const auto& note : whole.front().notes) noted |= note.find("Fy, Fz, Mx, My, Mz vanish") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
+TEST(ImportFiles, OneFrameForTheKeyAndTheForcesWhateverTheirSource) {
+  // The export of u0.10_v0.05 with the free stream in its sidecar and the
+  // axes on the command line: the body moves forward (u > 0) and the drag
+  // points aft (X < 0).
+  test::TempDir dir;
+  fs::copy_file(kSphere / "full" / "u0.10_v0.05" / "u0.10_v0.05_sphere_t1000.vtp", dir / "run.vtp");
+  std::ofstream(dir / "run.vtp.json") << R"({"flow": [0.1, 0.05, 0], "rho": 998.2})";
+  const auto in_sidecar = import({dir / "run.vtp"}, {{"axes", "-x,y,-z"}});
+  const auto& run = in_sidecar.front().batch.runs.front();
+  EXPECT_DOUBLE_EQ(run.key.nu_b[0], 0.1);
+  EXPECT_DOUBLE_EQ(run.key.nu_b[1], -0.05);
+  EXPECT_LT(run.tau_b[0]->total, 0.0);
+  // The same with everything on the command line, and everything in the sidecar.
+  fs::remove(dir / "run.vtp.json");
+  const auto all_cli = import({dir / "run.vtp"}, {{"axes", "-x,y,-z"}, {"flow", {0.1, 0.05, 0}}, {"rho", 998.2}});
+  std::ofstream(dir / "run.vtp.json") << R"({"flow": [0.1, 0.05, 0], "rho": 998.2, "axes": "-x,y,-z"})";
+  const auto all_sidecar = import({dir / "run.vtp"}, nlohmann::json::object());
+  for (const auto* other : {&all_cli, &all_sidecar}) {
+    const auto& o = other->front().batch.runs.front();
+    EXPECT_EQ(o.key.nu_b, run.key.nu_b);
+    for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(o.tau_b[i]->total, run.tau_b[i]->total) << i;
+  }
+}
+
+TEST(ImportFiles, MonitorsTakeTheFlowAndTheAxes) {
+  // A monitor used to ignore --flow and --axes (u = v = 0, forces unrotated).
+  test::TempDir dir;
+  std::ofstream(dir / "monitor.csv") << "\"ACCUMULATED TIMESTEP\",\"USER POINT,Fx\",\"USER POINT,Fy\",\"USER POINT,Fz\"\n"
+                                        "1,0.30,0.01,0.02\n2,0.34,0.02,0.03\n";
+  const auto inputs = import({dir / "monitor.csv"}, {{"axes", "-x,y,-z"}, {"flow", {0.2, 0, 0}}, {"body", "hull"}});
+  ASSERT_EQ(inputs.front().format, "monitor");
+  const auto& run = inputs.front().batch.runs.front();
+  EXPECT_DOUBLE_EQ(run.key.nu_b[0], 0.2);
+  EXPECT_DOUBLE_EQ(run.tau_b[0]->total, -0.34);
+  EXPECT_DOUBLE_EQ(run.tau_b[1]->total, 0.02);
+  EXPECT_DOUBLE_EQ(run.tau_b[2]->total, -0.03);
+}
+
+TEST(ImportFiles, SettingsAnImporterCannotApplyAreRefusedOrNoted) {
+  test::TempDir dir;
+  std::ofstream(dir / "table.csv") << "u [m s^-1],X [N]\n0.1,-0.2\n0.2,-0.7\n";
+  try {
+    import({dir / "table.csv"}, {{"axes", "-x,y,-z"}});
+    FAIL() << "a table accepted --axes";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("setting 'axes' does not apply to a force table"), std::string::npos) << e.what();
+  }
+  // From a folder sidecar shared with surface exports it is a note.
+  std::ofstream(dir / "hydrocoef-run.json") << R"({"axes": "-x,y,-z", "rho": 998.2})";
+  const auto inputs = import({dir.path()}, nlohmann::json::object());
+  ASSERT_EQ(inputs.size(), 1u);
+  ASSERT_FALSE(inputs.front().notes.empty());
+  EXPECT_NE(inputs.front().notes.front().find("setting 'axes'"), std::string::npos);
+  EXPECT_EQ(inputs.front().batch.runs.size(), 2u);
+  EXPECT_EQ(*inputs.front().batch.runs.front().fluid.density_kg_m3, 998.2);
+}
+
+TEST(ImportFiles, ForceFilesAndHistoriesAreRecognised) {
+  PlannedInput force{kSphere / "full" / "u0.10_v0.00" / "force.dat", {}, InputKind::File, {}};
+  EXPECT_EQ(input_format(force, "auto"), "openfoam-forces");
+  test::TempDir dir;
+  std::ofstream(dir / "history.csv") << "Time [s],Fx [N],Fy [N]\n0.1,1,2\n0.2,1,2\n";
+  std::ofstream(dir / "table.csv") << "u [m s^-1],X [N]\n0.1,1\n";
+  EXPECT_EQ(input_format({dir / "history.csv", {}, InputKind::File, {}}, "auto"), "force-history");
+  EXPECT_EQ(input_format({dir / "table.csv", {}, InputKind::File, {}}, "auto"), "table");
+  EXPECT_THROW(input_format(force, "xml"), InputError);
+}
+
+TEST(ImportFiles, GivenWindowsAreUsed) {
+  const NamePattern pattern("u{u}_v{v}");
+  const auto inputs = import({kSphere / "cases" / "u0.30_v0.00"},
+                             {{"body", "sphere"}, {"axes", "-x,y,-z"}, {"window", "601:1000"}}, &pattern);
+  const auto& statistics = *inputs.front().batch.runs.front().statistics;
+  EXPECT_EQ(statistics.window_first, 601.0);
+  EXPECT_EQ(statistics.window_last, 1000.0);
+  EXPECT_EQ(statistics.samples, 400u);
+  EXPECT_THROW(import({kSphere / "cases" / "u0.30_v0.00"}, {{"window", "1000:601"}}, &pattern), InputError);
+}
+
+}  // namespace
+}  // namespace hydrocoef
