@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/export/export.hpp"
 #include "src/store/database.hpp"
@@ -27,7 +28,7 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
     throw InputError("--float applies to --format c only; expected it with c (got --format " + args.format + ")");
   if (!args.identifier.empty() && format != ExportFormat::CHeader)
     throw InputError("--identifier applies to --format c only; expected it with c (got --format " + args.format + ")");
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   const StoredSurface stored = load_surface(database, args.name);
   const ExportMetadata metadata = metadata_from_record(stored.record, stored.surface);
   const GridTable& table = *stored.surface.grid();
@@ -57,7 +58,7 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
     }
     for (std::size_t k = 0; k < table.output_count(); ++k)
       out["outputs"].push_back({{"name", table.outputs()[k]}, {"unit", metadata.output_units[k]}});
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   std::cout << "exported surface " << metadata.surface_name << " (" << interpolation_name(table.method()) << ", "

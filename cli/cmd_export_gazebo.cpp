@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/export/export.hpp"
 #include "src/export/gazebo_export.hpp"
@@ -110,7 +111,7 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
   request.linearize_at = args.linearize_at;
   std::tie(request.added_mass, request.added_mass_source) = added_mass_from(args);
 
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   const auto bodies = database.bodies();
   if (std::find(bodies.begin(), bodies.end(), args.body) == bodies.end()) {
     std::string names;
@@ -158,7 +159,7 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
       out["elements"][e.name] = e.values.size() == 1 ? nlohmann::json(e.values.front()) : nlohmann::json(e.values);
       out["units"][e.name] = e.unit;
     }
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/coefficient_curve.hpp"
 #include "src/fit/damping_law.hpp"
@@ -165,7 +166,7 @@ void run_fit_by_level(const FitArgs& args, const GlobalOptions& global, Database
                                {"values", curves[k].values},
                                {"rmse", curves[k].rmse},
                                {"unit", coefficient_unit(law.spec.terms[k], law.dof, law.variable)}});
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   std::cout << "fit " << base << " at each level of " << *args.by << " (" << fits.size() << " levels)\n\n  "
@@ -291,7 +292,7 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
       out["units"][term] = coefficient_unit(spec.terms[k], *dof, variable);
     }
     if (fit_id) out["fit_id"] = *fit_id;
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
 
@@ -329,7 +330,7 @@ struct FitsArgs {
 };
 
 void run_fits(const FitsArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   const auto fits = database.fits(args.body);
   if (args.json) {
     nlohmann::json out = nlohmann::json::array();
@@ -348,7 +349,7 @@ void run_fits(const FitsArgs& args, const GlobalOptions& global) {
       }
       out.push_back(item);
     }
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   if (fits.empty()) {

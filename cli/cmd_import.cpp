@@ -10,6 +10,7 @@
 
 #include "cli/common.hpp"
 #include "cli/surface_options.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/pipeline/import_files.hpp"
 #include "src/pipeline/sweep_keys.hpp"
@@ -180,7 +181,7 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
                       {"runs_extended", extended}, {"already_imported", already}, {"excluded", plan.excluded}};
     out["notes"] = nlohmann::json::array();
     for (const auto& [text, count] : notes) out["notes"].push_back({{"note", text}, {"count", count}});
-    std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   if (!args.quiet) {

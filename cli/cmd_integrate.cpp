@@ -5,6 +5,7 @@
 
 #include "cli/common.hpp"
 #include "cli/surface_options.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/pipeline/import_files.hpp"
 
@@ -34,7 +35,7 @@ void run_integrate(const IntegrateArgs& args) {
     auto out = surface_run_json(*input.surface);
     out["key"] = key_json(key);
     out["settings"] = nlohmann::json::parse(input.batch.source.settings.empty() ? "{}" : input.batch.source.settings);
-    std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   std::cout << surface_run_text(*input.surface);

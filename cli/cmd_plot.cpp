@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/dynamics/vehicle.hpp"
 #include "src/plot/plots.hpp"
@@ -60,7 +61,7 @@ void print_result(const plot::Figure& figure, const plot::RenderedFiles& files, 
       for (const auto& s : panel.series)
         out["series"].push_back({{"panel", panel.title}, {"title", s.title}, {"points", s.x.size()}});
     }
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   std::cout << "plot " << figure.title << "\n  wrote " << files.image.string() << " (" << format << ", " << files.width
@@ -126,7 +127,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
       ->required();
   add_common(fit, *fit_args);
   fit->callback([fit_args, &global] {
-    Database database(global.database, Database::OpenMode::MustExist);
+    Database database(global.database, Database::OpenMode::ReadOnly);
     render_and_print(plot::fit_figure(database, fit_args->name), default_image("fit", fit_args->name), *fit_args);
   });
 
@@ -155,7 +156,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
       base = *a.body + ":" + *a.dof + "(" + format_damping_terms(parse_damping_terms(*a.terms)) + ")";
     }
     const auto [kind, degree] = parse_curve(a.curve);
-    Database database(global.database, Database::OpenMode::MustExist);
+    Database database(global.database, Database::OpenMode::ReadOnly);
     if (a.by) {
       bool found = false;
       for (const auto& record : database.fits())
@@ -175,7 +176,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   surface->add_option("--output", surface_args->surface_output, "The surface's output to draw (default: its first)");
   add_common(surface, *surface_args, true);
   surface->callback([surface_args, &global] {
-    Database database(global.database, Database::OpenMode::MustExist);
+    Database database(global.database, Database::OpenMode::ReadOnly);
     render_and_print(plot::surface_figure(database, surface_args->name, surface_args->surface_output),
                      default_image("surface", surface_args->name), *surface_args);
   });
@@ -226,7 +227,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     if (taus.empty()) throw InputError("plot steady: give --tau values or --tau-from, --tau-to and --count");
     auto database = std::make_shared<std::unique_ptr<Database>>();
     const SurfaceResolver resolver = [database, &global](const std::string& name) {
-      if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::MustExist);
+      if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::ReadOnly);
       return load_surface(**database, name).surface;
     };
     const VehicleModel model(load_vehicle(a.vehicle), resolver);

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/surface/stored_surface.hpp"
 
@@ -70,7 +71,7 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
         for (std::size_t a = 0; a < n_axes; ++a)
           json["gradient"][surface.output_names()[k]][surface.axis_names()[a]] = gradient[k * n_axes + a];
     }
-    std::cout << json.dump(2) << '\n';
+    std::cout << escape::json_text(json, 2) << '\n';
     return;
   }
   std::cout << args.name << " at";
@@ -358,7 +359,7 @@ void query_batch(const QueryArgs& args, const StoredSurface& stored) {
     std::cerr << "hydrocoef: " << points << " points of surface '" << args.name << "' written to " << args.output
               << '\n';
   if (args.json && args.output != "-")
-    std::cout << nlohmann::json{{"surface", args.name}, {"points", points}, {"output", args.output}}.dump(2) << '\n';
+    std::cout << escape::json_text(nlohmann::json{{"surface", args.name}, {"points", points}, {"output", args.output}}, 2) << '\n';
 }
 
 void run_query(const QueryArgs& args, const GlobalOptions& global) {
@@ -366,7 +367,7 @@ void run_query(const QueryArgs& args, const GlobalOptions& global) {
     throw InputError("give either a point (AXIS=VALUE ...) or --input, not both");
   if (args.input.empty() && args.point.empty())
     throw InputError("no point; expected AXIS=VALUE for each axis of the surface, or --input FILE (- for stdin)");
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   const StoredSurface stored = load_surface(database, args.name);
   warn_if_stale(stored.record);
   if (args.input.empty())

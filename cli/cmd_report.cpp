@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/report/report.hpp"
 #include "src/store/database.hpp"
@@ -21,7 +22,7 @@ struct ReportArgs {
 };
 
 void run_report(const ReportArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   report::ReportOptions options;
   options.body = args.body;
   for (const auto& t : args.trajectories) options.trajectories.emplace_back(t);
@@ -36,7 +37,7 @@ void run_report(const ReportArgs& args, const GlobalOptions& global) {
                           {"notes", result.notes}};
     out["plots"] = nlohmann::json::array();
     for (const auto& p : result.plots) out["plots"].push_back(p.string());
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   std::cout << "report of " << global.database << ": " << result.runs << " runs, " << result.fits << " fits, "

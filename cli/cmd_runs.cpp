@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
@@ -39,7 +40,7 @@ nlohmann::json run_json(const StoredRun& run) {
 }
 
 void run_runs(const RunsArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   RunFilter filter;
   filter.body = args.body;
   for (const auto& text : args.where) filter.equal.insert(parse_assignment(text, "--where"));
@@ -47,7 +48,7 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   if (args.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& run : runs) out.push_back(run_json(run));
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   if (runs.empty()) {

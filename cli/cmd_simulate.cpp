@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
@@ -31,7 +32,7 @@ constexpr const char* kSignNote = "forces on the body in body axes about CO (SNA
 SurfaceResolver database_resolver(const GlobalOptions& global) {
   auto database = std::make_shared<std::unique_ptr<Database>>();
   return [database, &global](const std::string& name) {
-    if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::MustExist);
+    if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::ReadOnly);
     return load_surface(**database, name).surface;
   };
 }
@@ -159,7 +160,7 @@ void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
                                      {"t63_measured_s", optional_number(c.t63_measured_s)},
                                      {"t63_simulated_s", optional_number(c.t63_simulated_s)}});
     }
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
 
@@ -255,7 +256,7 @@ void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
                           {"attitude_deg", {{"phi", attitude[0]}, {"theta", attitude[1]}, {"psi", attitude[2]}}},
                           {"units", units_json()},
                           {"sign_convention", kSignNote}};
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   std::cout << "equilibrium of " << (model.description().name.empty() ? args.vehicle : model.description().name)

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/common.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/surface/breakpoints.hpp"
 #include "src/surface/stored_surface.hpp"
@@ -227,7 +228,7 @@ void build(const BuildArgs& args, const GlobalOptions& global) {
   SurfaceRecord record = built.record(args.name, args.body);
   auto definition = nlohmann::json::parse(record.definition);
   definition["build"] = build_json(args);
-  record.definition = definition.dump();
+  record.definition = escape::json_text(definition);
   record.id = database.save_surface(record);
   const StoredSurface stored = load_surface(database, args.name);
 
@@ -235,7 +236,7 @@ void build(const BuildArgs& args, const GlobalOptions& global) {
     nlohmann::json out = surface_json(stored.record, stored.surface, false);
     out["runs_skipped"] = built.runs_skipped;
     out["id"] = record.id;
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   std::cout << "surface " << args.name << " of body " << args.body << ": " << record.kind << ", "
@@ -292,16 +293,16 @@ void rebuild(const NameArgs& args, const GlobalOptions& global) {
       build(build_args, global);
     }
   }
-  if (args.json) std::cout << rebuilt.dump(2) << '\n';
+  if (args.json) std::cout << escape::json_text(rebuilt, 2) << '\n';
 }
 
 void list(const NameArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   const auto records = database.surfaces(args.body);
   if (args.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& record : records) out.push_back(surface_json(record, surface_from_record(record), false));
-    std::cout << out.dump(2) << '\n';
+    std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
   if (records.empty()) {
@@ -323,10 +324,10 @@ void list(const NameArgs& args, const GlobalOptions& global) {
 }
 
 void show(const NameArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::MustExist);
+  Database database(global.database, Database::OpenMode::ReadOnly);
   const StoredSurface stored = load_surface(database, args.name);
   if (args.json) {
-    std::cout << surface_json(stored.record, stored.surface, true).dump(2) << '\n';
+    std::cout << escape::json_text(surface_json(stored.record, stored.surface, true), 2) << '\n';
     return;
   }
   const auto& record = stored.record;

@@ -3,8 +3,10 @@
 #include <array>
 #include <charconv>
 #include <fstream>
+#include <sstream>
 #include <string>
 
+#include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
 
 namespace hydrocoef {
@@ -69,11 +71,10 @@ void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>
 }
 
 void write_trajectory_csv(const std::filesystem::path& path, const std::vector<TrajectorySample>& samples) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw InputError(SourceLocation{path.string()}, "cannot open the file for writing");
+  // Whole or not at all: a failed write (a full disk) leaves no partial file.
+  std::ostringstream out;
   write_trajectory_csv(out, samples);
-  out.flush();
-  if (!out) throw InputError(SourceLocation{path.string()}, "writing the trajectory failed");
+  write_file_atomically(path, out.str());
 }
 
 }  // namespace hydrocoef

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/version.hpp"
 
 namespace hydrocoef {
@@ -30,12 +31,8 @@ std::string upper(std::string text) {
   return text;
 }
 
-// Text safe inside a C block comment: no "*/", no trigraphs.
-std::string comment_safe(std::string text) {
-  for (std::size_t at = text.find("*/"); at != std::string::npos; at = text.find("*/", at)) text.replace(at, 2, "* /");
-  for (std::size_t at = text.find("??"); at != std::string::npos; at = text.find("??", at)) text.replace(at, 2, "?-?");
-  return text;
-}
+// Text safe inside a C block comment (src/core/escape.hpp).
+std::string comment_safe(std::string_view text) { return escape::c_comment(text); }
 
 // A C literal of the value: shortest round-trip double, or (single precision)
 // the value rounded to float written as its shortest round-trip float with an

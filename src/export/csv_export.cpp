@@ -1,14 +1,21 @@
 #include "src/export/csv_export.hpp"
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 
 namespace hydrocoef {
 
 namespace {
 
-std::string column(const std::string& name, const std::string& unit) {
+// Names reach the file only through escape::csv_field (header cells) and
+// escape::csv_comment ('#' lines): none adds a row or a column.
+std::string column_text(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : name + " [" + unit + "]";
 }
+std::string column(const std::string& name, const std::string& unit) {
+  return escape::csv_field(column_text(name, unit));
+}
+std::string comment(const std::string& text) { return escape::csv_comment(text); }
 
 std::string axis_names(const GridTable& table) {
   std::string names;
@@ -19,20 +26,20 @@ std::string axis_names(const GridTable& table) {
 }  // namespace
 
 std::string csv_comment_block(const GridTable& table, const ExportMetadata& metadata) {
-  std::string text = "# hydrocoef export of " + provenance_line(metadata) + "\n";
+  std::string text = "# hydrocoef export of " + comment(provenance_line(metadata)) + "\n";
   text += "# method " + std::string(interpolation_name(table.method())) +
           " (tensor product along the axes); outputs in sign convention " +
           sign_convention_text(metadata.sign_convention) + "\n";
   text += "# body axes x forward, y starboard, z down (SNAME); SI units\n";
   for (std::size_t a = 0; a < table.axis_count(); ++a) {
     const GridAxis& axis = table.axes()[a];
-    text += "# axis " + std::to_string(a) + " " + column(axis.name, metadata.axis_units[a]) + ": " +
+    text += "# axis " + std::to_string(a) + " " + comment(column_text(axis.name, metadata.axis_units[a])) + ": " +
             std::to_string(axis.breakpoints.size()) + " breakpoints, valid range [" +
             shortest_number(axis.breakpoints.front()) + ", " + shortest_number(axis.breakpoints.back()) +
             "], out of range: " + std::string(extrapolation_name(axis.extrapolation)) + "\n";
   }
   for (std::size_t k = 0; k < table.output_count(); ++k)
-    text += "# output " + column(table.outputs()[k], metadata.output_units[k]) + "\n";
+    text += "# output " + comment(column_text(table.outputs()[k], metadata.output_units[k])) + "\n";
   return text;
 }
 
@@ -70,15 +77,15 @@ std::string csv_wide_text(const GridTable& table, const ExportMetadata& metadata
   const std::vector<double>& x1 = table.axes()[1].breakpoints;
   const std::size_t n_out = table.output_count();
   std::string text = csv_comment_block(table, metadata);
-  text += "# per output, one row per " + table.axes()[0].name + " breakpoint, one column per " +
-          table.axes()[1].name + " breakpoint\n";
-  text += "output," + column(table.axes()[0].name, metadata.axis_units[0]) + " \\ " +
-          column(table.axes()[1].name, metadata.axis_units[1]);
+  text += "# per output, one row per " + comment(table.axes()[0].name) + " breakpoint, one column per " +
+          comment(table.axes()[1].name) + " breakpoint\n";
+  text += "output," + escape::csv_field(column_text(table.axes()[0].name, metadata.axis_units[0]) + " \\ " +
+                                        column_text(table.axes()[1].name, metadata.axis_units[1]));
   for (double x : x1) text += "," + shortest_number(x);
   text += "\n";
   for (std::size_t k = 0; k < n_out; ++k) {
     for (std::size_t i = 0; i < x0.size(); ++i) {
-      text += table.outputs()[k] + "," + shortest_number(x0[i]);
+      text += escape::csv_field(table.outputs()[k]) + "," + shortest_number(x0[i]);
       for (std::size_t j = 0; j < x1.size(); ++j)
         text += "," + shortest_number(table.values()[(j * x0.size() + i) * n_out + k]);
       text += "\n";

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/source_file.hpp"
 #include "src/export/c_header_export.hpp"
 #include "src/export/csv_export.hpp"
@@ -146,26 +147,8 @@ std::string sign_convention_text(const std::string& convention) {
   return "on-body: the force of the fluid on the body (SNAME), damping is negative";
 }
 
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string xml_escape(std::string_view text) { return escape::xml_text(text); }
 
-std::string xml_comment_safe(std::string text) {
-  for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at)) text.replace(at, 2, "- -");
-  if (!text.empty() && text.back() == '-') text += ' ';
-  return text;
-}
+std::string xml_comment_safe(std::string_view text) { return escape::xml_comment(text); }
 
 }  // namespace hydrocoef

@@ -88,7 +88,7 @@ void check_metadata(const GridTable& table, const ExportMetadata& metadata);
 /// Text for an XML attribute or element: & < > " ' as entities.
 std::string xml_escape(std::string_view text);
 /// Text safe inside an XML comment: no "--" (written "- -") and no trailing "-".
-std::string xml_comment_safe(std::string text);
+std::string xml_comment_safe(std::string_view text);
 
 /// Shortest decimal text that reads back as the same double ("0.1", "1e-300").
 std::string shortest_number(double value);

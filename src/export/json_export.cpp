@@ -1,3 +1,4 @@
+#include "src/core/escape.hpp"
 #include "src/export/json_export.hpp"
 
 #include <nlohmann/json.hpp>
@@ -52,7 +53,7 @@ std::string json_text(const GridTable& table, const ExportMetadata& metadata) {
                             {"created_at", metadata.created_at},
                             {"stale", metadata.stale},
                             {"exported_by", std::string("hydrocoef ") + kVersion}};
-  return document.dump(1) + "\n";
+  return escape::json_text(document, 1) + "\n";
 }
 
 }  // namespace hydrocoef

@@ -1,3 +1,4 @@
+#include "src/core/escape.hpp"
 #include "src/export/vtk_export.hpp"
 
 #include <vtkDoubleArray.h>
@@ -88,7 +89,7 @@ void write_vtk(const GridTable& table, const ExportMetadata& metadata, const std
   add_strings(field_data, "axis_names", axis_names);
   add_strings(field_data, "axis_units", metadata.axis_units);
   add_strings(field_data, "output_units", metadata.output_units);
-  add_strings(field_data, "hydrocoef_info", {info.dump()});
+  add_strings(field_data, "hydrocoef_info", {escape::json_text(info)});
 
   int written = 0;
   if (path.extension() == ".vtk") {

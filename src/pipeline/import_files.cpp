@@ -1,3 +1,4 @@
+#include "src/core/escape.hpp"
 #include "src/pipeline/import_files.hpp"
 
 #include <algorithm>
@@ -128,7 +129,7 @@ Permutation permutation_of(const FrameTransform& frame) {
 
 void record_settings(ImportBatch& batch, const RunSettings& settings, const std::string& format, const fs::path& path) {
   nlohmann::json json = settings.provenance_json();
-  batch.source.settings = json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  batch.source.settings = escape::json_text(json);
   batch.source.settings_key = format + " " + settings.effective_text();
   std::error_code ec;
   const fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);

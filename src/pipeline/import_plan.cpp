@@ -7,6 +7,7 @@
 #include <set>
 
 #include "src/core/error.hpp"
+#include "src/pipeline/openfoam_case.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -55,6 +56,23 @@ std::vector<SettingsLayer> layers_for(const fs::path& path, const fs::path& rela
   return layers;
 }
 
+/// The layers of an OpenFOAM case folder: layers_for's, with what the case's
+/// own dictionaries state ranked below every sidecar and the manifest and
+/// above the name pattern.
+std::vector<SettingsLayer> case_layers(const fs::path& folder, const fs::path& relative, const fs::path& root,
+                                       const ImportPlanOptions& options, std::vector<std::string>& notes) {
+  auto layers = layers_for(folder, relative, root, false, options);
+  OpenFoamCaseSettings case_settings = openfoam_case_settings(folder);
+  notes.insert(notes.end(), case_settings.notes.begin(), case_settings.notes.end());
+  if (!case_settings.layer.empty()) {
+    const auto pattern = std::find_if(layers.begin(), layers.end(), [](const SettingsLayer& layer) {
+      return layer.origin.source == SettingSource::NamePattern;
+    });
+    layers.insert(pattern, std::move(case_settings.layer));
+  }
+  return layers;
+}
+
 bool filtered_in(const fs::path& relative, const ImportPlanOptions& options) {
   if (!options.include.empty() &&
       std::none_of(options.include.begin(), options.include.end(),
@@ -96,7 +114,7 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
       continue;
     }
     if (is_openfoam_case(input)) {
-      plan.inputs.push_back({input, {}, InputKind::OpenFoamCase, layers_for(input, {}, input, false, options)});
+      plan.inputs.push_back({input, {}, InputKind::OpenFoamCase, case_layers(input, {}, input, options, plan.notes)});
       continue;
     }
     // A walk that does not enter case folders and keeps the order stable.
@@ -182,7 +200,8 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
         ++plan.excluded;
         continue;
       }
-      plan.inputs.push_back({folder, relative, InputKind::OpenFoamCase, layers_for(folder, relative, input, false, options)});
+      plan.inputs.push_back(
+          {folder, relative, InputKind::OpenFoamCase, case_layers(folder, relative, input, options, plan.notes)});
       ++planned;
     }
     for (const auto& file : files) {

@@ -47,7 +47,8 @@ struct PlannedInput {
   std::filesystem::path relative;
   InputKind kind = InputKind::File;
   /// Layers in order of precedence, highest first: file sidecar, manifest
-  /// row, folder sidecars (nearest first), name pattern.
+  /// row, folder sidecars (nearest first), case files (OpenFOAM cases), name
+  /// pattern.
   std::vector<SettingsLayer> layers;
 };
 

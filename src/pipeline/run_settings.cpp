@@ -1,3 +1,4 @@
+#include "src/core/escape.hpp"
 #include "src/pipeline/run_settings.hpp"
 
 #include <algorithm>
@@ -48,20 +49,20 @@ nlohmann::json value_json(const SettingValue& value) {
 
 std::string value_text(const SettingValue& value) {
   if (const auto* number = std::get_if<double>(&value)) return shortest(*number);
-  if (const auto* text = std::get_if<std::string>(&value)) return nlohmann::json(*text).dump();
+  if (const auto* text = std::get_if<std::string>(&value)) return escape::json_text(nlohmann::json(*text));
   std::string out = "[";
   if (const auto* numbers = std::get_if<std::vector<double>>(&value)) {
     for (std::size_t i = 0; i < numbers->size(); ++i) out += (i ? "," : "") + shortest((*numbers)[i]);
   } else {
     const auto& texts = std::get<std::vector<std::string>>(value);
-    for (std::size_t i = 0; i < texts.size(); ++i) out += (i ? "," : "") + nlohmann::json(texts[i]).dump();
+    for (std::size_t i = 0; i < texts.size(); ++i) out += (i ? "," : "") + escape::json_text(nlohmann::json(texts[i]));
   }
   return out + "]";
 }
 
 double finite_number(const nlohmann::json& value, const SourceLocation& where, const std::string& key) {
   if (!value.is_number())
-    throw InputError(where, "key '" + key + "': expected a number, found " + printable_text(value.dump(), 40));
+    throw InputError(where, "key '" + key + "': expected a number, found " + printable_text(escape::json_text(value), 40));
   const double x = value.get<double>();
   if (!std::isfinite(x)) throw InputError(where, "key '" + key + "': expected a finite number");
   return x;
@@ -69,7 +70,7 @@ double finite_number(const nlohmann::json& value, const SourceLocation& where, c
 
 std::string json_text(const nlohmann::json& value, const SourceLocation& where, const std::string& key) {
   if (!value.is_string())
-    throw InputError(where, "key '" + key + "': expected a string, found " + printable_text(value.dump(), 40));
+    throw InputError(where, "key '" + key + "': expected a string, found " + printable_text(escape::json_text(value), 40));
   return value.get<std::string>();
 }
 
@@ -161,7 +162,7 @@ std::string RunSettings::effective_text() const {
   std::string out = "{";
   bool first = true;
   for (const auto& [name, setting] : values) {  // std::map: sorted by name
-    out += (first ? "" : ",") + nlohmann::json(name).dump() + ":" + value_text(setting.value);
+    out += (first ? "" : ",") + escape::json_text(nlohmann::json(name)) + ":" + value_text(setting.value);
     first = false;
   }
   return out + "}";

@@ -15,7 +15,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 
 extern char** environ;
 
@@ -27,30 +29,15 @@ constexpr std::array<const char*, 8> kPalette = {"#0072B2", "#D55E00", "#009E73"
                                                  "#E69F00", "#56B4E9", "#000000", "#999999"};
 constexpr const char* kShade = "#DDDDDD";
 
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) {
-    if (c == '\'')
-      out += "''";
-    else if (c == '\n')
-      out += ' ';
-    else
-      out += c;
-  }
-  return out + "'";
-}
+std::string quoted(const std::string& text) { return escape::gnuplot_string(text); }
 
-/// A gnuplot double-quoted string whose lines are joined by "\n".
-std::string double_quoted(const std::vector<std::string>& lines) {
-  std::string out = "\"";
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (i) out += "\\n";
-    for (char c : lines[i]) {
-      if (c == '"' || c == '\\') out += '\\';
-      if (c != '\n') out += c;
-    }
-  }
-  return out + "\"";
+/// A gnuplot string expression of several lines: single-quoted pieces (which
+/// gnuplot never expands) joined by a double-quoted line feed.
+std::string joined_lines(const std::vector<std::string>& lines) {
+  if (lines.empty()) return "''";
+  std::string out;
+  for (std::size_t i = 0; i < lines.size(); ++i) out += (i ? ".\"\\n\"." : "") + quoted(lines[i]);
+  return out;
 }
 
 std::string lower_extension(const std::filesystem::path& path) {
@@ -99,13 +86,7 @@ BlockIndex block_index(const Figure& figure) {
   return index;
 }
 
-void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
-  out << text;
-  out.close();
-  if (!out) throw InputError(path.string() + ": write failed");
-}
+void write_file(const std::filesystem::path& path, const std::string& text) { write_file_atomically(path, text); }
 
 /// Runs `program script` with stdout and stderr to `log`; returns the exit
 /// status, or throws when the program cannot be started.
@@ -173,14 +154,15 @@ ImageFormat image_format(const std::filesystem::path& image) {
 
 std::string data_file_text(const Figure& figure) {
   const BlockIndex index = block_index(figure);
-  std::string out = "# hydrocoef plot data: " + figure.title +
+  std::string out = "# hydrocoef plot data: " + escape::gnuplot_comment(figure.title) +
                     "\n# one block per series (gnuplot index), separated by "
                     "two blank lines\n";
   for (std::size_t p = 0; p < figure.panels.size(); ++p) {
     const Panel& panel = figure.panels[p];
     if (panel.map) {
       const auto& m = *panel.map;
-      out += "# block " + std::to_string(index.map[p]) + ": colour map of " + panel.title + "\n# x y z\n";
+      out += "# block " + std::to_string(index.map[p]) + ": colour map of " + escape::gnuplot_comment(panel.title) +
+             "\n# x y z\n";
       for (std::size_t j = 0; j < m.y.size(); ++j) {
         for (std::size_t i = 0; i < m.x.size(); ++i)
           out += round_trip(m.x[i]) + " " + round_trip(m.y[j]) + " " + round_trip(m.z[j * m.x.size() + i]) + "\n";
@@ -191,7 +173,8 @@ std::string data_file_text(const Figure& figure) {
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       const Series& series = panel.series[s];
       if (index.series[p][s] < 0) continue;
-      out += "# block " + std::to_string(index.series[p][s]) + ": " + series.title + "\n# x y\n";
+      out += "# block " + std::to_string(index.series[p][s]) + ": " + escape::gnuplot_comment(series.title) +
+             "\n# x y\n";
       for (std::size_t i = 0; i < series.x.size(); ++i)
         out += round_trip(series.x[i]) + " " + round_trip(series.y[i]) + "\n";
       out += "\n\n";
@@ -200,12 +183,14 @@ std::string data_file_text(const Figure& figure) {
   return out;
 }
 
-std::string gnuplot_script(const Figure& figure, const std::filesystem::path& data, const std::filesystem::path& image,
-                           const RenderOptions& options) {
+namespace {
+
+std::string script_text(const Figure& figure, const std::filesystem::path& data, const std::filesystem::path& image,
+                        ImageFormat format, const RenderOptions& options) {
   const BlockIndex index = block_index(figure);
-  const bool png = image_format(image) == ImageFormat::Png;
+  const bool png = format == ImageFormat::Png;
   std::ostringstream gp;
-  gp << "# hydrocoef plot: " << figure.title << "\n";
+  gp << "# hydrocoef plot: " << escape::gnuplot_comment(figure.title) << "\n";
   gp << "set encoding utf8\n";
   if (png)
     gp << "set terminal pngcairo size " << options.width << "," << options.height
@@ -227,7 +212,7 @@ std::string gnuplot_script(const Figure& figure, const std::filesystem::path& da
     std::vector<std::string> lines;
     if (figure.panels.size() == 1 && !figure.title.empty()) lines.push_back(figure.title);
     if (!panel.title.empty()) lines.push_back(panel.title);
-    gp << "unset object\nset title " << double_quoted(lines) << "\n";
+    gp << "unset object\nset title " << joined_lines(lines) << "\n";
     gp << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label) << "\n";
     if (panel.x_range)
       gp << "set xrange [" << round_trip((*panel.x_range)[0]) << ":" << round_trip((*panel.x_range)[1]) << "]\n";
@@ -283,6 +268,13 @@ std::string gnuplot_script(const Figure& figure, const std::filesystem::path& da
   return gp.str();
 }
 
+}  // namespace
+
+std::string gnuplot_script(const Figure& figure, const std::filesystem::path& data, const std::filesystem::path& image,
+                           const RenderOptions& options) {
+  return script_text(figure, data, image, image_format(image), options);
+}
+
 RenderedFiles render(const Figure& figure, const std::filesystem::path& image, const RenderOptions& options) {
   RenderedFiles files;
   files.format = image_format(image);
@@ -291,6 +283,10 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
                      ": expected a width of 200 to 4000 and a height of 150 to 4000 pixels");
   check_figure(figure);
   const std::filesystem::path absolute = std::filesystem::absolute(image);
+  // The script names the image and data files in gnuplot strings, which
+  // cannot hold a line break: such a path is refused, never altered.
+  if (escape::one_line(absolute.string()) != absolute.string())
+    throw InputError(image.string() + ": expected an image path of printable UTF-8 without control characters");
   const std::filesystem::path dir = absolute.parent_path();
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -302,12 +298,24 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
   files.height = options.height;
   write_file(files.data, data_file_text(figure));
   write_file(files.script, gnuplot_script(figure, files.data, files.image, options));
-  std::filesystem::remove(files.image, ec);
+  // gnuplot draws into a temporary beside the image, renamed onto it only
+  // when gnuplot succeeded: the image is whole or not there. The script kept
+  // for the user names the image itself; the one run names the temporary.
+  const std::filesystem::path drawing = temporary_beside(files.image);
+  const std::filesystem::path run_script = temporary_beside(files.script);
+  struct Cleanup {
+    std::vector<std::filesystem::path> paths;
+    ~Cleanup() {
+      std::error_code ignored;
+      for (const auto& path : paths) std::filesystem::remove(path, ignored);
+    }
+  } cleanup{{drawing, run_script}};
+  write_file(run_script, script_text(figure, files.data, drawing, files.format, options));
 
   const char* configured = std::getenv("HYDROCOEF_GNUPLOT");
   const std::string program = configured && *configured ? configured : "gnuplot";
   const std::filesystem::path log = std::filesystem::path(absolute).replace_extension(".gnuplot.log");
-  const int status = run_gnuplot(program, files.script, log);
+  const int status = run_gnuplot(program, run_script, log);
   const std::string messages = read_all(log);
   std::filesystem::remove(log, ec);
   if (status == 127)
@@ -316,9 +324,11 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
                      "set HYDROCOEF_GNUPLOT");
   if (status != 0)
     throw InputError("gnuplot failed on " + files.script.string() + " (exit " + std::to_string(status) +
-                     "): " + first_error_line(messages));
-  if (!std::filesystem::exists(files.image) || std::filesystem::file_size(files.image) == 0)
-    throw InputError("gnuplot wrote no image " + files.image.string() + ": " + first_error_line(messages));
+                     "): " + printable_text(first_error_line(messages), 300));
+  if (!std::filesystem::exists(drawing) || std::filesystem::file_size(drawing) == 0)
+    throw InputError("gnuplot wrote no image " + files.image.string() + ": " +
+                     printable_text(first_error_line(messages), 300));
+  commit_temporary(drawing, files.image);
   return files;
 }
 

@@ -1,3 +1,5 @@
+#include "src/core/atomic_file.hpp"
+#include "src/core/escape.hpp"
 #include "src/report/report.hpp"
 
 #include <algorithm>
@@ -163,32 +165,7 @@ class Page {
 
 }  // namespace
 
-std::string html_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+std::string html_escape(std::string_view text) { return escape::html_text(text); }
 
 std::string base64(std::string_view bytes) {
   static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -394,15 +371,7 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
        "page needs no network access.</p>\n"
        "</body></html>\n";
 
-  const std::filesystem::path temp = result.index.string() + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(temp.string() + ": cannot write");
-    out << h.str();
-    if (!out.flush()) throw InputError(temp.string() + ": write failed");
-  }
-  std::filesystem::rename(temp, result.index, ec);
-  if (ec) throw InputError(result.index.string() + ": cannot write (" + ec.message() + ")");
+  write_file_atomically(result.index, h.str());
   return result;
 }
 

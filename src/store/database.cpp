@@ -4,10 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <unordered_map>
 
 #include "src/core/error.hpp"
+#include "src/core/names.hpp"
+#include "src/store/checked_row.hpp"
 #include "src/store/migrations.hpp"
+#include "src/store/schema_check.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -31,13 +35,33 @@ std::string utc_timestamp_now() {
   return text;
 }
 
+namespace {
+
+store::Connection open_connection(const std::filesystem::path& path, Database::OpenMode mode) {
+  if (mode != Database::OpenMode::CreateIfMissing && !std::filesystem::exists(path))
+    throw InputError(SourceLocation{path.string()},
+                     "no database here; create one with 'hydrocoef import' or give --db PATH");
+  switch (mode) {
+    case Database::OpenMode::CreateIfMissing: return {path.string(), store::Access::ReadWriteCreate};
+    case Database::OpenMode::MustExist: return {path.string(), store::Access::ReadWrite};
+    case Database::OpenMode::ReadOnly: break;
+  }
+  return {path.string(), store::Access::ReadOnly};
+}
+
+}  // namespace
+
 Database::Database(const std::filesystem::path& path, OpenMode mode)
-    : path_(path), connection_([&] {
-        if (mode == OpenMode::MustExist && !std::filesystem::exists(path))
-          throw InputError(SourceLocation{path.string()},
-                           "no database here; create one with 'hydrocoef import' or give --db PATH");
-        return store::Connection(path.string(), mode == OpenMode::CreateIfMissing);
-      }()) {
+    : path_(path), connection_(open_connection(path, mode)), read_only_(mode == OpenMode::ReadOnly) {
+  if (read_only_) {
+    // A WAL database in a folder where the -shm file cannot be made (a
+    // read-only share) cannot be opened normally: read it as immutable.
+    try {
+      (void)schema_version();
+    } catch (const InputError&) {
+      connection_ = store::Connection(path_.string(), store::Access::Immutable);
+    }
+  }
   connection_.execute("PRAGMA foreign_keys = ON");
   // FULL: the WAL is synced at every commit, so a committed import survives a
   // power loss as well as a killed process. NORMAL would already keep it after
@@ -48,15 +72,42 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
   // damaged file fails here with SQLite's "file is not a database".
   const std::string check = integrity_check();
   if (check != "ok")
-    throw InputError(SourceLocation{path.string()}, "database fails its integrity check: " + check);
-  migrate();
+    throw InputError(SourceLocation{path.string()}, "database fails its integrity check: " + printable_text(check, 200));
+  const int version = checked_schema_version();
+  if (version < latest_schema_version()) {
+    if (read_only_) {
+      // Reading needs the current schema: upgrade in place when the file can
+      // be written, as a writing command would.
+      try {
+        connection_ = store::Connection(path_.string(), store::Access::ReadWrite);
+        connection_.execute("PRAGMA foreign_keys = ON");
+        connection_.execute("PRAGMA synchronous = FULL");
+      } catch (const InputError&) {
+      }
+      if (sqlite3_db_readonly(connection_.handle(), "main"))
+        throw InputError(SourceLocation{path_.string()},
+                         "database is at schema version " + std::to_string(version) + " and read-only here; this "
+                         "hydrocoef reads version " + std::to_string(latest_schema_version()) +
+                         ": upgrade it once with a writing command (hydrocoef import, fit) where it can be written");
+      read_only_ = false;
+    }
+    migrate();
+  } else {
+    check_schema(version);
+  }
   // Write-ahead log, switched on only once the file is known to be a hydrocoef
   // database of a version this build writes (so a refused file stays
   // byte-for-byte as it was): readers never wait for an import and never see
   // part of one, and a killed import leaves only an uncommitted WAL tail that
   // the next open discards. The mode is stored in the file; a read-only file
   // keeps the mode it has.
-  if (!sqlite3_db_readonly(connection_.handle(), "main")) connection_.execute("PRAGMA journal_mode = WAL");
+  if (!read_only_ && !sqlite3_db_readonly(connection_.handle(), "main")) {
+    auto mode_now = connection_.prepare("PRAGMA journal_mode");
+    mode_now.step();
+    const bool wal = mode_now.get_text(0) == "wal";
+    mode_now.reset();
+    if (!wal) connection_.execute("PRAGMA journal_mode = WAL");
+  }
 }
 
 int Database::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
@@ -80,28 +131,64 @@ std::string Database::integrity_check() {
   return out;
 }
 
-void Database::migrate() {
-  const int version = schema_version();
+int Database::checked_schema_version() {
+  auto statement = connection_.prepare("PRAGMA user_version");
+  statement.step();
+  const std::int64_t version = statement.get_int(0);
   const int latest = latest_schema_version();
   if (version > latest)
     throw InputError(SourceLocation{path_.string()},
                      "database is at schema version " + std::to_string(version) + ", this hydrocoef knows up to " +
                          std::to_string(latest) + "; use a newer hydrocoef");
+  if (version < 0)
+    throw InputError(SourceLocation{path_.string()}, "database has schema version " + std::to_string(version) +
+                                                         "; expected 0 to " + std::to_string(latest) +
+                                                         " (a file changed by another program)");
+  return static_cast<int>(version);
+}
+
+void Database::check_schema(int version) {
+  const auto found = store::schema_of(connection_);
   if (version == 0) {
-    auto count = connection_.prepare("SELECT count(*) FROM sqlite_schema");
-    count.step();
-    if (count.get_int(0) != 0)
+    if (!found.empty())
       throw InputError(SourceLocation{path_.string()},
                        "an SQLite database with tables but no hydrocoef schema version; expected a hydrocoef "
                        "database or a new file");
+    return;
   }
-  for (int next = version + 1; next <= latest; ++next) {
-    const auto& migration = store::migrations()[static_cast<std::size_t>(next - 1)];
+  if (const auto difference = store::schema_difference(store::expected_schema(version), found))
+    throw InputError(SourceLocation{path_.string()},
+                     "database (schema version " + std::to_string(version) + ") " + *difference +
+                         "; expected exactly the schema hydrocoef creates, so a database changed by another program "
+                         "is refused");
+}
+
+void Database::migrate() {
+  // Migrations may rebuild tables, which needs foreign keys off; they are
+  // checked before the commit instead. The pragma cannot change inside a
+  // transaction, so it is set around it.
+  connection_.execute("PRAGMA foreign_keys = OFF");
+  {
     store::Transaction transaction(connection_);
-    connection_.execute(migration.sql);
-    connection_.execute("PRAGMA user_version = " + std::to_string(next));
+    // Read again under the write lock: another process may have created or
+    // upgraded the schema since this one looked.
+    const int version = checked_schema_version();
+    check_schema(version);
+    const int latest = latest_schema_version();
+    for (int next = version + 1; next <= latest; ++next) {
+      connection_.execute(store::migrations()[static_cast<std::size_t>(next - 1)].sql);
+      connection_.execute("PRAGMA user_version = " + std::to_string(next));
+    }
+    auto foreign = connection_.prepare("PRAGMA foreign_key_check");
+    if (foreign.step())
+      throw InputError(SourceLocation{path_.string()},
+                       "database: table '" + printable_text(foreign.get_text(0), 60) + "', row " +
+                           std::to_string(foreign.get_int(1)) + " refers to a missing row of table '" +
+                           printable_text(foreign.get_text(2), 60) + "'; expected every reference to hold");
+    foreign.reset();
     transaction.commit();
   }
+  connection_.execute("PRAGMA foreign_keys = ON");
 }
 
 std::int64_t Database::body_id(const std::string& name, bool create) {
@@ -182,6 +269,14 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
 
     for (const auto& run : batch.runs) {
       const SourceLocation where{batch.source.path, run.source_line, 0};
+      // Names are checked where they enter; the store checks again, so that
+      // no caller of the library can store a name that breaks the rule.
+      check_name(NameKind::Body, run.key.body, where, "the run's body");
+      for (const auto& [name, value] : run.key.disturbances) {
+        check_name(NameKind::Parameter, name, where, "a disturbance");
+        if (!std::isfinite(value))
+          throw InputError(where, "disturbance '" + name + "' is not a finite number; expected one");
+      }
       const std::int64_t body = body_id(run.key.body, true);
       std::int64_t run_id = 0;
       bool created = false;
@@ -294,14 +389,16 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
 
   std::vector<StoredRun> out;
   std::unordered_map<std::int64_t, std::size_t> index;
+  const std::string db = path_.string();
   while (select.step()) {
+    const store::CheckedRow row(select, db, "run", select.get_int(0));
     StoredRun stored;
     stored.id = select.get_int(0);
-    stored.key.body = select.get_text(1);
-    for (int i = 0; i < 6; ++i) stored.key.nu_b[static_cast<std::size_t>(i)] = select.get_double(2 + i);
-    stored.fluid.density_kg_m3 = select.get_optional_double(8);
-    stored.fluid.kinematic_viscosity_m2_s = select.get_optional_double(9);
-    for (int i = 0; i < 3; ++i) stored.reference_point_b[static_cast<std::size_t>(i)] = select.get_double(10 + i);
+    stored.key.body = row.name(1, NameKind::Body);
+    for (int i = 0; i < 6; ++i) stored.key.nu_b[static_cast<std::size_t>(i)] = row.real(2 + i);
+    stored.fluid.density_kg_m3 = row.optional_positive(8);
+    stored.fluid.kinematic_viscosity_m2_s = row.optional_positive(9);
+    for (int i = 0; i < 3; ++i) stored.reference_point_b[static_cast<std::size_t>(i)] = row.real(10 + i);
     index[stored.id] = out.size();
     out.push_back(std::move(stored));
   }
@@ -310,7 +407,9 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   auto disturbances = connection_.prepare("SELECT run_id, name, value FROM run_disturbance");
   while (disturbances.step()) {
     const auto found = index.find(disturbances.get_int(0));
-    if (found != index.end()) out[found->second].key.disturbances[disturbances.get_text(1)] = disturbances.get_double(2);
+    if (found == index.end()) continue;
+    const store::CheckedRow row(disturbances, db, "run_disturbance", disturbances.get_int(0));
+    out[found->second].key.disturbances[row.name(1, NameKind::Parameter)] = row.real(2);
   }
   auto forces = connection_.prepare(
       "SELECT f.run_id, f.component, f.total, f.pressure, f.viscous, f.sign_convention, f.source_id, s.path, "
@@ -318,16 +417,16 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   while (forces.step()) {
     const auto found = index.find(forces.get_int(0));
     if (found == index.end()) continue;
-    const auto component = force_index(forces.get_text(1));
-    if (!component) continue;  // excluded by the schema's CHECK
+    const store::CheckedRow row(forces, db, "run_force", forces.get_int(0));
+    const auto component = force_index(row.one_of(1, {"X", "Y", "Z", "K", "M", "N"}));
     StoredForce force;
-    force.value.total = forces.get_double(2);
-    force.value.pressure = forces.get_optional_double(3);
-    force.value.viscous = forces.get_optional_double(4);
-    force.sign = parse_sign_convention(forces.get_text(5));
-    force.source_id = forces.get_int(6);
-    force.source_path = forces.get_text(7);
-    force.source_line = static_cast<std::size_t>(forces.get_int(8));
+    force.value.total = row.real(2);
+    force.value.pressure = row.optional_real(3);
+    force.value.viscous = row.optional_real(4);
+    force.sign = parse_sign_convention(row.one_of(5, {"on-body", "opposing"}));
+    force.source_id = row.integer(6, 1, std::numeric_limits<std::int64_t>::max());
+    force.source_path = row.text(7);
+    force.source_line = static_cast<std::size_t>(row.integer(8, 0, std::numeric_limits<std::int64_t>::max()));
     out[found->second].tau_b[*component] = std::move(force);
   }
   auto surfaces = connection_.prepare(
@@ -337,24 +436,26 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   while (surfaces.step()) {
     const auto found = index.find(surfaces.get_int(0));
     if (found == index.end()) continue;
+    const store::CheckedRow row(surfaces, db, "run_surface", surfaces.get_int(0));
+    constexpr std::int64_t kMost = std::numeric_limits<std::int64_t>::max();
     SurfaceIntegrals g;
-    g.faces = static_cast<std::size_t>(surfaces.get_int(1));
-    g.area = surfaces.get_double(2);
-    g.signed_volume = surfaces.get_double(3);
-    g.closed = surfaces.get_int(4) != 0;
-    g.boundary_edges = static_cast<std::size_t>(surfaces.get_int(5));
-    g.degenerate_faces = static_cast<std::size_t>(surfaces.get_int(6));
-    g.normals_flipped = surfaces.get_int(7) != 0;
+    g.faces = static_cast<std::size_t>(row.integer(1, 0, kMost));
+    g.area = row.non_negative(2);
+    g.signed_volume = row.real(3);
+    g.closed = row.integer(4, 0, 1) != 0;
+    g.boundary_edges = static_cast<std::size_t>(row.integer(5, 0, kMost));
+    g.degenerate_faces = static_cast<std::size_t>(row.integer(6, 0, kMost));
+    g.normals_flipped = row.integer(7, 0, 1) != 0;
     for (int i = 0; i < 3; ++i) {
-      g.integral_n_dA_b[static_cast<std::size_t>(i)] = surfaces.get_double(8 + i);
-      g.integral_x_cross_n_dA_b[static_cast<std::size_t>(i)] = surfaces.get_double(11 + i);
+      g.integral_n_dA_b[static_cast<std::size_t>(i)] = row.real(8 + i);
+      g.integral_x_cross_n_dA_b[static_cast<std::size_t>(i)] = row.real(11 + i);
     }
-    g.reference_pressure = surfaces.get_double(14);
-    g.pressure_array = surfaces.get_text(15);
-    g.shear_array = surfaces.get_text(16);
-    g.pressure_kind = surfaces.get_text(17);
-    g.shear_convention = surfaces.get_text(18);
-    g.axes = surfaces.get_text(19);
+    g.reference_pressure = row.real(14);
+    g.pressure_array = row.text(15, 1024);
+    g.shear_array = row.text(16, 1024);
+    g.pressure_kind = row.one_of(17, {"static", "kinematic"});
+    g.shear_convention = row.one_of(18, {"on-wall", "on-fluid"});
+    g.axes = row.text(19, 256);
     out[found->second].surface = std::move(g);
   }
   return out;
@@ -400,27 +501,29 @@ std::vector<SourceRecord> Database::sources() {
       "SELECT id, path, sha256, size_bytes, importer, importer_version, imported_at FROM source_file ORDER BY id");
   std::vector<SourceRecord> out;
   while (select.step()) {
+    const store::CheckedRow row(select, path_.string(), "source_file", select.get_int(0));
     SourceRecord record;
     record.id = select.get_int(0);
-    record.provenance.path = select.get_text(1);
-    record.provenance.sha256 = select.get_text(2);
-    record.provenance.size_bytes = static_cast<std::uint64_t>(select.get_int(3));
-    record.provenance.importer = select.get_text(4);
-    record.provenance.importer_version = select.get_text(5);
-    record.imported_at = select.get_text(6);
+    record.provenance.path = row.text(1);
+    record.provenance.sha256 = row.text(2, 64);
+    record.provenance.size_bytes = static_cast<std::uint64_t>(row.integer(3, 0, std::numeric_limits<std::int64_t>::max()));
+    record.provenance.importer = row.text(4, 256);
+    record.provenance.importer_version = row.text(5, 256);
+    record.imported_at = row.text(6, 64);
     out.push_back(std::move(record));
   }
   return out;
 }
 
 std::vector<std::string> Database::bodies() {
-  auto select = connection_.prepare("SELECT name FROM body ORDER BY name");
+  auto select = connection_.prepare("SELECT name, id FROM body ORDER BY name");
   std::vector<std::string> out;
-  while (select.step()) out.push_back(select.get_text(0));
+  while (select.step()) out.push_back(store::CheckedRow(select, path_.string(), "body", select.get_int(1)).name(0, NameKind::Body));
   return out;
 }
 
 std::int64_t Database::save_fit(const FitRecord& fit) {
+  check_name(NameKind::Fit, fit.name, {}, "the fit");
   store::Transaction transaction(connection_);
   const std::int64_t body = existing_body_id(fit.body);
   connection_.prepare("DELETE FROM fit WHERE name = ?").bind(1, fit.name).run();
@@ -463,29 +566,32 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
   if (body) select.bind(1, *body);
   std::vector<FitRecord> out;
   while (select.step()) {
+    const store::CheckedRow row(select, path_.string(), "fit", select.get_int(0));
+    constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
     FitRecord fit;
     fit.id = select.get_int(0);
-    fit.name = select.get_text(1);
-    fit.body = select.get_text(2);
-    fit.dof = select.get_text(3);
-    fit.variable = select.get_text(4);
-    fit.terms = select.get_text(5);
-    fit.loss = select.get_text(6);
-    fit.run_filter = select.get_text(7);
-    fit.sign = parse_sign_convention(select.get_text(8));
-    fit.n = static_cast<std::size_t>(select.get_int(9));
-    fit.rmse = select.get_double(10);
-    fit.r2 = select.get_double(11);
-    fit.created_at = select.get_text(12);
+    fit.name = row.name(1, NameKind::Fit);
+    fit.body = row.name(2, NameKind::Body);
+    fit.dof = row.one_of(3, {"X", "Y", "Z", "K", "M", "N"});
+    fit.variable = row.one_of(4, {"u", "v", "w", "p", "q", "r"});
+    fit.terms = row.text(5, 1024);
+    fit.loss = row.text(6, 256);
+    fit.run_filter = row.text(7);
+    fit.sign = parse_sign_convention(row.one_of(8, {"on-body", "opposing"}));
+    fit.n = static_cast<std::size_t>(row.integer(9, 0, std::int64_t{1} << 40));
+    fit.rmse = row.optional_non_negative(10).value_or(kAbsent);
+    fit.r2 = row.optional_real(11).value_or(kAbsent);
+    fit.created_at = row.text(12, 64);
     out.push_back(std::move(fit));
   }
   auto coefficients =
       connection_.prepare("SELECT term, value, std_error FROM fit_coefficient WHERE fit_id = ? ORDER BY position");
   for (auto& fit : out) {
     coefficients.bind(1, fit.id);
-    while (coefficients.step())
-      fit.coefficients.push_back({coefficients.get_text(0), coefficients.get_double(1),
-                                  coefficients.get_optional_double(2)});
+    while (coefficients.step()) {
+      const store::CheckedRow row(coefficients, path_.string(), "fit_coefficient", fit.id);
+      fit.coefficients.push_back({row.text(0, 256), row.real(1), row.optional_non_negative(2)});
+    }
     coefficients.reset();
     fit.run_ids = linked_runs("fit_run", "fit_id", fit.id);
   }
@@ -510,11 +616,13 @@ std::vector<std::int64_t> Database::linked_runs(const char* table, const char* o
                                     " = ? ORDER BY run_id");
   select.bind(1, id);
   std::vector<std::int64_t> out;
-  while (select.step()) out.push_back(select.get_int(0));
+  while (select.step())
+    out.push_back(store::CheckedRow(select, path_.string(), table, id).integer(0, 1, std::numeric_limits<std::int64_t>::max()));
   return out;
 }
 
 std::int64_t Database::save_surface(const SurfaceRecord& surface) {
+  check_name(NameKind::Surface, surface.name, {}, "the surface");
   store::Transaction transaction(connection_);
   const std::int64_t body = existing_body_id(surface.body);
   connection_.prepare("DELETE FROM surface WHERE name = ?").bind(1, surface.name).run();
@@ -549,17 +657,18 @@ std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::stri
   if (name) select.bind(2, *name);
   std::vector<SurfaceRecord> out;
   while (select.step()) {
+    const store::CheckedRow row(select, path_.string(), "surface", select.get_int(0));
     SurfaceRecord record;
     record.id = select.get_int(0);
-    record.name = select.get_text(1);
-    record.body = select.get_text(2);
-    record.kind = select.get_text(3);
-    record.method = select.get_text(4);
-    record.definition = select.get_text(5);
-    record.data = select.get_doubles(6);
-    record.quality = select.get_text(7);
-    record.created_at = select.get_text(8);
-    record.stale = select.get_int(9) != 0;
+    record.name = row.name(1, NameKind::Surface);
+    record.body = row.name(2, NameKind::Body);
+    record.kind = row.one_of(3, {"grid", "rbf"});
+    record.method = row.text(4, 64);
+    record.definition = row.text(5, kMaxSurfaceDefinitionBytes);
+    record.data = row.doubles(6, kMaxSurfaceValues);
+    record.quality = row.text(7, kMaxSurfaceDefinitionBytes);
+    record.created_at = row.text(8, 64);
+    record.stale = row.integer(9, 0, 1) != 0;
     record.run_ids = linked_runs("surface_run", "surface_id", record.id);
     out.push_back(std::move(record));
   }
@@ -576,7 +685,7 @@ SurfaceRecord Database::surface(const std::string& name) {
   // Only the names, for the message: no value blobs are read.
   auto select = connection_.prepare("SELECT name FROM surface ORDER BY name");
   std::string names;
-  while (select.step()) names += (names.empty() ? "'" : ", '") + select.get_text(0) + "'";
+  while (select.step()) names += (names.empty() ? "'" : ", '") + printable_text(select.get_text(0), 60) + "'";
   throw InputError("no surface named '" + name + "' in " + path_.string() + "; surfaces there: " +
                    (names.empty() ? "none" : names));
 }

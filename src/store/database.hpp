@@ -87,6 +87,12 @@ struct FitRecord {
   std::vector<std::int64_t> run_ids;
 };
 
+/// The largest surface a database may hold: values in its data blob, and
+/// bytes of its definition or quality JSON. Larger records in a received
+/// database are refused before anything is allocated for them.
+inline constexpr std::size_t kMaxSurfaceValues = std::size_t{1} << 26;
+inline constexpr std::size_t kMaxSurfaceDefinitionBytes = std::size_t{1} << 26;
+
 /// A coefficient surface as stored: what src/surface needs to rebuild it,
 /// as plain data (the store knows no interpolation).
 struct SurfaceRecord {
@@ -105,12 +111,20 @@ struct SurfaceRecord {
 
 class Database {
  public:
-  enum class OpenMode { CreateIfMissing, MustExist };
+  /// CreateIfMissing and MustExist open for writing; ReadOnly never writes
+  /// (a database on a read-only share or in a read-only folder is read as
+  /// immutable when SQLite cannot make its -shm file there).
+  enum class OpenMode { CreateIfMissing, MustExist, ReadOnly };
 
   /// Opens the database and brings its schema up to date (schema/ migrations,
-  /// recorded in PRAGMA user_version). Throws InputError when the file is not
-  /// an SQLite database, fails its integrity check, belongs to another
-  /// program, or was written by a newer hydrocoef.
+  /// recorded in PRAGMA user_version). A received database is untrusted: it
+  /// is refused with InputError (one line naming the file and what is wrong)
+  /// when the file is not an SQLite database, fails its integrity check,
+  /// belongs to another program, has a schema version outside 0..latest or
+  /// a schema that is not exactly the one the migrations create for its
+  /// version (an added trigger, view or index, a dropped column), or was
+  /// written by a newer hydrocoef. Several processes may open a new file at
+  /// once: the migration re-reads the version inside its transaction.
   explicit Database(const std::filesystem::path& path, OpenMode mode = OpenMode::CreateIfMissing);
 
   /// The migration number the database is at.
@@ -142,10 +156,16 @@ class Database {
 
   /// "ok", or SQLite's list of problems.
   std::string integrity_check();
+  /// True when the database was opened read-only (OpenMode::ReadOnly).
+  bool read_only() const { return read_only_; }
   const std::filesystem::path& path() const { return path_; }
 
  private:
   void migrate();
+  /// The stored schema version, refused unless 0..latest.
+  int checked_schema_version();
+  /// Refuses a schema that is not the one migrations 1..version create.
+  void check_schema(int version);
   std::int64_t body_id(const std::string& name, bool create);
   std::optional<std::int64_t> find_run_id(std::int64_t body, const RunKey& key);
   /// All runs, or those of one body, or one run; ordered by body and key.
@@ -162,6 +182,7 @@ class Database {
 
   std::filesystem::path path_;
   store::Connection connection_;
+  bool read_only_ = false;
 };
 
 /// Now as UTC ISO 8601 ("2026-11-22T10:04:05Z").

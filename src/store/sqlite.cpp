@@ -1,14 +1,54 @@
 #include "src/store/sqlite.hpp"
 
+#include <cerrno>
+#include <charconv>
+#include <cstdlib>
+#include <string>
 #include <utility>
 
 #include "src/core/error.hpp"
 
 namespace hydrocoef::store {
 
-Connection::Connection(const std::string& path, bool create) : path_(path) {
-  const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0);
-  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
+int busy_timeout_seconds() {
+  const char* text = std::getenv("HYDROCOEF_DB_TIMEOUT");
+  if (!text || !*text) return 60;
+  int seconds = -1;
+  const std::string_view view(text);
+  const auto [end, ec] = std::from_chars(view.data(), view.data() + view.size(), seconds);
+  if (ec != std::errc() || end != view.data() + view.size() || seconds < 0 || seconds > 3600)
+    throw InputError("HYDROCOEF_DB_TIMEOUT is '" + printable_text(view, 40) +
+                     "'; expected a whole number of seconds from 0 to 3600");
+  return seconds;
+}
+
+Connection::Connection(const std::string& path, Access access) : path_(path) {
+  int flags = SQLITE_OPEN_READWRITE;
+  std::string name = path;
+  switch (access) {
+    case Access::ReadWrite: break;
+    case Access::ReadWriteCreate: flags |= SQLITE_OPEN_CREATE; break;
+    case Access::ReadOnly: flags = SQLITE_OPEN_READONLY; break;
+    case Access::Immutable: {
+      // A URI: the path's '%', '?' and '#' must be escaped.
+      flags = SQLITE_OPEN_READONLY | SQLITE_OPEN_URI;
+      name = "file:";
+      for (const char c : path) {
+        if (c == '%' || c == '?' || c == '#') {
+          static constexpr char kHex[] = "0123456789ABCDEF";
+          name += '%';
+          name += kHex[static_cast<unsigned char>(c) >> 4];
+          name += kHex[static_cast<unsigned char>(c) & 15];
+        } else {
+          name += c;
+        }
+      }
+      name += "?immutable=1";
+      break;
+    }
+  }
+  const int timeout = busy_timeout_seconds();
+  const int rc = sqlite3_open_v2(name.c_str(), &db_, flags, nullptr);
   if (rc != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
     sqlite3_close(db_);
@@ -16,7 +56,11 @@ Connection::Connection(const std::string& path, bool create) : path_(path) {
     throw InputError(SourceLocation{path}, "cannot open database: " + message);
   }
   sqlite3_extended_result_codes(db_, 1);
-  sqlite3_busy_timeout(db_, 5000);
+  sqlite3_busy_timeout(db_, timeout * 1000);
+  // A received file is untrusted: no triggers or views it adds may call
+  // application functions, and no schema may hide in a shadow table.
+  sqlite3_db_config(db_, SQLITE_DBCONFIG_TRUSTED_SCHEMA, 0, nullptr);
+  sqlite3_db_config(db_, SQLITE_DBCONFIG_DEFENSIVE, 1, nullptr);
 }
 
 Connection::~Connection() {
@@ -36,13 +80,27 @@ Connection& Connection::operator=(Connection&& other) noexcept {
 }
 
 void Connection::fail(int rc, std::string_view what) const {
-  const std::string message = std::string(what) + ": " + (db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc));
+  const std::string detail = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
   const int primary = rc & 0xff;
-  // A damaged or foreign file is bad input, not a bug.
+  const int error = db_ ? sqlite3_system_errno(db_) : 0;
+  const SourceLocation where{path_};
+  // What a user can cause (another process, the disk, the file) is said in
+  // words and is exit 2; anything else is a bug in hydrocoef.
+  if (primary == SQLITE_FULL || error == ENOSPC)
+    throw InputError(where, "database: disk full (no space left on device) while " + std::string(what) +
+                                "; nothing was changed");
+  if (primary == SQLITE_BUSY || primary == SQLITE_LOCKED)
+    throw InputError(where, "database is busy: another process has held it for " +
+                                std::to_string(busy_timeout_seconds()) +
+                                " s (HYDROCOEF_DB_TIMEOUT sets how long to wait); nothing was changed, try again when "
+                                "it has finished");
+  if (primary == SQLITE_READONLY)
+    throw InputError(where, "database is read-only here (" + detail + "); expected a writable file and folder for " +
+                                std::string(what));
   if (primary == SQLITE_NOTADB || primary == SQLITE_CORRUPT || primary == SQLITE_CANTOPEN ||
-      primary == SQLITE_READONLY || primary == SQLITE_FULL || primary == SQLITE_BUSY || primary == SQLITE_IOERR)
-    throw InputError(SourceLocation{path_}, "database: " + message);
-  throw std::runtime_error(path_ + ": database: " + message);
+      primary == SQLITE_IOERR || primary == SQLITE_NOMEM || primary == SQLITE_TOOBIG || primary == SQLITE_AUTH)
+    throw InputError(where, "database: " + std::string(what) + ": " + detail);
+  throw std::runtime_error(path_ + ": database: " + std::string(what) + ": " + detail);
 }
 
 void Connection::execute(std::string_view sql) {
@@ -127,6 +185,11 @@ std::vector<double> Statement::get_doubles(int column) const {
   if (bytes == nullptr || size % sizeof(double) != 0) return {};
   return std::vector<double>(bytes, bytes + size / sizeof(double));
 }
+int Statement::column_type(int column) const { return sqlite3_column_type(statement_, column); }
+std::size_t Statement::column_bytes(int column) const {
+  return static_cast<std::size_t>(sqlite3_column_bytes(statement_, column));
+}
+const char* Statement::column_name(int column) const { return sqlite3_column_name(statement_, column); }
 std::optional<double> Statement::get_optional_double(int column) const {
   if (is_null(column)) return std::nullopt;
   return get_double(column);

@@ -15,10 +15,26 @@ namespace hydrocoef::store {
 
 class Statement;
 
+/// How a connection opens its file.
+enum class Access {
+  ReadWrite,        ///< an existing file, for reading and writing
+  ReadWriteCreate,  ///< the same, creating the file when missing
+  ReadOnly,         ///< an existing file, never written
+  /// An existing file on a read-only medium: read without locks and without
+  /// the WAL's -shm/-wal files (SQLite's immutable=1); valid only while no
+  /// process writes it.
+  Immutable,
+};
+
+/// How long a writer waits for another process's transaction before giving
+/// up: $HYDROCOEF_DB_TIMEOUT seconds (0 to 3600), default 60. InputError when
+/// the variable is set to anything else.
+int busy_timeout_seconds();
+
 class Connection {
  public:
-  /// Opens (create = true: or creates) the database file.
-  Connection(const std::string& path, bool create);
+  /// Opens the database file.
+  Connection(const std::string& path, Access access);
   ~Connection();
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
@@ -72,6 +88,11 @@ class Statement {
   std::string get_text(int column) const;
   std::optional<double> get_optional_double(int column) const;
   std::vector<double> get_doubles(int column) const;
+  /// SQLITE_INTEGER, SQLITE_FLOAT, SQLITE_TEXT, SQLITE_BLOB or SQLITE_NULL.
+  int column_type(int column) const;
+  /// Size in bytes of a text or blob value.
+  std::size_t column_bytes(int column) const;
+  const char* column_name(int column) const;
 
  private:
   const Connection* connection_;

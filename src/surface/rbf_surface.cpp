@@ -255,7 +255,66 @@ RbfSurface::RbfSurface(std::size_t axis_count, std::span<const double> points, s
       kernel_(options.kernel),
       polynomial_degree_(options.polynomial_degree),
       smoothing_(options.smoothing) {
-  const std::size_t d = axis_count;
+  prepare(points, values, options);
+  solve(values);
+}
+
+RbfSurface::RbfSurface(std::size_t axis_count, std::span<const double> points, std::size_t output_count,
+                       std::span<const double> values, const RbfOptions& options, const RbfSolution& solution)
+    : axis_count_(axis_count),
+      output_count_(output_count),
+      kernel_(options.kernel),
+      polynomial_degree_(options.polynomial_degree),
+      smoothing_(options.smoothing) {
+  prepare(points, values, options);
+  const std::size_t n = sample_count_;
+  const auto expect = [](std::string_view what, std::size_t found, std::size_t expected) {
+    if (found != expected)
+      throw InputError("RBF solution has " + std::to_string(found) + " " + std::string(what) + "; expected " +
+                       std::to_string(expected));
+  };
+  expect("kernel weights", solution.kernel_weights.size(), n * output_count_);
+  expect("polynomial weights", solution.polynomial_weights.size(), polynomial_terms_ * output_count_);
+  expect("leave-one-out errors", solution.loo_errors.size(), n * output_count_);
+  for (const double w : solution.kernel_weights)
+    if (!std::isfinite(w)) throw InputError("RBF solution has a kernel weight that is not finite");
+  for (const double w : solution.polynomial_weights)
+    if (!std::isfinite(w)) throw InputError("RBF solution has a polynomial weight that is not finite");
+  kernel_weights_ = solution.kernel_weights;
+  polynomial_weights_ = solution.polynomial_weights;
+  RbfCrossValidation cv;
+  cv.errors = solution.loo_errors;
+  cv.max_abs.assign(output_count_, 0.0);
+  cv.rms.assign(output_count_, 0.0);
+  std::size_t defined = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* e = &cv.errors[i * output_count_];
+    if (std::isnan(e[0])) {
+      ++cv.undefined_count;
+      continue;
+    }
+    ++defined;
+    for (std::size_t k = 0; k < output_count_; ++k) {
+      if (!std::isfinite(e[k])) throw InputError("RBF solution has a leave-one-out error that is not finite");
+      cv.max_abs[k] = std::max(cv.max_abs[k], std::abs(e[k]));
+      cv.rms[k] += e[k] * e[k];
+    }
+  }
+  for (std::size_t k = 0; k < output_count_; ++k) {
+    cv.rms[k] =
+        defined > 0 ? std::sqrt(cv.rms[k] / static_cast<double>(defined)) : std::numeric_limits<double>::quiet_NaN();
+    if (defined == 0) cv.max_abs[k] = std::numeric_limits<double>::quiet_NaN();
+  }
+  cross_validation_ = std::move(cv);
+}
+
+RbfSolution RbfSurface::solution() const {
+  return {kernel_weights_, polynomial_weights_, cross_validation_.errors};
+}
+
+void RbfSurface::prepare(std::span<const double> points, std::span<const double> values, const RbfOptions& options) {
+  const std::size_t d = axis_count_;
+  const std::size_t output_count = output_count_;
   if (d < 1 || d > kMaxAxes)
     throw InputError("RBF surface over " + std::to_string(d) + " axes; expected 1 to " + std::to_string(kMaxAxes));
   if (output_count < 1) throw InputError("RBF surface with 0 outputs; expected at least 1 output per sample");
@@ -272,6 +331,10 @@ RbfSurface::RbfSurface(std::size_t axis_count, std::span<const double> points, s
                      " axes; expected a whole number of points (samples x axes)");
   const std::size_t n = points.size() / d;
   sample_count_ = n;
+  if (n > kMaxSamples)
+    throw InputError("RBF surface of " + std::to_string(n) + " samples; this hydrocoef builds RBF surfaces of at most " +
+                     std::to_string(kMaxSamples) + " samples (a dense solve: O(N^3) time and O(N^2) memory); expected "
+                     "fewer samples (select runs with --where) or a gridded surface");
   if (values.size() != n * output_count)
     throw InputError("RBF surface got " + std::to_string(values.size()) + " values for " + std::to_string(n) +
                      " samples of " + std::to_string(output_count) + " outputs; expected " +
@@ -343,6 +406,12 @@ RbfSurface::RbfSurface(std::size_t axis_count, std::span<const double> points, s
   centers_.resize(n * d);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t a = 0; a < d; ++a) centers_[i * d + a] = (points[i * d + a] - midpoint_[a]) / scale_[a];
+}
+
+void RbfSurface::solve(std::span<const double> values) {
+  const std::size_t d = axis_count_;
+  const std::size_t n = sample_count_;
+  const std::size_t output_count = output_count_;
 
   // The system in scaled coordinates; one factorization for all outputs.
   const Eigen::MatrixXd polynomial = polynomial_matrix(centers_, d, polynomial_degree_, axis_labels_);

@@ -110,9 +110,20 @@ struct RbfGrid {
   double far_threshold = 0.0;  ///< in scaled units
 };
 
+/// A solved RBF system, as stored with a surface so that loading it costs
+/// O(N) instead of a new O(N^3) solve.
+struct RbfSolution {
+  std::vector<double> kernel_weights;      ///< sample-major, w_ik
+  std::vector<double> polynomial_weights;  ///< term-major, c_jk
+  std::vector<double> loo_errors;          ///< as RbfCrossValidation::errors (NaN where undefined)
+};
+
 class RbfSurface {
  public:
   static constexpr std::size_t kMaxAxes = 6;
+  /// The most samples a surface may have (a dense solve of 5000 takes about
+  /// 10 s and 0.4 GB); a build or a stored surface with more is refused.
+  static constexpr std::size_t kMaxSamples = 5000;
 
   /// Builds the surface.
   ///   axis_count:   1..6.
@@ -131,6 +142,17 @@ class RbfSurface {
   /// line for degree 1 in 2-D), or the system is numerically singular.
   RbfSurface(std::size_t axis_count, std::span<const double> points, std::size_t output_count,
              std::span<const double> values, const RbfOptions& options = {});
+
+  /// The surface from its samples and a stored solution of them, in O(N):
+  /// the same checks of the samples and options as the constructor above,
+  /// and the solution's sizes and finiteness, but no solve. The caller
+  /// vouches that the solution is the samples' (src/surface/stored_surface
+  /// keeps a hash of the samples with it).
+  RbfSurface(std::size_t axis_count, std::span<const double> points, std::size_t output_count,
+             std::span<const double> values, const RbfOptions& options, const RbfSolution& solution);
+
+  /// The solved weights and leave-one-out errors, to store.
+  RbfSolution solution() const;
 
   std::size_t axis_count() const noexcept { return axis_count_; }
   std::size_t output_count() const noexcept { return output_count_; }
@@ -174,6 +196,10 @@ class RbfSurface {
   RbfGrid resample(const std::vector<std::vector<double>>& breakpoints, double far_threshold) const;
 
  private:
+  /// Checks sizes, options and samples; sets ranges, scales and centres.
+  void prepare(std::span<const double> points, std::span<const double> values, const RbfOptions& options);
+  /// Solves the system for the weights and the leave-one-out errors.
+  void solve(std::span<const double> values);
   void evaluate_at(std::span<const double> point, std::span<double> out, double* gradient) const;
   std::size_t checked(std::size_t axis) const;
 

@@ -3,6 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
+#include "src/core/names.hpp"
+#include "src/core/source_file.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -43,8 +46,39 @@ T member(const json& object, const char* key, const std::string& where) {
   try {
     return object.at(key).get<T>();
   } catch (const json::exception&) {
-    throw InputError(where + ": '" + key + "' is " + object.at(key).dump() + "; expected a value of another type");
+    throw InputError(where + ": '" + key + "' is " + printable_text(escape::json_text(object.at(key)), 40) +
+                     "; expected a value of another type");
   }
+}
+
+// The hash an RBF solution is stored with: SHA-256 of the samples' bytes
+// (coordinates, then values, float64) and of the options that shape the
+// system. A solution whose hash does not match is not used.
+std::string samples_hash(std::span<const double> points, std::span<const double> values, const json& options) {
+  std::string bytes(reinterpret_cast<const char*>(points.data()), points.size_bytes());
+  bytes.append(reinterpret_cast<const char*>(values.data()), values.size_bytes());
+  bytes += escape::json_text(options);
+  return sha256_hex(bytes);
+}
+
+json rbf_options_json(const RbfSurface& rbf) {
+  std::vector<double> scales;
+  for (std::size_t a = 0; a < rbf.axis_count(); ++a) scales.push_back(rbf.length_scale(a));
+  return {{"kernel", rbf_kernel_name(rbf.kernel())},
+          {"degree", rbf.polynomial_degree()},
+          {"smoothing", rbf.smoothing()},
+          {"length_scales", scales},
+          {"samples", rbf.sample_count()}};
+}
+
+// A count from a definition: a non-negative integer (a float or a negative
+// number would be cast, silently, by json::get).
+std::size_t count_member(const json& object, const char* key, const std::string& where) {
+  const json value = member<json>(object, key, where);
+  if (!value.is_number_unsigned())
+    throw InputError(where + ": '" + key + "' is " + printable_text(escape::json_text(value), 40) +
+                     "; expected a whole number >= 0");
+  return value.get<std::size_t>();
 }
 
 }  // namespace
@@ -72,7 +106,7 @@ SurfaceRecord record_from_surface(const CoefficientSurface& surface) {
   SurfaceRecord record;
   record.kind = "grid";
   record.method = surface.method_name();
-  record.definition = common_definition(surface).dump();
+  record.definition = escape::json_text(common_definition(surface));
   record.data = grid->values();
   return record;
 }
@@ -88,21 +122,23 @@ SurfaceRecord record_from_surface(const CoefficientSurface& surface, std::span<c
   record.kind = "rbf";
   record.method = std::string(rbf_kernel_name(rbf->kernel()));
   json definition = common_definition(surface);
-  std::vector<double> scales;
-  for (std::size_t a = 0; a < rbf->axis_count(); ++a) scales.push_back(rbf->length_scale(a));
-  definition["rbf"] = {{"kernel", rbf_kernel_name(rbf->kernel())},
-                       {"degree", rbf->polynomial_degree()},
-                       {"smoothing", rbf->smoothing()},
-                       {"length_scales", scales},
-                       {"samples", rbf->sample_count()}};
-  record.definition = definition.dump();
+  json options = rbf_options_json(*rbf);
+  // The solved system is stored too: loading is then O(N), not a new solve.
+  const RbfSolution solution = rbf->solution();
+  definition["rbf"] = options;
+  definition["rbf"]["solution"] = {{"samples_sha256", samples_hash(rbf_points, rbf_values, options)},
+                                   {"polynomial_terms", solution.polynomial_weights.size() / rbf->output_count()}};
+  record.definition = escape::json_text(definition);
   record.data.assign(rbf_points.begin(), rbf_points.end());
   record.data.insert(record.data.end(), rbf_values.begin(), rbf_values.end());
+  record.data.insert(record.data.end(), solution.kernel_weights.begin(), solution.kernel_weights.end());
+  record.data.insert(record.data.end(), solution.polynomial_weights.begin(), solution.polynomial_weights.end());
+  record.data.insert(record.data.end(), solution.loo_errors.begin(), solution.loo_errors.end());
   return record;
 }
 
 CoefficientSurface surface_from_record(const SurfaceRecord& record) {
-  const std::string where = "surface '" + record.name + "'";
+  const std::string where = "surface '" + printable_text(record.name, 60) + "'";
   json definition;
   try {
     definition = json::parse(record.definition);
@@ -113,14 +149,29 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
   const auto outputs_json = member<json>(definition, "outputs", where);
   if (!axes_json.is_array() || !outputs_json.is_array())
     throw InputError(where + ": 'axes' and 'outputs' must be arrays in its definition");
+  if (axes_json.empty() || axes_json.size() > RbfSurface::kMaxAxes || outputs_json.empty() || outputs_json.size() > 6)
+    throw InputError(where + ": its definition has " + std::to_string(axes_json.size()) + " axes and " +
+                     std::to_string(outputs_json.size()) + " outputs; expected 1 to 6 of each");
+  // Names read back from a database follow the same rule as names entering
+  // from anywhere else; units are short printable text.
+  const auto unit = [&](const json& object) {
+    std::string text = member<std::string>(object, "unit", where);
+    if (text.size() > 64 || escape::one_line(text) != text)
+      throw InputError(where + ": unit '" + printable_text(text, 40) + "'; expected printable text of at most 64 bytes");
+    return text;
+  };
   std::vector<std::string> axis_names, axis_units, output_names, output_units;
   for (const auto& axis : axes_json) {
-    axis_names.push_back(member<std::string>(axis, "name", where));
-    axis_units.push_back(member<std::string>(axis, "unit", where));
+    axis_names.push_back(std::string(check_name(NameKind::Parameter, member<std::string>(axis, "name", where),
+                                                {}, where + ", an axis")));
+    axis_units.push_back(unit(axis));
   }
   for (const auto& output : outputs_json) {
     output_names.push_back(member<std::string>(output, "name", where));
-    output_units.push_back(member<std::string>(output, "unit", where));
+    if (!force_index(output_names.back()))
+      throw InputError(where + ": output '" + printable_text(output_names.back(), 40) +
+                       "'; expected a force component X, Y, Z, K, M or N");
+    output_units.push_back(unit(output));
   }
   try {
     if (record.kind == "grid") {
@@ -135,20 +186,55 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
       const auto rbf_json = member<json>(definition, "rbf", where);
       RbfOptions options;
       options.kernel = parse_rbf_kernel(member<std::string>(rbf_json, "kernel", where));
-      options.polynomial_degree = member<int>(rbf_json, "degree", where);
+      options.polynomial_degree = static_cast<int>(std::min<std::size_t>(count_member(rbf_json, "degree", where), 99));
       options.smoothing = member<double>(rbf_json, "smoothing", where);
       options.length_scales = member<std::vector<double>>(rbf_json, "length_scales", where);
       options.axis_names = axis_names;
       for (const auto& axis : axes_json)
         options.out_of_range.push_back(parse_rbf_policy(member<std::string>(axis, "extrapolation", where), where));
-      const auto samples = member<std::size_t>(rbf_json, "samples", where);
-      const std::size_t n_points = samples * axis_names.size();
-      if (record.data.size() != n_points + samples * output_names.size())
-        throw InputError(where + ": its data holds " + std::to_string(record.data.size()) + " numbers; expected " +
-                         std::to_string(n_points + samples * output_names.size()) + " for " +
-                         std::to_string(samples) + " samples");
+      // Sizes from the file are checked before they are multiplied or used.
+      const auto samples = count_member(rbf_json, "samples", where);
+      if (samples > RbfSurface::kMaxSamples)
+        throw InputError(where + ": " + std::to_string(samples) + " samples; this hydrocoef loads RBF surfaces of at "
+                         "most " + std::to_string(RbfSurface::kMaxSamples) + " samples");
+      const std::size_t d = axis_names.size(), k = output_names.size();
+      const std::size_t n_points = samples * d;
+      const std::size_t n_values = samples * k;
       const std::span<const double> data(record.data);
-      RbfSurface rbf(axis_names.size(), data.first(n_points), output_names.size(), data.subspan(n_points), options);
+      std::optional<RbfSolution> solution;
+      std::size_t expected = n_points + n_values;
+      if (rbf_json.contains("solution")) {
+        const auto stored = member<json>(rbf_json, "solution", where);
+        const auto terms = count_member(stored, "polynomial_terms", where);
+        if (terms > 28) throw InputError(where + ": " + std::to_string(terms) + " polynomial terms; expected at most 28");
+        expected += (2 * samples + terms) * k;
+        if (record.data.size() == expected) {
+          json options_json = rbf_json;
+          options_json.erase("solution");
+          if (member<std::string>(stored, "samples_sha256", where) !=
+              samples_hash(data.first(n_points), data.subspan(n_points, n_values), options_json))
+            throw InputError(where + ": its stored solution is not of its stored samples (the database was changed "
+                             "after the surface was built); expected them to match: rebuild it with hydrocoef surface "
+                             "rebuild");
+          std::size_t at = n_points + n_values;
+          const auto take = [&](std::size_t count) {
+            const auto part = data.subspan(at, count);
+            at += count;
+            return std::vector<double>(part.begin(), part.end());
+          };
+          RbfSolution parts;
+          parts.kernel_weights = take(samples * k);
+          parts.polynomial_weights = take(terms * k);
+          parts.loo_errors = take(samples * k);
+          solution = std::move(parts);
+        }
+      }
+      if (record.data.size() != expected)
+        throw InputError(where + ": its data holds " + std::to_string(record.data.size()) + " numbers; expected " +
+                         std::to_string(expected) + " for " + std::to_string(samples) + " samples");
+      RbfSurface rbf = solution ? RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options,
+                                             *solution)
+                                : RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options);
       return CoefficientSurface(std::move(rbf), axis_names, output_names, axis_units, output_units);
     }
   } catch (const InputError& error) {

@@ -1,3 +1,4 @@
+#include "src/core/escape.hpp"
 #include "src/surface/surface_builder.hpp"
 
 #include <algorithm>
@@ -290,7 +291,7 @@ std::string SurfaceQuality::to_json(const std::vector<std::string>& outputs) con
     json["far_threshold"] = far_threshold;
     json["far_from_data"] = far_from_data;
   }
-  return json.dump();
+  return escape::json_text(json);
 }
 
 SurfaceRecord BuiltSurface::record(const std::string& name, const std::string& body) const {

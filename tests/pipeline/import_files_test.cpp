@@ -75,8 +75,42 @@ TEST(ImportFiles, OpenFoamCaseFoldersBecomeRunsInBodyAxesWithTheirUncertainty) {
     EXPECT_LT(run.statistics->components[0]->standard_error, 0.05 * std::abs(run.tau_b[0]->total));
     const auto settings = nlohmann::json::parse(input.batch.source.settings);
     EXPECT_EQ(settings["axes"]["source"], "command line");
-    EXPECT_EQ(settings["u"]["source"], "name pattern");
+    // The case's own 0/U states the free stream, which outranks the folder
+    // name's pattern (the translation is taken as a group from one layer).
+    EXPECT_EQ(settings["flow"]["source"], "case files");
     EXPECT_EQ(input.batch.source.sha256.size(), 64u);
+  }
+}
+
+// No pattern, no sidecar, no per-case flag: the free stream from each case's
+// 0/U, rho and the moment centre from its controlDict, nu from
+// transportProperties; --axes turns the flow into the body velocity and the
+// forces with one frame.
+TEST(ImportFiles, OpenFoamCaseFoldersNeedOnlySweepWideSettings) {
+  const auto inputs = import({kSphere / "cases"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}});
+  ASSERT_EQ(inputs.size(), 4u);
+  for (const auto& input : inputs) {
+    SCOPED_TRACE(input.input.path.string());
+    ASSERT_EQ(input.batch.runs.size(), 1u);
+    const auto& run = input.batch.runs.front();
+    // Folder u0.10_v0.05: free stream (0.1, 0.05, 0) in CFD axes; the body
+    // moves at minus it, and body x is -x, body y is y.
+    const std::string name = input.input.path.filename().string();
+    const double flow_x = std::stod(name.substr(1, 4)), flow_y = std::stod(name.substr(7, 4));
+    EXPECT_DOUBLE_EQ(run.key.nu_b[0], flow_x);
+    EXPECT_DOUBLE_EQ(run.key.nu_b[1], -flow_y + 0.0);
+    EXPECT_EQ(run.key.nu_b[2], 0.0);
+    ASSERT_TRUE(run.tau_b[0]);
+    EXPECT_LT(run.tau_b[0]->total, 0.0);
+    ASSERT_TRUE(run.fluid.density_kg_m3);
+    EXPECT_EQ(*run.fluid.density_kg_m3, 998.2);
+    ASSERT_TRUE(run.fluid.kinematic_viscosity_m2_s);
+    EXPECT_EQ(*run.fluid.kinematic_viscosity_m2_s, 1.004e-06);
+    const auto settings = nlohmann::json::parse(input.batch.source.settings);
+    EXPECT_EQ(settings["flow"]["source"], "case files");
+    EXPECT_NE(settings["flow"]["where"].get<std::string>().find("0/U:"), std::string::npos) << settings.dump();
+    EXPECT_EQ(settings["rho"]["source"], "case files");
+    EXPECT_NE(settings["rho"]["where"].get<std::string>().find("controlDict:"), std::string::npos);
   }
 }
 

@@ -29,10 +29,12 @@ TEST(ImportPlan, CaseFoldersAreInputsOfTheirOwn) {
   EXPECT_EQ(names(plan), (std::vector<std::string>{"u0.10_v0.00", "u0.10_v0.05", "u0.20_v0.10", "u0.30_v0.00"}));
   for (const auto& input : plan.inputs) {
     EXPECT_EQ(input.kind, InputKind::OpenFoamCase);
-    ASSERT_EQ(input.layers.size(), 1u);  // the name pattern
-    EXPECT_EQ(input.layers[0].origin.source, SettingSource::NamePattern);
+    // The case's own files, then the name pattern (lower precedence).
+    ASSERT_EQ(input.layers.size(), 2u);
+    EXPECT_EQ(input.layers[0].origin.source, SettingSource::CaseFiles);
+    EXPECT_EQ(input.layers[1].origin.source, SettingSource::NamePattern);
   }
-  EXPECT_EQ(std::get<double>(plan.inputs[2].layers[0].values.at("v").value), 0.10);
+  EXPECT_EQ(std::get<double>(plan.inputs[2].layers[1].values.at("v").value), 0.10);
   // A case folder named directly.
   const ImportPlan one = plan_import({kSphere / "cases" / "u0.10_v0.05"}, {});
   ASSERT_EQ(one.inputs.size(), 1u);

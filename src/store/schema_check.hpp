@@ -1,0 +1,37 @@
+// A received database is untrusted input: before hydrocoef reads a row, the
+// file's schema (its tables, columns, indexes, triggers and views, as stored
+// in sqlite_schema) must be exactly the one the migrations create for its
+// version. A trigger someone added (which would run on the next import), a
+// dropped column or a view is refused with one line naming it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/store/sqlite.hpp"
+
+namespace hydrocoef::store {
+
+/// One sqlite_schema row.
+struct SchemaEntry {
+  std::string type;   ///< table, index, trigger, view
+  std::string name;
+  std::string table;  ///< the table it belongs to
+  std::string sql;    ///< as stored (NULL for automatic indexes: "")
+};
+
+/// The schema of the open database, sorted by type and name. SQLite's own
+/// statistics tables (sqlite_stat1..4, written by ANALYZE) are left out.
+std::vector<SchemaEntry> schema_of(Connection& connection);
+
+/// The schema migrations 1..version create, built in an in-memory database
+/// (cached per version).
+const std::vector<SchemaEntry>& expected_schema(int version);
+
+/// What differs, as one phrase ("has a trigger 'x' on table 'run' that
+/// hydrocoef does not create"), or nullopt when the schemas are the same.
+std::optional<std::string> schema_difference(const std::vector<SchemaEntry>& expected,
+                                             const std::vector<SchemaEntry>& found);
+
+}  // namespace hydrocoef::store
