@@ -32,11 +32,18 @@ std::vector<TextLine> split_lines(std::string_view bytes) {
   return lines;
 }
 
-std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file) {
+std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file,
+                                   std::size_t max_fields) {
   std::vector<TextField> fields;
   const std::string_view text = line.text;
   std::size_t i = 0;
   while (true) {
+    // Memory stays a small multiple of the line's useful content: a line of
+    // millions of empty fields is refused before they are stored.
+    if (fields.size() == max_fields)
+      throw InputError(SourceLocation{file, line.number, i + 1},
+                       "more than " + std::to_string(max_fields) + " fields on the line; expected at most " +
+                           std::to_string(max_fields));
     TextField field;
     std::size_t start = i;
     while (start < text.size() && (text[start] == ' ' || text[start] == '\t') && text[start] != delimiter) ++start;
@@ -100,7 +107,7 @@ char detect_delimiter(std::string_view header) {
 double parse_number(const TextField& field, const std::string& file, std::size_t line, std::string_view column_name) {
   std::string_view text = field.text;
   const SourceLocation where{file, line, field.column};
-  const std::string context = "column '" + std::string(column_name) + "': ";
+  const std::string context = "column '" + printable_text(column_name, 60) + "': ";
   if (text.empty()) throw InputError(where, context + "empty field; expected a number");
   if (text.size() > 1 && text.front() == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
   double value = 0.0;
@@ -110,12 +117,13 @@ double parse_number(const TextField& field, const std::string& file, std::size_t
     // smallest double is zero for every purpose here, an overflow is an error.
     const double magnitude = std::strtod(std::string(text).c_str(), nullptr);
     if (magnitude == 0.0) return 0.0;
-    throw InputError(where, context + "found '" + field.text + "', expected a finite number within +-1.8e308");
+    throw InputError(where, context + "found '" + printable_text(field.text, 40) +
+                                "', expected a finite number within +-1.8e308");
   }
   if (ec != std::errc{} || end != text.data() + text.size())
-    throw InputError(where, context + "found '" + field.text + "', expected a number");
+    throw InputError(where, context + "found '" + printable_text(field.text, 40) + "', expected a number");
   if (!std::isfinite(value))
-    throw InputError(where, context + "found '" + field.text + "', expected a finite number");
+    throw InputError(where, context + "found '" + printable_text(field.text, 40) + "', expected a finite number");
   return value;
 }
 

@@ -26,9 +26,14 @@ struct TextLine {
 /// newline and a leading UTF-8 byte-order mark.
 std::vector<TextLine> split_lines(std::string_view bytes);
 
+/// The most fields split_fields accepts on a line by default.
+inline constexpr std::size_t kMaxTextFields = 4096;
+
 /// Splits one line at `delimiter`; double-quoted fields may hold the delimiter
-/// and doubled quotes (""). An unterminated quote is an InputError at `where`.
-std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file);
+/// and doubled quotes (""). An unterminated quote, or more than `max_fields`
+/// fields (a data line longer than its header), is an InputError at the line.
+std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file,
+                                   std::size_t max_fields = kMaxTextFields);
 
 /// Picks the delimiter of a header line: ',' if present outside quotes, else
 /// tab, else ';'.

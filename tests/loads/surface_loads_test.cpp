@@ -692,3 +692,53 @@ TEST(SurfaceLoads, LargeSurfacesUseBothCoresAndStayExactAndDeterministic) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// Every face listed twice: each edge is walked twice each way, which a test
+// of "as often one way as the other" would take for a closed surface. The
+// exact edge count calls it non-manifold and says why the force doubled.
+TEST(SurfaceLoadsTopology, EveryFaceListedTwiceIsNotClosed) {
+  SurfaceMesh mesh = test::make_icosphere(0.15, 2);
+  test::add_point_scalar(mesh, "p", [](const test::P3& x) { return 1000.0 * x[2]; });
+  const auto once = integrate_surface_loads(mesh, pressure_only());
+  ASSERT_TRUE(once.geometry.closed);
+  const std::size_t faces = mesh.face_count();
+  for (std::size_t f = 0; f < faces; ++f) {
+    std::vector<std::uint32_t> face(mesh.face_indices.begin() + mesh.face_offsets[f],
+                                    mesh.face_indices.begin() + mesh.face_offsets[f + 1]);
+    mesh.face_indices.insert(mesh.face_indices.end(), face.begin(), face.end());
+    mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.face_indices.size()));
+  }
+  const auto twice = integrate_surface_loads(mesh, pressure_only());
+  EXPECT_NEAR(twice.force()[2], 2.0 * once.force()[2], 1e-12 * std::abs(once.force()[2]));
+  EXPECT_FALSE(twice.geometry.closed);
+  EXPECT_EQ(twice.geometry.nonmanifold_edges, 3 * faces / 2);
+  EXPECT_EQ(twice.geometry.boundary_edges, 0u);
+  bool warned = false;
+  for (const auto& warning : twice.geometry.warnings) warned = warned || warning.find("listed twice") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+// 100,001 triangles on 4 points (a fan of copies): every vertex is shared by
+// about 100,000 faces. The edge count sorts each vertex's edges in
+// O(n log n), so this finishes (it took minutes with insertion sort), and
+// counts the 6 edges of the tetrahedron as non-manifold.
+TEST(SurfaceLoadsTopology, AHundredThousandFacesOnFourPointsAreCountedExactly) {
+  SurfaceMesh mesh;
+  for (const test::P3& p : {test::P3{0, 0, 0}, test::P3{1, 0, 0}, test::P3{0, 1, 0}, test::P3{0, 0, 1}})
+    test::add_point(mesh, p);
+  const std::array<std::array<std::uint32_t, 3>, 4> tetrahedron = {{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  for (std::size_t f = 0; f < 100001; ++f) {
+    const auto& t = tetrahedron[f % 4];
+    test::add_face(mesh, {t[0], t[1], t[2]});
+  }
+  test::add_point_scalar(mesh, "p", [](const test::P3&) { return 1.0; });
+  const auto loads = integrate_surface_loads(mesh, pressure_only());
+  EXPECT_EQ(loads.geometry.nonmanifold_edges, 6u);
+  EXPECT_FALSE(loads.geometry.closed);
+}
+
+}  // namespace
+}  // namespace hydrocoef
