@@ -30,6 +30,7 @@ struct GazeboArgs {
   std::optional<std::string> rotation;
   bool drop_constant = false;
   bool allow_missing = false;
+  bool allow_unphysical = false;
   std::optional<double> linearize_at;
   std::optional<std::string> link;
   std::optional<std::string> link_axes;
@@ -108,6 +109,7 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
   for (const std::string& choice : args.fits) request.fits.push_back(parse_text_assignment(choice, "--fit"));
   request.drop_constant = args.drop_constant;
   request.allow_missing = args.allow_missing;
+  request.allow_unphysical = args.allow_unphysical;
   request.linearize_at = args.linearize_at;
   std::tie(request.added_mass, request.added_mass_source) = added_mass_from(args);
 
@@ -226,6 +228,9 @@ void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global) {
                       "With --sphere-radius: rotational added mass a,b,c [kg m^2] (a sphere has none)");
   command->add_flag("--drop-constant", args->drop_constant,
                     "Drop a law's constant term '1' (a CFD bias) instead of refusing; reported in the output");
+  command->add_flag("--allow-unphysical", args->allow_unphysical,
+                    "Write laws that feed energy into the motion (a positive on-body damping coefficient) instead of "
+                    "refusing them");
   command->add_flag("--allow-missing", args->allow_missing,
                     "Write 0 for a DOF without a law in its own velocity instead of refusing");
   command->add_option("--linearize-at", args->linearize_at,

@@ -1,5 +1,6 @@
 // hydrocoef fit: fit a damping law to stored runs and store it;
 // hydrocoef fits: list stored fits.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -8,10 +9,12 @@
 #include <sstream>
 
 #include "cli/common.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
+#include "src/core/names.hpp"
 #include "src/fit/coefficient_curve.hpp"
 #include "src/fit/damping_law.hpp"
+#include "src/fit/physical_checks.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
@@ -22,11 +25,12 @@ struct FitArgs {
   std::string dof;
   std::string terms;
   std::string loss = "squared";
-  std::vector<std::string> where;
+  SelectionArgs selection;
   std::optional<std::string> name;
   std::optional<std::string> by;
   std::string curve = "polynomial:2";
   bool no_store = false;
+  bool strict = false;
   bool json = false;
 };
 
@@ -102,20 +106,21 @@ void run_fit_by_level(const FitArgs& args, const GlobalOptions& global, Database
   if (*args.by == law.spec.variable)
     throw InputError("--by " + *args.by + " is the law's own variable; expected another velocity component or a "
                      "disturbance");
-  const auto fits = fit_per_level(law.spec, x, y, levels, law.options);
+  // A level with too few runs for the law is left out with a note (the
+  // sweep's other levels are still fitted), or refuses the whole fit with --strict.
+  std::vector<SkippedLevel> skipped;
+  const auto fits = fit_per_level(law.spec, x, y, levels, law.options, args.strict ? nullptr : &skipped);
   const auto curves = fit_coefficient_curves(fits, kind, degree);
   const std::string terms = format_damping_terms(law.spec);
   const std::string base = args.name.value_or(args.body + ":" + args.dof + "(" + terms + ")" +
                                               (law.filter_text.empty() ? "" : "@" + law.filter_text));
-  std::vector<std::optional<std::int64_t>> ids;
+  std::vector<std::optional<std::int64_t>> ids(fits.size());
   std::vector<std::string> names;
+  std::vector<FitRecord> records;
   for (const auto& level : fits) {
     const std::string condition = *args.by + "=" + number(level.level);
     names.push_back(base + "@" + condition);
-    if (args.no_store) {
-      ids.emplace_back();
-      continue;
-    }
+    if (args.no_store) continue;
     FitRecord record;
     record.name = names.back();
     record.body = args.body;
@@ -135,7 +140,12 @@ void run_fit_by_level(const FitArgs& args, const GlobalOptions& global, Database
     }
     for (std::size_t i = 0; i < levels.size(); ++i)
       if (levels[i] == level.level) record.run_ids.push_back(run_ids[i]);
-    ids.emplace_back(database.save_fit(record));
+    records.push_back(std::move(record));
+  }
+  // Every level's fit in one transaction: all stored, or (on any failure) none.
+  if (!args.no_store) {
+    const auto stored = database.save_fits(records);
+    for (std::size_t l = 0; l < stored.size(); ++l) ids[l] = stored[l];
   }
 
   if (args.json) {
@@ -156,6 +166,9 @@ void run_fit_by_level(const FitArgs& args, const GlobalOptions& global, Database
       if (ids[l]) item["fit_id"] = *ids[l];
       out["levels"].push_back(item);
     }
+    out["skipped_levels"] = nlohmann::json::array();
+    for (const auto& level : skipped)
+      out["skipped_levels"].push_back({{"level", level.level}, {"runs", level.runs}, {"reason", level.reason}});
     out["curves"] = nlohmann::json::array();
     for (std::size_t k = 0; k < curves.size(); ++k)
       out["curves"].push_back({{"term", curves[k].term},
@@ -195,6 +208,9 @@ void run_fit_by_level(const FitArgs& args, const GlobalOptions& global, Database
     }
     std::cout << "  [" << coefficient_unit(law.spec.terms[k], law.dof, law.variable) << "]\n";
   }
+  for (const auto& level : skipped)
+    std::cout << "  note: level " << *args.by << "=" << significant(level.level, 6) << " skipped: " << level.reason
+              << " (--strict refuses the fit instead)\n";
   if (!args.no_store) std::cout << "  stored " << fits.size() << " per-level fits in " << global.database << '\n';
 }
 
@@ -204,17 +220,16 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
   const DampingLawSpec spec = parse_damping_terms(args.terms);
   const FitOptions options = parse_loss(args.loss);
   const std::size_t variable = *velocity_index(spec.variable);
+  if (args.name) check_name(NameKind::Fit, *args.name, {}, "--name");
+  check_name(NameKind::Body, args.body, {}, "--body");
 
   Database database(global.database, Database::OpenMode::MustExist);
   RunFilter filter;
   filter.body = args.body;
   filter.with_force = *dof;
-  std::string filter_text;
-  for (const auto& text : args.where) {
-    filter.equal.insert(parse_assignment(text, "--where"));
-    filter_text += (filter_text.empty() ? "" : ",") + text;
-  }
-  const auto runs = database.runs(filter);
+  const RunSelection selection = parse_selection(args.selection.where, args.selection.exclude_runs);
+  const std::string filter_text = selection.text();
+  const auto runs = selected_runs(database, filter, selection);
   if (runs.empty())
     throw InputError("no runs of body '" + args.body + "' with " + args.dof +
                      (filter_text.empty() ? "" : " where " + filter_text) + " in " + global.database);
@@ -243,6 +258,17 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
   const std::string name =
       args.name.value_or(args.body + ":" + args.dof + "(" + terms + ")" + (filter_text.empty() ? "" : "@" + filter_text));
   const auto varying = varying_conditions(runs, variable);
+  // Physical checks (src/fit/physical_checks): warnings here, refusals at export-gazebo.
+  LawCheckInput check;
+  check.spec = spec;
+  check.coefficients = fit.coefficients;
+  check.std_errors = fit.std_errors;
+  check.sign = sign;
+  check.x_min = *std::min_element(x.begin(), x.end());
+  check.x_max = *std::max_element(x.begin(), x.end());
+  check.x = x;
+  check.y = y;
+  const auto problems = check_damping_law(check);
 
   std::optional<std::int64_t> fit_id;
   if (!args.no_store) {
@@ -282,6 +308,9 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
                           {"runs", run_ids},
                           {"varying_conditions", varying},
                           {"stored", fit_id.has_value()}};
+    out["warnings"] = nlohmann::json::array();
+    for (const auto& problem : problems)
+      out["warnings"].push_back({{"kind", std::string(law_problem_name(problem.problem))}, {"message", problem.message}});
     out["coefficients"] = nlohmann::json::object();
     out["std_errors"] = nlohmann::json::object();
     out["units"] = nlohmann::json::object();
@@ -315,12 +344,16 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
               << (std::isfinite(fit.std_errors[k]) ? significant(fit.std_errors[k], 3) : "n/a")
               << coefficient_unit(spec.terms[k], *dof, variable) << '\n';
   std::cout << "\n  n = " << fit.n << " runs, RMSE = " << significant(fit.rmse, 4) << " " << force_unit(*dof)
-            << ", R^2 = " << significant(fit.r2, 8) << ", loss " << fit.loss << '\n';
+            << ", R^2 = " << significant(fit.r2, 8)
+            << (std::isnan(fit.r2) ? " (the force does not vary over these runs)" : "") << ", loss " << fit.loss
+            << '\n';
   if (!varying.empty()) {
     std::string names;
     for (const auto& v : varying) names += (names.empty() ? "" : ", ") + v;
     std::cout << "  note: the runs differ in " << names << "; add --where NAME=VALUE to fit one condition\n";
   }
+  for (const auto& problem : problems)
+    std::cout << "  warning (" << law_problem_name(problem.problem) << "): " << problem.message << '\n';
   if (fit_id) std::cout << "  stored as fit " << *fit_id << " in " << global.database << '\n';
 }
 
@@ -340,7 +373,7 @@ void run_fits(const FitsArgs& args, const GlobalOptions& global) {
                              {"loss", fit.loss},     {"where", fit.run_filter},
                              {"sign_convention", std::string(to_string(fit.sign))},
                              {"n", fit.n},           {"rmse", fit.rmse},     {"r2", fit.r2},
-                             {"created_at", fit.created_at}, {"runs", fit.run_ids}};
+                             {"created_at", fit.created_at}, {"runs", fit.run_ids}, {"stale", fit.stale}};
       item["coefficients"] = nlohmann::json::object();
       item["std_errors"] = nlohmann::json::object();
       for (const auto& c : fit.coefficients) {
@@ -358,7 +391,8 @@ void run_fits(const FitsArgs& args, const GlobalOptions& global) {
   }
   for (const auto& fit : fits) {
     std::cout << fit.id << "  " << fit.name << "  [" << to_string(fit.sign) << ", n=" << fit.n
-              << ", RMSE=" << significant(fit.rmse, 4) << ", R^2=" << significant(fit.r2, 8) << "]\n    ";
+              << ", RMSE=" << significant(fit.rmse, 4) << ", R^2=" << significant(fit.r2, 8) << "]"
+              << (fit.stale ? "  STALE: a force of its runs changed or was deleted since; fit again" : "") << "\n    ";
     for (const auto& c : fit.coefficients) std::cout << c.term << "=" << significant(c.value, 7) << "  ";
     std::cout << '\n';
   }
@@ -377,13 +411,16 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
       ->required();
   command->add_option("--loss", args->loss, "squared, or a robust loss huber:S, cauchy:S, soft-l1:S (S in N or N m)")
       ->capture_default_str();
-  command->add_option("--where", args->where, "Only runs with NAME=VALUE (velocity or disturbance; repeatable)");
+  add_selection_options(*command, args->selection);
   command->add_option("--name", args->name, "Name to store the fit under (default body:dof(terms))");
   command->add_option("--by", args->by,
                       "Fit the law separately at each level of this velocity component or disturbance, then each "
                       "coefficient as a curve of the level");
   command->add_option("--curve", args->curve, "With --by: polynomial:D (least squares, degree D) or pchip")
       ->capture_default_str();
+  command->add_flag("--strict", args->strict,
+                    "With --by: refuse the fit when a level has too few runs for the law (default: skip it with a "
+                    "note)");
   command->add_flag("--no-store", args->no_store, "Do not store the fit");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_fit(*args, global); });

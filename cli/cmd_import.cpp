@@ -32,6 +32,7 @@ struct ImportArgs {
   std::size_t average_last = 1;
   unsigned jobs = 0;
   bool replace = false, json = false, quiet = false;
+  std::string also;
 };
 
 std::map<std::string, std::string> assignments(const std::vector<std::string>& texts, const std::string& option) {
@@ -55,7 +56,8 @@ std::string input_line(const ImportedInput& input, const ImportOutcome& outcome)
   } else {
     line += std::to_string(runs.size()) + " runs of body '" + runs.front().key.body + "'";
   }
-  line += " (" + std::to_string(outcome.runs_created) + " new, " + std::to_string(outcome.runs_extended) + " extended)";
+  line += " (" + std::to_string(outcome.runs_created) + " new, " + std::to_string(outcome.runs_extended) + " extended" +
+          (outcome.replaced ? "; replaces its import of " + outcome.previously_imported_at : std::string()) + ")";
   if (runs.size() == 1) {
     const auto& run = runs.front();
     std::string forces;
@@ -125,7 +127,11 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
   std::vector<ImportBatch> batches;
   for (const auto& input : inputs) batches.push_back(input.batch);
   Database database(global.database);
-  const auto outcomes = database.import(batches, args.replace ? ConflictPolicy::Replace : ConflictPolicy::Error);
+  ImportOptions import_options;
+  import_options.components = args.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
+  import_options.replace = args.replace;
+  import_options.also = args.also;
+  const auto outcomes = database.import(batches, import_options);
 
   // Notes, each once, with how many inputs gave it.
   std::vector<std::pair<std::string, std::size_t>> notes;
@@ -137,11 +143,12 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
   for (const auto& note : plan.notes) add_note(note);
   for (const auto& input : inputs)
     for (const auto& note : input.notes) add_note(note);
-  std::size_t created = 0, extended = 0, already = 0, runs = 0;
+  std::size_t created = 0, extended = 0, already = 0, runs = 0, replaced = 0;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     created += outcomes[i].runs_created;
     extended += outcomes[i].runs_extended;
     already += outcomes[i].already_imported ? 1 : 0;
+    replaced += outcomes[i].replaced ? 1 : 0;
     runs += inputs[i].batch.runs.size();
   }
 
@@ -155,7 +162,9 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
       nlohmann::json file = {{"path", o.path},
                              {"format", input.format},
                              {"sha256", o.sha256},
-                             {"status", o.already_imported ? "already_imported" : "imported"},
+                             {"status", o.already_imported ? "already_imported" : o.replaced ? "replaced" : "imported"},
+                             {"import_id", o.import_id},
+                             {"reading", o.reading},
                              {"runs_in_file", input.batch.runs.size()},
                              {"runs_created", o.runs_created},
                              {"runs_extended", o.runs_extended},
@@ -178,7 +187,8 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
       out["files"].push_back(file);
     }
     out["summary"] = {{"files", outcomes.size()}, {"runs", runs},         {"runs_created", created},
-                      {"runs_extended", extended}, {"already_imported", already}, {"excluded", plan.excluded}};
+                      {"runs_extended", extended}, {"already_imported", already}, {"replaced", replaced},
+                      {"excluded", plan.excluded}};
     out["notes"] = nlohmann::json::array();
     for (const auto& [text, count] : notes) out["notes"].push_back({{"note", text}, {"count", count}});
     std::cout << escape::json_text(out, 2) << '\n';
@@ -191,7 +201,8 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
   }
   std::cout << "imported " << outcomes.size() << (outcomes.size() == 1 ? " input" : " inputs") << " into "
             << global.database << ": " << created << " new " << (created == 1 ? "run" : "runs") << ", " << extended
-            << " extended, " << already << " already imported" << (plan.excluded ? ", " + std::to_string(plan.excluded) + " left out by the filters" : std::string())
+            << " extended, " << already << " already imported"
+            << (replaced ? ", " + std::to_string(replaced) + " replaced" : std::string()) << (plan.excluded ? ", " + std::to_string(plan.excluded) + " left out by the filters" : std::string())
             << ", " << notes.size() << (notes.size() == 1 ? " note" : " notes") << '\n';
 }
 
@@ -225,7 +236,12 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--average-last", args->average_last, "Monitor: average the last N iterations")
       ->capture_default_str();
   command->add_option("--jobs", args->jobs, "Inputs read in parallel (default: the number of cores)");
-  command->add_flag("--replace", args->replace, "Supersede force components that runs already have");
+  command->add_flag("--replace", args->replace,
+                    "Replace the runs of an earlier import of the same file with other settings, and supersede force "
+                    "components that runs already have from other files");
+  command->add_option("--also", args->also,
+                      "Keep this as a second, named reading of a file imported before (e.g. --also mean for pMean "
+                      "beside p); an identifier");
   command->add_flag("--quiet", args->quiet, "Print only the summary line");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_import(*args, global); });

@@ -1,6 +1,7 @@
 // hydrocoef query: a stored surface at one point (NAME u=0.2 v=0.07), or at
 // every row of a CSV file or standard input, written as CSV.
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -11,8 +12,9 @@
 #include <thread>
 
 #include "cli/common.hpp"
-#include "src/core/escape.hpp"
+#include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/surface/stored_surface.hpp"
 
 namespace hydrocoef::cli {
@@ -116,25 +118,14 @@ std::string_view trim(std::string_view text) {
   return text;
 }
 
-/// Buffered output to a file or standard output; the file is written under
-/// a temporary name and renamed at the end, so a failed batch leaves no file.
+/// Buffered output to a file or standard output; the file is written through
+/// an AtomicFile (a temporary renamed at the end), so a failed batch leaves
+/// no file and a full disk is called that.
 class Output {
  public:
   explicit Output(const std::string& path) : path_(path) {
-    if (path_ == "-") {
-      file_ = stdout;
-    } else {
-      temporary_ = path_ + ".partial";
-      file_ = std::fopen(temporary_.c_str(), "wb");
-      if (!file_) throw InputError(path_ + ": cannot open for writing");
-    }
+    if (path_ != "-") file_.emplace(path_);
     buffer_.reserve(kFlushAt + 4096);
-  }
-  ~Output() {
-    if (file_ && file_ != stdout) {
-      std::fclose(file_);
-      std::remove(temporary_.c_str());
-    }
   }
   Output(const Output&) = delete;
   Output& operator=(const Output&) = delete;
@@ -150,28 +141,28 @@ class Output {
   }
   void finish() {
     flush();
-    if (std::fflush(file_) != 0) throw InputError(path_ + ": write error");
-    if (file_ != stdout) {
-      const bool closed = std::fclose(file_) == 0;
-      file_ = nullptr;
-      if (!closed || std::rename(temporary_.c_str(), path_.c_str()) != 0) {
-        std::remove(temporary_.c_str());
-        throw InputError(path_ + ": cannot write");
-      }
+    if (file_) {
+      file_->commit();
+    } else if (std::fflush(stdout) != 0) {
+      throw InputError("standard output: " + write_error_text(errno));
     }
   }
 
  private:
   static constexpr std::size_t kFlushAt = 1 << 20;
   void write(std::string_view s) {
-    if (std::fwrite(s.data(), 1, s.size(), file_) != s.size()) throw InputError(path_ + ": write error");
+    if (file_) {
+      file_->write(s);
+    } else if (std::fwrite(s.data(), 1, s.size(), stdout) != s.size()) {
+      throw InputError("standard output: " + write_error_text(errno));
+    }
   }
   void flush() {
     write(buffer_);
     buffer_.clear();
   }
-  std::string path_, temporary_;
-  std::FILE* file_ = nullptr;
+  std::string path_;
+  std::optional<AtomicFile> file_;
   std::string buffer_;
 };
 
@@ -219,7 +210,8 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
       const auto [stop, ec] = std::from_chars(p, end, value);
       if (ec != std::errc{} || !std::isfinite(value)) {
         const auto cell_end = std::find(p, end, ',');
-        fail(p, "'" + std::string(p, cell_end) + "' in column '" + surface.axis_names()[column_axis[c]] +
+        fail(p, "'" + printable_text(std::string_view(p, static_cast<std::size_t>(std::min<std::ptrdiff_t>(cell_end - p, 64))), 40) +
+                    "' in column '" + surface.axis_names()[column_axis[c]] +
                     "'; expected a finite number");
         return;
       }
@@ -296,9 +288,9 @@ void query_batch(const QueryArgs& args, const StoredSurface& stored) {
       if (surface.axis_names()[i] == name) a = i;
     if (a == n_axes)
       throw InputError(SourceLocation{source, line_number, start + 1},
-                       "column '" + name + "' is not an axis of surface '" + args.name + "'; expected the axes " +
+                       "column '" + printable_text(name, 40) + "' is not an axis of surface '" + args.name + "'; expected the axes " +
                            join(surface.axis_names()));
-    if (seen[a]) throw InputError(SourceLocation{source, line_number, start + 1}, "column '" + name + "' repeats");
+    if (seen[a]) throw InputError(SourceLocation{source, line_number, start + 1}, "column '" + printable_text(name, 40) + "' repeats");
     seen[a] = true;
     column_axis.push_back(a);
     if (comma == std::string_view::npos) break;

@@ -1,10 +1,15 @@
-// hydrocoef runs: list stored runs with their key and force components.
+// hydrocoef runs: list stored runs with their key and force components;
+// runs show ID: one run with its full provenance; runs delete: remove runs
+// (by id, --where selection or --source file) in one transaction.
+#include <algorithm>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "cli/common.hpp"
+#include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/store/database.hpp"
 
@@ -13,7 +18,7 @@ namespace {
 
 struct RunsArgs {
   std::optional<std::string> body;
-  std::vector<std::string> where;
+  SelectionArgs selection;
   bool json = false;
 };
 
@@ -43,8 +48,7 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::ReadOnly);
   RunFilter filter;
   filter.body = args.body;
-  for (const auto& text : args.where) filter.equal.insert(parse_assignment(text, "--where"));
-  const auto runs = database.runs(filter);
+  const auto runs = selected_runs(database, filter, parse_selection(args.selection.where, args.selection.exclude_runs));
   if (args.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& run : runs) out.push_back(run_json(run));
@@ -89,16 +93,154 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
             << "* = as tabulated, positive opposes motion\n";
 }
 
+struct ShowArgs {
+  std::int64_t id = 0;
+  bool json = false;
+};
+
+nlohmann::json import_json(const ImportRecord& record) {
+  nlohmann::json out = {{"import_id", record.id},
+                        {"path", record.path},
+                        {"resolved_path", record.resolved_path},
+                        {"sha256", record.sha256},
+                        {"size_bytes", record.size_bytes},
+                        {"reading", record.reading},
+                        {"importer", record.importer},
+                        {"importer_version", record.importer_version},
+                        {"hydrocoef_version", record.hydrocoef_version},
+                        {"imported_at", record.imported_at}};
+  const auto settings = nlohmann::json::parse(record.settings.empty() ? "{}" : record.settings, nullptr, false);
+  out["settings"] = settings.is_discarded() ? nlohmann::json(record.settings) : settings;
+  return out;
+}
+
+void run_show(const ShowArgs& args, const GlobalOptions& global) {
+  Database database(global.database, Database::OpenMode::ReadOnly);
+  const auto all = database.runs();
+  const auto found = std::find_if(all.begin(), all.end(), [&](const StoredRun& run) { return run.id == args.id; });
+  if (found == all.end())
+    throw InputError(SourceLocation{global.database}, "no run " + std::to_string(args.id) + "; 'hydrocoef runs' lists them");
+  const StoredRun& run = *found;
+  std::map<std::int64_t, ImportRecord> imports;
+  for (const auto& force : run.tau_b)
+    if (force && force->import_id && !imports.count(force->import_id))
+      if (auto record = database.import_record(force->import_id)) imports.emplace(force->import_id, std::move(*record));
+  if (args.json) {
+    nlohmann::json out = run_json(run);
+    out["imports"] = nlohmann::json::array();
+    for (const auto& [id, record] : imports) out["imports"].push_back(import_json(record));
+    std::cout << escape::json_text(out, 2) << '\n';
+    return;
+  }
+  std::cout << "run " << run.id << ": " << describe(run.key) << '\n';
+  std::cout << "  fluid: rho " << (run.fluid.density_kg_m3 ? significant(*run.fluid.density_kg_m3, 6) + " kg m^-3" : "not given")
+            << ", nu " << (run.fluid.kinematic_viscosity_m2_s ? significant(*run.fluid.kinematic_viscosity_m2_s, 6) + " m^2 s^-1" : "not given")
+            << "; moment reference point (" << significant(run.reference_point_b[0], 6) << ", "
+            << significant(run.reference_point_b[1], 6) << ", " << significant(run.reference_point_b[2], 6)
+            << ") m, body axes\n";
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!run.tau_b[i]) continue;
+    const auto& f = *run.tau_b[i];
+    std::cout << "  " << kForceNames[i] << " = " << significant(f.value.total, 8) << (i < 3 ? " N" : " N m") << " ("
+              << to_string(f.sign) << "), from " << f.source_path << (f.source_line ? ":" + std::to_string(f.source_line) : "")
+              << (f.import_id ? ", import " + std::to_string(f.import_id) : std::string()) << '\n';
+  }
+  for (const auto& [id, record] : imports) {
+    std::cout << "  import " << id << ": " << record.path << " (" << (record.resolved_path.empty() ? "path not resolved" : record.resolved_path)
+              << "), sha256 " << record.sha256.substr(0, 16) << "..., " << record.importer << " " << record.importer_version
+              << ", hydrocoef " << (record.hydrocoef_version.empty() ? "(older)" : record.hydrocoef_version) << ", "
+              << record.imported_at << (record.reading.empty() ? "" : ", reading '" + record.reading + "'") << '\n';
+    const auto settings = nlohmann::json::parse(record.settings.empty() ? "{}" : record.settings, nullptr, false);
+    if (settings.is_object())
+      for (const auto& [name, setting] : settings.items())
+        if (setting.is_object())
+          std::cout << "    " << name << " = " << escape::json_text(setting.value("value", nlohmann::json())) << "  ("
+                    << setting.value("source", std::string()) << (setting.contains("where") ? ": " + escape::one_line(setting.value("where", std::string())) : "")
+                    << ")\n";
+  }
+}
+
+struct DeleteArgs {
+  std::vector<std::int64_t> ids;
+  std::optional<std::string> body;
+  SelectionArgs selection;
+  std::optional<std::string> source;
+  bool json = false;
+};
+
+void run_delete(const DeleteArgs& args, const GlobalOptions& global) {
+  if (args.ids.empty() && args.selection.where.empty() && !args.source)
+    throw InputError("runs delete: nothing selected; expected run ids, --where CLAUSE or --source FILE");
+  Database database(global.database, Database::OpenMode::MustExist);
+  std::vector<std::int64_t> ids = args.ids;
+  if (!args.selection.where.empty() || args.source) {
+    RunFilter filter;
+    filter.body = args.body;
+    auto runs = selected_runs(database, filter, parse_selection(args.selection.where, args.selection.exclude_runs));
+    if (args.source) {
+      // By the file the forces came from: as given, or the same file by content.
+      const std::string wanted = std::filesystem::exists(*args.source) ? std::filesystem::canonical(*args.source).string() : "";
+      std::erase_if(runs, [&](const StoredRun& run) {
+        for (const auto& force : run.tau_b) {
+          if (!force) continue;
+          if (force->source_path == *args.source) return false;
+          if (!wanted.empty() && std::filesystem::exists(force->source_path) &&
+              std::filesystem::canonical(force->source_path).string() == wanted)
+            return false;
+        }
+        return true;
+      });
+    }
+    for (const auto& run : runs) ids.push_back(run.id);
+    if (ids.empty()) throw InputError(SourceLocation{global.database}, "runs delete: no run matches; nothing was deleted");
+  }
+  const DeleteOutcome outcome = database.delete_runs(ids);
+  if (args.json) {
+    std::cout << escape::json_text({{"deleted_runs", outcome.runs},
+                                    {"deleted_components", outcome.components},
+                                    {"fits_made_stale", outcome.fits_made_stale},
+                                    {"surfaces_made_stale", outcome.surfaces_made_stale},
+                                    {"imports_removed", outcome.imports_removed}},
+                                   2)
+              << '\n';
+    return;
+  }
+  std::cout << "deleted " << outcome.runs << (outcome.runs == 1 ? " run" : " runs") << " (" << outcome.components
+            << " force components) from " << global.database << "; " << outcome.fits_made_stale << " fits and "
+            << outcome.surfaces_made_stale << " surfaces became stale (hydrocoef fits / surface list show them; "
+            << "surface rebuild --stale builds the surfaces again)\n";
+}
+
 }  // namespace
 
 void add_runs_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<RunsArgs>();
   auto* command = app.add_subcommand("runs", "List the runs in the database");
   command->add_option("--body", args->body, "Only runs of this body");
-  command->add_option("--where", args->where,
-                      "Only runs whose velocity component or disturbance equals a value, NAME=VALUE (repeatable)");
+  add_selection_options(*command, args->selection);
   command->add_flag("--json", args->json, "Print JSON");
-  command->callback([args, &global] { run_runs(*args, global); });
+  command->callback([args, command, &global] {
+    // "runs" lists only when no subcommand (show, delete) was given.
+    if (!command->get_subcommands().empty()) return;
+    run_runs(*args, global);
+  });
+
+  auto show = std::make_shared<ShowArgs>();
+  auto* show_command = command->add_subcommand("show", "One run with its full provenance: every force's file, import and settings");
+  show_command->add_option("id", show->id, "Run id (hydrocoef runs lists them)")->required();
+  show_command->add_flag("--json", show->json, "Print JSON");
+  show_command->callback([show, &global] { run_show(*show, global); });
+
+  auto remove = std::make_shared<DeleteArgs>();
+  auto* delete_command = command->add_subcommand(
+      "delete", "Delete runs by id, by --where selection or by --source file, in one transaction; fits and surfaces "
+                "built from them become stale");
+  delete_command->add_option("ids", remove->ids, "Run ids");
+  delete_command->add_option("--body", remove->body, "With --where or --source: only runs of this body");
+  add_selection_options(*delete_command, remove->selection);
+  delete_command->add_option("--source", remove->source, "Runs with a force component from this file");
+  delete_command->add_flag("--json", remove->json, "Print JSON");
+  delete_command->callback([remove, &global] { run_delete(*remove, global); });
 }
 
 }  // namespace hydrocoef::cli

@@ -7,8 +7,9 @@
 #include <sstream>
 
 #include "cli/common.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
+#include "src/core/names.hpp"
 #include "src/surface/breakpoints.hpp"
 #include "src/surface/stored_surface.hpp"
 #include "src/surface/surface_builder.hpp"
@@ -24,6 +25,7 @@ struct BuildArgs {
   std::string method = "linear";
   std::vector<std::string> extrapolate;
   std::vector<std::string> where;
+  std::vector<std::int64_t> exclude_runs;
   std::string kernel = "cubic";
   int degree = 1;
   double smoothing = 0.0;
@@ -123,7 +125,7 @@ SurfaceSpec make_spec(const BuildArgs& args) {
 
 nlohmann::json build_json(const BuildArgs& args) {
   return {{"outputs", args.outputs},   {"axes", args.axes},          {"method", args.method},
-          {"extrapolate", args.extrapolate}, {"where", args.where},  {"kernel", args.kernel},
+          {"extrapolate", args.extrapolate}, {"where", args.where},  {"exclude_runs", args.exclude_runs}, {"kernel", args.kernel},
           {"degree", args.degree},     {"smoothing", args.smoothing}, {"resample", args.resample},
           {"resample_method", args.resample_method}, {"far_threshold", args.far_threshold}};
 }
@@ -138,6 +140,7 @@ BuildArgs args_from_json(const std::string& name, const std::string& body, const
     args.method = build.at("method").get<std::string>();
     args.extrapolate = build.at("extrapolate").get<std::vector<std::string>>();
     args.where = build.at("where").get<std::vector<std::string>>();
+    if (build.contains("exclude_runs")) args.exclude_runs = build.at("exclude_runs").get<std::vector<std::int64_t>>();
     args.kernel = build.at("kernel").get<std::string>();
     args.degree = build.at("degree").get<int>();
     args.smoothing = build.at("smoothing").get<double>();
@@ -215,15 +218,17 @@ nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurfac
 }
 
 void build(const BuildArgs& args, const GlobalOptions& global) {
+  check_name(NameKind::Surface, args.name, {}, "the surface name");
+  check_name(NameKind::Body, args.body, {}, "--body");
   const SurfaceSpec spec = make_spec(args);
   Database database(global.database, Database::OpenMode::MustExist);
   RunFilter filter;
   filter.body = args.body;
-  for (const auto& text : args.where) filter.equal.insert(parse_assignment(text, "--where"));
-  const auto runs = database.runs(filter);
+  const RunSelection selection = parse_selection(args.where, args.exclude_runs);
+  const auto runs = selected_runs(database, filter, selection);
   if (runs.empty())
-    throw InputError("no runs of body '" + args.body + "'" + (args.where.empty() ? "" : " matching --where") + " in " +
-                     global.database);
+    throw InputError("no runs of body '" + args.body + "'" +
+                     (selection.empty() ? "" : " matching '" + selection.text() + "'") + " in " + global.database);
   const BuiltSurface built = build_surface(runs, spec);
   SurfaceRecord record = built.record(args.name, args.body);
   auto definition = nlohmann::json::parse(record.definition);
@@ -368,7 +373,10 @@ void add_surface_command(CLI::App& app, const GlobalOptions& global) {
   b->add_option("--extrapolate", build_args->extrapolate,
                 "Out-of-range policy for every axis, or AXIS=POLICY (repeatable): error (default), clamp, linear, "
                 "method; for rbf: error, clamp, extrapolate");
-  b->add_option("--where", build_args->where, "Select runs: NAME=VALUE on a velocity component or disturbance (repeatable)");
+  b->add_option("--where", build_args->where,
+                 "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity component "
+                 "(SI) or disturbance; repeatable, all must hold");
+  b->add_option("--exclude-run", build_args->exclude_runs, "Leave out the run with this id (repeatable; leave-one-out by hand)");
   b->add_option("--kernel", build_args->kernel, "RBF kernel: cubic, thin-plate, linear")->capture_default_str();
   b->add_option("--degree", build_args->degree, "RBF polynomial degree (0, 1, 2)")->capture_default_str();
   b->add_option("--smoothing", build_args->smoothing, "RBF smoothing (0 interpolates)")->capture_default_str();

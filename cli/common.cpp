@@ -63,7 +63,23 @@ std::string number(double value) {
   return std::string(buffer.data(), end);
 }
 
+void add_selection_options(CLI::App& command, SelectionArgs& args) {
+  command.add_option("--where", args.where,
+                     "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity "
+                     "component (SI) or disturbance; repeatable, all must hold");
+  command.add_option("--exclude-run", args.exclude_runs, "Leave out the run with this id (repeatable)");
+}
+
+std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection) {
+  auto runs = database.runs(filter);
+  std::erase_if(runs, [&](const StoredRun& run) { return !selection.matches(run.key, run.id); });
+  return runs;
+}
+
 std::string significant(double value, int digits) {
+  // An undefined statistic (R^2 of a constant force) is stored as absent
+  // and read back as NaN.
+  if (std::isnan(value)) return "n/a";
   std::array<char, 48> buffer{};
   std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
   return buffer.data();

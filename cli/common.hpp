@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "src/core/run.hpp"
+#include "src/core/run_selection.hpp"
 #include "src/fit/coefficient_curve.hpp"
+#include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
 
@@ -35,6 +37,17 @@ void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global);
 void add_plot_command(CLI::App& app, const GlobalOptions& global);
 void add_report_command(CLI::App& app, const GlobalOptions& global);
 
+
+/// The selection options of runs, fit and surface build: --where (the
+/// selection language of src/core/run_selection.hpp, repeatable, combined
+/// with AND) and --exclude-run ID (repeatable).
+struct SelectionArgs {
+  std::vector<std::string> where;
+  std::vector<std::int64_t> exclude_runs;
+};
+void add_selection_options(CLI::App& command, SelectionArgs& args);
+/// The runs of `filter` that the selection keeps, in the database's order.
+std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection);
 
 /// Parses "NAME=VALUE" (VALUE a finite number); InputError naming the option otherwise.
 std::pair<std::string, double> parse_assignment(const std::string& text, const std::string& option);

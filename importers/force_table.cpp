@@ -6,6 +6,7 @@
 
 #include "importers/text_table.hpp"
 #include "src/core/error.hpp"
+#include "src/core/names.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/units.hpp"
 
@@ -52,13 +53,15 @@ Column classify(const TextField& field, const std::string& file, std::size_t lin
     // A disturbance may be of any kind (a speed, an angle, a wave height), so
     // its unit is converted to SI but not checked against a kind.
     column.role = ColumnRole::Disturbance;
-    column.name = header.name;
+    // A disturbance becomes part of run keys and --where clauses: an identifier.
+    column.name = check_name(NameKind::Parameter, header.name, SourceLocation{file, line, field.column},
+                             "the table header");
     std::string unit_text = header.unit;
     if (const auto given = options.units.find(header.name); given != options.units.end()) unit_text = given->second;
     try {
       column.scale = parse_unit(unit_text).scale;
     } catch (const InputError& error) {
-      throw InputError(where, "column '" + field.text + "': " + error.what());
+      throw InputError(where, "column '" + printable_text(field.text, 60) + "': " + error.what());
     }
     return column;
   }
@@ -84,17 +87,17 @@ Column classify(const TextField& field, const std::string& file, std::size_t lin
   }
   const auto example = expected_example(column.role, column.component);
   if (!has_unit)
-    throw InputError(where, "column '" + field.text + "' has no unit; expected e.g. '" + component + " [" +
+    throw InputError(where, "column '" + printable_text(field.text, 60) + "' has no unit; expected e.g. '" + component + " [" +
                                 std::string(example) + "]', or give --unit " + component + "=" + std::string(example));
   Unit unit;
   try {
     unit = parse_unit(unit_text);
   } catch (const InputError& error) {
-    throw InputError(where, "column '" + field.text + "': " + error.what());
+    throw InputError(where, "column '" + printable_text(field.text, 60) + "': " + error.what());
   }
   const Dimension expected = expected_dimension(column.role, column.component);
   if (!dimension_matches(unit.dimension, expected))
-    throw InputError(where, "column '" + field.text + "': unit '" + unit.text + "' is " +
+    throw InputError(where, "column '" + printable_text(field.text, 60) + "': unit '" + unit.text + "' is " +
                                 si_unit_name(unit.dimension) + ", expected " + si_unit_name(expected) + " (e.g. " +
                                 std::string(example) + ")");
   column.scale = unit.scale;
@@ -125,12 +128,12 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
     if (column.role != ColumnRole::Ignored) {
       if (const auto previous = seen.find(column.name); previous != seen.end())
         throw InputError(SourceLocation{file, header_line, field.column},
-                         "column '" + field.text + "' gives '" + column.name + "' again (first at column " +
+                         "column '" + printable_text(field.text, 60) + "' gives '" + column.name + "' again (first at column " +
                              std::to_string(previous->second) + "); expected each component once");
       const auto velocity = velocity_index(column.name);
       if (options.disturbances.count(column.name) || (velocity && options.velocity_b[*velocity] != 0.0))
         throw InputError(SourceLocation{file, header_line, field.column},
-                         "column '" + field.text + "' and --set both give '" + column.name + "'");
+                         "column '" + printable_text(field.text, 60) + "' and --set both give '" + column.name + "'");
       seen[column.name] = field.column;
     }
     columns.push_back(std::move(column));
@@ -149,7 +152,8 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
   std::map<std::string, std::size_t> key_lines;  // describe(key) -> line, to find duplicate keys
   for (++line; line != lines.end(); ++line) {
     if (is_comment_or_blank(line->text)) continue;
-    const auto fields = split_fields(*line, delimiter, file);
+    // One field more than the header is enough to say how many were found.
+    const auto fields = split_fields(*line, delimiter, file, columns.size() + 1);
     if (fields.size() != columns.size())
       throw InputError(SourceLocation{file, line->number},
                        "found " + std::to_string(fields.size()) + " fields, expected " +

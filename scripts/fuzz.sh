@@ -38,6 +38,7 @@ seed_files() {
     vehicle_fuzz) ls "$root"/examples/asr-v/vehicle*.json 2>/dev/null || true ;;
     scenario_fuzz) ls "$root"/examples/asr-v/scenario*.json 2>/dev/null || true ;;
     vtp_fuzz) ls "$root"/tests/data/vtp-encodings/*.vtp "$root"/tests/data/bad/vtp-*.vtp ;;
+    stored_record_fuzz) ls "$root"/tests/data/fuzz-seeds/stored-record-* ;;
   esac
 }
 write_seeds() {  # target seed-dir

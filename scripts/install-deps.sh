@@ -10,6 +10,7 @@ packages=(
   libeigen3-dev         # linear algebra
   libceres-dev          # damping-law fitting and covariance
   libsqlite3-dev        # run database
+  sqlite3               # tests: tests/data/tampered/make-tampered.sh edits copies of a database
   libssl-dev            # SHA-256 of imported files (libcrypto)
   libgtest-dev libgmock-dev
   libcgns-dev           # tests write CGNS files for the CGNS reader path

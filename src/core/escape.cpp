@@ -158,7 +158,13 @@ std::string xml_text(std::string_view text, bool keep_newlines) {
 }
 
 std::string xml_comment(std::string_view text) {
-  std::string out = xml_text(text);
+  // Inside a comment nothing is markup: only "--" and the characters XML 1.0
+  // cannot hold are a problem, and entities would show as written.
+  std::string out;
+  out.reserve(text.size());
+  for_each_code_point(text, [&](std::uint32_t value, std::string_view bytes) {
+    out += is_format_or_control(value) ? kReplacement : bytes;
+  });
   replace_all(out, "--", "- -");
   if (!out.empty() && out.back() == '-') out += ' ';
   return out;

@@ -64,7 +64,9 @@ std::string csv_comment(std::string_view text);
 /// controls but tab, line feed and carriage return; U+FFFE, U+FFFF) as U+FFFD.
 /// Line breaks are kept only when `keep_newlines`.
 std::string xml_text(std::string_view text, bool keep_newlines = false);
-/// Text for inside <!-- -->: xml_text's characters, no "--", not ending in '-'.
+/// Text for inside <!-- -->: one line of characters XML 1.0 can hold, no
+/// "--", not ending in '-'; quotes, '<' and '&' stay as they are (a comment
+/// has no markup, and an entity there would show as written).
 std::string xml_comment(std::string_view text);
 /// HTML character data or a double-quoted attribute value.
 inline std::string html_text(std::string_view text) { return xml_text(text, true); }

@@ -297,9 +297,15 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
                           "' dropped on request (drop-constant)");
     }
     if (dof == variable && (linear > 0.0 || quadratic > 0.0)) {
-      out.notes.push_back(law + ": an on-body damping coefficient is positive (linear " + shortest_number(linear) +
-                          ", quadratic " + shortest_number(quadratic) +
-                          "): it pushes the body along its motion; check the fit's sign convention");
+      // F x = x^2 (linear + quadratic |x|): positive near 0 when linear > 0,
+      // at large speed when quadratic > 0. A plugin would gain energy there.
+      const std::string what = law + ": an on-body damping coefficient of fit '" + fit->name +
+                               "' is positive (linear " + shortest_number(linear) + ", quadratic " +
+                               shortest_number(quadratic) + "): it pushes the body along its motion";
+      if (!request.allow_unphysical)
+        throw InputError(what + "; expected damping that takes energy out of the motion (check the fit's sign "
+                                "convention or fit again; --allow-unphysical writes it anyway)");
+      out.notes.push_back(what + " (written on request: allow-unphysical)");
     }
     out.sources.push_back(std::move(source));
   }

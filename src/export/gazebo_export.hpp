@@ -90,6 +90,9 @@ struct GazeboRequest {
   std::vector<std::pair<std::string, std::string>> fits;
   bool drop_constant = false;  ///< drop a "1" term (a CFD bias) instead of refusing
   bool allow_missing = false;  ///< DOFs without a law get 0 (with a note) instead of a refusal
+  /// Laws that feed energy into the motion (a positive on-body damping
+  /// coefficient) are written with a note instead of refused.
+  bool allow_unphysical = false;
   /// Replace each b x|x| by its tangent at the operating point nu0 = (U0, 0,
   /// 0, 0, 0, 0): linear += 2 b |x0| (x0 = U0 for laws in u, 0 otherwise),
   /// quadratic = 0. The force at the operating point itself is not carried.

@@ -1,8 +1,8 @@
-#include "src/core/escape.hpp"
 #include "src/export/json_export.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include "src/core/escape.hpp"
 #include "src/core/version.hpp"
 
 namespace hydrocoef {

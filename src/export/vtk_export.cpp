@@ -1,4 +1,3 @@
-#include "src/core/escape.hpp"
 #include "src/export/vtk_export.hpp"
 
 #include <vtkDoubleArray.h>
@@ -13,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/version.hpp"
 
 namespace hydrocoef {

@@ -84,7 +84,8 @@ std::vector<double> fit_polynomial(const std::vector<double>& levels, const std:
 }  // namespace
 
 std::vector<LevelFit> fit_per_level(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                                    std::span<const double> disturbance, const FitOptions& options) {
+                                    std::span<const double> disturbance, const FitOptions& options,
+                                    std::vector<SkippedLevel>* skipped) {
   if (x.size() != y.size() || x.size() != disturbance.size())
     throw InputError("per-level fit got " + std::to_string(x.size()) + " velocity values, " + std::to_string(y.size()) +
                      " force values and " + std::to_string(disturbance.size()) +
@@ -116,16 +117,21 @@ std::vector<LevelFit> fit_per_level(const DampingLawSpec& spec, std::span<const 
       ++end;
     }
     const std::string runs = std::to_string(level_x.size()) + (level_x.size() == 1 ? " run" : " runs");
-    if (level_x.size() < spec.terms.size())
-      throw InputError("disturbance level " + shortest(level) + " has " + runs + "; the damping law '" +
-                       format_damping_terms(spec) + "' has " + std::to_string(spec.terms.size()) +
-                       " terms and needs at least " + std::to_string(spec.terms.size()) + " runs at each level");
+    begin = end;
+    if (level_x.size() < spec.terms.size()) {
+      const std::string why = runs + "; the damping law '" + format_damping_terms(spec) + "' has " +
+                              std::to_string(spec.terms.size()) + " terms and needs at least " +
+                              std::to_string(spec.terms.size()) + " runs at each level";
+      if (!skipped) throw InputError("disturbance level " + shortest(level) + " has " + why);
+      skipped->push_back({level, level_x.size(), why});
+      continue;
+    }
     try {
       fits.push_back({level, fit_damping_law(spec, level_x, level_y, options)});
     } catch (const InputError& error) {
-      throw InputError("at disturbance level " + shortest(level) + " (" + runs + "): " + error.what());
+      if (!skipped) throw InputError("at disturbance level " + shortest(level) + " (" + runs + "): " + error.what());
+      skipped->push_back({level, level_x.size(), runs + ": " + error.what()});
     }
-    begin = end;
   }
   return fits;
 }

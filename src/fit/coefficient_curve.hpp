@@ -30,6 +30,13 @@ struct LevelFit {
   DampingLawFit fit;
 };
 
+/// A level fit_per_level left out, and why.
+struct SkippedLevel {
+  double level = 0.0;   ///< disturbance value [its SI unit]
+  std::size_t runs = 0;
+  std::string reason;   ///< "1 run; the damping law 'u,u|u|' has 2 terms and needs ..."
+};
+
 /// Fits the law separately at each distinct value of `disturbance`; the runs
 /// at a level are those whose disturbance equals it exactly (levels are
 /// normally set values such as 0.05, not measured ones).
@@ -40,10 +47,13 @@ struct LevelFit {
 ///   options:     loss, as for fit_damping_law.
 /// Returns one LevelFit per distinct level, in increasing order of level.
 /// Throws InputError when the lengths differ, there are no runs, a value is
-/// not finite (naming the run, 1-based), a level has fewer runs than the law
-/// has terms, or its fit fails (naming the level in both cases).
+/// not finite (naming the run, 1-based), or (when `skipped` is null) a level
+/// has fewer runs than the law has terms or its fit fails, naming the level.
+/// With `skipped`, such levels are left out and listed there instead, so that
+/// a sweep with a sparse level can still be fitted per level.
 std::vector<LevelFit> fit_per_level(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                                    std::span<const double> disturbance, const FitOptions& options = {});
+                                    std::span<const double> disturbance, const FitOptions& options = {},
+                                    std::vector<SkippedLevel>* skipped = nullptr);
 
 enum class CurveKind {
   Polynomial,  ///< least-squares polynomial of a chosen degree in the level

@@ -1,4 +1,3 @@
-#include "src/core/escape.hpp"
 #include "src/pipeline/import_files.hpp"
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include "importers/force_table.hpp"
 #include "importers/openfoam_forces.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/version.hpp"
 #include "src/loads/symmetry.hpp"

@@ -1,4 +1,3 @@
-#include "src/core/escape.hpp"
 #include "src/pipeline/run_settings.hpp"
 
 #include <algorithm>
@@ -9,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/names.hpp"
 
 namespace hydrocoef {

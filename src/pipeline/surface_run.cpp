@@ -12,6 +12,7 @@
 #include "importers/cfx_monitor.hpp"
 #include "importers/vtk_surface.hpp"
 #include "src/core/error.hpp"
+#include "src/core/names.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/units.hpp"
 
@@ -46,7 +47,7 @@ const FieldArray* find_named(const SurfaceMesh& mesh, std::initializer_list<cons
 
 std::string array_list(const SurfaceMesh& mesh) {
   std::string out;
-  for (const auto& field : mesh.fields) out += (out.empty() ? "'" : ", '") + field.name + "'";
+  for (const auto& field : mesh.fields) out += (out.empty() ? "'" : ", '") + printable_text(field.name, 60) + "'";
   return out.empty() ? "none" : out;
 }
 
@@ -139,7 +140,8 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
         throw InputError("no pressure array found (looked for Pressure, p, pressure); arrays there: " +
                          array_list(mesh) + "; name one with --pressure");
     }
-    result.pressure_array = pressure->name;
+    // Array names come from the file: the name rule applies where they are used.
+    result.pressure_array = check_name(NameKind::Field, pressure->name, {}, "the pressure array");
     const bool openfoam_naming = pressure->name == "p" || pressure->name == "pMean";
 
     std::vector<std::string> shear = options.shear;
@@ -158,7 +160,9 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
     }
     for (const auto& name : shear) (void)field_named(mesh, name);
     result.shear_array.clear();
-    for (const auto& name : shear) result.shear_array += (result.shear_array.empty() ? "" : ",") + name;
+    for (const auto& name : shear)
+      result.shear_array +=
+          (result.shear_array.empty() ? "" : ",") + std::string(check_name(NameKind::Field, name, {}, "a shear array"));
 
     result.pressure_kind =
         options.pressure_kind.value_or(openfoam_naming ? PressureKind::Kinematic : PressureKind::Static);

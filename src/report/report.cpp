@@ -1,5 +1,3 @@
-#include "src/core/atomic_file.hpp"
-#include "src/core/escape.hpp"
 #include "src/report/report.hpp"
 
 #include <algorithm>
@@ -9,7 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/plot/plots.hpp"
 #include "src/surface/stored_surface.hpp"
 

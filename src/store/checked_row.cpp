@@ -27,13 +27,13 @@ std::string CheckedRow::found(int column) const {
 
 void CheckedRow::fail(int column, std::string_view expected) const {
   const char* name = statement_.column_name(column);
-  throw InputError(SourceLocation{std::string(database_)},
+  throw InputError(SourceLocation{database_},
                    "table '" + std::string(table_) + "', row " + std::to_string(row_) + ", column '" +
                        (name ? name : "?") + "': found " + found(column) + "; expected " + std::string(expected));
 }
 
 void CheckedRow::fail_row(std::string_view message) const {
-  throw InputError(SourceLocation{std::string(database_)},
+  throw InputError(SourceLocation{database_},
                    "table '" + std::string(table_) + "', row " + std::to_string(row_) + ": " + std::string(message));
 }
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "src/core/names.hpp"
@@ -21,8 +22,8 @@ namespace hydrocoef::store {
 class CheckedRow {
  public:
   /// `row` is the row's id (or rowid) as the message should name it.
-  CheckedRow(const Statement& statement, std::string_view database, std::string_view table, std::int64_t row)
-      : statement_(statement), database_(database), table_(table), row_(row) {}
+  CheckedRow(const Statement& statement, std::string database, std::string_view table, std::int64_t row)
+      : statement_(statement), database_(std::move(database)), table_(table), row_(row) {}
 
   /// A finite number (an integer is taken as a number).
   double real(int column) const;
@@ -55,8 +56,8 @@ class CheckedRow {
  private:
   std::string found(int column) const;
   const Statement& statement_;
-  std::string_view database_;
-  std::string_view table_;
+  std::string database_;
+  std::string_view table_;  ///< a literal
   std::int64_t row_;
 };
 

@@ -1,13 +1,19 @@
 #include "src/store/database.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
 #include <unordered_map>
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
+#include "src/core/version.hpp"
 #include "src/core/names.hpp"
 #include "src/store/checked_row.hpp"
 #include "src/store/migrations.hpp"
@@ -23,6 +29,37 @@ double canonical(double value) { return value == 0.0 ? 0.0 : value; }  // folds 
 bool same_value(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max({1.0, std::abs(a), std::abs(b)}); }
 
 std::string force_name(std::size_t i) { return std::string(kForceNames[i]); }
+
+/// The settings two imports of one file differ in, for the refusal of a
+/// re-import with other settings: "rho: 998.2 (command line) then 1025
+/// (sidecar a.vtp.json)", at most four of them.
+std::string settings_difference(const std::string& before, const std::string& after) {
+  if (before.empty()) return "the earlier import's settings are not recorded: it was made by an older hydrocoef";
+  const auto old_json = nlohmann::json::parse(before, nullptr, false);
+  const auto new_json = nlohmann::json::parse(after.empty() ? "{}" : after, nullptr, false);
+  if (!old_json.is_object() || !new_json.is_object()) return "settings differ";
+  const auto describe_setting = [](const nlohmann::json& setting) {
+    if (!setting.is_object()) return std::string("not set");
+    return printable_text(escape::json_text(setting.value("value", nlohmann::json())), 40) + " (" +
+           printable_text(setting.value("source", std::string("?")), 40) + ")";
+  };
+  std::vector<std::string> differences;
+  std::set<std::string> keys;
+  for (const auto& [key, value] : old_json.items()) keys.insert(key);
+  for (const auto& [key, value] : new_json.items()) keys.insert(key);
+  for (const auto& key : keys) {
+    const auto a = old_json.contains(key) ? old_json.at(key) : nlohmann::json();
+    const auto b = new_json.contains(key) ? new_json.at(key) : nlohmann::json();
+    const auto value_of = [](const nlohmann::json& s) { return s.is_object() ? s.value("value", nlohmann::json()) : nlohmann::json(); };
+    if (value_of(a) == value_of(b)) continue;
+    differences.push_back(printable_text(key, 40) + ": " + describe_setting(a) + " then " + describe_setting(b));
+  }
+  if (differences.empty()) return "the same values from other places";
+  std::string out;
+  for (std::size_t i = 0; i < differences.size() && i < 4; ++i) out += (i ? "; " : "") + differences[i];
+  if (differences.size() > 4) out += "; and " + std::to_string(differences.size() - 4) + " more";
+  return out;
+}
 
 }  // namespace
 
@@ -46,6 +83,12 @@ store::Connection open_connection(const std::filesystem::path& path, Database::O
     case Database::OpenMode::MustExist: return {path.string(), store::Access::ReadWrite};
     case Database::OpenMode::ReadOnly: break;
   }
+  // A reader that may write the file and its folder opens it read-write (and
+  // never writes): SQLite then removes the WAL's -wal and -shm files when it
+  // closes, as it cannot for a read-only connection. Elsewhere: read-only.
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  if (::access(path.c_str(), W_OK) == 0 && ::access(folder.c_str(), W_OK) == 0)
+    return {path.string(), store::Access::ReadWrite};
   return {path.string(), store::Access::ReadOnly};
 }
 
@@ -74,6 +117,11 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
   if (check != "ok")
     throw InputError(SourceLocation{path.string()}, "database fails its integrity check: " + printable_text(check, 200));
   const int version = checked_schema_version();
+  if (read_only_ && version == 0) {
+    check_schema(0);
+    throw InputError(SourceLocation{path_.string()},
+                     "an empty database (no hydrocoef data yet); expected one made by 'hydrocoef import'");
+  }
   if (version < latest_schema_version()) {
     if (read_only_) {
       // Reading needs the current schema: upgrade in place when the file can
@@ -95,19 +143,21 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
   } else {
     check_schema(version);
   }
-  // Write-ahead log, switched on only once the file is known to be a hydrocoef
-  // database of a version this build writes (so a refused file stays
-  // byte-for-byte as it was): readers never wait for an import and never see
-  // part of one, and a killed import leaves only an uncommitted WAL tail that
-  // the next open discards. The mode is stored in the file; a read-only file
-  // keeps the mode it has.
-  if (!read_only_ && !sqlite3_db_readonly(connection_.handle(), "main")) {
-    auto mode_now = connection_.prepare("PRAGMA journal_mode");
-    mode_now.step();
-    const bool wal = mode_now.get_text(0) == "wal";
-    mode_now.reset();
-    if (!wal) connection_.execute("PRAGMA journal_mode = WAL");
-  }
+}
+
+// Write-ahead log, switched on after the first write that succeeds (a
+// migration, an import, a fit...), so that a file that is refused, or a
+// write that fails, leaves the file byte for byte as it was (the switch
+// rewrites the header): readers never wait for an import and never see part
+// of one, and a killed import leaves only an uncommitted WAL tail that the
+// next open discards. The mode is stored in the file.
+void Database::use_wal() {
+  if (read_only_ || sqlite3_db_readonly(connection_.handle(), "main")) return;
+  auto mode_now = connection_.prepare("PRAGMA journal_mode");
+  mode_now.step();
+  const bool wal = mode_now.get_text(0) == "wal";
+  mode_now.reset();
+  if (!wal) connection_.execute("PRAGMA journal_mode = WAL");
 }
 
 int Database::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
@@ -189,6 +239,7 @@ void Database::migrate() {
     transaction.commit();
   }
   connection_.execute("PRAGMA foreign_keys = ON");
+  use_wal();
 }
 
 std::int64_t Database::body_id(const std::string& name, bool create) {
@@ -213,11 +264,25 @@ std::optional<std::int64_t> Database::find_run_id(std::int64_t body, const RunKe
 }
 
 std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batches, ConflictPolicy policy) {
+  ImportOptions options;
+  options.components = policy;
+  options.replace = policy == ConflictPolicy::Replace;
+  return import(batches, options);
+}
+
+std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batches, const ImportOptions& options) {
+  const ConflictPolicy policy = options.components;
+  if (!options.also.empty()) check_name(NameKind::Parameter, options.also, {}, "--also");
   std::vector<ImportOutcome> outcomes;
   store::Transaction transaction(connection_);
   const std::string now = utc_timestamp_now();
 
-  auto find_source = connection_.prepare("SELECT path, imported_at FROM source_file WHERE sha256 = ?");
+  auto find_source = connection_.prepare("SELECT id FROM source_file WHERE sha256 = ?");
+  auto find_import = connection_.prepare(
+      "SELECT id, settings_key, settings, path, imported_at FROM import WHERE source_id = ? AND reading = ?");
+  auto insert_import = connection_.prepare(
+      "INSERT INTO import(source_id, reading, settings_key, settings, path, resolved_path, importer, importer_version, "
+      "hydrocoef_version, imported_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   auto insert_source = connection_.prepare(
       "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
       "VALUES (?, ?, ?, ?, ?, ?)");
@@ -235,7 +300,7 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       "WHERE f.run_id = ? AND f.component = ?");
   auto write_force = connection_.prepare(
       "INSERT OR REPLACE INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, "
-      "source_line) VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
+      "source_line, import_id) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
 
   auto write_surface = connection_.prepare(
       "INSERT OR REPLACE INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
@@ -247,25 +312,66 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
     ImportOutcome outcome;
     outcome.path = batch.source.path;
     outcome.sha256 = batch.source.sha256;
+    outcome.reading = options.also;
+    // The file's bytes, once per database.
+    std::int64_t source_id = 0;
     find_source.bind(1, batch.source.sha256);
     if (find_source.step()) {
-      outcome.already_imported = true;
-      outcome.previous_path = find_source.get_text(0);
-      outcome.previously_imported_at = find_source.get_text(1);
+      source_id = find_source.get_int(0);
       find_source.reset();
-      outcomes.push_back(outcome);
-      continue;
+    } else {
+      find_source.reset();
+      insert_source.bind(1, batch.source.path)
+          .bind(2, batch.source.sha256)
+          .bind(3, static_cast<std::int64_t>(batch.source.size_bytes))
+          .bind(4, batch.source.importer)
+          .bind(5, batch.source.importer_version)
+          .bind(6, now)
+          .run();
+      source_id = connection_.last_insert_id();
     }
-    find_source.reset();
-
-    insert_source.bind(1, batch.source.path)
-        .bind(2, batch.source.sha256)
-        .bind(3, static_cast<std::int64_t>(batch.source.size_bytes))
-        .bind(4, batch.source.importer)
-        .bind(5, batch.source.importer_version)
-        .bind(6, now)
+    // The import: those bytes read with these settings.
+    find_import.bind(1, source_id).bind(2, options.also);
+    if (find_import.step()) {
+      const std::int64_t previous = find_import.get_int(0);
+      const std::string previous_key = find_import.get_text(1);
+      const std::string previous_settings = find_import.get_text(2);
+      outcome.previous_path = find_import.get_text(3);
+      outcome.previously_imported_at = find_import.get_text(4);
+      find_import.reset();
+      if (previous_key == batch.source.settings_key) {
+        outcome.already_imported = true;
+        outcome.import_id = previous;
+        outcomes.push_back(outcome);
+        continue;
+      }
+      if (!options.replace)
+        throw InputError(SourceLocation{batch.source.path},
+                         "already imported on " + outcome.previously_imported_at + " from '" +
+                             printable_text(outcome.previous_path, 80) + "'" +
+                             (options.also.empty() ? "" : " as reading '" + options.also + "'") +
+                             " with other settings (" + settings_difference(previous_settings, batch.source.settings) +
+                             "); give --replace to replace the runs of that import, or --also NAME to keep both "
+                             "readings of the file");
+      outcome.replaced = true;
+      remove_import_forces(previous);
+      connection_.prepare("DELETE FROM import WHERE id = ?").bind(1, previous).run();
+    } else {
+      find_import.reset();
+    }
+    insert_import.bind(1, source_id)
+        .bind(2, options.also)
+        .bind(3, batch.source.settings_key)
+        .bind(4, batch.source.settings)
+        .bind(5, batch.source.path)
+        .bind(6, batch.source.resolved_path)
+        .bind(7, batch.source.importer)
+        .bind(8, batch.source.importer_version)
+        .bind(9, std::string_view(kVersion))
+        .bind(10, now)
         .run();
-    const std::int64_t source_id = connection_.last_insert_id();
+    const std::int64_t import_id = connection_.last_insert_id();
+    outcome.import_id = import_id;
 
     for (const auto& run : batch.runs) {
       const SourceLocation where{batch.source.path, run.source_line, 0};
@@ -341,6 +447,7 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
             .bind(6, to_string(run.sign))
             .bind(7, source_id)
             .bind(8, static_cast<std::int64_t>(run.source_line))
+            .bind(9, import_id)
             .run();
         ++outcome.components_written;
         extended = true;
@@ -373,12 +480,13 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
     outcomes.push_back(outcome);
   }
   transaction.commit();
+  use_wal();
   return outcomes;
 }
 
 std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run) {
   std::string sql =
-      "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z "
+      "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z, body.id "
       "FROM run JOIN body ON body.id = run.body_id WHERE 1";
   if (body) sql += " AND run.body_id = ?1";
   if (run) sql += " AND run.id = ?2";
@@ -394,7 +502,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     const store::CheckedRow row(select, db, "run", select.get_int(0));
     StoredRun stored;
     stored.id = select.get_int(0);
-    stored.key.body = row.name(1, NameKind::Body);
+    stored.key.body = store::CheckedRow(select, db, "body", select.get_int(13)).name(1, NameKind::Body);
     for (int i = 0; i < 6; ++i) stored.key.nu_b[static_cast<std::size_t>(i)] = row.real(2 + i);
     stored.fluid.density_kg_m3 = row.optional_positive(8);
     stored.fluid.kinematic_viscosity_m2_s = row.optional_positive(9);
@@ -413,7 +521,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   }
   auto forces = connection_.prepare(
       "SELECT f.run_id, f.component, f.total, f.pressure, f.viscous, f.sign_convention, f.source_id, s.path, "
-      "coalesce(f.source_line, 0) FROM run_force f JOIN source_file s ON s.id = f.source_id");
+      "coalesce(f.source_line, 0), coalesce(f.import_id, 0) FROM run_force f JOIN source_file s ON s.id = f.source_id");
   while (forces.step()) {
     const auto found = index.find(forces.get_int(0));
     if (found == index.end()) continue;
@@ -427,6 +535,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     force.source_id = row.integer(6, 1, std::numeric_limits<std::int64_t>::max());
     force.source_path = row.text(7);
     force.source_line = static_cast<std::size_t>(row.integer(8, 0, std::numeric_limits<std::int64_t>::max()));
+    force.import_id = row.integer(9, 0, std::numeric_limits<std::int64_t>::max());
     out[found->second].tau_b[*component] = std::move(force);
   }
   auto surfaces = connection_.prepare(
@@ -522,9 +631,19 @@ std::vector<std::string> Database::bodies() {
   return out;
 }
 
-std::int64_t Database::save_fit(const FitRecord& fit) {
-  check_name(NameKind::Fit, fit.name, {}, "the fit");
+std::int64_t Database::save_fit(const FitRecord& fit) { return save_fits({fit}).front(); }
+
+std::vector<std::int64_t> Database::save_fits(const std::vector<FitRecord>& fits) {
+  for (const auto& fit : fits) check_name(NameKind::Fit, fit.name, {}, "the fit");
   store::Transaction transaction(connection_);
+  std::vector<std::int64_t> ids;
+  for (const auto& fit : fits) ids.push_back(insert_fit(fit));
+  transaction.commit();
+  use_wal();
+  return ids;
+}
+
+std::int64_t Database::insert_fit(const FitRecord& fit) {
   const std::int64_t body = existing_body_id(fit.body);
   connection_.prepare("DELETE FROM fit WHERE name = ?").bind(1, fit.name).run();
   auto insert = connection_.prepare(
@@ -552,14 +671,13 @@ std::int64_t Database::save_fit(const FitRecord& fit) {
     coefficient.run();
   }
   link_runs("fit_run", "fit_id", id, fit.run_ids);
-  transaction.commit();
   return id;
 }
 
 std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
   std::string sql =
       "SELECT fit.id, fit.name, body.name, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
-      "created_at FROM fit JOIN body ON body.id = fit.body_id";
+      "created_at, stale FROM fit JOIN body ON body.id = fit.body_id";
   if (body) sql += " WHERE body.name = ?1";
   sql += " ORDER BY fit.name";
   auto select = connection_.prepare(sql);
@@ -582,6 +700,7 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
     fit.rmse = row.optional_non_negative(10).value_or(kAbsent);
     fit.r2 = row.optional_real(11).value_or(kAbsent);
     fit.created_at = row.text(12, 64);
+    fit.stale = row.integer(13, 0, 1) != 0;
     out.push_back(std::move(fit));
   }
   auto coefficients =
@@ -641,6 +760,7 @@ std::int64_t Database::save_surface(const SurfaceRecord& surface) {
   const std::int64_t id = connection_.last_insert_id();
   link_runs("surface_run", "surface_id", id, surface.run_ids);
   transaction.commit();
+  use_wal();
   return id;
 }
 
@@ -669,6 +789,7 @@ std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::stri
     record.quality = row.text(7, kMaxSurfaceDefinitionBytes);
     record.created_at = row.text(8, 64);
     record.stale = row.integer(9, 0, 1) != 0;
+    record.database = path_.string();
     record.run_ids = linked_runs("surface_run", "surface_id", record.id);
     out.push_back(std::move(record));
   }
@@ -677,6 +798,101 @@ std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::stri
 
 std::vector<SurfaceRecord> Database::surfaces(const std::optional<std::string>& body) {
   return load_surfaces(body, std::nullopt);
+}
+
+void Database::remove_import_forces(std::int64_t import_id) {
+  std::vector<std::int64_t> runs;
+  auto touched = connection_.prepare("SELECT DISTINCT run_id FROM run_force WHERE import_id = ?");
+  touched.bind(1, import_id);
+  while (touched.step()) runs.push_back(touched.get_int(0));
+  touched.reset();
+  connection_.prepare(
+                 "DELETE FROM run_surface WHERE source_id = (SELECT source_id FROM import WHERE id = ?1) AND run_id IN "
+                 "(SELECT run_id FROM run_force WHERE import_id = ?1)")
+      .bind(1, import_id)
+      .run();
+  connection_.prepare("DELETE FROM run_force WHERE import_id = ?").bind(1, import_id).run();
+  // A run left with no force component is no run.
+  auto remaining = connection_.prepare("SELECT count(*) FROM run_force WHERE run_id = ?");
+  auto drop_surface = connection_.prepare("DELETE FROM run_surface WHERE run_id = ?");
+  auto drop_run = connection_.prepare("DELETE FROM run WHERE id = ?");
+  for (const auto run : runs) {
+    remaining.bind(1, run);
+    remaining.step();
+    const bool empty = remaining.get_int(0) == 0;
+    remaining.reset();
+    if (!empty) continue;
+    drop_surface.bind(1, run).run();
+    drop_run.bind(1, run).run();
+  }
+}
+
+DeleteOutcome Database::delete_runs(const std::vector<std::int64_t>& ids) {
+  store::Transaction transaction(connection_);
+  const auto count = [&](const char* sql) {
+    auto statement = connection_.prepare(sql);
+    statement.step();
+    return static_cast<std::size_t>(statement.get_int(0));
+  };
+  const std::size_t stale_fits = count("SELECT count(*) FROM fit WHERE stale = 1");
+  const std::size_t stale_surfaces = count("SELECT count(*) FROM surface WHERE stale = 1");
+  const std::size_t imports = count("SELECT count(*) FROM import");
+  DeleteOutcome outcome;
+  auto exists = connection_.prepare("SELECT count(*) FROM run WHERE id = ?");
+  auto components = connection_.prepare("SELECT count(*) FROM run_force WHERE run_id = ?");
+  std::set<std::int64_t> done;
+  for (const auto id : ids) {
+    if (!done.insert(id).second) continue;
+    exists.bind(1, id);
+    exists.step();
+    const bool found = exists.get_int(0) != 0;
+    exists.reset();
+    if (!found) throw InputError(SourceLocation{path_.string()}, "no run " + std::to_string(id) + "; nothing was deleted");
+    components.bind(1, id);
+    components.step();
+    outcome.components += static_cast<std::size_t>(components.get_int(0));
+    components.reset();
+    connection_.prepare("DELETE FROM run_force WHERE run_id = ?").bind(1, id).run();
+    connection_.prepare("DELETE FROM run_surface WHERE run_id = ?").bind(1, id).run();
+    connection_.prepare("DELETE FROM run WHERE id = ?").bind(1, id).run();
+    ++outcome.runs;
+  }
+  // Imports and files that no longer give any run.
+  connection_.execute("DELETE FROM import WHERE id NOT IN (SELECT import_id FROM run_force WHERE import_id IS NOT NULL)");
+  connection_.execute(
+      "DELETE FROM source_file WHERE id NOT IN (SELECT source_id FROM import) AND id NOT IN (SELECT source_id FROM "
+      "run_force) AND id NOT IN (SELECT source_id FROM run_surface)");
+  outcome.fits_made_stale = count("SELECT count(*) FROM fit WHERE stale = 1") - stale_fits;
+  outcome.surfaces_made_stale = count("SELECT count(*) FROM surface WHERE stale = 1") - stale_surfaces;
+  outcome.imports_removed = imports - count("SELECT count(*) FROM import");
+  transaction.commit();
+  use_wal();
+  return outcome;
+}
+
+std::optional<ImportRecord> Database::import_record(std::int64_t id) {
+  auto select = connection_.prepare(
+      "SELECT i.id, i.source_id, s.sha256, i.reading, i.settings, i.settings_key, i.path, i.resolved_path, i.importer, "
+      "i.importer_version, i.hydrocoef_version, i.imported_at, s.size_bytes FROM import i JOIN source_file s ON "
+      "s.id = i.source_id WHERE i.id = ?");
+  select.bind(1, id);
+  if (!select.step()) return std::nullopt;
+  const store::CheckedRow row(select, path_.string(), "import", id);
+  ImportRecord record;
+  record.id = id;
+  record.source_id = select.get_int(1);
+  record.sha256 = row.text(2, 64);
+  record.reading = row.text(3, 256);
+  record.settings = row.text(4, 1 << 20);
+  record.settings_key = row.text(5, 1 << 20);
+  record.path = row.text(6);
+  record.resolved_path = row.text(7);
+  record.importer = row.text(8, 256);
+  record.importer_version = row.text(9, 256);
+  record.hydrocoef_version = row.text(10, 256);
+  record.imported_at = row.text(11, 64);
+  record.size_bytes = static_cast<std::uint64_t>(row.integer(12, 0, std::numeric_limits<std::int64_t>::max()));
+  return record;
 }
 
 SurfaceRecord Database::surface(const std::string& name) {

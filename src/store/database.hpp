@@ -24,6 +24,7 @@ struct StoredForce {
   std::int64_t source_id = 0;
   std::string source_path;
   std::size_t source_line = 0;
+  std::int64_t import_id = 0;  ///< the import it came from (0: none recorded)
 };
 
 struct StoredRun {
@@ -46,10 +47,51 @@ struct RunFilter {
 /// from another file.
 enum class ConflictPolicy { Error, Replace };
 
+/// How an import treats what the database already has.
+struct ImportOptions {
+  /// A force component a run already has from another file.
+  ConflictPolicy components = ConflictPolicy::Error;
+  /// The same file (bytes) imported before with other settings: replace the
+  /// runs of that import in the same transaction (otherwise refused).
+  bool replace = false;
+  /// A second, separately named reading of a file imported before (e.g.
+  /// "mean" for pMean beside p); "" for the file's main reading. An identifier.
+  std::string also;
+};
+
+/// One import: a file's bytes read with one set of effective settings.
+struct ImportRecord {
+  std::int64_t id = 0;
+  std::int64_t source_id = 0;
+  std::string sha256;
+  std::uint64_t size_bytes = 0;
+  std::string reading;            ///< "" or the --also name
+  std::string settings;           ///< JSON: every setting with value, source and place
+  std::string settings_key;       ///< canonical values: with the bytes, the import's identity
+  std::string path;               ///< as given
+  std::string resolved_path;      ///< absolute, links resolved ("" when not recorded)
+  std::string importer;
+  std::string importer_version;
+  std::string hydrocoef_version;  ///< "" for imports older than migration 5
+  std::string imported_at;
+};
+
+/// What runs delete did.
+struct DeleteOutcome {
+  std::size_t runs = 0;
+  std::size_t components = 0;
+  std::size_t fits_made_stale = 0;
+  std::size_t surfaces_made_stale = 0;
+  std::size_t imports_removed = 0;  ///< imports that no longer give any run
+};
+
 struct ImportOutcome {
   std::string path;
   std::string sha256;
-  bool already_imported = false;      ///< the same bytes were imported before: nothing added
+  bool already_imported = false;      ///< the same bytes with the same settings were imported before: nothing added
+  bool replaced = false;              ///< an import of the same bytes with other settings was replaced (--replace)
+  std::int64_t import_id = 0;
+  std::string reading;                ///< "" or the --also name
   std::string previously_imported_at; ///< when already_imported
   std::string previous_path;          ///< when already_imported
   std::size_t runs_created = 0;
@@ -83,6 +125,7 @@ struct FitRecord {
   double rmse = 0.0;
   double r2 = 0.0;
   std::string created_at;
+  bool stale = false;  ///< a force of a run it was built from changed or was deleted since
   std::vector<Coefficient> coefficients;
   std::vector<std::int64_t> run_ids;
 };
@@ -107,6 +150,7 @@ struct SurfaceRecord {
   std::string created_at;
   bool stale = false;      ///< a force of the body changed since the surface was built
   std::vector<std::int64_t> run_ids;
+  std::string database;    ///< the file it was read from, for messages ("" when not read from one)
 };
 
 class Database {
@@ -136,6 +180,21 @@ class Database {
   /// already in the database adds nothing and says so in its outcome. Throws
   /// InputError on a conflict (policy Error), leaving the database unchanged.
   std::vector<ImportOutcome> import(const std::vector<ImportBatch>& batches, ConflictPolicy policy);
+  /// The same, with the identity of an import: a file's bytes and its
+  /// effective settings (Provenance::settings_key). The same bytes with the
+  /// same settings add nothing and say so; with other settings they are
+  /// refused (InputError naming the earlier import and the settings that
+  /// differ), replaced (options.replace) or kept as another reading
+  /// (options.also).
+  std::vector<ImportOutcome> import(const std::vector<ImportBatch>& batches, const ImportOptions& options);
+
+  /// Deletes runs (their force components, surface records and
+  /// disturbances) in one transaction; fits and surfaces built from them
+  /// become stale; imports and files that no longer give a run are removed.
+  /// InputError, deleting nothing, for an id that is not a run.
+  DeleteOutcome delete_runs(const std::vector<std::int64_t>& ids);
+  /// One import, for a run's provenance.
+  std::optional<ImportRecord> import_record(std::int64_t id);
 
   std::vector<StoredRun> runs(const RunFilter& filter = {});
   std::optional<StoredRun> find_run(const RunKey& key);
@@ -144,6 +203,8 @@ class Database {
 
   /// Stores a fit, replacing one of the same name; returns its id.
   std::int64_t save_fit(const FitRecord& fit);
+  /// Stores several fits in one transaction (all or none); returns their ids.
+  std::vector<std::int64_t> save_fits(const std::vector<FitRecord>& fits);
   std::vector<FitRecord> fits(const std::optional<std::string>& body = std::nullopt);
 
   /// Stores a surface, replacing one of the same name (which clears its
@@ -162,11 +223,17 @@ class Database {
 
  private:
   void migrate();
+  /// Switches the file to WAL mode, after a write has committed.
+  void use_wal();
   /// The stored schema version, refused unless 0..latest.
   int checked_schema_version();
   /// Refuses a schema that is not the one migrations 1..version create.
   void check_schema(int version);
   std::int64_t body_id(const std::string& name, bool create);
+  /// Removes the force components an import gave, and the runs left with none.
+  void remove_import_forces(std::int64_t import_id);
+  /// Inserts one fit (replacing one of its name) inside the caller's transaction.
+  std::int64_t insert_fit(const FitRecord& fit);
   std::optional<std::int64_t> find_run_id(std::int64_t body, const RunKey& key);
   /// All runs, or those of one body, or one run; ordered by body and key.
   std::vector<StoredRun> load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run);

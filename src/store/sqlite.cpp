@@ -146,6 +146,10 @@ Statement& Statement::bind(int index, const std::optional<double>& value) {
   return value ? bind(index, *value) : bind_null(index);
 }
 Statement& Statement::bind_doubles(int index, const std::vector<double>& values) {
+  if (values.empty()) {  // a blob of no bytes, not NULL
+    sqlite3_bind_zeroblob(statement_, index, 0);
+    return *this;
+  }
   sqlite3_bind_blob64(statement_, index, values.data(), values.size() * sizeof(double), SQLITE_TRANSIENT);
   return *this;
 }

@@ -81,6 +81,40 @@ std::size_t count_member(const json& object, const char* key, const std::string&
   return value.get<std::size_t>();
 }
 
+// The quality figures as SurfaceQuality::to_json writes them: an object whose
+// members, where present, have the types the readers (surface show, report)
+// expect. What is wrong, or nullopt.
+std::optional<std::string> quality_problem(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const json quality = json::parse(text, nullptr, false);
+  if (quality.is_discarded() || !quality.is_object()) return "its quality figures are not a JSON object";
+  const auto wrong = [&](const char* key, bool ok) -> std::optional<std::string> {
+    if (!quality.contains(key) || ok) return std::nullopt;
+    return std::string("its quality figure '") + key + "' is of the wrong type";
+  };
+  const auto has = [&](const char* key) -> const json& { return quality.at(key); };
+  if (auto p = wrong("loo_method", quality.contains("loo_method") && has("loo_method").is_string())) return p;
+  if (auto p = wrong("runs", quality.contains("runs") && has("runs").is_number_unsigned())) return p;
+  if (auto p = wrong("loo_defined", quality.contains("loo_defined") && has("loo_defined").is_number_unsigned())) return p;
+  if (auto p = wrong("grid_points", quality.contains("grid_points") && has("grid_points").is_number_unsigned())) return p;
+  if (auto p = wrong("far_threshold", quality.contains("far_threshold") && has("far_threshold").is_number())) return p;
+  if (auto p = wrong("far_from_data", quality.contains("far_from_data") && has("far_from_data").is_array())) return p;
+  if (quality.contains("grid_points") && (!quality.contains("far_threshold") || !quality.contains("far_from_data")))
+    return "its quality figures name a resampled grid without its far-from-data figures";
+  if (quality.contains("outputs")) {
+    const json& outputs = has("outputs");
+    if (!outputs.is_object()) return "its quality figure 'outputs' is of the wrong type";
+    for (const auto& [name, entry] : outputs.items()) {
+      if (!entry.is_object()) return "its quality figures of output '" + printable_text(name, 20) + "' are not an object";
+      for (const char* key : {"loo_max", "loo_rms"})
+        if (entry.contains(key) && !entry.at(key).is_number() && !entry.at(key).is_null())
+          return "its quality figure '" + std::string(key) + "' of output '" + printable_text(name, 20) +
+                 "' is not a number";
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string_view rbf_kernel_name(RbfKernel kernel) {
@@ -138,13 +172,16 @@ SurfaceRecord record_from_surface(const CoefficientSurface& surface, std::span<c
 }
 
 CoefficientSurface surface_from_record(const SurfaceRecord& record) {
-  const std::string where = "surface '" + printable_text(record.name, 60) + "'";
+  const std::string where =
+      (record.database.empty() ? "" : record.database + ": table 'surface', row " + std::to_string(record.id) + ", ") +
+      "surface '" + printable_text(record.name, 60) + "'";
   json definition;
   try {
     definition = json::parse(record.definition);
   } catch (const json::exception& error) {
     throw InputError(where + ": its stored definition is not JSON (" + error.what() + ")");
   }
+  if (const auto problem = quality_problem(record.quality)) throw InputError(where + ": " + *problem);
   const auto axes_json = member<json>(definition, "axes", where);
   const auto outputs_json = member<json>(definition, "outputs", where);
   if (!axes_json.is_array() || !outputs_json.is_array())

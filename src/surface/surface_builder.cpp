@@ -1,4 +1,3 @@
-#include "src/core/escape.hpp"
 #include "src/surface/surface_builder.hpp"
 
 #include <algorithm>
@@ -8,6 +7,8 @@
 #include <set>
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
+#include "src/core/names.hpp"
 #include "src/surface/stored_surface.hpp"
 
 namespace hydrocoef {
@@ -31,6 +32,7 @@ void check_names(const SurfaceSpec& spec) {
   std::set<std::string> seen;
   for (const auto& axis : spec.axes) {
     if (axis.empty()) throw InputError("an axis name is empty; expected u, v, w, p, q, r or a disturbance name");
+    check_name(NameKind::Parameter, axis, {}, "--axes");
     if (!seen.insert(axis).second) throw InputError("axis '" + axis + "' is given twice");
   }
   seen.clear();

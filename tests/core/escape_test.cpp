@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/utf8.hpp"
+#include "tests/support/csv_record.hpp"
 #include "tests/support/hostile_names.hpp"
 
 namespace hydrocoef {
@@ -26,35 +27,6 @@ bool clean_line(const std::string& text) {
   return true;
 }
 
-// Splits one CSV record (RFC 4180) into fields; nullopt when malformed.
-std::optional<std::vector<std::string>> csv_record(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-        if (i + 1 < line.size() && line[i + 1] != ',') return std::nullopt;
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"' && fields.back().empty()) {
-      quoted = true;
-    } else if (c == '"') {
-      return std::nullopt;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  if (quoted) return std::nullopt;
-  return fields;
-}
 
 TEST(Escape, CorpusHasEveryKindOfHostileName) {
   const auto names = test::hostile_names();
@@ -164,7 +136,7 @@ TEST(Escape, CsvFieldsAreOneFieldOnOneLine) {
   for (const auto& name : test::hostile_names()) {
     const std::string field = escape::csv_field(name);
     EXPECT_TRUE(clean_line(field));
-    const auto record = csv_record(field + ",next");
+    const auto record = test::csv_record(field + ",next");
     ASSERT_TRUE(record) << field;
     ASSERT_EQ(record->size(), 2u) << field;
     EXPECT_EQ((*record)[0], escape::one_line(name));
@@ -193,6 +165,7 @@ TEST(Escape, XmlTextHoldsNoMarkupAndOnlyXmlCharacters) {
       }
     }
     const std::string comment = escape::xml_comment(name);
+    EXPECT_TRUE(clean_line(comment)) << comment;
     EXPECT_EQ(comment.find("--"), std::string::npos) << comment;
     EXPECT_TRUE(comment.empty() || comment.back() != '-') << comment;
   }

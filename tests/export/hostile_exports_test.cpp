@@ -25,6 +25,7 @@
 #include "src/core/escape.hpp"
 #include "src/export/export.hpp"
 #include "src/surface/grid_table.hpp"
+#include "tests/support/csv_record.hpp"
 #include "tests/support/hostile_names.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -64,34 +65,6 @@ std::vector<std::string> lines_of(const std::filesystem::path& path) {
   return lines;
 }
 
-// Fields of one CSV record (RFC 4180, one line); nullopt when malformed.
-std::optional<std::vector<std::string>> csv_record(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"' && fields.back().empty()) {
-      quoted = true;
-    } else if (c == '"' || c == '\r') {
-      return std::nullopt;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  if (quoted) return std::nullopt;
-  return fields;
-}
 
 std::set<std::string> files_in(const std::filesystem::path& dir) {
   std::set<std::string> names;
@@ -111,7 +84,7 @@ TEST(HostileNames, CsvHasExactlyTheExpectedRowsAndColumns) {
       std::vector<std::vector<std::string>> rows;
       for (const auto& line : lines_of(path)) {
         if (!line.empty() && line[0] == '#') continue;
-        const auto record = csv_record(line);
+        const auto record = test::csv_record(line);
         ASSERT_TRUE(record) << line;
         rows.push_back(*record);
       }
@@ -151,6 +124,21 @@ TEST(HostileNames, JsbsimXmlIsWellFormed) {
     ASSERT_TRUE(root) << test::read_text(dir / "table.xml");
     EXPECT_STREQ(root->GetName(), "hydrocoef_tables");
     EXPECT_EQ(root->GetNumberOfNestedElements(), 2);
+  }
+}
+
+// The report's HTML escape (src/report uses escape::html_text for every
+// name): a name inside an element and an attribute leaves one element whose
+// text and attribute are the name's printable form.
+TEST(HostileNames, HtmlTextStaysInsideItsElement) {
+  for (const auto& name : test::hostile_names()) {
+    SCOPED_TRACE(testing::PrintToString(name));
+    const std::string html = "<p title=\"" + escape::html_text(name) + "\">" + escape::html_text(name) + "</p>";
+    const auto element = vtkSmartPointer<vtkXMLDataElement>::Take(vtkXMLUtilities::ReadElementFromString(html.c_str()));
+    ASSERT_TRUE(element) << html;
+    EXPECT_STREQ(element->GetName(), "p");
+    EXPECT_EQ(element->GetNumberOfNestedElements(), 0);
+    EXPECT_EQ(element->GetNumberOfAttributes(), 1);
   }
 }
 

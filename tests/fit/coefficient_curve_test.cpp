@@ -287,6 +287,28 @@ TEST(FitPerLevelErrors, LevelsWithTooFewOrUnsuitableRuns) {
                      {"at disturbance level 0.1 (3 runs)", "linearly dependent"});
 }
 
+// With a list for skipped levels, a sparse or unsuitable level is left out
+// and named there, and the other levels are fitted as they would be alone.
+TEST(FitPerLevelErrors, SparseLevelsAreSkippedWhenAskedAndNamed) {
+  const DampingLawSpec spec = parse_damping_terms("1,u,u|u|");
+  const std::vector<double> u = {0.1, 0.2, 0.3, 0.4, 0.1, 0.2, 0.5, 0.5, 0.5};
+  const std::vector<double> X = {1.0, 2.0, 3.5, 5.0, 1.0, 2.0, 1.0, 2.0, 3.0};
+  const std::vector<double> current = {0.0, 0.0, 0.0, 0.0, 0.05, 0.05, 0.1, 0.1, 0.1};
+  std::vector<SkippedLevel> skipped;
+  const auto fits = fit_per_level(spec, u, X, current, {}, &skipped);
+  ASSERT_EQ(fits.size(), 1u);
+  EXPECT_EQ(fits[0].level, 0.0);
+  const auto alone = fit_damping_law(spec, std::vector<double>(u.begin(), u.begin() + 4),
+                                     std::vector<double>(X.begin(), X.begin() + 4));
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(fits[0].fit.coefficients[k], alone.coefficients[k]);
+  ASSERT_EQ(skipped.size(), 2u);
+  EXPECT_EQ(skipped[0].level, 0.05);
+  EXPECT_EQ(skipped[0].runs, 2u);
+  EXPECT_NE(skipped[0].reason.find("at least 3"), std::string::npos) << skipped[0].reason;
+  EXPECT_EQ(skipped[1].level, 0.1);
+  EXPECT_NE(skipped[1].reason.find("linearly dependent"), std::string::npos) << skipped[1].reason;
+}
+
 TEST(FitPerLevelErrors, NonFiniteAndMismatchedInput) {
   const DampingLawSpec spec = parse_damping_terms("u,u|u|");
   std::vector<double> u = {0.1, 0.2, 0.3, 0.1, 0.2, 0.3};

@@ -198,7 +198,7 @@ TEST_F(SweepTest, TwoAxisSurfaceIsAColourMapWithRunsAndShadedOutOfRange) {
   EXPECT_EQ(figure.panels[0].shaded.size(), 4u);
   EXPECT_LT((*figure.panels[0].x_range)[0], -0.2);
   EXPECT_GT((*figure.panels[0].y_range)[1], 0.2);
-  EXPECT_NE(test::read_text(files.script).find("outside the surface''s range"), std::string::npos);
+  EXPECT_NE(test::read_text(files.script).find("outside the surface'.\"'\".'s range"), std::string::npos);
 }
 
 TEST(Plots, OneAxisSurfaceCurveMatchesLinearInterpolationAndContinuesWhereThePolicyAllows) {

@@ -58,11 +58,12 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
     EXPECT_EQ(replay.exit_code, 0) << replay.log;
   }
   fs::create_directory(dir / "corpus");
-  for (const char *folder : {"bad", "vtp-encodings"})
+  for (const char *folder : {"bad", "vtp-encodings", "fuzz-seeds"})
     for (const auto &entry :
          fs::directory_iterator(kSource / "tests" / "data" / folder))
       if (entry.is_regular_file() && (entry.path().extension() == ".csv" ||
-                                      entry.path().extension() == ".vtp"))
+                                      entry.path().extension() == ".vtp" ||
+                                      entry.path().extension() == ".bin"))
         fs::copy_file(entry.path(), dir / "corpus" / entry.path().filename(),
                       fs::copy_options::skip_existing);
   const auto fuzz =
@@ -83,7 +84,7 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
 
 const std::vector<std::string> kTargets = {
     "cfdpost_export_fuzz", "cfx_monitor_fuzz", "force_table_fuzz", "units_fuzz",
-    "vehicle_fuzz",        "scenario_fuzz",    "vtp_fuzz"};
+    "vehicle_fuzz",        "scenario_fuzz",    "vtp_fuzz", "stored_record_fuzz"};
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke, ::testing::ValuesIn(kTargets));
 

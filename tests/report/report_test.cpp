@@ -120,7 +120,7 @@ TEST(Report, EmptyDatabaseOrUnknownBodyIsAnError) {
   }
   EXPECT_EQ(base64("hydrocoef"), "aHlkcm9jb2Vm");
   EXPECT_EQ(base64("ab"), "YWI=");
-  EXPECT_EQ(html_escape("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
+  EXPECT_EQ(html_escape("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&apos;");
 }
 
 bool have_chromium() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }

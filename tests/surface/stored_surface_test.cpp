@@ -110,7 +110,7 @@ TEST(StoredSurface, DamagedDefinitionsAreRefusedNamingTheSurface) {
   bad.definition = "{not json";
   expect_input_error([&] { surface_from_record(bad); }, {"surface 'xn'", "not JSON"});
   bad = record;
-  bad.definition = R"({"axes": [{"name": "u"}], "outputs": []})";
+  bad.definition = R"({"axes": [{"name": "u"}], "outputs": [{"name": "X"}]})";
   expect_input_error([&] { surface_from_record(bad); }, {"surface 'xn'", "'unit'"});
   bad = record;
   bad.data.pop_back();

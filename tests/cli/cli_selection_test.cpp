@@ -1,0 +1,91 @@
+// The one selection language on the command line (src/core/run_selection):
+// runs, fit and surface build take --where with = != < <= > >= and ranges,
+// several combined with AND, and --exclude-run; a bad clause is named.
+// Leave-one-out by hand is one command: surface build --exclude-run, then
+// query at the left-out run.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_cli.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace hydrocoef {
+namespace {
+
+using test::run_cli;
+using test::TempDir;
+
+const std::string kSurge = HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-surge-damping.csv";
+
+class Selection : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto imported = run_cli({"import", kSurge, "--body", "asr-v", "--sign", "opposing"}, dir_.path());
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+    all_ = nlohmann::json::parse(run_cli({"runs", "--json"}, dir_.path()).out);
+    ASSERT_EQ(all_.size(), 20u);
+  }
+  nlohmann::json runs(const std::vector<std::string>& options) {
+    std::vector<std::string> args = {"runs", "--json"};
+    args.insert(args.end(), options.begin(), options.end());
+    const auto result = run_cli(args, dir_.path());
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return nlohmann::json::parse(result.out);
+  }
+  TempDir dir_;
+  nlohmann::json all_;
+};
+
+TEST_F(Selection, ClausesCombineWithAndAndRunsCanBeLeftOut) {
+  std::size_t expected = 0;
+  for (const auto& run : all_) {
+    const double u = run.at("u").get<double>();
+    expected += (u >= 0.1 - 1e-12 && u < 0.3) ? 1 : 0;
+  }
+  EXPECT_EQ(runs({"--where", "u>=0.1", "--where", "u<0.3"}).size(), expected);
+  EXPECT_EQ(runs({"--where", "u=0.1:0.3"}).size(), expected + 1);  // the range includes 0.3
+  EXPECT_EQ(runs({"--where", "u!=0"}).size(), all_.size() - 1);
+  const auto first = all_[0].at("id").get<std::int64_t>();
+  const auto without = runs({"--exclude-run", std::to_string(first)});
+  EXPECT_EQ(without.size(), all_.size() - 1);
+  for (const auto& run : without) EXPECT_NE(run.at("id").get<std::int64_t>(), first);
+
+  const auto bad = run_cli({"runs", "--where", "u>=fast"}, dir_.path());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("u>=fast"), std::string::npos) << bad.err;
+}
+
+TEST_F(Selection, LeaveOneOutByHandIsOneBuildAndOneQuery) {
+  // The run at u = 0.2 (an interior run), left out of a linear table.
+  std::int64_t left_out = 0;
+  double below = 0, above = 0, own = 0;
+  for (const auto& run : all_) {
+    const double u = run.at("u").get<double>();
+    const double x = run.at("forces").at("X").at("total").get<double>();
+    if (std::abs(u - 0.2) < 1e-12) {
+      left_out = run.at("id").get<std::int64_t>();
+      own = x;
+    }
+    if (std::abs(u - 0.18) < 1e-12) below = x;
+    if (std::abs(u - 0.22) < 1e-12) above = x;
+  }
+  ASSERT_NE(left_out, 0);
+  const auto built = run_cli({"surface", "build", "loo", "--body", "asr-v", "--outputs", "X", "--axes", "u",
+                              "--method", "linear", "--exclude-run", std::to_string(left_out)},
+                             dir_.path());
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  const auto query = run_cli({"query", "loo", "u=0.2", "--json"}, dir_.path());
+  ASSERT_EQ(query.exit_code, 0) << query.err;
+  const double predicted = nlohmann::json::parse(query.out).at("values").at("X").get<double>();
+  // Without its own run, the table interpolates the neighbours (forces on the body: negated magnitudes).
+  ASSERT_NE(below, 0.0);
+  ASSERT_NE(above, 0.0);
+  EXPECT_NEAR(predicted, -(below + above) / 2, 1e-12 * std::abs(predicted));
+  EXPECT_GT(std::abs(predicted + own), 1e-4);  // and not the left-out run's own value
+  const auto shown = nlohmann::json::parse(run_cli({"surface", "show", "loo", "--json"}, dir_.path()).out);
+  EXPECT_EQ(shown.at("runs").size(), all_.size() - 1);
+}
+
+}  // namespace
+}  // namespace hydrocoef
