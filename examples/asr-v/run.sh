@@ -25,7 +25,7 @@ echo "== import: paper Table I (surge) and the yaw table, body asr-v, into $db"
 h import "$here/asr-v-surge-damping.csv" --body asr-v --sign opposing --rho 998.2 --nu 1.004e-6
 h import "$here/asr-v-yaw-damping.csv" --body asr-v --sign on-body --rho 998.2 --nu 1.004e-6
 echo "   importing the same file again adds nothing:"
-h import "$here/asr-v-yaw-damping.csv" --body asr-v
+h import "$here/asr-v-yaw-damping.csv" --body asr-v --sign on-body --rho 998.2 --nu 1.004e-6
 
 echo
 echo "== runs"
