@@ -15,6 +15,7 @@
 #include "src/core/error.hpp"
 #include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
+#include "src/core/names.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
@@ -190,7 +191,9 @@ std::vector<Block> scan_blocks(std::string_view text, const std::string& file) {
       throw InputError(SourceLocation{file, block.name_line, 1},
                        "found " + (name.empty() ? std::string("nothing") : shown(name)) + " after '[Name]' on line " +
                            std::to_string(tag_line) + ", expected a location name");
-    block.name = std::string(name);
+    // A location name goes into messages, --location and the run's record:
+    // the name rule applies (src/core/names.hpp).
+    block.name = std::string(check_name(NameKind::Field, name, SourceLocation{file, tag_line + 1, 0}, "the location"));
 
     cursor.skip_blank_lines();
     if (cursor.at_end())

@@ -10,6 +10,7 @@
 
 #include "importers/text_table.hpp"
 #include "src/core/error.hpp"
+#include "src/core/names.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/units.hpp"
 
@@ -289,6 +290,10 @@ MonitorImport parse_cfx_monitor(std::string_view text, const std::string& file, 
   const char delimiter = detect_delimiter(header_line->text);
   std::vector<HeaderColumn> columns;
   for (auto& field : split_fields(*header_line, delimiter, file)) {
+    // Monitor names go into messages and --monitor: the name rule applies
+    // (an empty column, as a trailing delimiter leaves, is only skipped).
+    if (!field.text.empty())
+      check_name(NameKind::Field, field.text, SourceLocation{file, header_line->number, field.column}, "a monitor column");
     HeaderColumn column;
     column.split = split_name_and_unit(field.text);
     column.short_name = without_category(column.split.name);
