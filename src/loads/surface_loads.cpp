@@ -128,11 +128,16 @@ struct Sums {
   Vec3 n_dA{}, y_cross_n_dA{};  // y = x - x_ref
   double area = 0.0, y_dot_n_dA = 0.0;
   std::size_t degenerate = 0;
+  /// Σ over directed edges a→b of h(a) g(b) - h(b) g(a), modulo 2^64: exactly
+  /// 0 when every edge is walked once each way (closed, consistently
+  /// oriented), a random 64-bit number otherwise (see edge_hash).
+  std::uint64_t edge_residue = 0;
   std::size_t triangles = 0, quads = 0, polygons = 0;
   bool invalid = false;  ///< the block has an offset that goes back or a point index out of range
 
   void add(const Sums& o) {
     invalid = invalid || o.invalid;
+    edge_residue += o.edge_residue;
     triangles += o.triangles;
     quads += o.quads;
     polygons += o.polygons;
@@ -147,6 +152,30 @@ struct Sums {
     degenerate += o.degenerate;
   }
 };
+
+/// A 64-bit mix of a vertex index (splitmix64's finalizer).
+inline std::uint64_t mix64(std::uint64_t x) {
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+/// The face's share of Sums::edge_residue, with h = mix64 and g the index
+/// itself: h(a) b - h(b) a is antisymmetric in (a, b), which is all the
+/// cancellation needs, at one hash per vertex.
+inline std::uint64_t edge_residue(const std::uint32_t* indices, std::size_t k) {
+  std::uint64_t residue = 0;
+  const std::uint64_t g_first = indices[0], h_first = mix64(g_first);
+  std::uint64_t h_prev = h_first, g_prev = g_first;
+  for (std::size_t i = 1; i <= k; ++i) {
+    const std::uint64_t g = i < k ? indices[i] : g_first;
+    const std::uint64_t h = i < k ? mix64(g) : h_first;
+    residue += h_prev * g - h * g_prev;
+    h_prev = h;
+    g_prev = g;
+  }
+  return residue;
+}
 
 // ---- triangles with point data, eight at a time ---------------------------
 //
@@ -164,12 +193,14 @@ struct TriangleLanes {
   double y[3][3][kLanes];    ///< vertex, axis, lane: x - x_ref [m]
   double p[3][kLanes];       ///< vertex, lane: p - p_ref [Pa]
   double tau[3][3][kLanes];  ///< vertex, axis, lane [Pa]
+  std::uint64_t ids[3][kLanes];  ///< vertex, lane: point index
 };
 
 struct LaneSums {
   double force_p[3][kLanes]{}, force_v[3][kLanes]{}, moment_p[3][kLanes]{}, moment_v[3][kLanes]{};
   double n_dA[3][kLanes]{}, y_cross_n_dA[3][kLanes]{};
   double area[kLanes]{}, y_dot_n_dA[kLanes]{}, degenerate[kLanes]{};
+  std::uint64_t edge_residue[kLanes]{};
 
   void add_to(Sums& s) const {
     for (int j = 0; j < kLanes; ++j) {
@@ -185,6 +216,7 @@ struct LaneSums {
       lane.area = area[j];
       lane.y_dot_n_dA = y_dot_n_dA[j];
       lane.degenerate = static_cast<std::size_t>(degenerate[j]);
+      lane.edge_residue = edge_residue[j];
       s.add(lane);
     }
   }
@@ -226,6 +258,10 @@ template <bool Shear>
     s.y_cross_n_dA[2][j] += cx * Sy - cy * Sx;
     s.y_dot_n_dA[j] += cx * Sx + cy * Sy + cz * Sz;
     s.degenerate[j] += a <= degenerate_area ? 1.0 : 0.0;
+    // The triangle's share of the edge residue (see edge_residue()).
+    const std::uint64_t g0 = in.ids[0][j], g1 = in.ids[1][j], g2 = in.ids[2][j];
+    const std::uint64_t h0 = mix64(g0), h1 = mix64(g1), h2 = mix64(g2);
+    s.edge_residue[j] += (h0 * g1 - h1 * g0) + (h1 * g2 - h2 * g1) + (h2 * g0 - h0 * g2);
     if constexpr (Shear) {
       const double t0x = in.tau[0][0][j], t0y = in.tau[0][1][j], t0z = in.tau[0][2][j];
       const double t1x = in.tau[1][0][j], t1y = in.tau[1][1][j], t1z = in.tau[1][2][j];
@@ -404,8 +440,10 @@ struct Integrator {
     const std::size_t k = end - begin;
     if (k < 3) {
       ++s.degenerate;
+      if (k > 0) s.edge_residue += edge_residue(mesh.face_indices.data() + begin, k);
       return;
     }
+    s.edge_residue += edge_residue(mesh.face_indices.data() + begin, k);
     if (k == 3) ++s.triangles;
     else if (k == 4) ++s.quads;
     else ++s.polygons;
@@ -485,6 +523,7 @@ struct Integrator {
         in.y[k][1][j] = x[1] - x_ref[1];
         in.y[k][2][j] = x[2] - x_ref[2];
         in.p[k][j] = pressure.component[0][i] - p_ref;
+        in.ids[k][j] = i;
         if (with_shear)
           for (int c = 0; c < 3; ++c) in.tau[k][c][j] = shear.component[c][i * shear.stride];
       }
@@ -657,6 +696,19 @@ void check_mesh_shape(const SurfaceMesh& mesh) {
   throw std::logic_error("throw_not_finite_point: every coordinate is finite");
 }
 
+/// True when V - E + F = 2 with E = (sum of face sizes) / 2 and V the number
+/// of points, and every point is used by a face.
+bool genus_zero_closed(const SurfaceMesh& mesh) {
+  const auto corners = static_cast<std::int64_t>(mesh.face_indices.size());
+  if (corners % 2 != 0) return false;
+  const auto points = static_cast<std::int64_t>(mesh.point_count());
+  const auto faces = static_cast<std::int64_t>(mesh.face_count());
+  if (points - corners / 2 + faces != 2) return false;
+  std::vector<std::uint8_t> used(mesh.point_count(), 0);
+  for (const std::uint32_t i : mesh.face_indices) used[i] = 1;
+  return std::find(used.begin(), used.end(), std::uint8_t{0}) == used.end();
+}
+
 /// Edge counts of the edges whose smaller vertex lies in [first, last).
 struct EdgeCounts {
   std::size_t boundary = 0, nonmanifold = 0, inconsistent = 0;
@@ -749,12 +801,16 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
     throw InputError("the integrals overflow (coordinates or values near the largest double); expected a surface "
                      "of finite area and forces");
   }
-  // Topology, counted exactly, edge by edge, on two threads. (A hash of the
-  // directed edges that cancels when every edge is walked as often one way
-  // as the other cannot stand in for it: every face listed twice, each edge
-  // walked twice each way, passes such a test, is not manifold, and
-  // integrates to twice the force.)
-  {
+  // Topology. A zero edge residue says that every edge is walked as often one
+  // way as the other (only a mesh built to cancel the 64-bit hash sums could
+  // fake it); that alone would take every face listed twice (each edge walked
+  // twice each way, twice the force) for a closed surface. With every point
+  // used, the Euler characteristic V - E + F (E = half the face corners) of a
+  // closed, consistently oriented surface of genus 0 is 2, and any set of
+  // faces listed twice lowers it (a closed set of faces has more edges than
+  // faces). So the shortcut is taken only for residue 0, chi = 2 and no unused
+  // point; anything else is counted exactly, edge by edge, on both threads.
+  if (!(sums.edge_residue == 0 && genus_zero_closed(mesh))) {
     const auto points = static_cast<std::uint32_t>(mesh.point_count());
     const auto split = static_cast<std::uint32_t>(0.4 * points);  // lower vertices own more edges
     EdgeCounts low_edges, high_edges;
