@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "cli/common.hpp"
@@ -20,7 +21,42 @@ struct RunsArgs {
   std::optional<std::string> body;
   SelectionArgs selection;
   bool json = false;
+  bool csv = false;
 };
+
+/// The runs as CSV (RFC 4180; names through escape::csv_field): id, body,
+/// u..r, one column per disturbance any run has, X..N (forces on the body,
+/// SI), the force sources. Empty cells where a run has no such value.
+void print_runs_csv(const std::vector<StoredRun>& runs) {
+  std::set<std::string> disturbance_names;
+  for (const auto& run : runs)
+    for (const auto& [name, value] : run.key.disturbances) disturbance_names.insert(name);
+  std::string out = "id,body";
+  for (const auto name : kVelocityNames) out += "," + std::string(name);
+  for (const auto& name : disturbance_names) out += "," + escape::csv_field(name);
+  for (const auto name : kForceNames) out += "," + std::string(name);
+  out += ",sources\n";
+  for (const auto& run : runs) {
+    out += std::to_string(run.id) + "," + escape::csv_field(run.key.body);
+    for (const double v : run.key.nu_b) out += "," + number(v);
+    for (const auto& name : disturbance_names) {
+      const auto found = run.key.disturbances.find(name);
+      out += "," + (found == run.key.disturbances.end() ? std::string() : number(found->second));
+    }
+    std::set<std::string> sources;
+    for (const auto& force : run.tau_b) {
+      // Forces on the body: a damping magnitude as tabulated is negated.
+      out += "," + (force ? number(force->sign == SignConvention::OpposingMotion ? -force->value.total
+                                                                                  : force->value.total)
+                          : std::string());
+      if (force) sources.insert(force->source_path);
+    }
+    std::string list;
+    for (const auto& source : sources) list += (list.empty() ? "" : ";") + source;
+    out += "," + escape::csv_field(list) + "\n";
+  }
+  std::cout << out;
+}
 
 nlohmann::json run_json(const StoredRun& run) {
   nlohmann::json out = key_json(run.key);
@@ -49,6 +85,10 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   RunFilter filter;
   filter.body = args.body;
   const auto runs = selected_runs(database, filter, parse_selection(args.selection.where, args.selection.exclude_runs));
+  if (args.csv) {
+    print_runs_csv(runs);
+    return;
+  }
   if (args.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& run : runs) out.push_back(run_json(run));
@@ -219,6 +259,8 @@ void add_runs_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--body", args->body, "Only runs of this body");
   add_selection_options(*command, args->selection);
   command->add_flag("--json", args->json, "Print JSON");
+  command->add_flag("--csv", args->csv,
+                    "Print CSV: id, body, u..r, disturbances, X..N (forces on the body, SI) and the source files");
   command->callback([args, command, &global] {
     // "runs" lists only when no subcommand (show, delete) was given.
     if (!command->get_subcommands().empty()) return;

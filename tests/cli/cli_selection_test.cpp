@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 
+#include "tests/support/csv_record.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -85,6 +87,27 @@ TEST_F(Selection, LeaveOneOutByHandIsOneBuildAndOneQuery) {
   EXPECT_GT(std::abs(predicted + own), 1e-4);  // and not the left-out run's own value
   const auto shown = nlohmann::json::parse(run_cli({"surface", "show", "loo", "--json"}, dir_.path()).out);
   EXPECT_EQ(shown.at("runs").size(), all_.size() - 1);
+}
+
+// runs --csv: one well-formed row per selected run, forces on the body.
+TEST_F(Selection, RunsAsCsvHaveOneRowPerRunWithForcesOnTheBody) {
+  const auto csv = run_cli({"runs", "--csv", "--where", "u>0"}, dir_.path());
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  std::istringstream lines(csv.out);
+  std::string line;
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(lines, line)) {
+    const auto record = test::csv_record(line);
+    ASSERT_TRUE(record) << line;
+    rows.push_back(*record);
+  }
+  ASSERT_EQ(rows.size(), 1 + all_.size() - 1);  // the header, every run but the one at rest
+  EXPECT_EQ(rows[0][2], "u");
+  EXPECT_EQ(rows[0][8], "X");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), rows[0].size());
+    EXPECT_LT(std::stod(rows[i][8]), 0.0);  // drag on a body moving forward: X < 0
+  }
 }
 
 }  // namespace
