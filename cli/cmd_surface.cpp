@@ -26,6 +26,7 @@ struct BuildArgs {
   std::vector<std::string> extrapolate;
   std::vector<std::string> where;
   std::vector<std::int64_t> exclude_runs;
+  bool replace = false;  ///< a surface of this name may be replaced (rebuild always replaces)
   std::string kernel = "cubic";
   int degree = 1;
   double smoothing = 0.0;
@@ -222,6 +223,15 @@ void build(const BuildArgs& args, const GlobalOptions& global) {
   check_name(NameKind::Body, args.body, {}, "--body");
   const SurfaceSpec spec = make_spec(args);
   Database database(global.database, Database::OpenMode::MustExist);
+  // Reusing a name replaces what another build made: only when asked.
+  if (!args.replace) {
+    for (const auto& existing : database.surfaces())
+      if (existing.name == args.name)
+        throw InputError(SourceLocation{global.database},
+                         "a surface named '" + args.name + "' exists (built " + existing.created_at +
+                             " from " + std::to_string(existing.run_ids.size()) +
+                             " runs); give --replace to replace it, or another name");
+  }
   RunFilter filter;
   filter.body = args.body;
   const RunSelection selection = parse_selection(args.where, args.exclude_runs);
@@ -283,6 +293,7 @@ void rebuild(const NameArgs& args, const GlobalOptions& global) {
       throw InputError("surface '" + record.name + "' was not built by hydrocoef surface build; it cannot be rebuilt");
     BuildArgs build_args = args_from_json(record.name, record.body, definition["build"]);
     build_args.json = args.json;
+    build_args.replace = true;
     if (args.json) {
       std::ostringstream captured;
       auto* old = std::cout.rdbuf(captured.rdbuf());
@@ -376,6 +387,7 @@ void add_surface_command(CLI::App& app, const GlobalOptions& global) {
   b->add_option("--where", build_args->where,
                  "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity component "
                  "(SI) or disturbance; repeatable, all must hold");
+  b->add_flag("--replace", build_args->replace, "Replace a stored surface of the same name");
   b->add_option("--exclude-run", build_args->exclude_runs, "Leave out the run with this id (repeatable; leave-one-out by hand)");
   b->add_option("--kernel", build_args->kernel, "RBF kernel: cubic, thin-plate, linear")->capture_default_str();
   b->add_option("--degree", build_args->degree, "RBF polynomial degree (0, 1, 2)")->capture_default_str();

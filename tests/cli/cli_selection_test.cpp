@@ -87,6 +87,17 @@ TEST_F(Selection, LeaveOneOutByHandIsOneBuildAndOneQuery) {
   EXPECT_GT(std::abs(predicted + own), 1e-4);  // and not the left-out run's own value
   const auto shown = nlohmann::json::parse(run_cli({"surface", "show", "loo", "--json"}, dir_.path()).out);
   EXPECT_EQ(shown.at("runs").size(), all_.size() - 1);
+  // The name is taken: building it again needs --replace.
+  const std::vector<std::string> again = {"surface", "build", "loo", "--body", "asr-v", "--outputs", "X", "--axes", "u",
+                                          "--method", "linear"};
+  const auto refused = run_cli(again, dir_.path());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("a surface named 'loo' exists"), std::string::npos) << refused.err;
+  auto replacing = again;
+  replacing.push_back("--replace");
+  EXPECT_EQ(run_cli(replacing, dir_.path()).exit_code, 0);
+  EXPECT_EQ(nlohmann::json::parse(run_cli({"surface", "show", "loo", "--json"}, dir_.path()).out).at("runs").size(),
+            all_.size());
 }
 
 // runs --csv: one well-formed row per selected run, forces on the body.
