@@ -13,8 +13,8 @@
 
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
-#include "src/core/version.hpp"
 #include "src/core/names.hpp"
+#include "src/core/version.hpp"
 #include "src/store/checked_row.hpp"
 #include "src/store/migrations.hpp"
 #include "src/store/schema_check.hpp"
@@ -92,6 +92,23 @@ store::Connection open_connection(const std::filesystem::path& path, Database::O
   return {path.string(), store::Access::ReadOnly};
 }
 
+/// What every connection of a Database runs first.
+void configure(store::Connection& connection) {
+  connection.execute("PRAGMA foreign_keys = ON");
+  // FULL: the WAL is synced at every commit, so a committed import survives a
+  // power loss as well as a killed process. NORMAL would already keep it after
+  // SIGKILL (the WAL is in the OS page cache), but imports are one transaction
+  // per call and one fsync per call costs nothing next to reading CFD files.
+  connection.execute("PRAGMA synchronous = FULL");
+}
+
+/// PRAGMA user_version as stored (any 64-bit value in a received file).
+std::int64_t stored_schema_version(store::Connection& connection) {
+  auto statement = connection.prepare("PRAGMA user_version");
+  statement.step();
+  return statement.get_int(0);
+}
+
 }  // namespace
 
 Database::Database(const std::filesystem::path& path, OpenMode mode)
@@ -105,12 +122,7 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
       connection_ = store::Connection(path_.string(), store::Access::Immutable);
     }
   }
-  connection_.execute("PRAGMA foreign_keys = ON");
-  // FULL: the WAL is synced at every commit, so a committed import survives a
-  // power loss as well as a killed process. NORMAL would already keep it after
-  // SIGKILL (the WAL is in the OS page cache), but imports are one transaction
-  // per call and one fsync per call costs nothing next to reading CFD files.
-  connection_.execute("PRAGMA synchronous = FULL");
+  configure(connection_);
   // Reading the schema is the first access to the file's content: a foreign or
   // damaged file fails here with SQLite's "file is not a database".
   const std::string check = integrity_check();
@@ -128,8 +140,7 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
       // be written, as a writing command would.
       try {
         connection_ = store::Connection(path_.string(), store::Access::ReadWrite);
-        connection_.execute("PRAGMA foreign_keys = ON");
-        connection_.execute("PRAGMA synchronous = FULL");
+        configure(connection_);
       } catch (const InputError&) {
       }
       if (sqlite3_db_readonly(connection_.handle(), "main"))
@@ -162,11 +173,7 @@ void Database::use_wal() {
 
 int Database::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
 
-int Database::schema_version() {
-  auto statement = connection_.prepare("PRAGMA user_version");
-  statement.step();
-  return static_cast<int>(statement.get_int(0));
-}
+int Database::schema_version() { return static_cast<int>(stored_schema_version(connection_)); }
 
 std::string Database::integrity_check() {
   auto statement = connection_.prepare("PRAGMA quick_check");
@@ -182,9 +189,7 @@ std::string Database::integrity_check() {
 }
 
 int Database::checked_schema_version() {
-  auto statement = connection_.prepare("PRAGMA user_version");
-  statement.step();
-  const std::int64_t version = statement.get_int(0);
+  const std::int64_t version = stored_schema_version(connection_);
   const int latest = latest_schema_version();
   if (version > latest)
     throw InputError(SourceLocation{path_.string()},

@@ -211,6 +211,36 @@ ClosestPair closest_pair(const std::vector<double>& centers, std::size_t axes) {
 // smoothing included (lambda multiplies w_i = 0). Undefined (NaN) for a
 // sample with leverage 1 in P: without it the others do not determine the
 // polynomial.
+/// The summary of leave-one-out errors (sample-major, NaN for a sample
+/// whose error is undefined): per output the max |error| and the RMS over
+/// the samples where it is defined (NaN when there are none), and the count
+/// of undefined samples.
+RbfCrossValidation summarize_leave_one_out(std::vector<double> errors, std::size_t outputs) {
+  RbfCrossValidation cv;
+  cv.errors = std::move(errors);
+  cv.max_abs.assign(outputs, 0.0);
+  cv.rms.assign(outputs, 0.0);
+  std::size_t defined = 0;
+  for (std::size_t i = 0; i * outputs < cv.errors.size(); ++i) {
+    const double* e = &cv.errors[i * outputs];
+    if (std::isnan(e[0])) {
+      ++cv.undefined_count;
+      continue;
+    }
+    ++defined;
+    for (std::size_t k = 0; k < outputs; ++k) {
+      cv.max_abs[k] = std::max(cv.max_abs[k], std::abs(e[k]));
+      cv.rms[k] += e[k] * e[k];
+    }
+  }
+  for (std::size_t k = 0; k < outputs; ++k) {
+    cv.rms[k] =
+        defined > 0 ? std::sqrt(cv.rms[k] / static_cast<double>(defined)) : std::numeric_limits<double>::quiet_NaN();
+    if (defined == 0) cv.max_abs[k] = std::numeric_limits<double>::quiet_NaN();
+  }
+  return cv;
+}
+
 RbfCrossValidation leave_one_out(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu, const Eigen::MatrixXd& solution,
                                  const Eigen::MatrixXd& polynomial) {
   const Eigen::Index rows = polynomial.rows();
@@ -220,30 +250,13 @@ RbfCrossValidation leave_one_out(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu,
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(polynomial);
   const Eigen::MatrixXd thin_q = qr.householderQ() * Eigen::MatrixXd::Identity(rows, terms);
 
-  RbfCrossValidation cv;
-  cv.errors.assign(static_cast<std::size_t>(rows) * outputs, std::numeric_limits<double>::quiet_NaN());
-  cv.max_abs.assign(outputs, 0.0);
-  cv.rms.assign(outputs, 0.0);
-  std::size_t defined = 0;
+  std::vector<double> errors(static_cast<std::size_t>(rows) * outputs, std::numeric_limits<double>::quiet_NaN());
   for (Eigen::Index i = 0; i < rows; ++i) {
-    if (thin_q.row(i).squaredNorm() > kUndefinedLeverage) {
-      ++cv.undefined_count;
-      continue;
-    }
-    ++defined;
-    for (std::size_t k = 0; k < outputs; ++k) {
-      const double error = solution(i, static_cast<Eigen::Index>(k)) / inverse(i, i);
-      cv.errors[static_cast<std::size_t>(i) * outputs + k] = error;
-      cv.max_abs[k] = std::max(cv.max_abs[k], std::abs(error));
-      cv.rms[k] += error * error;
-    }
+    if (thin_q.row(i).squaredNorm() > kUndefinedLeverage) continue;  // undefined: stays NaN
+    for (std::size_t k = 0; k < outputs; ++k)
+      errors[static_cast<std::size_t>(i) * outputs + k] = solution(i, static_cast<Eigen::Index>(k)) / inverse(i, i);
   }
-  for (std::size_t k = 0; k < outputs; ++k) {
-    cv.rms[k] =
-        defined > 0 ? std::sqrt(cv.rms[k] / static_cast<double>(defined)) : std::numeric_limits<double>::quiet_NaN();
-    if (defined == 0) cv.max_abs[k] = std::numeric_limits<double>::quiet_NaN();
-  }
-  return cv;
+  return summarize_leave_one_out(std::move(errors), outputs);
 }
 
 }  // namespace
@@ -280,32 +293,16 @@ RbfSurface::RbfSurface(std::size_t axis_count, std::span<const double> points, s
     if (!std::isfinite(w)) throw InputError("RBF solution has a kernel weight that is not finite");
   for (const double w : solution.polynomial_weights)
     if (!std::isfinite(w)) throw InputError("RBF solution has a polynomial weight that is not finite");
+  // A sample's errors are all NaN (undefined) or all finite.
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* e = &solution.loo_errors[i * output_count_];
+    for (std::size_t k = 0; k < output_count_; ++k)
+      if (std::isnan(e[0]) ? !std::isnan(e[k]) : !std::isfinite(e[k]))
+        throw InputError("RBF solution has a leave-one-out error that is not finite");
+  }
   kernel_weights_ = solution.kernel_weights;
   polynomial_weights_ = solution.polynomial_weights;
-  RbfCrossValidation cv;
-  cv.errors = solution.loo_errors;
-  cv.max_abs.assign(output_count_, 0.0);
-  cv.rms.assign(output_count_, 0.0);
-  std::size_t defined = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double* e = &cv.errors[i * output_count_];
-    if (std::isnan(e[0])) {
-      ++cv.undefined_count;
-      continue;
-    }
-    ++defined;
-    for (std::size_t k = 0; k < output_count_; ++k) {
-      if (!std::isfinite(e[k])) throw InputError("RBF solution has a leave-one-out error that is not finite");
-      cv.max_abs[k] = std::max(cv.max_abs[k], std::abs(e[k]));
-      cv.rms[k] += e[k] * e[k];
-    }
-  }
-  for (std::size_t k = 0; k < output_count_; ++k) {
-    cv.rms[k] =
-        defined > 0 ? std::sqrt(cv.rms[k] / static_cast<double>(defined)) : std::numeric_limits<double>::quiet_NaN();
-    if (defined == 0) cv.max_abs[k] = std::numeric_limits<double>::quiet_NaN();
-  }
-  cross_validation_ = std::move(cv);
+  cross_validation_ = summarize_leave_one_out(solution.loo_errors, output_count_);
 }
 
 RbfSolution RbfSurface::solution() const {

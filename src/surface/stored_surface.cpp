@@ -88,21 +88,18 @@ std::optional<std::string> quality_problem(const std::string& text) {
   if (text.empty()) return std::nullopt;
   const json quality = json::parse(text, nullptr, false);
   if (quality.is_discarded() || !quality.is_object()) return "its quality figures are not a JSON object";
-  const auto wrong = [&](const char* key, bool ok) -> std::optional<std::string> {
-    if (!quality.contains(key) || ok) return std::nullopt;
-    return std::string("its quality figure '") + key + "' is of the wrong type";
-  };
-  const auto has = [&](const char* key) -> const json& { return quality.at(key); };
-  if (auto p = wrong("loo_method", quality.contains("loo_method") && has("loo_method").is_string())) return p;
-  if (auto p = wrong("runs", quality.contains("runs") && has("runs").is_number_unsigned())) return p;
-  if (auto p = wrong("loo_defined", quality.contains("loo_defined") && has("loo_defined").is_number_unsigned())) return p;
-  if (auto p = wrong("grid_points", quality.contains("grid_points") && has("grid_points").is_number_unsigned())) return p;
-  if (auto p = wrong("far_threshold", quality.contains("far_threshold") && has("far_threshold").is_number())) return p;
-  if (auto p = wrong("far_from_data", quality.contains("far_from_data") && has("far_from_data").is_array())) return p;
+  using TypeCheck = bool (json::*)() const noexcept;
+  const std::pair<const char*, TypeCheck> typed[] = {
+      {"loo_method", &json::is_string},        {"runs", &json::is_number_unsigned},
+      {"loo_defined", &json::is_number_unsigned}, {"grid_points", &json::is_number_unsigned},
+      {"far_threshold", &json::is_number},     {"far_from_data", &json::is_array}};
+  for (const auto& [key, is_type] : typed)
+    if (quality.contains(key) && !(quality.at(key).*is_type)())
+      return std::string("its quality figure '") + key + "' is of the wrong type";
   if (quality.contains("grid_points") && (!quality.contains("far_threshold") || !quality.contains("far_from_data")))
     return "its quality figures name a resampled grid without its far-from-data figures";
   if (quality.contains("outputs")) {
-    const json& outputs = has("outputs");
+    const json& outputs = quality.at("outputs");
     if (!outputs.is_object()) return "its quality figure 'outputs' is of the wrong type";
     for (const auto& [name, entry] : outputs.items()) {
       if (!entry.is_object()) return "its quality figures of output '" + printable_text(name, 20) + "' are not an object";
