@@ -76,7 +76,21 @@ nlohmann::json run_json(const StoredRun& run) {
         {"sign_convention", std::string(to_string(f.sign))},
         {"source", f.source_path},
         {"source_line", f.source_line}};
+    if (f.statistics) {
+      const auto& st = *f.statistics;
+      out["forces"][std::string(kForceNames[i])]["statistics"] = {
+          {"abscissa", st.abscissa},
+          {"window_method", st.window_method},
+          {"window", {st.window_first, st.window_last}},
+          {"samples", st.samples},
+          {"standard_error", st.values.standard_error},
+          {"spread", st.values.spread},
+          {"drift", st.values.drift},
+          {"effective_samples", st.values.effective_samples},
+          {"flags", st.flags}};
+    }
   }
+  out["flags"] = run_flags(run);
   return out;
 }
 
@@ -102,6 +116,12 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   }
   // Only the velocity and force columns some run uses are shown.
   std::array<bool, 6> velocity_used{}, force_used{};
+  bool any_history = false, any_tabulated = false;
+  for (const auto& run : runs)
+    for (const auto& force : run.tau_b) {
+      any_history = any_history || (force && force->statistics);
+      any_tabulated = any_tabulated || (force && force->sign == SignConvention::OpposingMotion);
+    }
   for (const auto& run : runs)
     for (std::size_t i = 0; i < 6; ++i) {
       velocity_used[i] = velocity_used[i] || run.key.nu_b[i] != 0.0;
@@ -113,6 +133,7 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
     if (velocity_used[i]) table << std::setw(11) << kVelocityNames[i];
   for (std::size_t i = 0; i < 6; ++i)
     if (force_used[i]) table << std::setw(13) << kForceNames[i];
+  if (any_history) table << std::setw(12) << "history";
   table << "disturbances\n";
   for (const auto& run : runs) {
     table << std::setw(6) << run.id << std::setw(12) << run.key.body;
@@ -124,13 +145,26 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
       if (run.tau_b[i] && run.tau_b[i]->sign == SignConvention::OpposingMotion) cell += "*";
       table << std::setw(13) << cell;
     }
+    if (any_history) {
+      // A run averaged from a force history: "ok" when it converged, else its flags.
+      bool averaged = false;
+      for (const auto& force : run.tau_b) averaged = averaged || (force && force->statistics);
+      std::string flags;
+      for (const auto& flag : run_flags(run)) flags += (flags.empty() ? "" : ",") + flag;
+      table << std::setw(12) << (!averaged ? "-" : flags.empty() ? "ok" : flags + " ");
+    }
     std::string disturbances;
     for (const auto& [name, value] : run.key.disturbances)
       disturbances += (disturbances.empty() ? "" : " ") + name + "=" + significant(value, 6);
     table << disturbances << '\n';
   }
-  std::cout << table.str() << runs.size() << " runs; SI units (m/s, rad/s, N, N m); forces on the body, "
-            << "* = as tabulated, positive opposes motion\n";
+  std::cout << table.str() << runs.size() << (runs.size() == 1 ? " run" : " runs")
+            << "; SI units (m/s, rad/s, N, N m); forces on the body"
+            << (any_tabulated ? "; * = as tabulated, positive opposes motion" : "")
+            << (any_history ? "; history: means over a force history, 'ok' when converged, else its flags "
+                              "('runs show ID' gives the window and standard errors)"
+                            : "")
+            << '\n';
 }
 
 struct ShowArgs {
@@ -184,6 +218,18 @@ void run_show(const ShowArgs& args, const GlobalOptions& global) {
     std::cout << "  " << kForceNames[i] << " = " << significant(f.value.total, 8) << (i < 3 ? " N" : " N m") << " ("
               << to_string(f.sign) << "), from " << f.source_path << (f.source_line ? ":" + std::to_string(f.source_line) : "")
               << (f.import_id ? ", import " + std::to_string(f.import_id) : std::string()) << '\n';
+    if (f.statistics) {
+      const auto& st = *f.statistics;
+      const std::string unit = i < 3 ? " N" : " N m";
+      std::string flags;
+      for (const auto& flag : st.flags) flags += (flags.empty() ? "" : ", ") + flag;
+      std::cout << "      mean over " << st.abscissa << " " << significant(st.window_first, 8) << " to "
+                << significant(st.window_last, 8) << " (" << st.samples << " samples, " << st.window_method
+                << "): standard error " << significant(st.values.standard_error, 3) << unit << " ("
+                << significant(st.values.effective_samples, 3) << " effective samples), spread "
+                << significant(st.values.spread, 3) << unit << ", drift " << significant(st.values.drift, 3) << unit
+                << (flags.empty() ? ", converged" : ", flags: " + flags) << '\n';
+    }
   }
   for (const auto& [id, record] : imports) {
     std::cout << "  import " << id << ": " << record.path << " (" << (record.resolved_path.empty() ? "path not resolved" : record.resolved_path)

@@ -307,6 +307,13 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       "INSERT OR REPLACE INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, "
       "source_line, import_id) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
 
+  // A component's statistics go with it: a value written without
+  // statistics leaves none of an earlier value behind.
+  auto drop_statistics = connection_.prepare("DELETE FROM run_force_statistics WHERE run_id = ? AND component = ?");
+  auto write_statistics = connection_.prepare(
+      "INSERT INTO run_force_statistics(run_id, component, abscissa, window_method, window_first, window_last, "
+      "samples, flags, standard_error, spread, drift, effective_samples) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+
   auto write_surface = connection_.prepare(
       "INSERT OR REPLACE INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
       "degenerate_faces, normals_flipped, n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, "
@@ -454,6 +461,26 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
             .bind(8, static_cast<std::int64_t>(run.source_line))
             .bind(9, import_id)
             .run();
+        drop_statistics.bind(1, run_id).bind(2, force_name(i)).run();
+        if (run.statistics && run.statistics->components[i]) {
+          const RunStatistics& statistics = *run.statistics;
+          const ComponentStatistics& values = *statistics.components[i];
+          std::string flags;
+          for (const auto& flag : statistics.flags) flags += (flags.empty() ? "" : ",") + flag;
+          write_statistics.bind(1, run_id)
+              .bind(2, force_name(i))
+              .bind(3, statistics.abscissa)
+              .bind(4, statistics.window_method)
+              .bind(5, statistics.window_first)
+              .bind(6, statistics.window_last)
+              .bind(7, static_cast<std::int64_t>(statistics.samples))
+              .bind(8, flags)
+              .bind(9, values.standard_error)
+              .bind(10, values.spread)
+              .bind(11, values.drift)
+              .bind(12, values.effective_samples)
+              .run();
+        }
         ++outcome.components_written;
         extended = true;
       }
@@ -543,6 +570,39 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     force.import_id = row.integer(9, 0, std::numeric_limits<std::int64_t>::max());
     out[found->second].tau_b[*component] = std::move(force);
   }
+  auto statistics = connection_.prepare(
+      "SELECT run_id, component, abscissa, window_method, window_first, window_last, samples, flags, standard_error, "
+      "spread, drift, effective_samples FROM run_force_statistics");
+  while (statistics.step()) {
+    const auto found = index.find(statistics.get_int(0));
+    if (found == index.end()) continue;
+    const store::CheckedRow row(statistics, db, "run_force_statistics", statistics.get_int(0));
+    const auto component = *force_index(row.one_of(1, {"X", "Y", "Z", "K", "M", "N"}));
+    auto& force = out[found->second].tau_b[component];
+    if (!force)
+      throw InputError(SourceLocation{db}, "table run_force_statistics, run " + std::to_string(statistics.get_int(0)) +
+                                               ": statistics of " + force_name(component) +
+                                               ", which the run does not have; expected statistics only beside a "
+                                               "stored force component");
+    StoredStatistics stored;
+    stored.abscissa = row.one_of(2, {"time", "iteration"});
+    stored.window_method = row.text(3, 1024);
+    stored.window_first = row.real(4);
+    stored.window_last = row.real(5);
+    stored.samples = static_cast<std::size_t>(row.integer(6, 0, std::numeric_limits<std::int64_t>::max()));
+    const std::string flags = row.text(7, 1024);
+    for (std::size_t start = 0; start < flags.size();) {
+      const std::size_t end = std::min(flags.find(',', start), flags.size());
+      stored.flags.emplace_back(check_name(NameKind::Field, std::string_view(flags).substr(start, end - start),
+                                           SourceLocation{db}, "a convergence flag in table run_force_statistics"));
+      start = end + 1;
+    }
+    stored.values.standard_error = row.non_negative(8);
+    stored.values.spread = row.non_negative(9);
+    stored.values.drift = row.real(10);
+    stored.values.effective_samples = row.non_negative(11);
+    force->statistics = std::move(stored);
+  }
   auto surfaces = connection_.prepare(
       "SELECT run_id, faces, area, signed_volume, closed, boundary_edges, degenerate_faces, normals_flipped, "
       "n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, reference_pressure, "
@@ -629,6 +689,15 @@ std::vector<SourceRecord> Database::sources() {
   return out;
 }
 
+std::vector<std::string> run_flags(const StoredRun& run) {
+  std::vector<std::string> out;
+  for (const auto& force : run.tau_b)
+    if (force && force->statistics)
+      for (const auto& flag : force->statistics->flags)
+        if (std::find(out.begin(), out.end(), flag) == out.end()) out.push_back(flag);
+  return out;
+}
+
 std::vector<std::string> Database::bodies() {
   auto select = connection_.prepare("SELECT name, id FROM body ORDER BY name");
   std::vector<std::string> out;
@@ -636,11 +705,24 @@ std::vector<std::string> Database::bodies() {
   return out;
 }
 
-std::int64_t Database::save_fit(const FitRecord& fit) { return save_fits({fit}).front(); }
+std::int64_t Database::save_fit(const FitRecord& fit, NameTaken taken) { return save_fits({fit}, taken).front(); }
 
-std::vector<std::int64_t> Database::save_fits(const std::vector<FitRecord>& fits) {
+std::vector<std::int64_t> Database::save_fits(const std::vector<FitRecord>& fits, NameTaken taken) {
   for (const auto& fit : fits) check_name(NameKind::Fit, fit.name, {}, "the fit");
   store::Transaction transaction(connection_);
+  if (taken == NameTaken::Refuse) {
+    auto existing = connection_.prepare("SELECT id, created_at FROM fit WHERE name = ?");
+    for (const auto& fit : fits) {
+      existing.bind(1, fit.name);
+      if (existing.step()) {
+        const std::string message = "a fit named '" + escape::one_line(fit.name) + "' exists (fit " +
+                                    std::to_string(existing.get_int(0)) + ", made " + existing.get_text(1) +
+                                    "); give --replace to replace it, or another --name";
+        throw InputError(SourceLocation{path_.string()}, message);
+      }
+      existing.reset();
+    }
+  }
   std::vector<std::int64_t> ids;
   for (const auto& fit : fits) ids.push_back(insert_fit(fit));
   transaction.commit();
@@ -653,7 +735,7 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
   connection_.prepare("DELETE FROM fit WHERE name = ?").bind(1, fit.name).run();
   auto insert = connection_.prepare(
       "INSERT INTO fit(name, body_id, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
-      "created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "created_at, mirror) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   insert.bind(1, fit.name)
       .bind(2, body)
       .bind(3, fit.dof)
@@ -666,6 +748,7 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
       .bind(10, fit.rmse)
       .bind(11, fit.r2)
       .bind(12, utc_timestamp_now())
+      .bind(13, fit.mirror)
       .run();
   const std::int64_t id = connection_.last_insert_id();
   auto coefficient = connection_.prepare(
@@ -682,7 +765,7 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
 std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
   std::string sql =
       "SELECT fit.id, fit.name, body.name, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
-      "created_at, stale FROM fit JOIN body ON body.id = fit.body_id";
+      "created_at, stale, mirror FROM fit JOIN body ON body.id = fit.body_id";
   if (body) sql += " WHERE body.name = ?1";
   sql += " ORDER BY fit.name";
   auto select = connection_.prepare(sql);
@@ -706,6 +789,7 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
     fit.r2 = row.optional_real(11).value_or(kAbsent);
     fit.created_at = row.text(12, 64);
     fit.stale = row.integer(13, 0, 1) != 0;
+    fit.mirror = row.text(14, 256);
     out.push_back(std::move(fit));
   }
   auto coefficients =
@@ -816,6 +900,11 @@ void Database::remove_import_forces(std::int64_t import_id) {
                  "(SELECT run_id FROM run_force WHERE import_id = ?1)")
       .bind(1, import_id)
       .run();
+  connection_.prepare(
+                 "DELETE FROM run_force_statistics WHERE EXISTS (SELECT 1 FROM run_force f WHERE f.import_id = ? AND "
+                 "f.run_id = run_force_statistics.run_id AND f.component = run_force_statistics.component)")
+      .bind(1, import_id)
+      .run();
   connection_.prepare("DELETE FROM run_force WHERE import_id = ?").bind(1, import_id).run();
   // A run left with no force component is no run.
   auto remaining = connection_.prepare("SELECT count(*) FROM run_force WHERE run_id = ?");
@@ -857,6 +946,7 @@ DeleteOutcome Database::delete_runs(const std::vector<std::int64_t>& ids) {
     components.step();
     outcome.components += static_cast<std::size_t>(components.get_int(0));
     components.reset();
+    connection_.prepare("DELETE FROM run_force_statistics WHERE run_id = ?").bind(1, id).run();
     connection_.prepare("DELETE FROM run_force WHERE run_id = ?").bind(1, id).run();
     connection_.prepare("DELETE FROM run_surface WHERE run_id = ?").bind(1, id).run();
     connection_.prepare("DELETE FROM run WHERE id = ?").bind(1, id).run();

@@ -18,6 +18,18 @@
 namespace hydrocoef {
 
 /// A force component as stored, with where it came from.
+/// A force component that is a mean over a window of a force history: the
+/// window, its statistics and the history's convergence flags.
+struct StoredStatistics {
+  std::string abscissa;       ///< "time" or "iteration"
+  std::string window_method;  ///< how the window was found
+  double window_first = 0.0;  ///< abscissa of the first and last averaged sample
+  double window_last = 0.0;
+  std::size_t samples = 0;
+  std::vector<std::string> flags;  ///< empty when the history converged
+  ComponentStatistics values;      ///< standard error, spread, drift, effective samples
+};
+
 struct StoredForce {
   ForceComponent value;  ///< N or N m, about the run's reference point
   SignConvention sign = SignConvention::OnBody;
@@ -25,7 +37,9 @@ struct StoredForce {
   std::string source_path;
   std::size_t source_line = 0;
   std::int64_t import_id = 0;  ///< the import it came from (0: none recorded)
+  std::optional<StoredStatistics> statistics;  ///< when the value is a mean over a force history
 };
+
 
 struct StoredRun {
   std::int64_t id = 0;
@@ -35,6 +49,11 @@ struct StoredRun {
   std::array<std::optional<StoredForce>, 6> tau_b;  ///< X..N
   std::optional<SurfaceIntegrals> surface;          ///< when the forces came from an integrated surface
 };
+
+/// The convergence flags of a run's components, each once, in the order
+/// first met ("no-steady-window", "drifting", ...); empty when every averaged
+/// component converged or none was averaged.
+std::vector<std::string> run_flags(const StoredRun& run);
 
 /// Which runs to list. Values are compared with a tolerance of 1e-9 (SI).
 struct RunFilter {
@@ -120,6 +139,7 @@ struct FitRecord {
   std::string terms;     ///< e.g. "1,u,u|u|"
   std::string loss;
   std::string run_filter;
+  std::string mirror;  ///< planes of symmetry whose mirror images were used ("" none; src/pipeline/fit_runs)
   SignConvention sign = SignConvention::OnBody;
   std::size_t n = 0;
   double rmse = 0.0;
@@ -201,10 +221,13 @@ class Database {
   std::vector<SourceRecord> sources();
   std::vector<std::string> bodies();
 
-  /// Stores a fit, replacing one of the same name; returns its id.
-  std::int64_t save_fit(const FitRecord& fit);
+  /// What to do with a fit whose name is taken.
+  enum class NameTaken { Refuse, Replace };
+  /// Stores a fit; returns its id. A fit of the same name is replaced with
+  /// NameTaken::Replace, else an InputError names it (nothing stored).
+  std::int64_t save_fit(const FitRecord& fit, NameTaken taken = NameTaken::Refuse);
   /// Stores several fits in one transaction (all or none); returns their ids.
-  std::vector<std::int64_t> save_fits(const std::vector<FitRecord>& fits);
+  std::vector<std::int64_t> save_fits(const std::vector<FitRecord>& fits, NameTaken taken = NameTaken::Refuse);
   std::vector<FitRecord> fits(const std::optional<std::string>& body = std::nullopt);
 
   /// Stores a surface, replacing one of the same name (which clears its

@@ -181,3 +181,96 @@ TEST(DatabaseCuration, DeletingRunsLeavesNoOrphansAndMakesFitsStale) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// A reading whose X is a mean over a force history, with its statistics.
+ImportBatch averaged_reading(char hash, double u, double x, double standard_error, std::vector<std::string> flags) {
+  ImportBatch batch = reading(hash, u, x);
+  RunStatistics statistics;
+  statistics.abscissa = "time";
+  statistics.window_method = "MSER-5 (White 1997)";
+  statistics.window_first = 2.5;
+  statistics.window_last = 10.0;
+  statistics.samples = 751;
+  statistics.flags = std::move(flags);
+  statistics.components[0] = ComponentStatistics{standard_error, 0.07, -0.001, 42.5};
+  batch.runs.front().statistics = statistics;
+  return batch;
+}
+
+TEST(DatabaseCuration, ForceStatisticsAreStoredWithTheirComponentAndGoWithIt) {
+  TempDir dir;
+  Database db(dir / "db");
+  db.import({averaged_reading('a', 0.1, -0.11, 0.002, {}), averaged_reading('b', 0.2, -0.44, 0.01, {"drifting"}),
+             reading('c', 0.3, -0.99)},
+            ImportOptions{});
+  auto runs = db.runs();
+  ASSERT_EQ(runs.size(), 3u);
+  ASSERT_TRUE(runs[0].tau_b[0]->statistics);
+  const StoredStatistics& st = *runs[0].tau_b[0]->statistics;
+  EXPECT_EQ(st.abscissa, "time");
+  EXPECT_EQ(st.window_method, "MSER-5 (White 1997)");
+  EXPECT_EQ(st.window_first, 2.5);
+  EXPECT_EQ(st.window_last, 10.0);
+  EXPECT_EQ(st.samples, 751u);
+  EXPECT_EQ(st.values.standard_error, 0.002);
+  EXPECT_EQ(st.values.spread, 0.07);
+  EXPECT_EQ(st.values.drift, -0.001);
+  EXPECT_EQ(st.values.effective_samples, 42.5);
+  EXPECT_TRUE(st.flags.empty());
+  EXPECT_TRUE(run_flags(runs[0]).empty());
+  EXPECT_EQ(run_flags(runs[1]), std::vector<std::string>{"drifting"});
+  EXPECT_FALSE(runs[2].tau_b[0]->statistics);  // a value without a history has none
+
+  // Replaced by a reading without statistics: none of the old ones is left.
+  ImportOptions replace;
+  replace.replace = true;
+  db.import({reading('b', 0.2, -0.45, "0.2 corrected")}, replace);
+  runs = db.runs();
+  ASSERT_EQ(runs.size(), 3u);
+  EXPECT_EQ(runs[1].tau_b[0]->value.total, -0.45);
+  EXPECT_FALSE(runs[1].tau_b[0]->statistics);
+  EXPECT_TRUE(run_flags(runs[1]).empty());
+
+  // Deleted with their run: no orphan rows.
+  db.delete_runs({runs[0].id});
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open((dir / "db").c_str(), &raw), SQLITE_OK);
+  sqlite3_stmt* count = nullptr;
+  sqlite3_prepare_v2(raw, "SELECT count(*) FROM run_force_statistics", -1, &count, nullptr);
+  ASSERT_EQ(sqlite3_step(count), SQLITE_ROW);
+  EXPECT_EQ(sqlite3_column_int(count, 0), 0);
+  sqlite3_finalize(count);
+  sqlite3_close(raw);
+  EXPECT_EQ(foreign_key_problems(dir / "db"), "");
+}
+
+TEST(DatabaseCuration, StatisticsOfAComponentTheRunLacksAreRefusedOnRead) {
+  TempDir dir;
+  {
+    Database db(dir / "db");
+    db.import({averaged_reading('a', 0.1, -0.11, 0.002, {})}, ImportOptions{});
+  }
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open((dir / "db").c_str(), &raw), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(raw,
+                         "INSERT INTO run_force_statistics SELECT run_id, 'Y', abscissa, window_method, window_first, "
+                         "window_last, samples, flags, standard_error, spread, drift, effective_samples FROM "
+                         "run_force_statistics",
+                         nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(raw);
+  Database db(dir / "db", Database::OpenMode::ReadOnly);
+  try {
+    (void)db.runs();
+    FAIL() << "statistics of a missing component were read";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("run_force_statistics"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("statistics of Y"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace hydrocoef

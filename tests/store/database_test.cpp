@@ -253,7 +253,11 @@ TEST(Database, FitsAreStoredWithTheirRunsAndReplacedByName) {
   fit.run_ids = {runs[0].id, runs[1].id};
   db.save_fit(fit);
   fit.rmse = 0.25;
-  db.save_fit(fit);
+  // A taken name is refused (nothing written) unless the caller replaces it.
+  const auto stored = dump_database(dir / "runs.db");
+  EXPECT_THROW(db.save_fit(fit), InputError);
+  EXPECT_EQ(dump_database(dir / "runs.db"), stored);
+  db.save_fit(fit, Database::NameTaken::Replace);
   const auto fits = db.fits("sphere");
   ASSERT_EQ(fits.size(), 1u);
   EXPECT_EQ(fits[0].rmse, 0.25);
