@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/common.hpp"
+#include "src/fit/fit_names.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/dynamics/vehicle.hpp"
@@ -160,9 +161,9 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     if (a.by) {
       bool found = false;
       for (const auto& record : database.fits())
-        if (record.name.rfind(base + "@" + *a.by + "=", 0) == 0) found = true;
+        if (const auto level = fit_level(record.name, base); level && level->first == *a.by) found = true;
       if (!found)
-        throw InputError("no per-level fits '" + base + "@" + *a.by + "=...' in " + global.database +
+        throw InputError("no per-level fits '" + base + "[" + *a.by + "=...]' in " + global.database +
                          " (hydrocoef fit ... --by " + *a.by + " stores them)");
     }
     render_and_print(plot::curves_figure(database, base, kind, degree), default_image("curves", base), a);

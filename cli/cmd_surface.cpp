@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/common.hpp"
+#include "src/pipeline/fit_runs.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
@@ -26,6 +27,8 @@ struct BuildArgs {
   std::vector<std::string> extrapolate;
   std::vector<std::string> where;
   std::vector<std::int64_t> exclude_runs;
+  std::vector<std::string> mirror;
+  std::vector<std::string> mirror_odd;
   bool replace = false;  ///< a surface of this name may be replaced (rebuild always replaces)
   std::string kernel = "cubic";
   int degree = 1;
@@ -128,7 +131,8 @@ nlohmann::json build_json(const BuildArgs& args) {
   return {{"outputs", args.outputs},   {"axes", args.axes},          {"method", args.method},
           {"extrapolate", args.extrapolate}, {"where", args.where},  {"exclude_runs", args.exclude_runs}, {"kernel", args.kernel},
           {"degree", args.degree},     {"smoothing", args.smoothing}, {"resample", args.resample},
-          {"resample_method", args.resample_method}, {"far_threshold", args.far_threshold}};
+          {"resample_method", args.resample_method}, {"far_threshold", args.far_threshold},
+          {"mirror", args.mirror}, {"mirror_odd", args.mirror_odd}};
 }
 
 BuildArgs args_from_json(const std::string& name, const std::string& body, const nlohmann::json& build) {
@@ -148,6 +152,8 @@ BuildArgs args_from_json(const std::string& name, const std::string& body, const
     args.resample = build.at("resample").get<std::vector<std::string>>();
     args.resample_method = build.at("resample_method").get<std::string>();
     args.far_threshold = build.at("far_threshold").get<double>();
+    if (build.contains("mirror")) args.mirror = build.at("mirror").get<std::vector<std::string>>();
+    if (build.contains("mirror_odd")) args.mirror_odd = build.at("mirror_odd").get<std::vector<std::string>>();
   } catch (const nlohmann::json::exception& error) {
     throw InputError("surface '" + name + "': its stored build options are incomplete (" + error.what() +
                      "); build it again with hydrocoef surface build");
@@ -235,10 +241,15 @@ void build(const BuildArgs& args, const GlobalOptions& global) {
   RunFilter filter;
   filter.body = args.body;
   const RunSelection selection = parse_selection(args.where, args.exclude_runs);
-  const auto runs = selected_runs(database, filter, selection);
-  if (runs.empty())
+  const MirrorSpec mirror = make_mirror_spec(args.mirror, args.mirror_odd);
+  const auto measured = selected_runs(database, filter, selection);
+  if (measured.empty())
     throw InputError("no runs of body '" + args.body + "'" +
                      (selection.empty() ? "" : " matching '" + selection.text() + "'") + " in " + global.database);
+  // Mirror images stand beside the runs in the build; they are never stored as runs.
+  std::size_t images_skipped = 0;
+  const auto runs = with_mirror_images(measured, mirror, &images_skipped);
+  const std::size_t images = runs.size() - measured.size();
   const BuiltSurface built = build_surface(runs, spec);
   SurfaceRecord record = built.record(args.name, args.body);
   auto definition = nlohmann::json::parse(record.definition);
@@ -250,6 +261,8 @@ void build(const BuildArgs& args, const GlobalOptions& global) {
   if (args.json) {
     nlohmann::json out = surface_json(stored.record, stored.surface, false);
     out["runs_skipped"] = built.runs_skipped;
+    out["mirror"] = mirror.text();
+    out["mirror_images"] = images;
     out["id"] = record.id;
     std::cout << escape::json_text(out, 2) << '\n';
     return;
@@ -257,6 +270,11 @@ void build(const BuildArgs& args, const GlobalOptions& global) {
   std::cout << "surface " << args.name << " of body " << args.body << ": " << record.kind << ", "
             << stored.surface.method_name() << ", " << built.run_ids.size() << " runs";
   if (built.runs_skipped) std::cout << " (" << built.runs_skipped << " runs without every output skipped)";
+  if (!mirror.empty())
+    std::cout << "\n  mirror " << mirror.text() << ": " << measured.size() << " runs and " << images
+              << " mirror images (never stored as runs)"
+              << (images_skipped ? ", " + std::to_string(images_skipped) + " images left out at measured keys"
+                                 : std::string());
   std::cout << "\n  axes:\n";
   print_axes(stored.surface);
   std::cout << "  outputs: ";
@@ -389,6 +407,11 @@ void add_surface_command(CLI::App& app, const GlobalOptions& global) {
                  "(SI) or disturbance; repeatable, all must hold");
   b->add_flag("--replace", build_args->replace, "Replace a stored surface of the same name");
   b->add_option("--exclude-run", build_args->exclude_runs, "Leave out the run with this id (repeatable; leave-one-out by hand)");
+  b->add_option("--mirror", build_args->mirror,
+                "Let each run also stand for its mirror image in a plane of symmetry: v (port-starboard: "
+                "u,-v,w,-p,q,-r and X,-Y,Z,-K,M,-N), w (top-bottom), u (fore-aft); repeatable");
+  b->add_option("--mirror-odd", build_args->mirror_odd,
+                "A disturbance parameter that changes sign in the mirror; repeatable");
   b->add_option("--kernel", build_args->kernel, "RBF kernel: cubic, thin-plate, linear")->capture_default_str();
   b->add_option("--degree", build_args->degree, "RBF polynomial degree (0, 1, 2)")->capture_default_str();
   b->add_option("--smoothing", build_args->smoothing, "RBF smoothing (0 interpolates)")->capture_default_str();

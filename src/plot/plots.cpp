@@ -8,9 +8,11 @@
 #include <sstream>
 
 #include "src/core/error.hpp"
+#include "src/fit/fit_names.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
 #include "src/fit/damping_law.hpp"
+#include "src/fit/fit_names.hpp"
 #include "src/surface/stored_surface.hpp"
 
 namespace hydrocoef::plot {
@@ -81,22 +83,6 @@ std::string axis_label(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : name + " [" + unit + "]";
 }
 
-/// "current_v=0.05" from "base@current_v=0.05": the level part of a per-level fit's name.
-std::optional<std::pair<std::string, double>> level_of(const std::string& fit_name, const std::string& base) {
-  if (fit_name.size() <= base.size() + 1 || fit_name.compare(0, base.size(), base) != 0 || fit_name[base.size()] != '@')
-    return std::nullopt;
-  const std::string condition = fit_name.substr(base.size() + 1);
-  const auto eq = condition.find('=');
-  if (eq == std::string::npos || condition.find('@') != std::string::npos) return std::nullopt;
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(condition.substr(eq + 1), &used);
-    if (used != condition.size() - eq - 1) return std::nullopt;
-    return std::make_pair(condition.substr(0, eq), value);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
 
 }  // namespace
 
@@ -123,7 +109,7 @@ std::vector<FitRecord> fit_family(Database& database, const std::string& name) {
     throw InputError("database " + database.path().string() + " has no fits: fit a law first (hydrocoef fit)");
   std::vector<FitRecord> family;
   for (auto& fit : fits)
-    if (fit.name == name || level_of(fit.name, name)) family.push_back(fit);
+    if (fit.name == name || fit_level(fit.name, name)) family.push_back(fit);
   if (family.empty()) {
     std::vector<std::string> names;
     for (const auto& fit : fits) names.push_back(fit.name);
@@ -131,7 +117,7 @@ std::vector<FitRecord> fit_family(Database& database, const std::string& name) {
   }
   // The pooled fit first, then the levels in increasing order.
   std::stable_sort(family.begin(), family.end(), [&](const FitRecord& a, const FitRecord& b) {
-    const auto la = level_of(a.name, name), lb = level_of(b.name, name);
+    const auto la = fit_level(a.name, name), lb = fit_level(b.name, name);
     if (!la || !lb) return !la && lb;
     return la->second < lb->second;
   });
@@ -153,7 +139,7 @@ Figure fit_figure(Database& database, const std::string& name) {
   panel.title = "CFD runs as points, fitted law as curves";
   std::size_t colour = 0;
   for (const auto& fit : family) {
-    const auto level = level_of(fit.name, name);
+    const auto level = fit_level(fit.name, name);
     const std::string tag = level ? level->first + "=" + short_number(level->second) + ": " : "";
     Series points;
     points.title = tag + "CFD runs (" + std::to_string(fit.run_ids.size()) + ")";
@@ -193,7 +179,7 @@ Figure curves_figure(Database& database, const std::string& base, CurveKind kind
   std::vector<LevelFit> levels;
   std::string by;
   for (const auto& fit : family) {
-    const auto level = level_of(fit.name, base);
+    const auto level = fit_level(fit.name, base);
     if (!level) continue;
     if (!by.empty() && level->first != by)
       throw InputError("fits under '" + base + "' are per level of both " + by + " and " + level->first +

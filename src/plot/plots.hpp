@@ -21,7 +21,7 @@
 namespace hydrocoef::plot {
 
 /// The stored fits a fit plot draws: the fit named `name`, and the per-level
-/// fits stored as "name@LEVEL=VALUE" by `hydrocoef fit --by` (one curve per
+/// fits stored as "name[LEVEL=VALUE]" (src/fit/fit_names.hpp) by `hydrocoef fit --by` (one curve per
 /// level). InputError when the database has no runs, no fits, or none of that
 /// name (listing the names there are).
 std::vector<FitRecord> fit_family(Database& database, const std::string& name);
@@ -34,7 +34,7 @@ double evaluate_fit(const FitRecord& fit, double x);
 Figure fit_figure(Database& database, const std::string& name);
 
 /// Coefficient curves across a disturbance from the per-level fits stored
-/// under `base` ("base@by=value", at least 2 levels): one panel per term, the
+/// under `base` ("base[by=value]", at least 2 levels): one panel per term, the
 /// per-level values as points and the curve (kind, degree as
 /// fit_coefficient_curves) over the levels' range (101 points).
 Figure curves_figure(Database& database, const std::string& base, CurveKind kind, int degree);

@@ -5,11 +5,13 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/fit/fit_names.hpp"
 #include "src/plot/plots.hpp"
 #include "src/surface/stored_surface.hpp"
 
@@ -75,24 +77,6 @@ std::string file_stem(const std::string& kind, const std::string& name) {
   std::string out = kind + "-";
   for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.') ? c : '_';
   return out;
-}
-
-/// The group a fit is plotted in: its name without a trailing "@NAME=VALUE"
-/// level (fit --by), or its own name.
-std::string fit_group(const std::string& name) {
-  const auto at = name.rfind('@');
-  if (at == std::string::npos || at == 0) return name;
-  const std::string condition = name.substr(at + 1);
-  const auto eq = condition.find('=');
-  if (eq == std::string::npos || condition.find(',') != std::string::npos) return name;
-  try {
-    std::size_t used = 0;
-    (void)std::stod(condition.substr(eq + 1), &used);
-    if (used != condition.size() - eq - 1) return name;
-  } catch (const std::exception&) {
-    return name;
-  }
-  return name.substr(0, at);
 }
 
 /// The stored leave-one-out figures of a surface, per output in its unit.
@@ -201,15 +185,33 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
     throw InputError("no body '" + *options.body + "' in " + database.path().string() +
                      "; bodies: " + (list.empty() ? "none" : list));
   }
-  const auto runs = database.runs(filter);
+  auto runs = database.runs(filter);
+  std::erase_if(runs, [&](const StoredRun& run) { return !options.selection.matches(run.key, run.id); });
   if (runs.empty())
     throw InputError("database " + database.path().string() + " has no runs" +
                      (options.body ? " of body " + *options.body : std::string()) +
-                     ": import CFD results first (hydrocoef import)");
-  const auto fits = database.fits(options.body);
-  const auto surfaces = database.surfaces(options.body);
-
+                     (options.selection.empty() ? std::string() : " where " + options.selection.text()) +
+                     (options.selection.empty() ? ": import CFD results first (hydrocoef import)" : ""));
+  auto fits = database.fits(options.body);
+  auto surfaces = database.surfaces(options.body);
   ReportResult result;
+  if (!options.selection.empty()) {
+    // Fits and surfaces built from the selected runs alone.
+    std::set<std::int64_t> selected;
+    for (const auto& run : runs) selected.insert(run.id);
+    const auto outside = [&](const std::vector<std::int64_t>& ids) {
+      return std::any_of(ids.begin(), ids.end(), [&](std::int64_t id) { return !selected.count(id); });
+    };
+    const std::size_t all_fits = fits.size(), all_surfaces = surfaces.size();
+    std::erase_if(fits, [&](const FitRecord& fit) { return outside(fit.run_ids); });
+    std::erase_if(surfaces, [&](const SurfaceRecord& surface) { return outside(surface.run_ids); });
+    if (all_fits + all_surfaces > fits.size() + surfaces.size())
+      result.notes.push_back("runs where " + options.selection.text() + ": " +
+                             std::to_string(all_fits - fits.size()) + " fits and " +
+                             std::to_string(all_surfaces - surfaces.size()) +
+                             " surfaces built from other runs too are left out");
+  }
+
   result.runs = runs.size();
   result.fits = fits.size();
   result.surfaces = surfaces.size();
@@ -298,7 +300,7 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
     std::map<std::string, std::size_t> levels;  // group name -> number of per-level fits in it
     std::vector<std::string> order;
     for (const auto& fit : fits) {
-      const std::string g = fit_group(fit.name);
+      const std::string g = fit_family_name(fit.name);
       if (std::find(order.begin(), order.end(), g) == order.end()) order.push_back(g);
       if (g != fit.name) ++levels[g];
     }

@@ -310,7 +310,9 @@ BuiltSurface build_surface(const std::vector<StoredRun>& runs, const SurfaceSpec
   const Samples samples = collect(runs, spec);
   BuiltSurface built = spec.method == "rbf" ? build_rbf(samples, spec) : build_grid(samples, spec);
   for (const StoredRun* run : samples.runs) built.run_ids.push_back(run->id);
+  // A mirror image carries the id of the run it is the image of: each id once.
   std::sort(built.run_ids.begin(), built.run_ids.end());
+  built.run_ids.erase(std::unique(built.run_ids.begin(), built.run_ids.end()), built.run_ids.end());
   return built;
 }
 

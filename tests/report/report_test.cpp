@@ -86,7 +86,7 @@ TEST_F(ReportTest, PageHasEverySectionAndEmbedsThePlotsItWrote) {
   const std::string html = read_text(result.index);
   for (const auto& id : kSections) EXPECT_NE(html.find("<section id=\"" + id + "\">"), std::string::npos) << id;
   for (const auto& name :
-       {"asr-v:X(1,u,u|u|)", "b:X(u,u|u|)@current_v=0.1", "asr-v-yaw", "b-map", "leave-one-out (along grid lines"})
+       {"asr-v:X(1,u,u|u|)", "b:X(u,u|u|)[current_v=0.1]", "asr-v-yaw", "b-map", "leave-one-out (along grid lines"})
     EXPECT_NE(html.find(html_escape(name)), std::string::npos) << name;
   // Self-contained: no reference to anything outside the page.
   EXPECT_EQ(html.find("http://"), std::string::npos);
