@@ -11,6 +11,7 @@
 #include "cli/common.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/run_selection.hpp"
 #include "src/export/export.hpp"
 #include "src/export/gazebo_export.hpp"
 #include "src/store/database.hpp"
@@ -34,6 +35,7 @@ struct GazeboArgs {
   std::optional<double> linearize_at;
   std::optional<std::string> link;
   std::optional<std::string> link_axes;
+  SelectionArgs selection;
   bool json = false;
 };
 
@@ -121,7 +123,24 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
     throw InputError("no body '" + args.body + "' in " + database.path().string() + "; expected one of: " +
                      (names.empty() ? "(none)" : names));
   }
-  const GazeboCoefficients coefficients = gazebo_coefficients(database.fits(args.body), request);
+  // --where picks the fits made from that selection of runs (a filtered fit
+  // or one level of a per-level fit), e.g. the model at one current.
+  auto fits = database.fits(args.body);
+  const RunSelection selection = parse_selection(args.selection.where, args.selection.exclude_runs);
+  if (!selection.empty()) {
+    const std::string wanted = selection.text();
+    std::erase_if(fits, [&](const FitRecord& fit) {
+      try {
+        return parse_selection_text(fit.run_filter).text() != wanted;
+      } catch (const InputError&) {
+        return true;  // a selection this version cannot read is no match
+      }
+    });
+    if (fits.empty())
+      throw InputError("no fits of body '" + args.body + "' made from the runs where " + wanted + " in " +
+                       database.path().string() + "; 'hydrocoef fits' shows each fit's selection");
+  }
+  const GazeboCoefficients coefficients = gazebo_coefficients(fits, request);
   const std::vector<GazeboElement> elements = gazebo_elements(coefficients, options);
   write_gazebo(coefficients, options, args.output);
 
@@ -196,7 +215,7 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
                 << s.run_ids.size() << " runs)\n";
     }
   }
-  std::cout << "  added mass: " << coefficients.added_mass_source << "; symmetric positive definite\n";
+  std::cout << "  added mass: " << coefficients.added_mass_source << "; symmetric positive semi-definite\n";
   for (const std::string& note : coefficients.notes) std::cout << "  note: " << note << '\n';
   std::cout << "  wrote " << args.output << '\n';
 }
@@ -238,6 +257,11 @@ void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global) {
                       "to the linear term of laws in u; quadratic terms become 0");
   command->add_option("--link", args->link, "gz: <link_name> of the plugin (default base_link)");
   command->add_option("--link-axes", args->link_axes, "gz: axes of that link, flu (default) or frd");
+  command->add_option("--where", args->selection.where,
+                      "Use only the fits made from this selection of runs (as 'hydrocoef fits' shows it), e.g. "
+                      "current_v=0.05 for the model at one current; repeatable, as fit --where");
+  command->add_option("--exclude-run", args->selection.exclude_runs,
+                      "With --where: the fits made with this run left out (repeatable)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_export_gazebo(*args, global); });
 }

@@ -18,6 +18,7 @@ struct ReportArgs {
   std::vector<std::string> trajectories;
   std::optional<std::string> experiment;
   std::string component = "r";
+  SelectionArgs selection;
   bool json = false;
 };
 
@@ -25,6 +26,7 @@ void run_report(const ReportArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::ReadOnly);
   report::ReportOptions options;
   options.body = args.body;
+  options.selection = parse_selection(args.selection.where, args.selection.exclude_runs);
   for (const auto& t : args.trajectories) options.trajectories.emplace_back(t);
   if (args.experiment) options.experiment = *args.experiment;
   options.component = args.component;
@@ -59,6 +61,7 @@ void add_report_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--experiment", args->experiment, "Measured CSV overlaid on the trajectories");
   command->add_option("--component", args->component, "Velocity component drawn for trajectories")
       ->capture_default_str();
+  add_selection_options(*command, args->selection);
   command->add_flag("--json", args->json, "Print JSON: the page, plots and notes");
   command->callback([args, &global] { run_report(*args, global); });
 }

@@ -96,7 +96,7 @@ GazeboLinkAxes parse_gazebo_link_axes(std::string_view text) {
                    "z down)");
 }
 
-void check_added_mass(const Matrix6& added_mass) {
+std::string check_added_mass(const Matrix6& added_mass) {
   double largest = 0.0;
   for (std::size_t k = 0; k < 36; ++k) {
     if (!std::isfinite(added_mass[k])) {
@@ -121,13 +121,16 @@ void check_added_mass(const Matrix6& added_mass) {
   const Eigen::Map<const Eigen::Matrix<double, 6, 6, Eigen::RowMajor>> given(added_mass.data());
   const Eigen::Matrix<double, 6, 6> symmetric = 0.5 * (given + given.transpose());
   const Eigen::LLT<Eigen::Matrix<double, 6, 6>> cholesky(symmetric);
-  if (cholesky.info() != Eigen::Success) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(symmetric, Eigen::EigenvaluesOnly);
-    throw InputError("added-mass matrix is not positive definite: smallest eigenvalue " +
-                     shortest_number(eigen.eigenvalues()(0)) +
-                     " (Cholesky failed); expected a symmetric positive definite Ma (kg, kg m, kg m^2) with every "
-                     "eigenvalue > 0");
-  }
+  if (cholesky.info() == Eigen::Success) return {};
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(symmetric, Eigen::EigenvaluesOnly);
+  const double smallest = eigen.eigenvalues()(0);
+  if (smallest < -1e-12 * largest || largest == 0.0)
+    throw InputError("added-mass matrix is not positive semi-definite: smallest eigenvalue " +
+                     shortest_number(smallest) +
+                     "; expected a symmetric Ma (kg, kg m, kg m^2) with every eigenvalue >= 0 and some > 0");
+  return "Ma is singular (smallest eigenvalue " + shortest_number(smallest) +
+         ", e.g. no rotational added mass, as for a sphere): accepted, since the plugin adds -Ma times the "
+         "acceleration and never inverts Ma";
 }
 
 Matrix6 added_mass_diagonal(const std::array<double, 6>& diagonal) {
@@ -142,13 +145,8 @@ Matrix6 sphere_added_mass(double radius, double rho, const std::optional<std::ar
   if (!(std::isfinite(rho) && rho > 0.0))
     throw InputError("fluid density " + shortest_number(rho) + " kg/m^3; expected a finite density > 0");
   const double translation = 2.0 / 3.0 * std::numbers::pi * rho * radius * radius * radius;
-  if (!rotation) {
-    throw InputError("a sphere of radius " + shortest_number(radius) +
-                     " m has no rotational added mass, so Ma = diag(" + shortest_number(translation) + ", " +
-                     shortest_number(translation) + ", " + shortest_number(translation) +
-                     ", 0, 0, 0) is not positive definite (smallest eigenvalue 0); expected the rotational entries "
-                     "with --added-mass-rotation a,b,c (kg m^2)");
-  }
+  // Potential flow gives a sphere no rotational added mass: 0 unless given.
+  if (!rotation) return added_mass_diagonal({translation, translation, translation, 0.0, 0.0, 0.0});
   return added_mass_diagonal({translation, translation, translation, (*rotation)[0], (*rotation)[1], (*rotation)[2]});
 }
 
@@ -319,7 +317,7 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
                         "term (x0 = U0 for laws in u, 0 otherwise), quadratic terms written as 0; the force at U0 "
                         "itself is not included");
   }
-  check_added_mass(request.added_mass);
+  if (const std::string note = check_added_mass(request.added_mass); !note.empty()) out.notes.push_back(note);
   out.added_mass_b = request.added_mass;
   out.added_mass_source = request.added_mass_source;
   return out;
@@ -439,7 +437,7 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
     text += comment(line);
   }
   text += comment("Added mass: " + (c.added_mass_source.empty() ? std::string("given") : c.added_mass_source) +
-                  "; symmetric positive definite (checked).");
+                  "; symmetric positive semi-definite (checked).");
   for (const std::string& note : c.notes) text += comment("Note: " + note);
   if (!uuv) {
     // Gazebo Ionic moved added mass into the link's inertial; offer the same numbers there.

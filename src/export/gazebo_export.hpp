@@ -107,21 +107,25 @@ struct GazeboRequest {
 /// choices share a DOF and velocity; several fits could serve a DOF; a DOF
 /// has no law and allow_missing is off; a term is "1" (without
 /// drop_constant), "x^2", "x^3" or "|x|"; a coefficient is not finite; or
-/// the added mass is not symmetric positive definite (check_added_mass).
+/// the added mass is not symmetric positive semi-definite (check_added_mass).
 GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const GazeboRequest& request);
 
 /// Checks that Ma is finite, symmetric to 1e-9 relative to its largest
-/// entry, and positive definite (Cholesky). InputError otherwise, with the
-/// unsymmetric pair or the smallest eigenvalue found.
-void check_added_mass(const Matrix6& added_mass);
+/// entry, and positive semi-definite (no eigenvalue below -1e-12 of the
+/// largest entry). InputError otherwise, with the unsymmetric pair or the
+/// smallest eigenvalue found. A singular Ma (a sphere has no rotational added
+/// mass) is accepted: both plugins add -Ma times the acceleration and never
+/// invert Ma (the link's own inertia keeps the dynamics well posed); the
+/// returned note says so. "" for a positive definite Ma.
+std::string check_added_mass(const Matrix6& added_mass);
 
 /// Ma = diag(d) (kg x3, kg m^2 x3).
 Matrix6 added_mass_diagonal(const std::array<double, 6>& diagonal);
 
 /// A sphere's added mass: half the displaced fluid mass, 2/3 pi rho R^3, in
-/// each translation; the rotation entries (kg m^2) must be given because a
-/// sphere in ideal flow has none, and without them Ma is not positive
-/// definite (InputError saying so). radius in m, rho in kg/m^3, both > 0.
+/// each translation; the rotation entries (kg m^2) as given, else 0 (a sphere
+/// in ideal flow has none; check_added_mass accepts the singular Ma with a
+/// note). radius in m, rho in kg/m^3, both > 0.
 Matrix6 sphere_added_mass(double radius, double rho, const std::optional<std::array<double, 3>>& rotation);
 
 /// Reads 36 numbers, row-major (kg, kg m, kg m^2), separated by white space,

@@ -21,12 +21,16 @@
 #include <string_view>
 #include <vector>
 
+#include "src/core/run_selection.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef::report {
 
 struct ReportOptions {
   std::optional<std::string> body;  ///< only this body's runs, fits and surfaces
+  /// Only the runs it selects, and the fits and surfaces built from those
+  /// runs alone (others are left out with a note).
+  RunSelection selection;
   /// Simulated trajectories (hydrocoef simulate --out) to plot, component
   /// `component` against time, with `experiment` overlaid when given.
   std::vector<std::filesystem::path> trajectories;

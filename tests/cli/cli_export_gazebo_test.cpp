@@ -162,9 +162,6 @@ TEST(CliExportGazebo, RefusalsExitTwoWithOneLineAndWriteNothing) {
       {with(with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--allow-missing"}), kSphere),
        "constant term '1'"},
       {with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--drop-constant", "--allow-missing",
-                   "--sphere-radius", "0.15", "--rho", "998.2"}),
-       "not positive definite"},
-      {with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--drop-constant", "--allow-missing",
                    "--added-mass", "7,7,7,0.001,0.001,-1"}),
        "smallest eigenvalue -1"},
       {with(with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--drop-constant"}), kSphere),
@@ -210,6 +207,43 @@ TEST(CliExportGazebo, HelpNamesTheOptions) {
   for (const char* piece : {"--flavor", "--fit", "--added-mass-matrix", "--sphere-radius", "--drop-constant",
                             "--linearize-at", "--allow-missing", "--json"})
     EXPECT_NE(result.out.find(piece), std::string::npos) << piece;
+}
+
+TEST(CliExportGazebo, ASphereNeedsNoInventedRotationalAddedMassAndWhereChoosesTheFits) {
+  TempDir dir;
+  const Fits fits = make_database(dir);
+  // Fits of the surge runs at u >= 0.1 only, beside the fit of all runs.
+  ASSERT_EQ(run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|", "--where", "u>=0.1", "--json"},
+                    dir.path())
+                .exit_code,
+            0);
+  const auto fast = nlohmann::json::parse(run_cli({"fits", "--json"}, dir.path()).out);
+  double fast_u = 0.0;
+  for (const auto& fit : fast)
+    if (fit.at("where") == "u>=0.1") fast_u = fit.at("coefficients").at("u").get<double>();
+  ASSERT_NE(fast_u, 0.0);
+  // Without --where the two X laws are ambiguous; --where picks the one made from those runs.
+  const std::vector<std::string> base = {"export-gazebo", "asr-v", "--flavor", "gz", "-o", "s.sdf",
+                                         "--drop-constant", "--allow-missing", "--sphere-radius", "0.15",
+                                         "--rho", "998.2"};
+  const auto ambiguous = run_cli(base, dir.path());
+  EXPECT_EQ(ambiguous.exit_code, 2);
+  EXPECT_NE(ambiguous.err.find("2 fits of X in u"), std::string::npos) << ambiguous.err;
+  const auto chosen = run_cli(with(base, {"--where", "u>=0.1"}), dir.path());
+  ASSERT_EQ(chosen.exit_code, 0) << chosen.err;
+  const auto root = read_xml(dir / "s.sdf");
+  ASSERT_NE(root, nullptr);
+  EXPECT_EQ(number_of(root, "xU"), -fast_u);  // opposing -> on-body
+  // No rotational added mass given: a sphere has none, written as 0 with a note.
+  EXPECT_NEAR(number_of(root, "xDotU"), -kSphereMass, 1e-12 * kSphereMass);
+  EXPECT_EQ(number_of(root, "kDotP"), 0.0);
+  EXPECT_EQ(number_of(root, "mDotQ"), 0.0);
+  EXPECT_EQ(number_of(root, "nDotR"), 0.0);
+  EXPECT_NE(chosen.out.find("Ma is singular"), std::string::npos) << chosen.out;
+  const auto none = run_cli(with(base, {"--where", "u>=0.2"}), dir.path());
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("no fits of body 'asr-v' made from the runs where u>=0.2"), std::string::npos) << none.err;
+  (void)fits;
 }
 
 }  // namespace

@@ -240,7 +240,9 @@ TEST(GazeboExport, AddedMassMustBeSymmetricPositiveDefinite) {
   GazeboRequest request = request_with_mass();
   request.added_mass = added_mass_diagonal({5, 5, 5, 1, 1, -2});
   expect_input_error([&] { gazebo_coefficients(diagonal_fits(), request); },
-                     {"not positive definite", "smallest eigenvalue -2"});
+                     {"not positive semi-definite", "smallest eigenvalue -2"});
+  request.added_mass = Matrix6{};
+  expect_input_error([&] { gazebo_coefficients(diagonal_fits(), request); }, {"not positive semi-definite"});
   request.added_mass = added_mass_diagonal({5, 5, 5, 1, 1, 1});
   request.added_mass[6 * 1 + 5] = 0.5;
   expect_input_error([&] { gazebo_coefficients(diagonal_fits(), request); },
@@ -262,9 +264,20 @@ TEST(GazeboExport, AddedMassMustBeSymmetricPositiveDefinite) {
   EXPECT_NEAR(sphere[0], 2.0 / 3.0 * std::numbers::pi * 998.2 * 0.15 * 0.15 * 0.15, 1e-12);
   EXPECT_EQ(sphere[0], sphere[7]);
   EXPECT_EQ(sphere[35], 0.03);
-  EXPECT_NO_THROW(check_added_mass(sphere));
-  expect_input_error([] { sphere_added_mass(0.15, 998.2, std::nullopt); },
-                     {"no rotational added mass", "not positive definite", "--added-mass-rotation"});
+  EXPECT_EQ(check_added_mass(sphere), "");
+  // Without rotational entries: a sphere has none; the singular Ma is accepted with a note.
+  const Matrix6 bare = sphere_added_mass(0.15, 998.2, std::nullopt);
+  EXPECT_EQ(bare[0], sphere[0]);
+  EXPECT_EQ(bare[21], 0.0);
+  EXPECT_EQ(bare[28], 0.0);
+  EXPECT_EQ(bare[35], 0.0);
+  const std::string note = check_added_mass(bare);
+  EXPECT_NE(note.find("singular"), std::string::npos) << note;
+  request = request_with_mass();
+  request.added_mass = bare;
+  const GazeboCoefficients coefficients = gazebo_coefficients(diagonal_fits(), request);
+  EXPECT_TRUE(std::any_of(coefficients.notes.begin(), coefficients.notes.end(),
+                          [](const std::string& n) { return n.find("Ma is singular") != std::string::npos; }));
 }
 
 TEST(GazeboExport, MissingAndAmbiguousFitsAreRefused) {

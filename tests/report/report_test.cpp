@@ -106,6 +106,26 @@ TEST_F(ReportTest, PageHasEverySectionAndEmbedsThePlotsItWrote) {
   }
 }
 
+TEST_F(ReportTest, WhereKeepsTheSelectedRunsAndWhatWasBuiltFromThemAlone) {
+  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  ReportOptions options;
+  options.body = "b";
+  options.selection = parse_selection({"current_v=0.1"}, {});
+  const auto result = write_report(database, dir / "subset", options);
+  EXPECT_EQ(result.runs, 4u);  // the four speeds at current_v = 0.1
+  EXPECT_EQ(result.fits, 1u);  // the level current_v = 0.1; the other levels and b-map use other runs
+  EXPECT_EQ(result.surfaces, 0u);
+  ASSERT_FALSE(result.notes.empty());
+  EXPECT_NE(result.notes.front().find("2 fits and 1 surfaces built from other runs too are left out"),
+            std::string::npos)
+      << result.notes.front();
+  const std::string html = read_text(result.index);
+  EXPECT_NE(html.find(html_escape("b:X(u,u|u|)[current_v=0.1]")), std::string::npos);
+  EXPECT_EQ(html.find(html_escape("b:X(u,u|u|)[current_v=0.2]")), std::string::npos);
+  options.selection = parse_selection({"current_v=0.7"}, {});
+  EXPECT_THROW(write_report(database, dir / "none", options), InputError);
+}
+
 TEST(Report, EmptyDatabaseOrUnknownBodyIsAnError) {
   TempDir dir;
   Database database(dir / "empty.db");
