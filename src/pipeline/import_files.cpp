@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <fstream>
 #include <mutex>
@@ -98,6 +99,31 @@ void settings_not_applicable(const RunSettings& settings, const std::vector<std:
     if (source == SettingSource::CommandLine || source == SettingSource::FileSidecar || source == SettingSource::Manifest)
       throw InputError(where + ": setting '" + name + "' does not apply to " + what + "; expected it left out");
     notes.push_back("setting '" + name + "' from " + where + " does not apply to " + what + " and was not used");
+  }
+}
+
+/// A CFX inlet with a Normal Speed states the free stream's size, not its
+/// direction: the run's velocity must come from another setting, and its
+/// size is compared with the speed.
+void check_flow_speed(const RunSettings& settings, const RunKey& key, const fs::path& file,
+                      std::vector<std::string>& notes) {
+  const Setting* stated = settings.find("flow_speed");
+  if (!stated) return;
+  const double speed = *settings.number("flow_speed");
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6g m/s", speed);
+  const std::string where = stated->origin.where.empty() ? "the case files" : stated->origin.where;
+  if (!settings.find("flow") && !settings.find("u") && !settings.find("v") && !settings.find("w"))
+    throw InputError(SourceLocation{file.string()},
+                     "the CFX case states the inlet's normal speed, " + std::string(text) + " (" + where +
+                         "), not its direction; expected the free stream with --flow x,y,z (CFD axes) or the body "
+                         "velocity u, v, w from a sidecar, the manifest or --key-from-name");
+  const double body = std::hypot(key.nu_b[0], key.nu_b[1], key.nu_b[2]);
+  if (std::abs(body - speed) > 1e-6 * std::max(1.0, speed)) {
+    char found[64];
+    std::snprintf(found, sizeof found, "%.6g m/s", body);
+    notes.push_back("the body's speed, " + std::string(found) + ", is not the inlet's normal speed in the CFX case, " +
+                    text + " (" + where + "): check the run's key");
   }
 }
 
@@ -393,6 +419,7 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   for (const auto& note : analysis.notes) out.notes.push_back(note);
   ImportedRun run = run_from_history(body, analysis);
   run.key = resolve_key(settings, frame, request.default_body);
+  check_flow_speed(settings, run.key, input.path, out.notes);
   run.fluid = fluid_of(settings);
   run.reference_point_b = reference_b;
   run.sign = sign_of(settings);
@@ -449,6 +476,7 @@ ImportedInput read_input(const PlannedInput& input, const ImportRequest& request
   out.format = format;
   const FrameTransform frame = resolve_frame(settings);
   const RunKey key = resolve_key(settings, frame, request.default_body);
+  check_flow_speed(settings, key, input.path, out.notes);
   const Vec3 reference_b = resolve_reference_point(settings, frame);
   if (format == "cfdpost" || format == "vtk") {
     settings_not_applicable(settings, {"window", "sign"}, "a surface export", out.notes);

@@ -3,10 +3,13 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <set>
 
+#include "importers/cfx_monitor.hpp"
 #include "src/core/error.hpp"
+#include "src/pipeline/cfx_case.hpp"
 #include "src/pipeline/openfoam_case.hpp"
 
 namespace hydrocoef {
@@ -73,6 +76,100 @@ std::vector<SettingsLayer> case_layers(const fs::path& folder, const fs::path& r
   return layers;
 }
 
+// --- CFX runs ----------------------------------------------------------------
+// A CFX run leaves its settings in a case file (the CCL written by CFX-Pre,
+// STEM.ccl, or echoed by the solver at the top of STEM.out) and its forces in
+// files exported beside it: cfx5mondata's monitor CSV or a CFD-Post export,
+// named after the run (STEM.csv, STEM_monitors.csv, ...). A data file whose
+// name starts with a case file's stem, in the same folder, takes that case
+// file's settings as its case-files layer; of STEM.out and STEM.ccl the
+// solver's .out is taken (it is what ran).
+
+bool is_cfx_case_extension(const fs::path& file) {
+  const std::string extension = lower(file.extension().string());
+  return extension == ".ccl" || extension == ".out";
+}
+
+/// The case files of a folder, longest stem first (read once per folder).
+class CfxCaseFiles {
+ public:
+  const std::vector<fs::path>& in(const fs::path& folder) {
+    auto [it, inserted] = cache_.try_emplace(folder);
+    if (!inserted) return it->second;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, ec)) {
+      if (!entry.is_regular_file(ec) || !is_cfx_case_extension(entry.path())) continue;
+      if (is_cfx_case_file(entry.path())) it->second.push_back(entry.path());
+    }
+    std::sort(it->second.begin(), it->second.end(), [](const fs::path& a, const fs::path& b) {
+      const auto la = a.stem().string().size(), lb = b.stem().string().size();
+      if (la != lb) return la > lb;
+      return lower(a.extension().string()) > lower(b.extension().string());  // .out before .ccl
+    });
+    return it->second;
+  }
+
+  /// The case file of a data file: the one with the longest stem its name starts with.
+  std::optional<fs::path> of(const fs::path& data_file) {
+    const std::string stem = data_file.stem().string();
+    for (const auto& candidate : in(data_file.parent_path()))
+      if (stem.rfind(candidate.stem().string(), 0) == 0) return candidate;
+    return std::nullopt;
+  }
+
+ private:
+  std::map<fs::path, std::vector<fs::path>> cache_;
+};
+
+/// A data file's layers with its CFX case file's settings ranked as case
+/// files (below sidecars and the manifest, above the name pattern).
+void add_cfx_case_layer(const fs::path& file, const fs::path& case_file, std::vector<SettingsLayer>& layers,
+                        std::vector<std::string>& notes) {
+  CfxCaseSettings settings = cfx_case_settings(case_file);
+  notes.push_back(file.string() + ": settings from the CFX case " + case_file.filename().string() + " beside it");
+  for (const auto& note : settings.notes) notes.push_back(case_file.string() + ": " + note);
+  if (settings.layer.empty()) return;
+  const auto pattern = std::find_if(layers.begin(), layers.end(), [](const SettingsLayer& layer) {
+    return layer.origin.source == SettingSource::NamePattern;
+  });
+  layers.insert(pattern, std::move(settings.layer));
+}
+
+/// The monitor file of a CFX case file named on the command line: the one
+/// cfx5mondata CSV beside it whose name starts with the case's stem.
+fs::path cfx_monitor_of(const fs::path& case_file) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  const fs::path folder = case_file.parent_path().empty() ? fs::path(".") : case_file.parent_path();
+  const std::string stem = case_file.stem().string();
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const fs::path& path = entry.path();
+    if (!entry.is_regular_file(ec) || lower(path.extension().string()) != ".csv" ||
+        path.stem().string().rfind(stem, 0) != 0)
+      continue;
+    std::string head(4096, '\0');
+    {
+      std::FILE* in = std::fopen(path.c_str(), "rb");
+      if (!in) continue;
+      head.resize(std::fread(head.data(), 1, head.size(), in));
+      std::fclose(in);
+    }
+    if (looks_like_cfx_monitor(head)) found.push_back(folder / path.filename());
+  }
+  std::sort(found.begin(), found.end());
+  if (found.size() == 1) return found.front();
+  if (found.empty())
+    throw InputError(SourceLocation{case_file.string()},
+                     "a CFX case file, but no monitor file beside it (" + stem +
+                         "*.csv with an 'Accumulated Timestep' header); expected the monitors exported with "
+                         "cfx5mondata -res " + stem + ".res -out " + stem + ".csv");
+  std::string names;
+  for (const auto& f : found) names += (names.empty() ? "" : ", ") + f.filename().string();
+  throw InputError(SourceLocation{case_file.string()},
+                   "a CFX case file with " + std::to_string(found.size()) + " monitor files beside it (" + names +
+                       "); expected one: name the monitor file to import instead");
+}
+
 bool filtered_in(const fs::path& relative, const ImportPlanOptions& options) {
   if (!options.include.empty() &&
       std::none_of(options.include.begin(), options.include.end(),
@@ -104,13 +201,22 @@ bool glob_matches(const std::string& pattern, const fs::path& relative) {
 
 ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOptions& options) {
   ImportPlan plan;
+  CfxCaseFiles cfx_cases;
   for (const auto& input : inputs) {
     std::error_code ec;
     if (!fs::exists(input, ec))
       throw InputError(SourceLocation{input.string()}, "no such file or folder; expected a CFD result file, a folder of "
                                                        "them or a case folder");
     if (!fs::is_directory(input, ec)) {
-      plan.inputs.push_back({input, {}, InputKind::File, layers_for(input, {}, {}, true, options)});
+      // A CFX case file named directly stands for its run: its monitors, with its settings.
+      fs::path file = input;
+      if (is_cfx_case_extension(input) && is_cfx_case_file(input)) {
+        file = cfx_monitor_of(input);
+        plan.notes.push_back(input.string() + ": a CFX run; its monitors read from " + file.filename().string());
+      }
+      auto layers = layers_for(file, {}, {}, true, options);
+      if (const auto case_file = cfx_cases.of(file)) add_cfx_case_layer(file, *case_file, layers, plan.notes);
+      plan.inputs.push_back({file, {}, InputKind::File, std::move(layers)});
       continue;
     }
     if (is_openfoam_case(input)) {
@@ -211,7 +317,9 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
         ++plan.excluded;
         continue;
       }
-      plan.inputs.push_back({file, relative, InputKind::File, layers_for(file, relative, input, true, options)});
+      auto layers = layers_for(file, relative, input, true, options);
+      if (const auto case_file = cfx_cases.of(file)) add_cfx_case_layer(file, *case_file, layers, plan.notes);
+      plan.inputs.push_back({file, relative, InputKind::File, std::move(layers)});
       ++planned;
     }
     if (planned == 0) {

@@ -22,7 +22,7 @@ enum class Kind { Number, Text, Triple, Texts };
 
 Kind kind_of(std::string_view name) {
   if (velocity_index(name) || name.rfind(kDisturbancePrefix, 0) == 0 || name == "rho" || name == "nu" ||
-      name == "p_ref")
+      name == "p_ref" || name == "flow_speed")
     return Kind::Number;
   if (name == "flow" || name == "ref_point" || name == "cofr" || name == "origin") return Kind::Triple;
   if (name == "shear" || name == "locations") return Kind::Texts;
