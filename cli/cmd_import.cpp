@@ -180,10 +180,6 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
         if (input.batch.runs.front().statistics) file["statistics"] = statistics_json(*input.batch.runs.front().statistics);
       }
       if (input.surface) file["surface"] = surface_run_json(*input.surface);
-      if (input.monitor) {
-        const auto& m = *input.monitor;
-        file["monitor"] = {{"iterations", m.iterations}, {"window", m.window}, {"last_iteration", m.last_iteration}};
-      }
       out["files"].push_back(file);
     }
     out["summary"] = {{"files", outcomes.size()}, {"runs", runs},         {"runs_created", created},
@@ -233,7 +229,8 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
                       "Tables, monitors, histories: on-body (force on the body; the default) or opposing (positive "
                       "opposes motion)");
   command->add_option("--monitor", args->monitors, "Monitor: COMPONENT=COLUMN, e.g. X=\"USER POINT,Fx\" (repeatable)");
-  command->add_option("--average-last", args->average_last, "Monitor: average the last N iterations")
+  command->add_option("--average-last", args->average_last, "Monitor: average the last N iterations (as --window last:N; by default the steady window "
+                      "is found as for any force history)")
       ->capture_default_str();
   command->add_option("--jobs", args->jobs, "Inputs read in parallel (default: the number of cores)");
   command->add_flag("--replace", args->replace,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <numeric>
 #include <utility>
@@ -264,7 +265,20 @@ bool looks_like_cfx_monitor(std::string_view head) {
                      [](const TextLine& line) { return starts_with_header(line.text); });
 }
 
-MonitorImport parse_cfx_monitor(std::string_view text, const std::string& file, const CfxMonitorOptions& options) {
+namespace {
+
+/// What the header says: where it is, the delimiter, the columns and which
+/// column gives each component, and each one's factor to SI.
+struct MonitorHeader {
+  std::vector<TextLine> lines;
+  std::size_t header_index = 0;  ///< into lines
+  char delimiter = ',';
+  std::vector<HeaderColumn> columns;
+  std::array<std::optional<std::size_t>, 6> column_of;
+  std::array<double, 6> scale{};
+};
+
+MonitorHeader read_monitor_header(std::string_view text, const std::string& file, const CfxMonitorOptions& options) {
   check_options(options);
   if (text.empty()) throw InputError(SourceLocation{file}, "empty file; expected " + std::string(kExpectedHeader));
   if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
@@ -276,7 +290,9 @@ MonitorImport parse_cfx_monitor(std::string_view text, const std::string& file, 
                      "binary data (a NUL byte); expected a text export with " + std::string(kExpectedHeader));
   }
 
-  const auto lines = split_lines(text);
+  MonitorHeader out;
+  out.lines = split_lines(text);
+  const auto& lines = out.lines;
   const auto header_line =
       std::find_if(lines.begin(), lines.end(), [](const TextLine& line) { return starts_with_header(line.text); });
   if (header_line == lines.end()) {
@@ -286,10 +302,10 @@ MonitorImport parse_cfx_monitor(std::string_view text, const std::string& file, 
                                                                      : "first " + in_quotes(first->text) + " on line " +
                                                                            std::to_string(first->number)));
   }
+  out.header_index = static_cast<std::size_t>(header_line - lines.begin());
   const SourceLocation header{file, header_line->number};
-  const char delimiter = detect_delimiter(header_line->text);
-  std::vector<HeaderColumn> columns;
-  for (auto& field : split_fields(*header_line, delimiter, file)) {
+  out.delimiter = detect_delimiter(header_line->text);
+  for (auto& field : split_fields(*header_line, out.delimiter, file)) {
     // Monitor names go into messages and --monitor: the name rule applies
     // (an empty column, as a trailing delimiter leaves, is only skipped).
     if (!field.text.empty())
@@ -299,36 +315,55 @@ MonitorImport parse_cfx_monitor(std::string_view text, const std::string& file, 
     column.short_name = without_category(column.split.name);
     column.text = std::move(field.text);
     column.column = field.column;
-    columns.push_back(std::move(column));
+    out.columns.push_back(std::move(column));
   }
-  const auto column_of = assign_columns(columns, options, header);
-  std::array<double, 6> scale{};
+  out.column_of = assign_columns(out.columns, options, header);
   for (std::size_t c = 0; c < 6; ++c)
-    if (column_of[c])
-      scale[c] = to_si_scale(columns[*column_of[c]], c, options, {file, header.line, columns[*column_of[c]].column});
+    if (out.column_of[c])
+      out.scale[c] = to_si_scale(out.columns[*out.column_of[c]], c, options,
+                                 {file, header.line, out.columns[*out.column_of[c]].column});
+  return out;
+}
+
+/// The fields of one data row, checked against the header's column count.
+Row read_row(const TextLine& line, bool truncated, const MonitorHeader& header, const std::string& file) {
+  Row row;
+  row.line = line.number;
+  row.truncated = truncated;
+  row.fields = split_fields(line, header.delimiter, file);
+  const std::size_t expected = header.columns.size();
+  if (row.fields.size() != expected) {
+    const std::string found = "found " + std::to_string(row.fields.size()) + " fields, expected " +
+                              std::to_string(expected) + " (as in the header on line " +
+                              std::to_string(header.lines[header.header_index].number) + ")";
+    if (row.truncated && row.fields.size() < expected)
+      throw InputError(SourceLocation{file, row.line}, std::string(kTruncated) + ": " + found);
+    const std::size_t column = row.fields.size() > expected ? row.fields[expected].column : 0;
+    throw InputError(SourceLocation{file, row.line, column}, found);
+  }
+  row.iteration = parse_iteration(row.fields.front(), file, row, header.columns.front().text);
+  return row;
+}
+
+}  // namespace
+
+MonitorImport parse_cfx_monitor(std::string_view text, const std::string& file, const CfxMonitorOptions& options) {
+  const MonitorHeader parsed = read_monitor_header(text, file, options);
+  const auto& lines = parsed.lines;
+  const auto header_line = lines.begin() + static_cast<std::ptrdiff_t>(parsed.header_index);
+  const SourceLocation header{file, header_line->number};
+  const auto& columns = parsed.columns;
+  const auto& column_of = parsed.column_of;
+  const auto& scale = parsed.scale;
 
   // Rows are checked as they come; only the last average_last keep their fields.
   const bool unterminated = text.back() != '\n';
-  const std::string& timestep_label = columns.front().text;
   std::deque<Row> window;
   std::size_t rows = 0;
   std::size_t first_iteration = 0;
   for (auto line = header_line + 1; line != lines.end(); ++line) {
     if (is_blank(line->text)) continue;
-    Row row;
-    row.line = line->number;
-    row.truncated = unterminated && line + 1 == lines.end();
-    row.fields = split_fields(*line, delimiter, file);
-    if (row.fields.size() != columns.size()) {
-      const std::string found = "found " + std::to_string(row.fields.size()) + " fields, expected " +
-                                std::to_string(columns.size()) + " (as in the header on line " +
-                                std::to_string(header.line) + ")";
-      if (row.truncated && row.fields.size() < columns.size())
-        throw InputError(SourceLocation{file, row.line}, std::string(kTruncated) + ": " + found);
-      const std::size_t column = row.fields.size() > columns.size() ? row.fields[columns.size()].column : 0;
-      throw InputError(SourceLocation{file, row.line, column}, found);
-    }
-    row.iteration = parse_iteration(row.fields.front(), file, row, timestep_label);
+    Row row = read_row(*line, unterminated && line + 1 == lines.end(), parsed, file);
     if (rows++ == 0) first_iteration = row.iteration;
     window.push_back(std::move(row));
     if (window.size() > options.average_last) window.pop_front();
@@ -393,6 +428,102 @@ MonitorImport parse_cfx_monitor(std::string_view text, const std::string& file, 
   out.batch.source.importer_version = std::string(kCfxMonitorImporterVersion);
   out.batch.runs.push_back(std::move(run));
   return out;
+}
+
+ForceHistory parse_cfx_monitor_history(std::string_view text, const std::string& file,
+                                       const CfxMonitorOptions& options) {
+  const MonitorHeader parsed = read_monitor_header(text, file, options);
+  const auto& lines = parsed.lines;
+  const bool unterminated = text.back() != '\n';
+  ForceHistory history;
+  history.abscissa = HistoryAbscissa::Iteration;
+  bool forces = false, moments = false;
+  for (std::size_t c = 0; c < 6; ++c)
+    if (parsed.column_of[c]) (c < 3 ? forces : moments) = true;
+  std::size_t rows = 0, leading_empty = 0;
+  std::size_t previous_iteration = 0, previous_line = 0;
+  for (std::size_t i = parsed.header_index + 1; i < lines.size(); ++i) {
+    const TextLine& line = lines[i];
+    if (is_blank(line.text)) continue;
+    const Row row = read_row(line, unterminated && i + 1 == lines.size(), parsed, file);
+    ++rows;
+    // Monitors that start after the first iterations leave their leading cells empty.
+    bool full = true;
+    for (std::size_t c = 0; c < 6; ++c) {
+      if (!parsed.column_of[c]) continue;
+      const bool blank = row.fields[*parsed.column_of[c]].text.empty();
+      full = full && !blank;
+    }
+    if (!full && history.size() == 0 && !row.truncated) {
+      ++leading_empty;
+      continue;
+    }
+    if (history.size() > 0 && row.iteration <= previous_iteration)
+      throw InputError(SourceLocation{file, row.line, row.fields.front().column},
+                       "accumulated timestep " + std::to_string(row.iteration) + " after " +
+                           std::to_string(previous_iteration) + " on line " + std::to_string(previous_line) +
+                           "; expected increasing timesteps");
+    std::array<double, 6> values{};
+    for (std::size_t c = 0; c < 6; ++c) {
+      if (!parsed.column_of[c]) continue;
+      const HeaderColumn& column = parsed.columns[*parsed.column_of[c]];
+      const TextField& field = row.fields[*parsed.column_of[c]];
+      if (field.text.empty()) {
+        std::string message = "column " + in_quotes(column.text) + " (" + std::string(kForceNames[c]) +
+                              "): empty cell at accumulated timestep " + std::to_string(row.iteration) +
+                              " after values on earlier rows; expected a value (a history has no gaps)";
+        if (row.truncated) message = std::string(kTruncated) + ": " + message;
+        throw InputError(SourceLocation{file, row.line, field.column}, message);
+      }
+      values[c] = parse_value(field, file, row, column.text) * parsed.scale[c];
+      if (!std::isfinite(values[c]))
+        throw InputError(SourceLocation{file, row.line, field.column},
+                         "column " + in_quotes(column.text) + ": " + in_quotes(field.text) +
+                             " overflows when converted to SI; expected a finite value");
+    }
+    history.abscissa_values.push_back(static_cast<double>(row.iteration));
+    for (std::size_t c = 0; c < 6; ++c)
+      if (parsed.column_of[c]) history.values(ForcePart::Total, kAllHistoryComponents[c]).push_back(values[c]);
+    const SampleOrigin origin{0, static_cast<std::uint32_t>(std::min<std::size_t>(row.line, UINT32_MAX))};
+    if (forces) history.force_origin.push_back(origin);
+    if (moments) history.moment_origin.push_back(origin);
+    previous_iteration = row.iteration;
+    previous_line = row.line;
+  }
+  if (rows == 0)
+    throw InputError(SourceLocation{file, lines[parsed.header_index].number},
+                     "header but no data rows; expected one row per iteration");
+  if (history.size() == 0)
+    throw InputError(SourceLocation{file, lines.back().number},
+                     "no row has a value in every monitor used; expected the monitors' values");
+  if (history.size() < options.average_last)
+    throw InputError(SourceLocation{file, previous_line},
+                     "found " + std::to_string(history.size()) +
+                         (history.size() == 1 ? " iteration" : " iterations") + ", expected at least " +
+                         std::to_string(options.average_last) + " to average over the last " +
+                         std::to_string(options.average_last));
+  if (leading_empty > 0)
+    history.notes.push_back(std::to_string(leading_empty) + " leading rows without a value in every monitor used "
+                            "were left out (monitors that start later)");
+  HistorySourceFile source;
+  source.path = file;
+  source.format = "cfx-monitor";
+  source.sha256 = sha256_hex(text);
+  source.size_bytes = text.size();
+  source.rows = rows;
+  source.rows_used = history.size();
+  history.files.push_back(std::move(source));
+  history.frame.naming = ComponentNaming::SourceAxes;
+  history.frame.description = "the CFX case's axes; torques about the point the monitors were defined at";
+  check_force_history(history);
+  return history;
+}
+
+ForceHistory read_cfx_monitor_history(const std::filesystem::path& file, const CfxMonitorOptions& options) {
+  const SourceFile source = load_source_file(file);
+  ForceHistory history = parse_cfx_monitor_history(source.bytes, file.string(), options);
+  history.files.front().sha256 = source.sha256;
+  return history;
 }
 
 MonitorImport read_cfx_monitor(const std::filesystem::path& file, const CfxMonitorOptions& options) {

@@ -19,6 +19,7 @@
 #include <string_view>
 
 #include "src/core/run.hpp"
+#include "src/history/force_history.hpp"
 
 namespace hydrocoef {
 
@@ -66,6 +67,17 @@ struct MonitorImport {
   ImportBatch batch;  ///< one run; tau_b holds the means
   MonitorSummary summary;
 };
+
+/// The monitors as a force history (src/history): one sample per iteration
+/// (accumulated timestep, strictly increasing), the mapped or recognised
+/// components in SI, in the case's axes, each sample with its line. Leading
+/// rows where a monitor used has no value yet are left out (with a note); an
+/// empty cell after that is refused. options.average_last > 1 only asks for
+/// that many rows (the window itself is chosen by the history analysis). The
+/// key, fluid, reference point and sign of the options are not used.
+ForceHistory parse_cfx_monitor_history(std::string_view text, const std::string& file,
+                                       const CfxMonitorOptions& options);
+ForceHistory read_cfx_monitor_history(const std::filesystem::path& file, const CfxMonitorOptions& options);
 
 /// Parses monitor text. `file` names the source in error messages and in the
 /// provenance, whose SHA-256 is that of `text`.

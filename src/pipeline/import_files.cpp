@@ -393,7 +393,14 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   const FrameTransform frame = resolve_frame(settings);
   ForceHistory history;
   Provenance provenance;
-  if (format == "force-history") {
+  if (format == "monitor") {
+    CfxMonitorOptions options;
+    options.monitors = request.columns.monitors;
+    options.units = request.columns.units;
+    options.average_last = std::max<std::size_t>(1, request.columns.average_last);
+    history = read_cfx_monitor_history(input.path, options);
+    provenance = history_provenance(history, input.path, kCfxMonitorImporter, kCfxMonitorImporterVersion);
+  } else if (format == "force-history") {
     ForceHistoryCsvOptions options;
     options.columns = request.columns.columns;
     options.units = request.columns.units;
@@ -415,6 +422,9 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   const ForceHistory body = history_in_body_axes(std::move(history), settings, frame, reference_b, out.notes);
   HistoryAnalysisOptions analysis_options;
   analysis_options.window = window_of(settings);
+  // --average-last N on a monitor is the window of its last N iterations.
+  if (format == "monitor" && request.columns.average_last > 1 && !settings.find("window"))
+    analysis_options.window = HistoryWindow::last_samples(request.columns.average_last);
   const HistoryAnalysis analysis = analyze_force_history(body, analysis_options);
   for (const auto& note : analysis.notes) out.notes.push_back(note);
   ImportedRun run = run_from_history(body, analysis);
@@ -468,7 +478,7 @@ ImportedInput read_input(const PlannedInput& input, const ImportRequest& request
   layers.insert(layers.end(), input.layers.begin(), input.layers.end());
   RunSettings settings = merge_settings(layers);
   const std::string format = input_format(input, request.format);
-  if (format == "openfoam-forces" || format == "force-history" || format == "openfoam-case")
+  if (format == "openfoam-forces" || format == "force-history" || format == "openfoam-case" || format == "monitor")
     return read_history(input, format, std::move(settings), request);
 
   ImportedInput out;
@@ -501,49 +511,6 @@ ImportedInput read_input(const PlannedInput& input, const ImportRequest& request
     options.fluid = fluid_of(settings);
     options.reference_point_b = reference_b;
     out.batch = read_force_table(input.path, options);
-  } else if (format == "monitor") {
-    settings_not_applicable(settings,
-                            {"symmetry", "window", "pressure", "shear", "pressure_kind", "shear_convention",
-                             "length_unit", "pressure_unit", "normals", "locations"},
-                            "a CFX monitor file", out.notes);
-    CfxMonitorOptions options;
-    options.key = key;
-    options.fluid = fluid_of(settings);
-    options.reference_point_b = reference_b;
-    options.sign = sign_of(settings);
-    options.monitors = request.columns.monitors;
-    options.units = request.columns.units;
-    options.average_last = request.columns.average_last;
-    auto imported = read_cfx_monitor(input.path, options);
-    // The monitors are in the case's axes: the same frame as the key.
-    const Permutation to_body = permutation_of(frame);
-    for (auto& run : imported.batch.runs) {
-      std::array<std::optional<ForceComponent>, 6> body;
-      for (std::size_t c = 0; c < 3; ++c)
-        for (std::size_t offset : {std::size_t{0}, std::size_t{3}}) {
-          auto component = run.tau_b[offset + to_body.index[c]];
-          if (component && to_body.sign[c] < 0) {
-            component->total = -component->total;
-            if (component->pressure) *component->pressure = -*component->pressure;
-            if (component->viscous) *component->viscous = -*component->viscous;
-          }
-          body[offset + c] = component;
-        }
-      run.tau_b = body;
-    }
-    auto& summary = imported.summary;
-    for (auto* values : {&summary.mean, &summary.std_dev}) {
-      std::array<std::optional<double>, 6> body;
-      for (std::size_t c = 0; c < 3; ++c)
-        for (std::size_t offset : {std::size_t{0}, std::size_t{3}}) {
-          auto v = (*values)[offset + to_body.index[c]];
-          if (v && to_body.sign[c] < 0) *v = -*v;
-          body[offset + c] = v;
-        }
-      *values = body;
-    }
-    out.batch = std::move(imported.batch);
-    out.monitor = summary;
   } else {
     throw InputError(SourceLocation{input.path.string()}, "no importer for format '" + format + "'");
   }

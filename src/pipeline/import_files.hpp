@@ -13,10 +13,9 @@
 //   - a surface export (CFD-Post, VTK family): integrated pressure and shear
 //     (src/pipeline/surface_run.hpp), one run;
 //   - a force table: one run per row, keys from its columns;
-//   - a CFX monitor file: the monitors' last value or mean of the last N
-//     iterations, one run;
-//   - a force history (OpenFOAM's force files or function-object folder, any
-//     CSV of time and forces) and an OpenFOAM case folder (its forces
+//   - a force history (OpenFOAM's force files or function-object folder, a
+//     CFX monitor file, any CSV of time and forces) and an OpenFOAM case
+//     folder (its forces
 //     function object's output): every sample's moments taken to the run's
 //     reference point, mirrored for symmetry planes and turned into body
 //     axes, then averaged over the statistically steady window with the
@@ -52,7 +51,7 @@ struct ColumnOptions {
   std::vector<std::string> disturbance_columns;   ///< tables: headers holding a disturbance
   std::vector<std::string> ignored_columns;       ///< tables: headers to skip
   std::map<std::string, std::string> monitors;    ///< monitors: component -> monitor
-  std::size_t average_last = 1;                   ///< monitors: mean of the last N iterations
+  std::size_t average_last = 1;                   ///< monitors: > 1 averages the last N iterations (window last:N)
 };
 
 struct ImportRequest {
@@ -75,7 +74,6 @@ struct ImportedInput {
   ImportBatch batch;   ///< the runs, in body axes, with provenance and settings
   RunSettings settings;
   std::optional<SurfaceRun> surface;
-  std::optional<MonitorSummary> monitor;
   std::optional<HistoryAnalysis> history;
   std::vector<std::string> notes;
 };

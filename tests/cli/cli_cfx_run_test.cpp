@@ -21,9 +21,24 @@ using test::TempDir;
 
 const std::filesystem::path kOut = HYDROCOEF_SOURCE_DIR "/tests/data/cfx/tow_u1.5_001.out";
 
+// A steady run's monitors: a start-up that decays over some tens of
+// iterations, then small oscillations about the converged forces.
+double fx(int i) { return 1.25 + 0.3 * std::exp(-i / 10.0) + 0.002 * std::sin(1.7 * i); }
+double fy(int i) { return 0.12 + 0.001 * std::cos(2.3 * i); }
+double fz(int i) { return 0.03 - 0.05 * std::exp(-i / 8.0); }
+
 void write_monitors(const std::filesystem::path& path) {
-  std::ofstream(path) << "\"ACCUMULATED TIMESTEP\",\"USER POINT,Fx\",\"USER POINT,Fy\",\"USER POINT,Fz\"\n"
-                         "1,1.20,0.11,0.02\n2,1.25,0.12,0.03\n3,1.26,0.13,0.04\n";
+  std::ofstream out(path);
+  out << "\"ACCUMULATED TIMESTEP\",\"USER POINT,Fx\",\"USER POINT,Fy\",\"USER POINT,Fz\"\n";
+  out.precision(17);
+  for (int i = 1; i <= 300; ++i) out << i << "," << fx(i) << "," << fy(i) << "," << fz(i) << "\n";
+}
+
+double mean_over(double (*f)(int), double first, double last) {
+  double sum = 0.0;
+  int n = 0;
+  for (int i = static_cast<int>(first); i <= static_cast<int>(last); ++i, ++n) sum += f(i);
+  return sum / n;
 }
 
 TEST(CliCfxRun, TheSolverOutputAndItsMonitorsGiveOneRunInBodyAxes) {
@@ -44,10 +59,17 @@ TEST(CliCfxRun, TheSolverOutputAndItsMonitorsGiveOneRunInBodyAxes) {
   EXPECT_DOUBLE_EQ(run.at("w").get<double>(), 0.0);
   EXPECT_DOUBLE_EQ(run.at("density").get<double>(), 997.0);
   EXPECT_NEAR(run.at("kinematic_viscosity").get<double>(), 8.899e-4 / 997.0, 1e-18);
-  // Drag opposes the motion: the monitor's +x force is -X in body axes.
-  EXPECT_DOUBLE_EQ(run.at("forces").at("X").at("total").get<double>(), -1.26);
-  EXPECT_DOUBLE_EQ(run.at("forces").at("Y").at("total").get<double>(), 0.13);
-  EXPECT_DOUBLE_EQ(run.at("forces").at("Z").at("total").get<double>(), -0.04);
+  // The monitors are a force history: the mean over the steady window the
+  // analysis found (after the start-up), with its standard error. Drag opposes
+  // the motion: the monitor's +x force is -X in body axes.
+  const auto& statistics = run.at("forces").at("X").at("statistics");
+  const double first = statistics.at("window")[0].get<double>(), last = statistics.at("window")[1].get<double>();
+  EXPECT_GT(first, 20.0);  // the start-up is left out
+  EXPECT_EQ(last, 300.0);
+  EXPECT_GT(statistics.at("standard_error").get<double>(), 0.0);
+  EXPECT_NEAR(run.at("forces").at("X").at("total").get<double>(), -mean_over(fx, first, last), 1e-12);
+  EXPECT_NEAR(run.at("forces").at("Y").at("total").get<double>(), mean_over(fy, first, last), 1e-12);
+  EXPECT_NEAR(run.at("forces").at("Z").at("total").get<double>(), -mean_over(fz, first, last), 1e-12);
   // The provenance says where each setting came from: the .out's line.
   const auto shown = nlohmann::json::parse(run_cli({"runs", "show", std::to_string(run.at("id").get<int>()), "--json"},
                                                    dir.path())
@@ -62,6 +84,14 @@ TEST(CliCfxRun, TheSolverOutputAndItsMonitorsGiveOneRunInBodyAxes) {
   const auto again = run_cli({"import", "sweep", "--body", "hull", "--axes=-x,y,-z"}, dir.path());
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out).size(), 1u);
+
+  // --average-last N: the last N iterations, a second reading of the same file.
+  const auto averaged = run_cli({"--db", "last.db", "import", "sweep/tow_u1.5_001.out", "--body", "hull", "--axes=-x,y,-z",
+                             "--average-last", "10"},
+                            dir.path());
+  ASSERT_EQ(averaged.exit_code, 0) << averaged.err;
+  const auto tail = nlohmann::json::parse(run_cli({"--db", "last.db", "runs", "--json"}, dir.path()).out);
+  EXPECT_NEAR(tail[0].at("forces").at("X").at("total").get<double>(), -mean_over(fx, 291, 300), 1e-12);
 }
 
 TEST(CliCfxRun, ACaseFileWithoutItsMonitorsIsRefused) {

@@ -731,5 +731,61 @@ TEST_F(ReadCfxMonitor, ErrorsNameTheFilePath) {
   }
 }
 
+TEST(CfxMonitorHistory, EveryIterationBecomesASampleInSi) {
+  // cfx5mondata writes empty cells for monitors that start later.
+  const std::string text =
+      "\"ACCUMULATED TIMESTEP\",\"USER POINT,Fx\",\"USER POINT,Torque z\"\n"
+      "1,,\n"
+      "2,0.5,\n"
+      "3,0.6,0.01\n"
+      "4,0.7,0.02\n"
+      "5,0.8,0.03\n";
+  CfxMonitorOptions options;
+  options.units = {{"X", "kN"}};
+  const ForceHistory history = parse_cfx_monitor_history(text, "m.csv", options);
+  ASSERT_EQ(history.size(), 3u);  // rows 1 and 2 lack a monitor used
+  EXPECT_EQ(history.abscissa, HistoryAbscissa::Iteration);
+  EXPECT_EQ(history.abscissa_values, (std::vector<double>{3, 4, 5}));
+  EXPECT_EQ(history.values(ForcePart::Total, HistoryComponent::Fx), (std::vector<double>{600.0, 700.0, 800.0}));
+  EXPECT_EQ(history.values(ForcePart::Total, HistoryComponent::Mz), (std::vector<double>{0.01, 0.02, 0.03}));
+  EXPECT_FALSE(history.has(ForcePart::Total, HistoryComponent::Fy));
+  EXPECT_EQ(history.force_origin.at(0).line, 4u);
+  EXPECT_EQ(history.moment_origin.at(2).line, 6u);
+  ASSERT_EQ(history.notes.size(), 1u);
+  EXPECT_NE(history.notes[0].find("2 leading rows"), std::string::npos) << history.notes[0];
+  EXPECT_EQ(history.files.at(0).rows, 5u);
+  EXPECT_EQ(history.files.at(0).rows_used, 3u);
+  EXPECT_EQ(history.files.at(0).sha256.size(), 64u);
+}
+
+TEST(CfxMonitorHistory, GapsAndTimestepsThatGoBackAreRefusedWithTheirLine) {
+  const std::string header = "Accumulated Timestep, Fx1 [N], Torque z1 [J]\n";
+  try {
+    (void)parse_cfx_monitor_history(header + "1, 0.5, 0.1\n2, , 0.1\n3, 0.5, 0.1\n", "gap.csv", {});
+    FAIL() << "a gap was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("gap.csv:3:"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("empty cell at accumulated timestep 2"), std::string::npos) << error.what();
+  }
+  try {
+    (void)parse_cfx_monitor_history(header + "1, 0.5, 0.1\n3, 0.5, 0.1\n2, 0.5, 0.1\n", "back.csv", {});
+    FAIL() << "a timestep going back was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("back.csv:4:"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("accumulated timestep 2 after 3 on line 3"), std::string::npos)
+        << error.what();
+  }
+  CfxMonitorOptions five;
+  five.average_last = 5;
+  try {
+    (void)parse_cfx_monitor_history(header + "1, 0.5, 0.1\n2, 0.4, 0.1\n", "few.csv", five);
+    FAIL() << "too few rows for --average-last were accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("few.csv:3:"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("found 2 iterations, expected at least 5"), std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace hydrocoef
