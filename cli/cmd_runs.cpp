@@ -94,6 +94,12 @@ nlohmann::json run_json(const StoredRun& run) {
   return out;
 }
 
+/// A table cell of at least `width` characters that never runs into the next
+/// one: a longer text ("4.94066e-324", a long body name) gets one space after it.
+std::string cell(const std::string& text, std::size_t width) {
+  return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
+}
+
 void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::ReadOnly);
   RunFilter filter;
@@ -136,14 +142,14 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   if (any_history) table << std::setw(12) << "history";
   table << "disturbances\n";
   for (const auto& run : runs) {
-    table << std::setw(6) << run.id << std::setw(12) << run.key.body;
+    table << cell(std::to_string(run.id), 6) << cell(run.key.body, 12);
     for (std::size_t i = 0; i < 6; ++i)
-      if (velocity_used[i]) table << std::setw(11) << significant(run.key.nu_b[i], 6);
+      if (velocity_used[i]) table << cell(significant(run.key.nu_b[i], 6), 11);
     for (std::size_t i = 0; i < 6; ++i) {
       if (!force_used[i]) continue;
-      std::string cell = run.tau_b[i] ? significant(run.tau_b[i]->value.total, 6) : "-";
-      if (run.tau_b[i] && run.tau_b[i]->sign == SignConvention::OpposingMotion) cell += "*";
-      table << std::setw(13) << cell;
+      std::string text = run.tau_b[i] ? significant(run.tau_b[i]->value.total, 6) : "-";
+      if (run.tau_b[i] && run.tau_b[i]->sign == SignConvention::OpposingMotion) text += "*";
+      table << cell(text, 13);
     }
     if (any_history) {
       // A run averaged from a force history: "ok" when it converged, else its flags.
@@ -151,7 +157,7 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
       for (const auto& force : run.tau_b) averaged = averaged || (force && force->statistics);
       std::string flags;
       for (const auto& flag : run_flags(run)) flags += (flags.empty() ? "" : ",") + flag;
-      table << std::setw(12) << (!averaged ? "-" : flags.empty() ? "ok" : flags + " ");
+      table << cell(!averaged ? "-" : flags.empty() ? "ok" : flags, 12);
     }
     std::string disturbances;
     for (const auto& [name, value] : run.key.disturbances)

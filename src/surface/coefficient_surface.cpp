@@ -29,8 +29,9 @@ std::vector<std::string> units_or_default(std::vector<std::string> units, const 
 std::size_t find_name(const std::vector<std::string>& names, std::string_view name, const char* what) {
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return i;
-  throw InputError(std::string("the surface has no ") + what + " '" + std::string(name) + "'; its " + what +
-                   "s are " + join(names));
+  const std::string plural = std::string_view(what) == "axis" ? "axes" : std::string(what) + "s";
+  throw InputError(std::string("the surface has no ") + what + " '" + std::string(name) + "'; its " +
+                   (names.size() == 1 ? std::string(what) + " is " : plural + " are ") + join(names));
 }
 
 }  // namespace

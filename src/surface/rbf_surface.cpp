@@ -489,7 +489,7 @@ void RbfSurface::evaluate_at(std::span<const double> point, std::span<double> ou
         case RbfOutOfRange::Error:
           throw InputError("RBF query " + axis_labels_[a] + " = " + shortest(x) + " is outside the samples' range [" +
                            shortest(lower_[a]) + ", " + shortest(upper_[a]) +
-                           "]; expected a value within it (or the Clamp or Extrapolate policy for that axis)");
+                           "]; expected a value within it (or --extrapolate clamp or extrapolate for that axis)");
         case RbfOutOfRange::Clamp:
           x = std::clamp(x, lower_[a], upper_[a]);
           clamped[a] = true;
