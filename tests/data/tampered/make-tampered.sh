@@ -63,6 +63,12 @@ case_sql stale-two "$(unchecked "UPDATE surface SET stale = 2;")"
 case_sql sign-unknown "$(unchecked "UPDATE run_force SET sign_convention = 'sideways';")"
 case_sql surface-kind-unknown "$(unchecked "UPDATE surface SET kind = 'spline' $grid_where;")"
 case_sql orphan-fit-run "INSERT INTO fit_run(fit_id, run_id) SELECT min(id), 999999 FROM fit;"
+# Statistics of averaged force components (migration 6).
+stats_columns="run_id, component, abscissa, window_method, window_first, window_last, samples, flags, standard_error, spread, drift, effective_samples"
+case_sql statistics-of-missing-component "INSERT INTO run_force_statistics($stats_columns) SELECT run_id, 'Y', 'time', 'MSER-5', 1, 2, 10, '', 0.1, 0.1, 0, 5 FROM run_force WHERE component = 'X' LIMIT 1;"
+case_sql statistics-negative-error "$(unchecked "INSERT INTO run_force_statistics($stats_columns) SELECT run_id, 'X', 'time', 'MSER-5', 1, 2, 10, '', -0.1, 0.1, 0, 5 FROM run_force WHERE component = 'X' LIMIT 1;")"
+case_sql statistics-flag-newline "INSERT INTO run_force_statistics($stats_columns) SELECT run_id, 'X', 'time', 'MSER-5', 1, 2, 10, 'drifting' || char(10) || 'system(\"touch PWNED\")', 0.1, 0.1, 0, 5 FROM run_force WHERE component = 'X' LIMIT 1;"
+case_sql statistics-abscissa-unknown "$(unchecked "INSERT INTO run_force_statistics($stats_columns) SELECT run_id, 'X', 'lightyears', 'MSER-5', 1, 2, 10, '', 0.1, 0.1, 0, 5 FROM run_force WHERE component = 'X' LIMIT 1;")"
 
 # Surface records.
 case_sql quality-not-json "UPDATE surface SET quality = 'not json {';"
