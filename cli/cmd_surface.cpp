@@ -330,6 +330,22 @@ void rebuild(const NameArgs& args, const GlobalOptions& global) {
   if (args.json) std::cout << escape::json_text(rebuilt, 2) << '\n';
 }
 
+/// What a surface was built from, in the selection language: "all runs",
+/// "u>=0.1 exclude-run 6", with ", mirror v" when mirror images stood beside
+/// the runs.
+std::string built_from(const SurfaceRecord& record) {
+  const auto definition = nlohmann::json::parse(record.definition, nullptr, false);
+  if (definition.is_discarded() || !definition.contains("build")) return "(not built by surface build)";
+  try {
+    const BuildArgs args = args_from_json(record.name, record.body, definition["build"]);
+    const std::string selection = parse_selection(args.where, args.exclude_runs).text();
+    const std::string mirror = make_mirror_spec(args.mirror, args.mirror_odd).text();
+    return (selection.empty() ? std::string("all runs") : selection) + (mirror.empty() ? "" : ", mirror " + mirror);
+  } catch (const InputError&) {
+    return "(build options not readable)";
+  }
+}
+
 void list(const NameArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::ReadOnly);
   const auto records = database.surfaces(args.body);
@@ -345,7 +361,7 @@ void list(const NameArgs& args, const GlobalOptions& global) {
   }
   std::cout << std::left << std::setw(20) << "name" << std::setw(10) << "body" << std::setw(6) << "kind" << std::setw(16)
             << "method" << std::setw(18) << "axes" << std::setw(14) << "outputs" << std::setw(6) << "runs"
-            << "state\n";
+            << std::setw(22) << "state" << "built from\n";
   for (const auto& record : records) {
     const CoefficientSurface surface = surface_from_record(record);
     std::string axes, outputs;
@@ -353,7 +369,8 @@ void list(const NameArgs& args, const GlobalOptions& global) {
     for (const auto& o : surface.output_names()) outputs += (outputs.empty() ? "" : ",") + o;
     std::cout << std::setw(20) << record.name << std::setw(10) << record.body << std::setw(6) << record.kind
               << std::setw(16) << surface.method_name() << std::setw(18) << axes << std::setw(14) << outputs
-              << std::setw(6) << record.run_ids.size() << (record.stale ? "STALE (runs changed)" : "current") << '\n';
+              << std::setw(6) << record.run_ids.size() << std::setw(22)
+              << (record.stale ? "STALE (runs changed)" : "current") << built_from(record) << '\n';
   }
 }
 

@@ -193,14 +193,14 @@ class CaseReader {
     inlets_.push_back(statement);
   }
 
+  // A pressure opening (a far field or an outlet that lets flow back in)
+  // states no velocity: fine beside an inlet that does, refused when it is
+  // the only place the free stream could come from (set_free_stream).
   void read_opening(const CclObject& boundary) {
     const CclObject* mm = mass_and_momentum(boundary);
     const CclParameter* option = mm ? mm->parameter("Option") : nullptr;
     if (option && same_option(option, "Opening Pressure and Direction"))
-      fail(option->line, "opening " + name_of(boundary.label) +
-                             " gives Option = Opening Pressure and Direction: the flow through it is driven by a "
-                             "pressure, so the free stream is not stated; expected inlets that state the velocity "
-                             "(give the run's flow in a sidecar)");
+      pressure_openings_.push_back({boundary.label, option->line});
   }
 
   void read_domain_motion(const CclObject& domain) {
@@ -296,6 +296,15 @@ class CaseReader {
   }
 
   void set_free_stream() {
+    if (inlets_.empty() && !pressure_openings_.empty())
+      fail(pressure_openings_.front().line,
+           "opening " + name_of(pressure_openings_.front().label) +
+               " gives Option = Opening Pressure and Direction and no inlet states a velocity: the flow is driven "
+               "by a pressure, so the free stream is not stated; expected an inlet that states the velocity (or "
+               "give the run's flow in a sidecar)");
+    for (const auto& opening : pressure_openings_)
+      out_.notes.push_back("opening " + name_of(opening.label) + " (" + printable_where(opening.line) +
+                           ") is a pressure opening; the free stream is the inlet's");
     if (inlets_.empty()) return;
     const InletStatement& inlet = inlets_.front();
     if (inlet.kind == InletStatement::Kind::Vector) {
@@ -327,6 +336,11 @@ class CaseReader {
   CelEvaluator cel_;
   CfxCaseSettings out_;
   std::vector<InletStatement> inlets_;
+  struct Opening {
+    std::string label;
+    std::size_t line = 0;
+  };
+  std::vector<Opening> pressure_openings_;
   std::vector<std::string> symmetry_, walls_;
   std::vector<DomainValue> p_ref_, rho_, nu_;
   bool ambiguous_fluid_ = false;

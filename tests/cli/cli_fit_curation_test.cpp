@@ -162,6 +162,9 @@ TEST(FitCurationMirror, AMirroredFitOverHalfThePlaneIsTheFitOverTheWholePlane) {
   EXPECT_EQ(built.at("mirror_images").get<int>(), 4);
   EXPECT_EQ(built.at("axes")[0].at("lower").get<double>(), -0.3);
   EXPECT_EQ(built.at("axes")[0].at("upper").get<double>(), 0.3);
+  // surface list says what each surface was built from.
+  const auto list = run_cli({"--db", "half.db", "surface", "list"}, dir.path());
+  EXPECT_NE(list.out.find("all runs, mirror v"), std::string::npos) << list.out;
 }
 
 TEST(FitCurationHistories, RunsShowTheirHistoryStatisticsAndFitsWarnOfUnconvergedOnes) {

@@ -15,6 +15,7 @@
 
 #include "src/core/error.hpp"
 #include "tests/support/expect_input_error.hpp"
+#include "tests/support/run_cli.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -23,12 +24,7 @@ namespace fs = std::filesystem;
 
 const fs::path kData = fs::path(HYDROCOEF_SOURCE_DIR) / "tests" / "data" / "cfx";
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+std::string read_file(const fs::path& path) { return test::read_text(path); }
 
 /// The 1-based number of the first line of `text` that contains `needle`.
 std::size_t line_of(const std::string& text, const std::string& needle) {

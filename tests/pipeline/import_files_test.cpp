@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -79,6 +80,81 @@ TEST(ImportFiles, OpenFoamCaseFoldersBecomeRunsInBodyAxesWithTheirUncertainty) {
     // name's pattern (the translation is taken as a group from one layer).
     EXPECT_EQ(settings["flow"]["source"], "case files");
     EXPECT_EQ(input.batch.source.sha256.size(), 64u);
+  }
+}
+
+std::string format17(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+// A copy of a real case whose forces function object wrote another layout,
+// made from the case's own rows: the Foundation releases' forces.dat, or a
+// forceCoeffs coefficient.dat (totals as coefficients, with its reference values).
+void copy_case_with_layout(const fs::path& from, const fs::path& to, const std::string& layout) {
+  for (const char* part : {"0", "constant", "system"})
+    fs::copy(from / part, to / part, fs::copy_options::recursive);
+  const ForceHistory esi = read_openfoam_forces(from / "postProcessing" / "forces");
+  if (layout == "foundation") {
+    std::string text = "# Forces\n# CofR : (0 0 0)\n# Time forces(pressure viscous) moments(pressure viscous)\n";
+    for (std::size_t i = 0; i < esi.size(); ++i) {
+      const auto v = [&](ForcePart part, std::size_t k) { return format17(esi.values(part, HistoryComponent(k))[i]); };
+      text += format17(esi.abscissa_values[i]) + "\t((" + v(ForcePart::Pressure, 0) + " " + v(ForcePart::Pressure, 1) +
+              " " + v(ForcePart::Pressure, 2) + ") (" + v(ForcePart::Viscous, 0) + " " + v(ForcePart::Viscous, 1) + " " +
+              v(ForcePart::Viscous, 2) + ")) ((" + v(ForcePart::Pressure, 3) + " " + v(ForcePart::Pressure, 4) + " " +
+              v(ForcePart::Pressure, 5) + ") (" + v(ForcePart::Viscous, 3) + " " + v(ForcePart::Viscous, 4) + " " +
+              v(ForcePart::Viscous, 5) + "))\n";
+    }
+    fs::create_directories(to / "postProcessing/forces/0");
+    std::ofstream(to / "postProcessing/forces/0/forces.dat") << text;
+  } else {
+    const double rho = 998.2, u = 0.2, area = 0.0706858, l = 0.3, q = 0.5 * rho * u * u;
+    std::string text = "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
+                       "# magUInf : 0.2\n# lRef : 0.3\n# Aref : 0.0706858\n# CofR : (0 0 0)\n"
+                       "# Time Cd Cs Cl CmRoll CmPitch CmYaw\n";
+    for (std::size_t i = 0; i < esi.size(); ++i) {
+      text += format17(esi.abscissa_values[i]);
+      for (std::size_t k = 0; k < 6; ++k)
+        text += " " + format17(esi.values(ForcePart::Total, HistoryComponent(k))[i] / (k < 3 ? q * area : q * area * l));
+      text += "\n";
+    }
+    fs::create_directories(to / "postProcessing/forceCoeffs/0");
+    std::ofstream(to / "postProcessing/forceCoeffs/0/coefficient.dat") << text;
+  }
+}
+
+// The sweep as Foundation releases and forceCoeffs leave it: the same runs,
+// keys and signs as from the ESI force.dat and moment.dat, with sweep-wide
+// flags only.
+TEST(ImportFiles, FoundationAndCoefficientCaseFoldersGiveTheSameRuns) {
+  const auto esi = import({kSphere / "cases"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}});
+  ASSERT_EQ(esi.size(), 4u);
+  for (const std::string layout : {"foundation", "coefficients"}) {
+    SCOPED_TRACE(layout);
+    test::TempDir dir;
+    for (const auto& input : esi) copy_case_with_layout(input.input.path, dir / "sweep" / input.input.path.filename(), layout);
+    const auto other = import({dir / "sweep"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}});
+    ASSERT_EQ(other.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+      SCOPED_TRACE(esi[i].input.path.filename().string());
+      ASSERT_EQ(other[i].input.path.filename(), esi[i].input.path.filename());
+      const auto& a = esi[i].batch.runs.front();
+      const auto& b = other[i].batch.runs.front();
+      EXPECT_EQ(b.key.nu_b, a.key.nu_b);  // u > 0, from 0/U with the sweep's axes
+      EXPECT_GT(b.key.nu_b[0], 0.0);
+      ASSERT_TRUE(other[i].history);
+      EXPECT_EQ(other[i].history->first_sample, esi[i].history->first_sample);
+      for (std::size_t c = 0; c < 6; ++c) {
+        ASSERT_TRUE(b.tau_b[c]) << c;
+        // Foundation: totals are the parts' sums (the ESI file's totals are rounded to 11 digits).
+        EXPECT_NEAR(b.tau_b[c]->total, a.tau_b[c]->total, 1e-9 * std::abs(a.tau_b[c]->total) + 1e-15) << c;
+      }
+      EXPECT_LT(b.tau_b[0]->total, 0.0);  // drag opposes the motion
+      ASSERT_TRUE(b.statistics && b.statistics->components[0]);
+      EXPECT_NEAR(b.statistics->components[0]->standard_error, a.statistics->components[0]->standard_error,
+                  1e-6 * a.statistics->components[0]->standard_error);
+    }
   }
 }
 
