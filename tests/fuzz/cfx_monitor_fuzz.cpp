@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string_view>
 
 #include "importers/cfx_monitor.hpp"
@@ -34,6 +35,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data,
       fuzz::finding("a run without any force component");
   } catch (const InputError &error) {
     fuzz::check_error(error);
+  }
+  // The same text as a force history (what import reads): samples strictly
+  // increasing and finite, or one InputError.
+  try {
+    const ForceHistory history =
+        parse_cfx_monitor_history(text, "fuzz.csv", options);
+    check_force_history(history);
+    if (history.size() == 0)
+      fuzz::finding("a monitor history without samples");
+  } catch (const InputError &error) {
+    fuzz::check_error(error);
+  } catch (const std::invalid_argument &) {
+    fuzz::finding("a monitor history that breaks the history invariants");
   }
   return 0;
 }
