@@ -36,6 +36,18 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
   options.single_precision = args.single_precision;
   options.c_identifier = args.identifier;
   const auto files = export_table(table, metadata, format, args.output, options);
+  // A table whose range leaves out zero on an axis that refuses values
+  // outside it fails at rest (u = 0) in the controller: say so, once per axis.
+  std::vector<std::string> refusals;
+  for (std::size_t a = 0; a < table.axis_count(); ++a) {
+    const GridAxis& axis = table.axes()[a];
+    const double lower = axis.breakpoints.front(), upper = axis.breakpoints.back();
+    if (axis.extrapolation == Extrapolation::Error && (lower > 0.0 || upper < 0.0))
+      refusals.push_back("axis " + axis.name + " covers [" + number(lower) + ", " + number(upper) +
+                         "] and refuses values outside it (policy error): a query at " + axis.name +
+                         " = 0 (at rest) fails; build the surface with --extrapolate " + axis.name +
+                         "=clamp or " + axis.name + "=linear if the controller will ask there");
+  }
 
   if (args.json) {
     nlohmann::json out = {{"surface", metadata.surface_name},
@@ -58,6 +70,7 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
     }
     for (std::size_t k = 0; k < table.output_count(); ++k)
       out["outputs"].push_back({{"name", table.outputs()[k]}, {"unit", metadata.output_units[k]}});
+    out["notes"] = refusals;
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
@@ -74,6 +87,7 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
     std::cout << ' ' << table.outputs()[k] << " [" << metadata.output_units[k] << "]";
   std::cout << ", forces on the body\n  content sha256 " << metadata.content_sha256 << '\n';
   for (const auto& file : files) std::cout << "  wrote " << file.string() << '\n';
+  for (const auto& note : refusals) std::cout << "  note: " << note << '\n';
   if (metadata.stale)
     std::cout << "  note: the body's forces changed since this surface was built; rebuild it with "
                  "hydrocoef surface rebuild "

@@ -11,6 +11,7 @@
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
+#include "src/export/export.hpp"
 #include "src/surface/breakpoints.hpp"
 #include "src/surface/stored_surface.hpp"
 #include "src/surface/surface_builder.hpp"
@@ -165,6 +166,13 @@ std::string json_number_text(const nlohmann::json& value, int digits) {
   return value.is_number() ? significant(value.get<double>(), digits) : "n/a";
 }
 
+/// The grid nodes of a resampled surface that are far from every run, as
+/// coordinates (empty for other surfaces).
+std::vector<std::vector<double>> far_nodes(const SurfaceRecord& record, const CoefficientSurface& surface) {
+  if (!surface.grid()) return {};
+  return metadata_from_record(record, surface).far_from_data;
+}
+
 void print_quality(const SurfaceRecord& record, const CoefficientSurface& surface) {
   const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
   const std::string loo = quality.value("loo_method", "");
@@ -183,6 +191,14 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
     std::cout << "  resampled grid: " << quality["grid_points"].get<std::size_t>() << " points, " << far
               << " farther than " << significant(quality["far_threshold"].get<double>(), 3)
               << " (scaled) from every run" << (far ? ": extrapolated there, not data" : "") << '\n';
+    const auto nodes = far_nodes(record, surface);
+    for (std::size_t i = 0; i < nodes.size() && i < 20; ++i) {
+      std::cout << "    (";
+      for (std::size_t a = 0; a < nodes[i].size(); ++a)
+        std::cout << (a ? ", " : "") << surface.axis_names()[a] << " = " << significant(nodes[i][a], 6);
+      std::cout << ")\n";
+    }
+    if (nodes.size() > 20) std::cout << "    ... and " << nodes.size() - 20 << " more (--json lists them all)\n";
   }
 }
 
@@ -219,6 +235,12 @@ nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurfac
   for (std::size_t k = 0; k < surface.output_count(); ++k)
     out["outputs"].push_back({{"name", surface.output_names()[k]}, {"unit", surface.output_units()[k]}});
   out["quality"] = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
+  out["far_from_data_points"] = nlohmann::json::array();
+  for (const auto& node : far_nodes(record, surface)) {
+    nlohmann::json point = nlohmann::json::object();
+    for (std::size_t a = 0; a < node.size(); ++a) point[surface.axis_names()[a]] = node[a];
+    out["far_from_data_points"].push_back(point);
+  }
   const auto definition = nlohmann::json::parse(record.definition);
   if (definition.contains("build")) out["build"] = definition["build"];
   return out;

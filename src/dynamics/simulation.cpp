@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "src/core/error.hpp"
 #include "src/dynamics/integrators.hpp"
@@ -96,9 +98,53 @@ SegmentInputs segment_inputs(const VehicleModel& model, const Scenario& scenario
   return in;
 }
 
+namespace {
+
+// What a simulation can do, checked before the first step so that nothing is
+// reported that was not done: the output samples are held in memory, RK4's
+// step count must fit (and be run in reasonable time: 1e10 steps are about
+// 2.5 hours here), and an adaptive tolerance below about 100 machine epsilons
+// cannot be met in double precision.
+constexpr double kMaxOutputSamples = 1e7;
+constexpr double kMaxRk4Steps = 1e10;
+constexpr double kMinRelativeTolerance = 100.0 * 2.220446049250313e-16;
+
+void check_limits(const Scenario& scenario) {
+  const double samples = scenario.duration_s * scenario.output_rate_Hz;
+  if (!(samples <= kMaxOutputSamples))
+    fail(scenario, "output_rate",
+         "duration " + std::to_string(scenario.duration_s) + " s at " + std::to_string(scenario.output_rate_Hz) +
+             " Hz is " + std::to_string(samples) + " output samples; expected at most 1e7 (a lower output_rate or "
+             "a shorter duration)");
+  const IntegratorSettings& settings = scenario.integrator;
+  if (settings.method == IntegratorSettings::Method::Rk4) {
+    const double steps = scenario.duration_s / settings.step_s;
+    if (!(steps <= kMaxRk4Steps))
+      fail(scenario, "integrator.step",
+           "a step of " + std::to_string(settings.step_s) + " s over " + std::to_string(scenario.duration_s) +
+               " s is " + std::to_string(steps) + " steps; expected at most 1e10 (a step of at least " +
+               std::to_string(scenario.duration_s / kMaxRk4Steps) + " s)");
+  } else if (!(settings.relative_tolerance >= kMinRelativeTolerance)) {
+    fail(scenario, "integrator.rtol",
+         "found " + std::to_string(settings.relative_tolerance) +
+             ", expected at least 2.2e-14 (100 machine epsilons: a smaller relative error cannot be met in double "
+             "precision)");
+  }
+}
+
+/// The first non-finite entry of the state, or nullopt.
+std::optional<std::size_t> non_finite(const StateVector& x) {
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    if (!std::isfinite(x[i])) return static_cast<std::size_t>(i);
+  return std::nullopt;
+}
+
+}  // namespace
+
 SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress) {
   if (scenario.segments.empty() || !(scenario.duration_s > 0.0) || !(scenario.output_rate_Hz > 0.0))
     throw InputError(SourceLocation{scenario.file}, "a scenario needs a positive duration and output rate and a segment");
+  check_limits(scenario);
   SimulationResult result;
   // Every segment's inputs are checked before the first step.
   std::vector<SegmentInputs> segments;
@@ -155,6 +201,13 @@ SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, c
       track_norm(x);
       normalize_attitude(x);
     }
+    // A state that left the finite numbers (a force or velocity near 1e308)
+    // stops the run where it happened, never a trajectory of NaN.
+    if (const auto bad = non_finite(x))
+      throw InputError(SourceLocation{scenario.file},
+                       "the state left the finite numbers (entry " + std::to_string(*bad) + " of position, attitude "
+                       "and velocity) between t = " + std::to_string(t) + " s and " + std::to_string(event.t) +
+                       " s; expected forces, velocities and currents the vehicle model can integrate");
     t = event.t;
     if (event.segment != 0) {
       activate(event.segment);

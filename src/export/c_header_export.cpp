@@ -267,6 +267,17 @@ std::string c_header_text(const GridTable& table, const ExportMetadata& metadata
   for (std::size_t k = 0; k < n_out; ++k)
     h += " *   out[" + std::to_string(k) + "] " + comment_safe(table.outputs()[k]) + " [" +
          comment_safe(metadata.output_units[k]) + "]\n";
+  if (!metadata.far_from_data.empty()) {
+    // A controller engineer must see which entries are extrapolation, not data.
+    h += " * Far from every CFD run (the RBF was extrapolated there, not fitted to data): " +
+         std::to_string(metadata.far_from_data.size()) + " nodes:\n";
+    for (const auto& point : metadata.far_from_data) {
+      std::string text;
+      for (std::size_t a = 0; a < point.size(); ++a)
+        text += (a ? ", " : "") + comment_safe(table.axes()[a].name) + " = " + shortest_number(point[a]);
+      h += " *   (" + text + ")\n";
+    }
+  }
   h += " * Policies: error = the call fails (returns axis + 1); clamp = the end value; linear = end value plus\n"
        " * the end slope times the distance (nearest: as clamp); method = the end cell's own polynomial.\n *\n";
   h += " * Table layout: node (i_0, ..., i_{n-1}), i_a the breakpoint index on axis a, axis 0 fastest:\n"

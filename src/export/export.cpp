@@ -1,5 +1,7 @@
 #include "src/export/export.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -50,7 +52,35 @@ ExportMetadata metadata_from_record(const SurfaceRecord& record, const Coefficie
   metadata.created_at = record.created_at;
   metadata.quality_json = record.quality;
   metadata.stale = record.stale;
+  const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality, nullptr, false);
+  if (quality.is_object() && quality.contains("far_from_data") && quality["far_from_data"].is_array()) {
+    std::vector<std::size_t> indices;
+    for (const auto& index : quality["far_from_data"]) {
+      if (!index.is_number_unsigned())
+        throw InputError("surface '" + record.name + "': far_from_data holds " + escape::one_line(index.dump()) +
+                         "; expected grid node indices");
+      indices.push_back(index.get<std::size_t>());
+    }
+    metadata.far_from_data = grid_node_coordinates(*surface.grid(), indices);
+  }
   return metadata;
+}
+
+std::vector<std::vector<double>> grid_node_coordinates(const GridTable& table, const std::vector<std::size_t>& indices) {
+  std::vector<std::vector<double>> out;
+  for (const std::size_t index : indices) {
+    if (index >= table.node_count())
+      throw InputError("grid node " + std::to_string(index) + " is outside a grid of " +
+                       std::to_string(table.node_count()) + " nodes; expected an index below it");
+    std::vector<double> point;
+    std::size_t rest = index;
+    for (const GridAxis& axis : table.axes()) {
+      point.push_back(axis.breakpoints[rest % axis.breakpoints.size()]);
+      rest /= axis.breakpoints.size();
+    }
+    out.push_back(std::move(point));
+  }
+  return out;
 }
 
 ExportMetadata metadata_for_table(const GridTable& table, std::string surface_name) {

@@ -41,7 +41,15 @@ struct ExportMetadata {
   std::string created_at;      ///< when the surface was built (UTC ISO 8601)
   std::string quality_json;    ///< leave-one-out statistics as stored ("" if none)
   bool stale = false;          ///< forces changed since the surface was built
+  /// Grid nodes of a resampled RBF surface that are far from every run (the
+  /// quality's far_from_data), as axis coordinates: extrapolation, not data.
+  std::vector<std::vector<double>> far_from_data;
 };
+
+/// The coordinates of grid nodes listed by flat index (axis 0 fastest), for
+/// messages and exports. InputError for an index outside the grid (a
+/// received database's quality record is untrusted).
+std::vector<std::vector<double>> grid_node_coordinates(const GridTable& table, const std::vector<std::size_t>& indices);
 
 /// SHA-256 of a surface record's content: the definition JSON's bytes, then
 /// the data's doubles as stored in memory (little-endian IEEE 754 on every

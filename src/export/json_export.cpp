@@ -45,6 +45,13 @@ std::string json_text(const GridTable& table, const ExportMetadata& metadata) {
   document["fit_statistics"] =
       metadata.quality_json.empty() ? json() : json::parse(metadata.quality_json, nullptr, false);
   if (document["fit_statistics"].is_discarded()) document["fit_statistics"] = metadata.quality_json;
+  // Grid nodes far from every run: extrapolation of the RBF, not data.
+  document["far_from_data"] = json::array();
+  for (const auto& point : metadata.far_from_data) {
+    json node = json::object();
+    for (std::size_t a = 0; a < point.size(); ++a) node[table.axes()[a].name] = point[a];
+    document["far_from_data"].push_back(node);
+  }
   std::vector<std::int64_t> runs = metadata.run_ids;
   document["provenance"] = {{"surface", metadata.surface_name},
                             {"body", metadata.body},

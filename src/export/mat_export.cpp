@@ -195,6 +195,12 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
   for (std::size_t k = 0; k < n_out; ++k)
     info["outputs"].push_back(
         {{"variable", table_names[k]}, {"name", table.outputs()[k]}, {"unit", metadata.output_units[k]}});
+  info["far_from_data"] = nlohmann::json::array();
+  for (const auto& point : metadata.far_from_data) {
+    nlohmann::json node = nlohmann::json::object();
+    for (std::size_t a = 0; a < point.size(); ++a) node[table.axes()[a].name] = point[a];
+    info["far_from_data"].push_back(node);
+  }
   info["provenance"] = {{"runs", metadata.run_ids},
                         {"content_sha256", metadata.content_sha256},
                         {"created_at", metadata.created_at},

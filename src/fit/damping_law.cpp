@@ -378,6 +378,24 @@ double DampingLawFit::evaluate(double x) const {
   return value;
 }
 
+namespace {
+
+/// The power of the velocity in a term: 0 for the constant, 1 for x and |x|,
+/// 2 for x|x| and x^2, 3 for x^3.
+int term_power(DampingTerm term) {
+  switch (term) {
+    case DampingTerm::Constant: return 0;
+    case DampingTerm::Linear:
+    case DampingTerm::AbsLinear: return 1;
+    case DampingTerm::SignedQuadratic:
+    case DampingTerm::Quadratic: return 2;
+    case DampingTerm::Cubic: return 3;
+  }
+  return 0;
+}
+
+}  // namespace
+
 DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
                               const FitOptions& options) {
   validate(spec);
@@ -397,24 +415,41 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
       throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable +
                        " = " + shortest(x[i]) + ", force = " + shortest(y[i]) + "; expected finite values");
 
+  // The fit is made in units of the largest |x| and the largest |y|, so that
+  // no power of a velocity and no square of a force over- or underflows
+  // (velocities of 1e308 or 5e-324 m/s, forces of 1e308 N); the coefficients
+  // are turned back at the end, and refused if they do not fit a double.
+  double x_scale = 0.0, y_scale = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    x_scale = std::max(x_scale, std::abs(x[i]));
+    y_scale = std::max(y_scale, std::abs(y[i]));
+  }
+  if (x_scale == 0.0) x_scale = 1.0;
+  if (y_scale == 0.0) y_scale = 1.0;
+  std::vector<double> y_scaled(n);
+  for (std::size_t i = 0; i < n; ++i) y_scaled[i] = y[i] / y_scale;
+
   const auto rows = static_cast<Eigen::Index>(n);
   const auto cols = static_cast<Eigen::Index>(k);
   Eigen::MatrixXd design(rows, cols);
   for (Eigen::Index i = 0; i < rows; ++i)
     for (Eigen::Index j = 0; j < cols; ++j)
-      design(i, j) = basis_value(spec.terms[static_cast<std::size_t>(j)], x[static_cast<std::size_t>(i)]);
+      design(i, j) = basis_value(spec.terms[static_cast<std::size_t>(j)], x[static_cast<std::size_t>(i)] / x_scale);
   // An all-zero column keeps scale 1; the rank check below reports it.
   const Eigen::VectorXd column_norm = design.colwise().norm().transpose();
   const Eigen::VectorXd column_scale = (column_norm.array() > 0.0).select(column_norm, 1.0);
   const Eigen::MatrixXd scaled_design = design * column_scale.cwiseInverse().asDiagonal();
   if (const auto which = dependent_terms(scaled_design); !which.empty()) throw_dependent_terms(spec, which, x);
 
-  const auto loss = make_loss(options);
-  ScaledSolution solution = solve(scaled_design, y, nullptr, Eigen::VectorXd::Zero(cols), loss == nullptr);
-  if (loss != nullptr) solution = solve(scaled_design, y, loss.get(), solution.coefficients, true);
+  // A robust loss's scale is in the force's unit: in units of y_scale here.
+  FitOptions scaled_options = options;
+  scaled_options.loss_scale = options.loss_scale / y_scale;
+  const auto loss = make_loss(scaled_options);
+  ScaledSolution solution = solve(scaled_design, y_scaled, nullptr, Eigen::VectorXd::Zero(cols), loss == nullptr);
+  if (loss != nullptr) solution = solve(scaled_design, y_scaled, loss.get(), solution.coefficients, true);
   if (!solution.covariance_ok) throw_dependent_terms(spec, all_indices(k), x);
 
-  const Eigen::Map<const Eigen::VectorXd> observed(y.data(), rows);
+  const Eigen::Map<const Eigen::VectorXd> observed(y_scaled.data(), rows);
   const Eigen::VectorXd residuals = scaled_design * solution.coefficients - observed;
   const double ssr = residuals.squaredNorm();
   const double sst = (observed.array() - observed.mean()).matrix().squaredNorm();
@@ -438,12 +473,32 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
   fit.spec = spec;
   fit.n = n;
   fit.loss = format_loss(options);
-  fit.rmse = std::sqrt(ssr / static_cast<double>(n));
+  fit.rmse = std::sqrt(ssr / static_cast<double>(n)) * y_scale;
   fit.r2 = sst > 0.0 ? 1.0 - ssr / sst : std::numeric_limits<double>::quiet_NaN();
   for (Eigen::Index j = 0; j < cols; ++j) {
-    fit.coefficients.push_back(solution.coefficients(j) / column_scale(j));
-    fit.std_errors.push_back(std::sqrt(residual_variance * solution.covariance(j, j)) / column_scale(j));
+    const DampingTerm term = spec.terms[static_cast<std::size_t>(j)];
+    // c_j in the law's units: (c_scaled / column) * y_scale / x_scale^power,
+    // divided one factor at a time so that no intermediate overflows early.
+    const auto to_law_units = [&](double value) {
+      value = value / column_scale(j) * y_scale;
+      for (int p = 0; p < term_power(term); ++p) value /= x_scale;
+      return value;
+    };
+    const double scaled = solution.coefficients(j);
+    const double coefficient = to_law_units(scaled);
+    if (!std::isfinite(coefficient) || (coefficient == 0.0 && scaled / column_scale(j) != 0.0 &&
+                                        std::abs(scaled / column_scale(j)) > 1e-12))
+      throw InputError("the coefficient of " + term_name(term, spec.variable) + " is " + shortest(scaled / column_scale(j)) +
+                       " x " + shortest(y_scale) + " / " + shortest(x_scale) + "^" + std::to_string(term_power(term)) +
+                       ", outside the range of a double; expected velocities (largest |" + spec.variable + "| = " +
+                       shortest(x_scale) + ") and forces (largest " + shortest(y_scale) +
+                       ") whose powers in this law stay within double precision");
+    fit.coefficients.push_back(coefficient);
+    fit.std_errors.push_back(to_law_units(std::sqrt(residual_variance * solution.covariance(j, j))));
   }
+  if (!std::isfinite(fit.rmse))
+    throw InputError("the residuals of the fit overflow (largest force " + shortest(y_scale) +
+                     "); expected forces whose squares stay within double precision");
   return fit;
 }
 

@@ -15,8 +15,9 @@
 // force p·S_f and τ·|S_f| applied at the face centroid C_f, S_f being the
 // face's vector area (exact for any polygon: it depends on the boundary only).
 //
-// Frames and units: whatever frame the mesh is in (transform it first, see
-// src/mesh/transform.hpp); SI (m, Pa) in, N and N m out. Accumulation is
+// Frames and units: whatever frame the mesh is in (the CFD axes; the loads
+// are turned into body axes afterwards by loads_to_body in
+// src/loads/frame.hpp); SI (m, Pa) in, N and N m out. Accumulation is
 // blockwise (pairwise over blocks of faces) so totals over millions of faces
 // keep ~1e-15 relative accuracy.
 #pragma once

@@ -250,6 +250,23 @@ TEST_F(SurfaceCli, ScatteredRunsNeedRbfAndResamplingReportsPointsFarFromRuns) {
   // Scaled by the runs' ranges (0.3 in u, 0.2 in v), the grid points at u =
   // 0.6 and 0.9 are at least 1 from every run; the others within 0.67.
   EXPECT_EQ(built["quality"]["far_from_data"].get<std::vector<int>>(), (std::vector<int>{2, 3, 6, 7}));
+  // As coordinates (axis 0 fastest: node 2 is u = 0.6, v = -0.1), in text and JSON and in every export.
+  const json points = built["far_from_data_points"];
+  ASSERT_EQ(points.size(), 4u);
+  EXPECT_NEAR(points[0]["u"].get<double>(), 0.6, 1e-15);
+  EXPECT_EQ(points[0]["v"].get<double>(), -0.1);
+  EXPECT_NEAR(points[3]["u"].get<double>(), 0.9, 1e-15);
+  EXPECT_EQ(points[3]["v"].get<double>(), 0.1);
+  const auto shown = cli({"surface", "show", "s"});
+  EXPECT_NE(shown.out.find("(u = 0.6, v = -0.1)"), std::string::npos) << shown.out;
+  ASSERT_EQ(cli({"export", "s", "--format", "c", "-o", "s.h"}).exit_code, 0);
+  const std::string header = test::read_text(dir_ / "s.h");
+  EXPECT_NE(header.find("Far from every CFD run"), std::string::npos);
+  EXPECT_NE(header.find("(u = 0.9, v = 0.1)"), std::string::npos) << header.substr(0, 3000);
+  ASSERT_EQ(cli({"export", "s", "--format", "json", "-o", "s.json"}).exit_code, 0);
+  const json exported = json::parse(test::read_text(dir_ / "s.json"));
+  EXPECT_EQ(exported["far_from_data"].size(), 4u);
+  EXPECT_EQ(exported["far_from_data"][1]["v"].get<double>(), -0.1);
   const auto query = cli({"query", "s", "u=0.2", "v=0", "--json"});
   ASSERT_EQ(query.exit_code, 0) << query.err;
   EXPECT_NEAR(json::parse(query.out)["values"]["X"].get<double>(), -2.5, 0.2);

@@ -100,6 +100,28 @@ TEST(CliExport, EveryTableFormatWritesItsFilesAndJsonReportsThem) {
   EXPECT_EQ(document.at("provenance").at("body"), "asr-v");
 }
 
+TEST(CliExport, ATableThatRefusesZeroVelocitySaysSoAtExport) {
+  TempDir dir;
+  make_database(dir);
+  // The surge runs above 0.05 m/s only, with the default policy (error).
+  ASSERT_EQ(run_cli({"surface", "build", "fast", "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method",
+                     "linear", "--where", "u>=0.05"},
+                    dir.path())
+                .exit_code,
+            0);
+  const auto fast = run_cli({"export", "fast", "--format", "csv", "-o", "f.csv"}, dir.path());
+  ASSERT_EQ(fast.exit_code, 0) << fast.err;
+  EXPECT_NE(fast.out.find("note: axis u covers ["), std::string::npos) << fast.out;
+  EXPECT_NE(fast.out.find("a query at u = 0 (at rest) fails"), std::string::npos) << fast.out;
+  const auto json = nlohmann::json::parse(run_cli({"export", "fast", "--format", "csv", "-o", "f.csv", "--json"},
+                                                  dir.path())
+                                              .out);
+  EXPECT_EQ(json.at("notes").size(), 1u);
+  // A table whose range holds zero, or that continues past its ends, has no such note.
+  const auto whole = run_cli({"export", "surge", "--format", "csv", "-o", "s.csv"}, dir.path());
+  EXPECT_EQ(whole.out.find("at rest"), std::string::npos) << whole.out;
+}
+
 TEST(CliExport, BadRequestsExitTwoWithOneLineAndWriteNothing) {
   TempDir dir;
   make_database(dir);

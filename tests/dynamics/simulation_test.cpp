@@ -144,3 +144,51 @@ TEST(Simulation, ThrusterCommands) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// What cannot be done is refused before the first step, with the limit; a
+// state that leaves the finite numbers stops the run where it happened.
+TEST(SimulationLimits, StepsSamplesAndTolerancesThatCannotBeHonouredAreRefused) {
+  const VehicleModel model(test::asr_v_vehicle(test::fit_asr_v_yaw_law()));
+  Scenario s;
+  s.file = "limits.json";
+  s.duration_s = 60.0;
+  s.output_rate_Hz = 10.0;
+  s.segments.resize(1);
+  const auto refused = [&](const Scenario& scenario, const std::vector<std::string>& pieces) {
+    try {
+      (void)simulate(model, scenario);
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+      for (const auto& piece : pieces)
+        EXPECT_NE(std::string(error.what()).find(piece), std::string::npos) << error.what();
+    }
+  };
+  for (const double step : {1e-300, 1e-30, 1e-19}) {
+    Scenario tiny = s;
+    tiny.integrator.step_s = step;
+    refused(tiny, {"limits.json", "integrator.step", "expected at most 1e10"});
+  }
+  Scenario long_run = s;
+  long_run.duration_s = 1e12;
+  refused(long_run, {"output_rate", "expected at most 1e7"});
+  Scenario fast_output = s;
+  fast_output.output_rate_Hz = 1e12;
+  refused(fast_output, {"output_rate", "output samples"});
+  Scenario strict = s;
+  strict.integrator.method = IntegratorSettings::Method::DormandPrince45;
+  strict.integrator.relative_tolerance = 1e-300;
+  strict.integrator.absolute_tolerance = 1e-300;
+  refused(strict, {"integrator.rtol", "2.2e-14"});
+
+  Scenario huge = s;
+  huge.duration_s = 1.0;
+  huge.integrator.step_s = 0.01;
+  huge.segments[0].tau_b[5] = 1e308;
+  refused(huge, {"limits.json", "left the finite numbers", "between t = 0"});
+}
+
+}  // namespace
+}  // namespace hydrocoef

@@ -353,3 +353,42 @@ TEST(DampingLawFit, RejectsBadSpecsAndOptions) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// Velocities and forces at the ends of the double range: the fit is made in
+// units of the largest |x| and |y|, so a representable law is found and one
+// that is not is refused saying why (never Ceres' warnings or "zero at every
+// run").
+TEST(DampingLawFit, ExtremeVelocitiesAndForcesFitOrAreRefusedSayingWhy) {
+  const std::vector<double> x = {-1e308, -5e307, 5e307, 1e308};
+  const std::vector<double> y = {1.0, 0.5, -0.5, -1.0};
+  const DampingLawFit linear = fit_damping_law(parse_damping_terms("u"), x, y);
+  EXPECT_NEAR(linear.coefficients[0] / -1e-308, 1.0, 1e-12);
+  EXPECT_NEAR(linear.r2, 1.0, 1e-12);
+  const DampingLawFit two = fit_damping_law(parse_damping_terms("u,u|u|"), x, y);
+  EXPECT_NEAR(two.coefficients[0] / -1e-308, 1.0, 1e-9);
+  test::expect_input_error([&] { fit_damping_law(parse_damping_terms("u^3"), x, y); },
+                           {"coefficient of u^3", "outside the range of a double", "largest |u| = 1e+308"});
+
+  // Velocities of a few denormals: the law's coefficient would be ~1e323.
+  const std::vector<double> tiny = {4.9406564584124654e-324, 9.8813129168249309e-324, 1.4821969375237396e-323};
+  test::expect_input_error([&] { fit_damping_law(parse_damping_terms("u"), tiny, {1.0, 2.0, 3.0}); },
+                           {"coefficient of u", "outside the range of a double"});
+
+  // Forces of 1e308: fitted in units of the largest, no overflow of their squares.
+  const std::vector<double> speeds = {0.1, 0.2, 0.3, 0.4};
+  std::vector<double> huge;
+  for (double u : speeds) huge.push_back(-2e307 * u - 5e307 * u * u);
+  const DampingLawFit big = fit_damping_law(parse_damping_terms("u,u|u|"), speeds, huge);
+  EXPECT_NEAR(big.coefficients[0] / -2e307, 1.0, 1e-9);
+  EXPECT_NEAR(big.coefficients[1] / -5e307, 1.0, 1e-9);
+  EXPECT_TRUE(std::isfinite(big.rmse));
+  // A robust loss's scale stays in the force's unit.
+  const DampingLawFit huber = fit_damping_law(parse_damping_terms("u,u|u|"), speeds, huge, parse_loss("huber:1e300"));
+  EXPECT_NEAR(huber.coefficients[1] / -5e307, 1.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace hydrocoef
