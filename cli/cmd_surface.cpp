@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/common.hpp"
@@ -173,6 +174,22 @@ std::vector<std::vector<double>> far_nodes(const SurfaceRecord& record, const Co
   return metadata_from_record(record, surface).far_from_data;
 }
 
+/// The run with the largest leave-one-out error of an output, and the error;
+/// nullopt without per-run errors (surfaces built before they were stored).
+std::optional<std::pair<std::int64_t, double>> worst_run(const nlohmann::json& quality, const std::string& output) {
+  if (!quality.contains("loo_runs") || !quality.contains("outputs") || !quality["outputs"].contains(output) ||
+      !quality["outputs"][output].contains("loo_errors"))
+    return std::nullopt;
+  const auto& runs = quality["loo_runs"];
+  const auto& errors = quality["outputs"][output]["loo_errors"];
+  std::optional<std::pair<std::int64_t, double>> worst;
+  for (std::size_t i = 0; i < errors.size() && i < runs.size(); ++i)
+    if (errors[i].is_number() && runs[i].is_number_integer() &&
+        (!worst || std::abs(errors[i].get<double>()) > std::abs(worst->second)))
+      worst = std::make_pair(runs[i].get<std::int64_t>(), errors[i].get<double>());
+  return worst;
+}
+
 void print_quality(const SurfaceRecord& record, const CoefficientSurface& surface) {
   const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
   const std::string loo = quality.value("loo_method", "");
@@ -184,7 +201,10 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
                                                                                        : nlohmann::json::object();
     std::cout << "    " << std::left << std::setw(4) << name << "max " << std::setw(12)
               << json_number_text(entry.value("loo_max", nlohmann::json()), 4) << "RMS " << std::setw(12)
-              << json_number_text(entry.value("loo_rms", nlohmann::json()), 4) << surface.output_units()[k] << '\n';
+              << json_number_text(entry.value("loo_rms", nlohmann::json()), 4) << surface.output_units()[k];
+    if (const auto worst = worst_run(quality, name))
+      std::cout << "  (worst: run " << worst->first << ", " << significant(worst->second, 4) << ")";
+    std::cout << '\n';
   }
   if (quality.contains("grid_points")) {
     const auto far = quality["far_from_data"].size();
@@ -235,6 +255,10 @@ nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurfac
   for (std::size_t k = 0; k < surface.output_count(); ++k)
     out["outputs"].push_back({{"name", surface.output_names()[k]}, {"unit", surface.output_units()[k]}});
   out["quality"] = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
+  out["loo_worst"] = nlohmann::json::object();
+  for (const auto& name : surface.output_names())
+    if (const auto worst = worst_run(out["quality"], name))
+      out["loo_worst"][name] = {{"run", worst->first}, {"error", worst->second}};
   out["far_from_data_points"] = nlohmann::json::array();
   for (const auto& node : far_nodes(record, surface)) {
     nlohmann::json point = nlohmann::json::object();

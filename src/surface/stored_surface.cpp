@@ -92,7 +92,8 @@ std::optional<std::string> quality_problem(const std::string& text) {
   const std::pair<const char*, TypeCheck> typed[] = {
       {"loo_method", &json::is_string},        {"runs", &json::is_number_unsigned},
       {"loo_defined", &json::is_number_unsigned}, {"grid_points", &json::is_number_unsigned},
-      {"far_threshold", &json::is_number},     {"far_from_data", &json::is_array}};
+      {"far_threshold", &json::is_number},     {"far_from_data", &json::is_array},
+      {"loo_runs", &json::is_array}};
   for (const auto& [key, is_type] : typed)
     if (quality.contains(key) && !(quality.at(key).*is_type)())
       return std::string("its quality figure '") + key + "' is of the wrong type";
@@ -107,6 +108,15 @@ std::optional<std::string> quality_problem(const std::string& text) {
         if (entry.contains(key) && !entry.at(key).is_number() && !entry.at(key).is_null())
           return "its quality figure '" + std::string(key) + "' of output '" + printable_text(name, 20) +
                  "' is not a number";
+      if (entry.contains("loo_errors")) {
+        const json& errors = entry.at("loo_errors");
+        if (!errors.is_array() || !quality.contains("loo_runs") || errors.size() != quality.at("loo_runs").size())
+          return "its leave-one-out errors of output '" + printable_text(name, 20) +
+                 "' are not one number per run of 'loo_runs'";
+        for (const auto& e : errors)
+          if (!e.is_number() && !e.is_null())
+            return "its leave-one-out errors of output '" + printable_text(name, 20) + "' hold a non-number";
+      }
     }
   }
   return std::nullopt;

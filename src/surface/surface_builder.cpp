@@ -119,8 +119,11 @@ double mean_or_nan(const std::vector<double>& values) {
   return sum / static_cast<double>(values.size());
 }
 
-void summarize(SurfaceQuality& quality, const std::vector<double>& errors, std::size_t n_outputs) {
+void summarize(SurfaceQuality& quality, const std::vector<double>& errors, std::size_t n_outputs,
+               const std::vector<std::int64_t>& run_ids) {
   const std::size_t n = errors.size() / n_outputs;
+  quality.loo_runs = run_ids;
+  quality.loo_errors = errors;
   quality.loo_max.assign(n_outputs, 0.0);
   quality.loo_rms.assign(n_outputs, 0.0);
   quality.loo_defined = 0;
@@ -197,6 +200,7 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
   }
   std::vector<double> values(nodes * n_outputs, std::numeric_limits<double>::quiet_NaN());
   std::vector<bool> filled(nodes, false);
+  std::vector<std::int64_t> node_run(nodes, 0);  // the run at each node, for the per-run LOO errors
   for (std::size_t i = 0; i < n_runs; ++i) {
     std::size_t node = 0, stride = 1;
     for (std::size_t a = 0; a < n_axes; ++a) {
@@ -204,6 +208,7 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
       stride *= axes[a].breakpoints.size();
     }
     filled[node] = true;
+    node_run[node] = samples.runs[i]->id;
     for (std::size_t k = 0; k < n_outputs; ++k) values[node * n_outputs + k] = samples.values[i * n_outputs + k];
   }
   if (n_runs != nodes) {
@@ -231,7 +236,7 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
   BuiltSurface built{CoefficientSurface(GridTable(axes, spec.outputs, values, method)), {}, {}, samples.skipped, {}, {}};
   built.quality.method = "grid-lines";
   built.quality.runs = n_runs;
-  summarize(built.quality, grid_line_loo(axes, values, n_outputs, method), n_outputs);
+  summarize(built.quality, grid_line_loo(axes, values, n_outputs, method), n_outputs, node_run);
   return built;
 }
 
@@ -253,7 +258,9 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
   SurfaceQuality quality;
   quality.method = "rbf-exact";
   quality.runs = samples.runs.size();
-  summarize(quality, rbf.cross_validation().errors, n_outputs);
+  std::vector<std::int64_t> sample_runs;
+  for (const StoredRun* run : samples.runs) sample_runs.push_back(run->id);
+  summarize(quality, rbf.cross_validation().errors, n_outputs, sample_runs);
 
   if (!spec.resample) {
     BuiltSurface built{CoefficientSurface(std::move(rbf), spec.axes, spec.outputs), quality, {}, samples.skipped,
@@ -288,6 +295,15 @@ std::string SurfaceQuality::to_json(const std::vector<std::string>& outputs) con
   const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
   for (std::size_t k = 0; k < outputs.size() && k < loo_max.size(); ++k)
     json["outputs"][outputs[k]] = {{"loo_max", number(loo_max[k])}, {"loo_rms", number(loo_rms[k])}};
+  // Per-run errors, in the order of loo_runs (null where undefined).
+  if (!loo_runs.empty() && loo_errors.size() == loo_runs.size() * outputs.size()) {
+    json["loo_runs"] = loo_runs;
+    for (std::size_t k = 0; k < outputs.size(); ++k) {
+      nlohmann::json errors = nlohmann::json::array();
+      for (std::size_t i = 0; i < loo_runs.size(); ++i) errors.push_back(number(loo_errors[i * outputs.size() + k]));
+      json["outputs"][outputs[k]]["loo_errors"] = errors;
+    }
+  }
   if (grid_points) {
     json["grid_points"] = grid_points;
     json["far_threshold"] = far_threshold;

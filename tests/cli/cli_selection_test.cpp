@@ -5,6 +5,8 @@
 // query at the left-out run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -96,8 +98,25 @@ TEST_F(Selection, LeaveOneOutByHandIsOneBuildAndOneQuery) {
   auto replacing = again;
   replacing.push_back("--replace");
   EXPECT_EQ(run_cli(replacing, dir_.path()).exit_code, 0);
-  EXPECT_EQ(nlohmann::json::parse(run_cli({"surface", "show", "loo", "--json"}, dir_.path()).out).at("runs").size(),
-            all_.size());
+  const auto whole = nlohmann::json::parse(run_cli({"surface", "show", "loo", "--json"}, dir_.path()).out);
+  EXPECT_EQ(whole.at("runs").size(), all_.size());
+  // The stored per-run leave-one-out errors: the one of the run at u = 0.2 is
+  // what the build without it predicted there, minus its own value.
+  const auto& quality = whole.at("quality");
+  const auto runs = quality.at("loo_runs").get<std::vector<std::int64_t>>();
+  const auto& errors = quality.at("outputs").at("X").at("loo_errors");
+  ASSERT_EQ(errors.size(), runs.size());
+  const auto at = std::find(runs.begin(), runs.end(), left_out);
+  ASSERT_NE(at, runs.end());
+  EXPECT_NEAR(std::abs(errors[static_cast<std::size_t>(at - runs.begin())].get<double>()), std::abs(predicted + own),
+              1e-12);
+  // The worst run is named, and its error is the stored maximum.
+  const auto& worst = whole.at("loo_worst").at("X");
+  EXPECT_NEAR(std::abs(worst.at("error").get<double>()), quality.at("outputs").at("X").at("loo_max").get<double>(),
+              1e-15);
+  const auto text = run_cli({"surface", "show", "loo"}, dir_.path());
+  EXPECT_NE(text.out.find("(worst: run " + std::to_string(worst.at("run").get<std::int64_t>())), std::string::npos)
+      << text.out;
 }
 
 // runs --csv: one well-formed row per selected run, forces on the body.
