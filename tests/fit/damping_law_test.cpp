@@ -374,7 +374,8 @@ TEST(DampingLawFit, ExtremeVelocitiesAndForcesFitOrAreRefusedSayingWhy) {
 
   // Velocities of a few denormals: the law's coefficient would be ~1e323.
   const std::vector<double> tiny = {4.9406564584124654e-324, 9.8813129168249309e-324, 1.4821969375237396e-323};
-  test::expect_input_error([&] { fit_damping_law(parse_damping_terms("u"), tiny, {1.0, 2.0, 3.0}); },
+  const std::vector<double> forces = {1.0, 2.0, 3.0};
+  test::expect_input_error([&] { fit_damping_law(parse_damping_terms("u"), tiny, forces); },
                            {"coefficient of u", "outside the range of a double"});
 
   // Forces of 1e308: fitted in units of the largest, no overflow of their squares.

@@ -93,6 +93,7 @@ std::string format17(double v) {
 // made from the case's own rows: the Foundation releases' forces.dat, or a
 // forceCoeffs coefficient.dat (totals as coefficients, with its reference values).
 void copy_case_with_layout(const fs::path& from, const fs::path& to, const std::string& layout) {
+  fs::create_directories(to);
   for (const char* part : {"0", "constant", "system"})
     fs::copy(from / part, to / part, fs::copy_options::recursive);
   const ForceHistory esi = read_openfoam_forces(from / "postProcessing" / "forces");
