@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -693,7 +694,29 @@ StreamedRows parse_file_rows(const std::filesystem::path& path, const std::funct
   result.size_bytes = 0;
   std::uint64_t consumed = rows_layout.data_offset;
 
+  // The next block is read on another thread while this one is parsed
+  // (double buffering): reading and parsing no longer take turns.
+  std::vector<char> next;
+  std::size_t next_got = 0;
+  std::exception_ptr read_error;
+  std::thread reader;
+  struct JoinOnExit {
+    std::thread& thread;
+    ~JoinOnExit() {
+      if (thread.joinable()) thread.join();
+    }
+  } join_reader{reader};
+
   for (;;) {
+    if (!at_end)
+      reader = std::thread([&] {
+        try {
+          next.clear();
+          next_got = read_some(descriptor.fd, next, block_bytes, file);
+        } catch (...) {
+          read_error = std::current_exception();
+        }
+      });
     // Whole lines of the buffer, or everything at the end of the file.
     std::size_t stop = buffer.size();
     if (!at_end) {
@@ -730,10 +753,13 @@ StreamedRows parse_file_rows(const std::filesystem::path& path, const std::funct
       }
     }
     if (at_end) break;
-    // Keep the partial last line; read the next block behind it.
-    buffer.erase(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(stop));
+    // The partial last line goes in front of the block read meanwhile.
+    reader.join();
+    if (read_error) std::rethrow_exception(read_error);
+    next.insert(next.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(stop), buffer.end());
+    buffer.swap(next);
     start = 0;
-    at_end = read_some(descriptor.fd, buffer, block_bytes, file) < block_bytes;
+    at_end = next_got < block_bytes;
   }
   result.size_bytes = consumed;
   result.rows.rows = rows;
