@@ -43,18 +43,6 @@ struct FitArgs {
 std::string force_unit(std::size_t dof) { return dof < 3 ? "N" : "N m"; }
 std::string velocity_unit(std::size_t component) { return component < 3 ? "m/s" : "rad/s"; }
 
-int term_power(DampingTerm term) {
-  switch (term) {
-    case DampingTerm::Constant: return 0;
-    case DampingTerm::Linear:
-    case DampingTerm::AbsLinear: return 1;
-    case DampingTerm::SignedQuadratic:
-    case DampingTerm::Quadratic: return 2;
-    case DampingTerm::Cubic: return 3;
-  }
-  return 0;
-}
-
 std::string coefficient_unit(DampingTerm term, std::size_t dof, std::size_t component) {
   const int power = term_power(term);
   if (power == 0) return force_unit(dof);

@@ -378,10 +378,6 @@ double DampingLawFit::evaluate(double x) const {
   return value;
 }
 
-namespace {
-
-/// The power of the velocity in a term: 0 for the constant, 1 for x and |x|,
-/// 2 for x|x| and x^2, 3 for x^3.
 int term_power(DampingTerm term) {
   switch (term) {
     case DampingTerm::Constant: return 0;
@@ -393,8 +389,6 @@ int term_power(DampingTerm term) {
   }
   return 0;
 }
-
-}  // namespace
 
 DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
                               const FitOptions& options) {

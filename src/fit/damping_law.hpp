@@ -53,6 +53,10 @@ std::string term_name(DampingTerm term, std::string_view variable);
 /// The canonical text of a spec, "1,u,u|u|"; parse_damping_terms reads it back.
 std::string format_damping_terms(const DampingLawSpec& spec);
 
+/// The power of the velocity in a term: 0 for the constant, 1 for x and |x|,
+/// 2 for x|x| and x^2, 3 for x^3 (a coefficient's unit is force / velocity^power).
+int term_power(DampingTerm term);
+
 /// The basis term's value at x (x in m/s or rad/s; result in x's unit to the
 /// term's power, 1 for Constant).
 double basis_value(DampingTerm term, double x);
