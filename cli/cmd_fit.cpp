@@ -447,12 +447,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
   command->add_flag("--refit", args->refit,
                     "Make stored fits again from the runs their selections pick now: every stale fit, or the one "
                     "given with --name (--body limits them)");
-  command->add_option("--mirror", args->mirror,
-                      "Let each run also stand for its mirror image in a plane of symmetry of the body: v "
-                      "(port-starboard: u,-v,w,-p,q,-r and X,-Y,Z,-K,M,-N), w (top-bottom), u (fore-aft); "
-                      "repeatable; images are never stored as runs");
-  command->add_option("--mirror-odd", args->mirror_odd,
-                      "A disturbance parameter that changes sign in the mirror (e.g. a lateral current); repeatable");
+  add_mirror_options(*command, args->mirror, args->mirror_odd);
   command->add_option("--by", args->by,
                       "Fit the law separately at each level of this velocity component or disturbance, then each "
                       "coefficient as a curve of the level");

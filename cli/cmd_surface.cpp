@@ -470,11 +470,7 @@ void add_surface_command(CLI::App& app, const GlobalOptions& global) {
                  "(SI) or disturbance; repeatable, all must hold");
   b->add_flag("--replace", build_args->replace, "Replace a stored surface of the same name");
   b->add_option("--exclude-run", build_args->exclude_runs, "Leave out the run with this id (repeatable; leave-one-out by hand)");
-  b->add_option("--mirror", build_args->mirror,
-                "Let each run also stand for its mirror image in a plane of symmetry: v (port-starboard: "
-                "u,-v,w,-p,q,-r and X,-Y,Z,-K,M,-N), w (top-bottom), u (fore-aft); repeatable");
-  b->add_option("--mirror-odd", build_args->mirror_odd,
-                "A disturbance parameter that changes sign in the mirror; repeatable");
+  add_mirror_options(*b, build_args->mirror, build_args->mirror_odd);
   b->add_option("--kernel", build_args->kernel, "RBF kernel: cubic, thin-plate, linear")->capture_default_str();
   b->add_option("--degree", build_args->degree, "RBF polynomial degree (0, 1, 2)")->capture_default_str();
   b->add_option("--smoothing", build_args->smoothing, "RBF smoothing (0 interpolates)")->capture_default_str();

@@ -70,6 +70,15 @@ void add_selection_options(CLI::App& command, SelectionArgs& args) {
   command.add_option("--exclude-run", args.exclude_runs, "Leave out the run with this id (repeatable)");
 }
 
+void add_mirror_options(CLI::App& command, std::vector<std::string>& planes, std::vector<std::string>& odd) {
+  command.add_option("--mirror", planes,
+                     "Let each run also stand for its mirror image in a plane of symmetry of the body: v "
+                     "(port-starboard: u,-v,w,-p,q,-r and X,-Y,Z,-K,M,-N), w (top-bottom), u (fore-aft); "
+                     "repeatable; images are never stored as runs");
+  command.add_option("--mirror-odd", odd,
+                     "A disturbance parameter that changes sign in the mirror (e.g. a lateral current); repeatable");
+}
+
 std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection) {
   auto runs = database.runs(filter);
   std::erase_if(runs, [&](const StoredRun& run) { return !selection.matches(run.key, run.id); });

@@ -46,6 +46,10 @@ struct SelectionArgs {
   std::vector<std::int64_t> exclude_runs;
 };
 void add_selection_options(CLI::App& command, SelectionArgs& args);
+
+/// --mirror u|v|w (repeatable) and --mirror-odd NAME (repeatable) of fit and
+/// surface build (src/pipeline/fit_runs.hpp).
+void add_mirror_options(CLI::App& command, std::vector<std::string>& planes, std::vector<std::string>& odd);
 /// The runs of `filter` that the selection keeps, in the database's order.
 std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection);
 
