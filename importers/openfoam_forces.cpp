@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <limits>
 #include <map>
 #include <memory>
@@ -965,8 +966,12 @@ ForceHistory read_openfoam_forces(const fs::path& path, const OpenFoamForcesOpti
       const FoundFile* moment = nullptr;
       for (const FoundFile& f : files) (f.base == "force" ? force : moment) = &f;
       if (force && moment) {
+        // moment.dat is read on another thread while force.dat is read here: the
+        // files' reading and their serial steps overlap. A failure of force.dat
+        // is reported first, as when they were read in turn.
+        auto moments = std::async(std::launch::async, [&] { return read_one(moment->path, options); });
         history = read_one(force->path, options);
-        merge_moments(history, read_one(moment->path, options), options.drop_incomplete_last_row);
+        merge_moments(history, moments.get(), options.drop_incomplete_last_row);
       } else {
         const FoundFile* only = force ? force : moment;
         history = read_one(only->path, options);
