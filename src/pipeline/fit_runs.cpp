@@ -1,8 +1,10 @@
 #include "src/pipeline/fit_runs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
+#include <tuple>
 
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
@@ -10,18 +12,10 @@
 namespace hydrocoef {
 namespace {
 
-bool same_value(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); }
-
-bool same_key(const RunKey& a, const RunKey& b) {
-  if (a.body != b.body || a.disturbances.size() != b.disturbances.size()) return false;
-  for (std::size_t i = 0; i < 6; ++i)
-    if (!same_value(a.nu_b[i], b.nu_b[i])) return false;
-  for (const auto& [name, value] : a.disturbances) {
-    const auto found = b.disturbances.find(name);
-    if (found == b.disturbances.end() || !same_value(value, found->second)) return false;
-  }
-  return true;
-}
+/// A key as the store tells runs apart: body, velocity and the canonical
+/// disturbances (mirror images negate values exactly, and -0 equals 0).
+using KeyIdentity = std::tuple<std::string, std::array<double, 6>, std::string>;
+KeyIdentity identity(const RunKey& key) { return {key.body, key.nu_b, disturbance_signature(key.disturbances)}; }
 
 std::string join(const std::vector<std::string>& items, char separator) {
   std::string out;
@@ -92,6 +86,9 @@ MirrorSpec parse_mirror_spec(std::string_view text) {
 std::vector<StoredRun> with_mirror_images(const std::vector<StoredRun>& runs, const MirrorSpec& mirror,
                                           std::size_t* skipped) {
   std::vector<StoredRun> out = runs;
+  std::set<KeyIdentity> measured, present;
+  for (const auto& run : runs) measured.insert(identity(run.key));
+  present = measured;
   std::size_t left_out = 0;
   for (const auto& chain : mirror.images()) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -102,10 +99,10 @@ std::vector<StoredRun> with_mirror_images(const std::vector<StoredRun>& runs, co
         const auto s = reflection.signs();
         for (std::size_t c = 0; c < 6; ++c) signs[c] *= s[c];
       }
-      const auto at = std::find_if(out.begin(), out.end(), [&](const StoredRun& r) { return same_key(r.key, image.key); });
-      if (at != out.end()) {
+      const KeyIdentity key = identity(image.key);
+      if (!present.insert(key).second) {
         // Its own image (on the plane), or an image where a run was measured.
-        if (static_cast<std::size_t>(at - out.begin()) < runs.size() && !same_key(image.key, runs[i].key)) ++left_out;
+        if (measured.count(key) && key != identity(runs[i].key)) ++left_out;
         continue;
       }
       for (std::size_t c = 0; c < 6; ++c) {
