@@ -16,6 +16,7 @@
 #include "src/core/names.hpp"
 #include "src/core/version.hpp"
 #include "src/store/checked_row.hpp"
+#include "src/store/build_spec_migration.hpp"
 #include "src/store/migrations.hpp"
 #include "src/store/schema_check.hpp"
 
@@ -232,6 +233,7 @@ void Database::migrate() {
     const int latest = latest_schema_version();
     for (int next = version + 1; next <= latest; ++next) {
       connection_.execute(store::migrations()[static_cast<std::size_t>(next - 1)].sql);
+      if (next == store::kBuildSpecMigration) store::convert_surface_build_options(connection_, path_.string());
       connection_.execute("PRAGMA user_version = " + std::to_string(next));
     }
     auto foreign = connection_.prepare("PRAGMA foreign_key_check");

@@ -229,7 +229,7 @@ TEST_F(SurfaceCli, ChangedRunsMakeASurfaceStaleUntilRebuilt) {
   const json answer = json::parse(fresh.out);
   EXPECT_FALSE(answer["stale"].get<bool>());
   EXPECT_NEAR(answer["values"]["X"].get<double>(), 2.0 * force_x(0.1, 0.0), 1e-12);
-  EXPECT_EQ(json::parse(cli({"surface", "show", "xn", "--json"}).out)["build"]["method"], "pchip");
+  EXPECT_EQ(json::parse(cli({"surface", "show", "xn", "--json"}).out)["build_spec"]["method"], "pchip");
 }
 
 TEST_F(SurfaceCli, ScatteredRunsNeedRbfAndResamplingReportsPointsFarFromRuns) {

@@ -1,0 +1,174 @@
+// How the CLI shows a stored surface: its axes and quality as text, and its
+// description as JSON (surface build, rebuild, list, show).
+#include "cli/surface_output.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+
+#include "cli/common.hpp"
+#include "src/core/escape.hpp"
+#include "src/pipeline/surface_build.hpp"
+#include "src/export/export.hpp"
+#include "src/surface/grid_table.hpp"
+
+namespace hydrocoef::cli {
+namespace {
+
+std::string json_number_text(const nlohmann::json& value, int digits) {
+  return value.is_number() ? significant(value.get<double>(), digits) : "n/a";
+}
+
+/// The grid nodes of a resampled surface that are far from every run, as
+/// coordinates (empty for other surfaces).
+std::vector<std::vector<double>> far_nodes(const SurfaceRecord& record, const CoefficientSurface& surface) {
+  if (!surface.grid()) return {};
+  return metadata_from_record(record, surface).far_from_data;
+}
+
+/// The run with the largest leave-one-out error of an output, and the error;
+/// nullopt without per-run errors (surfaces built before they were stored).
+std::optional<std::pair<std::int64_t, double>> worst_run(const nlohmann::json& quality, const std::string& output) {
+  if (!quality.contains("loo_runs") || !quality.contains("outputs") || !quality["outputs"].contains(output) ||
+      !quality["outputs"][output].contains("loo_errors"))
+    return std::nullopt;
+  const auto& runs = quality["loo_runs"];
+  const auto& errors = quality["outputs"][output]["loo_errors"];
+  std::optional<std::pair<std::int64_t, double>> worst;
+  for (std::size_t i = 0; i < errors.size() && i < runs.size(); ++i)
+    if (errors[i].is_number() && runs[i].is_number_integer() &&
+        (!worst || std::abs(errors[i].get<double>()) > std::abs(worst->second)))
+      worst = std::make_pair(runs[i].get<std::int64_t>(), errors[i].get<double>());
+  return worst;
+}
+
+}  // namespace
+
+void print_quality(const SurfaceRecord& record, const CoefficientSurface& surface) {
+  const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
+  const std::string loo = quality.value("loo_method", "");
+  std::cout << "  leave-one-out (" << (loo == "rbf-exact" ? "exact, RBF" : "along grid lines") << ", "
+            << quality.value("loo_defined", 0) << " of " << quality.value("runs", 0) << " runs):\n";
+  for (std::size_t k = 0; k < surface.output_count(); ++k) {
+    const auto& name = surface.output_names()[k];
+    const auto entry = quality.contains("outputs") && quality["outputs"].contains(name) ? quality["outputs"][name]
+                                                                                       : nlohmann::json::object();
+    std::cout << "    " << std::left << std::setw(4) << name << "max " << std::setw(12)
+              << json_number_text(entry.value("loo_max", nlohmann::json()), 4) << "RMS " << std::setw(12)
+              << json_number_text(entry.value("loo_rms", nlohmann::json()), 4) << surface.output_units()[k];
+    if (const auto worst = worst_run(quality, name))
+      std::cout << "  (worst: run " << worst->first << ", " << significant(worst->second, 4) << ")";
+    std::cout << '\n';
+  }
+  if (quality.contains("grid_points")) {
+    const auto far = quality["far_from_data"].size();
+    std::cout << "  resampled grid: " << quality["grid_points"].get<std::size_t>() << " points, " << far
+              << " farther than " << significant(quality["far_threshold"].get<double>(), 3)
+              << " (scaled) from every run" << (far ? ": extrapolated there, not data" : "") << '\n';
+    const auto nodes = far_nodes(record, surface);
+    for (std::size_t i = 0; i < nodes.size() && i < 20; ++i) {
+      std::cout << "    (";
+      for (std::size_t a = 0; a < nodes[i].size(); ++a)
+        std::cout << (a ? ", " : "") << surface.axis_names()[a] << " = " << significant(nodes[i][a], 6);
+      std::cout << ")\n";
+    }
+    if (nodes.size() > 20) std::cout << "    ... and " << nodes.size() - 20 << " more (--json lists them all)\n";
+  }
+}
+
+void print_axes(const CoefficientSurface& surface) {
+  for (std::size_t a = 0; a < surface.axis_count(); ++a) {
+    std::cout << "    " << std::left << std::setw(12) << surface.axis_names()[a] << "[" << significant(surface.lower(a), 6)
+              << ", " << significant(surface.upper(a), 6) << "] "
+              << (surface.axis_units()[a].empty() ? "(SI)" : surface.axis_units()[a]);
+    if (const GridTable* grid = surface.grid())
+      std::cout << ", " << grid->axes()[a].breakpoints.size() << " breakpoints"
+                << (grid->evenly_spaced(a) ? " (even)" : "");
+    std::cout << ", out of range: " << surface.out_of_range_name(a) << '\n';
+  }
+}
+
+nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurface& surface, bool with_values) {
+  nlohmann::json out = {{"name", record.name},       {"body", record.body},     {"kind", record.kind},
+                        {"method", record.method},   {"created_at", record.created_at},
+                        {"stale", record.stale},     {"runs", record.run_ids}};
+  out["axes"] = nlohmann::json::array();
+  for (std::size_t a = 0; a < surface.axis_count(); ++a) {
+    nlohmann::json axis = {{"name", surface.axis_names()[a]},
+                           {"unit", surface.axis_units()[a]},
+                           {"lower", surface.lower(a)},
+                           {"upper", surface.upper(a)},
+                           {"out_of_range", surface.out_of_range_name(a)}};
+    if (const GridTable* grid = surface.grid()) {
+      axis["breakpoints"] = grid->axes()[a].breakpoints.size();
+      if (with_values) axis["breakpoint_values"] = grid->axes()[a].breakpoints;
+    }
+    out["axes"].push_back(axis);
+  }
+  out["outputs"] = nlohmann::json::array();
+  for (std::size_t k = 0; k < surface.output_count(); ++k)
+    out["outputs"].push_back({{"name", surface.output_names()[k]}, {"unit", surface.output_units()[k]}});
+  out["quality"] = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
+  out["loo_worst"] = nlohmann::json::object();
+  for (const auto& name : surface.output_names())
+    if (const auto worst = worst_run(out["quality"], name))
+      out["loo_worst"][name] = {{"run", worst->first}, {"error", worst->second}};
+  out["far_from_data_points"] = nlohmann::json::array();
+  for (const auto& node : far_nodes(record, surface)) {
+    nlohmann::json point = nlohmann::json::object();
+    for (std::size_t a = 0; a < node.size(); ++a) point[surface.axis_names()[a]] = node[a];
+    out["far_from_data_points"].push_back(point);
+  }
+  const auto definition = nlohmann::json::parse(record.definition);
+  if (definition.contains("build_spec")) out["build_spec"] = definition["build_spec"];
+  return out;
+}
+
+void print_surface_list(const std::vector<SurfaceRecord>& records, const std::string& database, bool json) {
+  if (json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& record : records) out.push_back(surface_json(record, surface_from_record(record), false));
+    std::cout << escape::json_text(out, 2) << '\n';
+    return;
+  }
+  if (records.empty()) {
+    std::cout << "no surfaces in " << database << '\n';
+    return;
+  }
+  std::cout << std::left << std::setw(20) << "name" << std::setw(10) << "body" << std::setw(6) << "kind" << std::setw(16)
+            << "method" << std::setw(18) << "axes" << std::setw(14) << "outputs" << std::setw(6) << "runs"
+            << std::setw(22) << "state" << "built from\n";
+  for (const auto& record : records) {
+    const CoefficientSurface surface = surface_from_record(record);
+    std::string axes, outputs;
+    for (const auto& a : surface.axis_names()) axes += (axes.empty() ? "" : ",") + a;
+    for (const auto& o : surface.output_names()) outputs += (outputs.empty() ? "" : ",") + o;
+    std::cout << std::setw(20) << record.name << std::setw(10) << record.body << std::setw(6) << record.kind
+              << std::setw(16) << surface.method_name() << std::setw(18) << axes << std::setw(14) << outputs
+              << std::setw(6) << record.run_ids.size() << std::setw(22)
+              << (record.stale ? "STALE (runs changed)" : "current") << built_from(record) << '\n';
+  }
+}
+
+void print_surface(const StoredSurface& stored, bool json) {
+  if (json) {
+    std::cout << escape::json_text(surface_json(stored.record, stored.surface, true), 2) << '\n';
+    return;
+  }
+  const auto& record = stored.record;
+  std::cout << "surface " << record.name << " of body " << record.body << "\n  kind: " << record.kind
+            << ", method: " << stored.surface.method_name() << "\n  built: " << record.created_at << " from "
+            << record.run_ids.size() << " runs\n  state: "
+            << (record.stale ? "STALE: forces of this body changed since it was built (hydrocoef surface rebuild " +
+                                   record.name + ")"
+                             : std::string("current"))
+            << "\n  axes:\n";
+  print_axes(stored.surface);
+  std::cout << "  outputs (forces on the body):\n";
+  for (std::size_t k = 0; k < stored.surface.output_count(); ++k)
+    std::cout << "    " << stored.surface.output_names()[k] << " [" << stored.surface.output_units()[k] << "]\n";
+  print_quality(record, stored.surface);
+}
+
+}  // namespace hydrocoef::cli

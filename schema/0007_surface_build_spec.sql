@@ -1,0 +1,20 @@
+-- hydrocoef run database, migration 7: a surface's build specification.
+--
+-- Surfaces built before this migration kept the options of the command that
+-- built them as the command line's own strings ("build" in their definition
+-- JSON: "--extrapolate" entries such as "u=clamp", "--resample" entries such
+-- as "u=0:1.2:13"), and were rebuilt by parsing them back. From this version
+-- a surface keeps a serialized build specification ("build_spec" in its
+-- definition JSON; the format is documented in
+-- src/surface/surface_build_spec.hpp) that the library reads without any
+-- command-line text.
+--
+-- The conversion needs the resampling and policy grammar, so it is done by
+-- the library right after this file runs, in the same transaction
+-- (src/store/build_spec_migration.cpp): each definition's "build" member is
+-- replaced by the equivalent "build_spec". A definition whose options cannot
+-- be converted stops the migration with its surface's name, and the database
+-- is left as it was.
+--
+-- No table changes; this statement only marks the step.
+SELECT 1;
