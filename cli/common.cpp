@@ -47,15 +47,6 @@ std::array<double, 3> parse_triple(const std::string& text, const std::string& o
   return out;
 }
 
-std::pair<CurveKind, int> parse_curve(const std::string& text) {
-  if (text == "pchip") return {CurveKind::Pchip, 3};
-  if (text.rfind("polynomial:", 0) == 0) {
-    const std::string degree = text.substr(11);
-    if (degree.size() == 1 && degree[0] >= '0' && degree[0] <= '9') return {CurveKind::Polynomial, degree[0] - '0'};
-  }
-  throw InputError("--curve '" + text + "': expected polynomial:D (D a degree 0 to 9) or pchip");
-}
-
 std::string number(double value) {
   std::array<char, 32> buffer{};
   const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
@@ -77,12 +68,6 @@ void add_mirror_options(CLI::App& command, std::vector<std::string>& planes, std
                      "repeatable; images are never stored as runs");
   command.add_option("--mirror-odd", odd,
                      "A disturbance parameter that changes sign in the mirror (e.g. a lateral current); repeatable");
-}
-
-std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection) {
-  auto runs = database.runs(filter);
-  std::erase_if(runs, [&](const StoredRun& run) { return !selection.matches(run.key, run.id); });
-  return runs;
 }
 
 std::string significant(double value, int digits) {

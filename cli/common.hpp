@@ -15,6 +15,8 @@
 #include "src/core/run.hpp"
 #include "src/core/run_selection.hpp"
 #include "src/fit/coefficient_curve.hpp"
+#include "src/pipeline/fit_runs.hpp"
+#include "src/pipeline/fit_stored_runs.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
@@ -50,8 +52,6 @@ void add_selection_options(CLI::App& command, SelectionArgs& args);
 /// --mirror u|v|w (repeatable) and --mirror-odd NAME (repeatable) of fit and
 /// surface build (src/pipeline/fit_runs.hpp).
 void add_mirror_options(CLI::App& command, std::vector<std::string>& planes, std::vector<std::string>& odd);
-/// The runs of `filter` that the selection keeps, in the database's order.
-std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection);
 
 /// Parses "NAME=VALUE" (VALUE a finite number); InputError naming the option otherwise.
 std::pair<std::string, double> parse_assignment(const std::string& text, const std::string& option);
@@ -60,8 +60,6 @@ std::pair<std::string, std::string> parse_text_assignment(const std::string& tex
 /// Parses "x,y,z" into three finite numbers.
 std::array<double, 3> parse_triple(const std::string& text, const std::string& option);
 
-/// --curve: "polynomial:D" (least squares, degree D 0..9) or "pchip" (degree 3).
-std::pair<CurveKind, int> parse_curve(const std::string& text);
 
 /// Shortest text that reads back as the same double.
 std::string number(double value);

@@ -83,6 +83,12 @@ MirrorSpec parse_mirror_spec(std::string_view text) {
                           slash == std::string_view::npos ? std::vector<std::string>{} : split(text.substr(slash + 1), ','));
 }
 
+std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection) {
+  auto runs = database.runs(filter);
+  std::erase_if(runs, [&](const StoredRun& run) { return !selection.matches(run.key, run.id); });
+  return runs;
+}
+
 std::vector<StoredRun> with_mirror_images(const std::vector<StoredRun>& runs, const MirrorSpec& mirror,
                                           std::size_t* skipped) {
   std::vector<StoredRun> out = runs;

@@ -34,6 +34,9 @@ struct MirrorSpec {
 MirrorSpec make_mirror_spec(const std::vector<std::string>& planes, const std::vector<std::string>& odd);
 MirrorSpec parse_mirror_spec(std::string_view text);
 
+/// The runs of `filter` that the selection keeps, in the database's order.
+std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection);
+
 /// The runs and, after them, the mirror images of each under every
 /// reflection of `mirror` (and their compositions): the key and every force
 /// component mapped by the reflection (src/core/body_symmetry.hpp), the id of
