@@ -120,46 +120,18 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
       std::cerr << "\r\033[K[" << done << "/" << total << "] " << path.filename().string() << std::flush;
     };
 
-  // Everything is read and integrated before the database is touched: a bad
-  // file leaves it as it was.
-  // Wall-clock time of each stage, for --json (bench/import_case_folders.sh reads it).
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
-  const auto t0 = Clock::now();
-  const ImportPlan plan = plan_request(request);
-  const auto t1 = Clock::now();
-  const auto inputs = read_inputs(plan, request);
-  const auto t2 = Clock::now();
+  // Everything is read before the database is opened: a bad input leaves it
+  // as it was (or not made at all).
+  ImportResult result = read_import(request);
   if (progress) std::cerr << "\r\033[K" << std::flush;
-  std::vector<ImportBatch> batches;
-  for (const auto& input : inputs) batches.push_back(input.batch);
   Database database(global.database);
   ImportOptions import_options;
   import_options.components = args.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
   import_options.replace = args.replace;
   import_options.also = args.also;
-  const auto outcomes = database.import(batches, import_options);
-  const auto t3 = Clock::now();
-
-  // Notes, each once, with how many inputs gave it.
-  std::vector<std::pair<std::string, std::size_t>> notes;
-  const auto add_note = [&](const std::string& note) {
-    for (auto& [text, count] : notes)
-      if (text == note) return void(++count);
-    notes.emplace_back(note, 1);
-  };
-  for (const auto& note : plan.notes) add_note(note);
-  for (const auto& input : inputs)
-    for (const auto& note : input.notes) add_note(note);
-  std::size_t created = 0, extended = 0, already = 0, runs = 0, replaced = 0;
-  for (std::size_t i = 0; i < outcomes.size(); ++i) {
-    created += outcomes[i].runs_created;
-    extended += outcomes[i].runs_extended;
-    already += outcomes[i].already_imported ? 1 : 0;
-    replaced += outcomes[i].replaced ? 1 : 0;
-    runs += inputs[i].batch.runs.size();
-  }
-
+  store_import(database, result, import_options);
+  const auto& [plan, inputs, outcomes, notes, runs, created, extended, already, replaced, plan_s, read_s, store_s] =
+      result;
   if (args.json) {
     nlohmann::json out;
     out["database"] = global.database;
@@ -196,7 +168,7 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
     // plan: the folder walk, sidecars and case files' settings; read: parsing,
     // integration and window analysis of every input (on every core); store:
     // the one transaction.
-    out["timing_s"] = {{"plan", seconds(t0, t1)}, {"read", seconds(t1, t2)}, {"store", seconds(t2, t3)}};
+    out["timing_s"] = {{"plan", plan_s}, {"read", read_s}, {"store", store_s}};
     out["notes"] = nlohmann::json::array();
     for (const auto& [text, count] : notes) out["notes"].push_back({{"note", text}, {"count", count}});
     std::cout << escape::json_text(out, 2) << '\n';

@@ -1,5 +1,7 @@
 #include "src/pipeline/import_files.hpp"
 
+#include <chrono>
+
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -552,6 +554,55 @@ std::vector<ImportedInput> read_inputs(const ImportPlan& plan, const ImportReque
   out.reserve(count);
   for (auto& r : results) out.push_back(std::move(*r));
   return out;
+}
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+ImportResult read_import(const ImportRequest& request) {
+  ImportResult result;
+  auto start = std::chrono::steady_clock::now();
+  result.plan = plan_request(request);
+  result.plan_s = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  result.inputs = read_inputs(result.plan, request);
+  result.read_s = seconds_since(start);
+  return result;
+}
+
+void store_import(Database& database, ImportResult& result, const ImportOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<ImportBatch> batches;
+  for (const auto& input : result.inputs) batches.push_back(input.batch);
+  result.outcomes = database.import(batches, options);
+  result.store_s = seconds_since(start);
+  result.notes.clear();
+  const auto add_note = [&](const std::string& note) {
+    for (auto& [text, count] : result.notes)
+      if (text == note) return void(++count);
+    result.notes.emplace_back(note, 1);
+  };
+  for (const auto& note : result.plan.notes) add_note(note);
+  for (const auto& input : result.inputs)
+    for (const auto& note : input.notes) add_note(note);
+  result.runs = result.runs_created = result.runs_extended = result.already_imported = result.replaced = 0;
+  for (std::size_t i = 0; i < result.outcomes.size(); ++i) {
+    const auto& outcome = result.outcomes[i];
+    result.runs_created += outcome.runs_created;
+    result.runs_extended += outcome.runs_extended;
+    result.already_imported += outcome.already_imported ? 1 : 0;
+    result.replaced += outcome.replaced ? 1 : 0;
+    result.runs += result.inputs[i].batch.runs.size();
+  }
+}
+
+ImportResult import_into(Database& database, const ImportRequest& request, const ImportOptions& options) {
+  ImportResult result = read_import(request);
+  store_import(database, result, options);
+  return result;
 }
 
 }  // namespace hydrocoef

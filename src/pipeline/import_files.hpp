@@ -41,6 +41,7 @@
 #include "src/pipeline/import_plan.hpp"
 #include "src/pipeline/run_settings.hpp"
 #include "src/pipeline/surface_run.hpp"
+#include "src/store/database.hpp"
 
 namespace hydrocoef {
 
@@ -95,5 +96,31 @@ std::vector<ImportedInput> read_inputs(const ImportPlan& plan, const ImportReque
 /// "force-history" (a table with a time or iteration column),
 /// "openfoam-case".
 std::string input_format(const PlannedInput& input, const std::string& requested);
+
+/// A whole import: what was planned, read and stored, with the totals the
+/// CLI and the Python module report.
+struct ImportResult {
+  ImportPlan plan;
+  std::vector<ImportedInput> inputs;    ///< in plan order
+  std::vector<ImportOutcome> outcomes;  ///< one per input, as stored
+  /// The plan's and inputs' notes, each once, with how many gave it.
+  std::vector<std::pair<std::string, std::size_t>> notes;
+  std::size_t runs = 0, runs_created = 0, runs_extended = 0, already_imported = 0, replaced = 0;
+  /// Wall-clock seconds: planning (folder walk, sidecars, case files), reading
+  /// (parsing, integration, window analysis on every core), storing (the one
+  /// transaction).
+  double plan_s = 0.0, read_s = 0.0, store_s = 0.0;
+};
+
+/// Plans and reads every input (nothing is stored yet): a bad input is an
+/// InputError before any database is touched.
+ImportResult read_import(const ImportRequest& request);
+
+/// Stores the runs read in one transaction and fills the outcomes, notes and
+/// totals.
+void store_import(Database& database, ImportResult& result, const ImportOptions& options);
+
+/// read_import, then store_import.
+ImportResult import_into(Database& database, const ImportRequest& request, const ImportOptions& options);
 
 }  // namespace hydrocoef
