@@ -91,8 +91,9 @@ std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args) {
     rotation_text = ", rotation " + *args.rotation + " kg m^2 as given";
   }
   const Matrix6 ma = sphere_added_mass(*args.sphere_radius, *args.rho, rotation);
-  return {ma, "sphere of radius " + number(*args.sphere_radius) + " m in fluid of density " + number(*args.rho) +
-                  " kg/m^3: 2/3 pi rho R^3 = " + significant(ma[0]) + " kg in each translation" + rotation_text};
+  return {ma, "sphere of radius " + shortest_number(*args.sphere_radius) + " m in fluid of density " +
+                  shortest_number(*args.rho) + " kg/m^3: 2/3 pi rho R^3 = " + significant(ma[0]) +
+                  " kg in each translation" + rotation_text};
 }
 
 void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {

@@ -56,13 +56,6 @@ std::pair<CurveKind, int> parse_curve(const std::string& text) {
   throw InputError("--curve '" + text + "': expected polynomial:D (D a degree 0 to 9) or pchip");
 }
 
-std::string number(double value) {
-  std::array<char, 32> buffer{};
-  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;
-  return std::string(buffer.data(), end);
-}
-
 void add_selection_options(CLI::App& command, SelectionArgs& args) {
   command.add_option("--where", args.where,
                      "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity "

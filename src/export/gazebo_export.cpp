@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/version.hpp"
 #include "src/export/export.hpp"
 #include "src/fit/damping_law.hpp"

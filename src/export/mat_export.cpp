@@ -8,6 +8,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/version.hpp"
 
 namespace hydrocoef {

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
 
 namespace hydrocoef {
@@ -32,13 +33,6 @@ constexpr std::string_view kAcceptedLosses =
 // this; the up-front check uses the same limit so both agree on what is degenerate.
 constexpr double kMinReciprocalConditionNumber = 1e-14;
 const double kMinSingularValueRatio = std::sqrt(kMinReciprocalConditionNumber);
-
-std::string shortest(double value) {
-  std::array<char, 32> buffer{};
-  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;
-  return std::string(buffer.data(), end);
-}
 
 // Built by appending: GCC 12 raises a false -Wrestrict on "'" + std::string(...) in release builds.
 std::string quoted(std::string_view text) {
@@ -222,7 +216,8 @@ ScaledSolution solve(const Eigen::MatrixXd& scaled_design, std::span<const doubl
                                         std::span<const double> x) {
   std::string detail;
   if (std::all_of(x.begin(), x.end(), [&](double value) { return value == x.front(); }))
-    detail = " (all " + std::to_string(x.size()) + " values of " + spec.variable + " are " + shortest(x.front()) + ")";
+    detail = " (all " + std::to_string(x.size()) + " values of " + spec.variable + " are " +
+             shortest_number(x.front()) + ")";
   if (which.size() == 1)
     throw InputError("damping term '" + term_list(spec, which) + "' is zero at every one of the " +
                      std::to_string(x.size()) + " runs" + detail +
@@ -364,9 +359,9 @@ FitOptions parse_loss(std::string_view text) {
 std::string format_loss(const FitOptions& options) {
   switch (options.loss) {
     case LossKind::Squared: return "squared";
-    case LossKind::Huber: return "huber:" + shortest(options.loss_scale);
-    case LossKind::Cauchy: return "cauchy:" + shortest(options.loss_scale);
-    case LossKind::SoftLOne: return "soft-l1:" + shortest(options.loss_scale);
+    case LossKind::Huber: return "huber:" + shortest_number(options.loss_scale);
+    case LossKind::Cauchy: return "cauchy:" + shortest_number(options.loss_scale);
+    case LossKind::SoftLOne: return "soft-l1:" + shortest_number(options.loss_scale);
   }
   throw std::invalid_argument("format_loss: unknown LossKind");
 }
@@ -394,7 +389,8 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
                               const FitOptions& options) {
   validate(spec);
   if (options.loss != LossKind::Squared && !(std::isfinite(options.loss_scale) && options.loss_scale > 0.0))
-    throw InputError("loss scale " + shortest(options.loss_scale) + " for a robust loss: expected a finite scale > 0 "
+    throw InputError("loss scale " + shortest_number(options.loss_scale) +
+                     " for a robust loss: expected a finite scale > 0 "
                      "in the force's unit");
   if (x.size() != y.size())
     throw InputError("damping law fit got " + std::to_string(x.size()) + " velocity values but " +
@@ -406,8 +402,8 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
                      " terms and needs at least " + std::to_string(k) + " runs, found " + std::to_string(n));
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
-      throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable +
-                       " = " + shortest(x[i]) + ", force = " + shortest(y[i]) + "; expected finite values");
+      throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable + " = " +
+                       shortest_number(x[i]) + ", force = " + shortest_number(y[i]) + "; expected finite values");
 
   // The fit is made in units of the largest |x| and the largest |y|, so that
   // no power of a velocity and no square of a force over- or underflows
@@ -482,16 +478,17 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
     const double coefficient = to_law_units(scaled);
     if (!std::isfinite(coefficient) || (coefficient == 0.0 && scaled / column_scale(j) != 0.0 &&
                                         std::abs(scaled / column_scale(j)) > 1e-12))
-      throw InputError("the coefficient of " + term_name(term, spec.variable) + " is " + shortest(scaled / column_scale(j)) +
-                       " x " + shortest(y_scale) + " / " + shortest(x_scale) + "^" + std::to_string(term_power(term)) +
-                       ", outside the range of a double; expected velocities (largest |" + spec.variable + "| = " +
-                       shortest(x_scale) + ") and forces (largest " + shortest(y_scale) +
+      throw InputError("the coefficient of " + term_name(term, spec.variable) + " is " +
+                       shortest_number(scaled / column_scale(j)) + " x " + shortest_number(y_scale) + " / " +
+                       shortest_number(x_scale) + "^" + std::to_string(term_power(term)) +
+                       ", outside the range of a double; expected velocities (largest |" + spec.variable +
+                       "| = " + shortest_number(x_scale) + ") and forces (largest " + shortest_number(y_scale) +
                        ") whose powers in this law stay within double precision");
     fit.coefficients.push_back(coefficient);
     fit.std_errors.push_back(to_law_units(std::sqrt(residual_variance * solution.covariance(j, j))));
   }
   if (!std::isfinite(fit.rmse))
-    throw InputError("the residuals of the fit overflow (largest force " + shortest(y_scale) +
+    throw InputError("the residuals of the fit overflow (largest force " + shortest_number(y_scale) +
                      "); expected forces whose squares stay within double precision");
   return fit;
 }
