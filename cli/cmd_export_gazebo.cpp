@@ -9,9 +9,10 @@
 #include <tuple>
 
 #include "cli/common.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/run_selection.hpp"
+#include "src/core/text.hpp"
 #include "src/export/export.hpp"
 #include "src/export/gazebo_export.hpp"
 #include "src/store/database.hpp"
@@ -42,17 +43,12 @@ struct GazeboArgs {
 std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& option,
                                   const std::string& what) {
   std::vector<double> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+  for (const std::string_view item : split(text, ',')) {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (item.empty() || ec != std::errc() || end != item.data() + item.size() || !std::isfinite(value))
-      throw InputError(option + " '" + text + "': found '" + item + "', expected " + what);
+      throw InputError(option + " '" + text + "': found '" + std::string(item) + "', expected " + what);
     out.push_back(value);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
   }
   if (out.size() != count)
     throw InputError(option + " '" + text + "': " + std::to_string(out.size()) + " numbers; expected " + what);

@@ -18,6 +18,7 @@
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -42,18 +43,14 @@ std::string quoted(std::string_view text) {
   return out;
 }
 
+// What a term or loss text may hold around and inside its parts.
+constexpr std::string_view kTermBlanks = " \t\r\n";
+
 std::string without_whitespace(std::string_view text) {
   std::string out;
   for (char c : text)
-    if (c != ' ' && c != '\t' && c != '\n' && c != '\r') out += c;
+    if (kTermBlanks.find(c) == std::string_view::npos) out += c;
   return out;
-}
-
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
 }
 
 bool looks_like_a_name(std::string_view text) {
@@ -249,7 +246,7 @@ std::vector<std::size_t> dependent_terms(const Eigen::MatrixXd& scaled_design) {
 
 DampingLawSpec parse_damping_terms(std::string_view text) {
   const std::string quoted_text = quoted(text);
-  if (trimmed(text).empty())
+  if (trim(text, kTermBlanks).empty())
     throw InputError("empty damping term list " + quoted_text + "; " + std::string(kAcceptedTerms));
 
   DampingLawSpec spec;
@@ -258,7 +255,7 @@ DampingLawSpec parse_damping_terms(std::string_view text) {
   while (true) {
     const std::size_t comma = text.find(',', begin);
     const std::string_view raw =
-        trimmed(text.substr(begin, comma == std::string_view::npos ? text.npos : comma - begin));
+        trim(text.substr(begin, comma == std::string_view::npos ? text.npos : comma - begin), kTermBlanks);
     if (raw.empty())
       throw InputError("empty damping term in " + quoted_text + " (two commas, or a comma at an end); " +
                        std::string(kAcceptedTerms));
