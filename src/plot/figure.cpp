@@ -304,21 +304,14 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
   // gnuplot draws into a temporary beside the image, renamed onto it only
   // when gnuplot succeeded: the image is whole or not there. The script kept
   // for the user names the image itself; the one run names the temporary.
-  const std::filesystem::path drawing = temporary_beside(files.image);
-  const std::filesystem::path run_script = temporary_beside(files.script);
-  struct Cleanup {
-    std::vector<std::filesystem::path> paths;
-    ~Cleanup() {
-      std::error_code ignored;
-      for (const auto& path : paths) std::filesystem::remove(path, ignored);
-    }
-  } cleanup{{drawing, run_script}};
-  write_file(run_script, script_text(figure, files.data, drawing, files.format, options));
+  TemporaryFile drawing(files.image);
+  const TemporaryFile run_script(files.script);  // never committed: removed at the end
+  write_file(run_script.temporary(), script_text(figure, files.data, drawing.temporary(), files.format, options));
 
   const char* configured = std::getenv("HYDROCOEF_GNUPLOT");
   const std::string program = configured && *configured ? configured : "gnuplot";
   const std::filesystem::path log = std::filesystem::path(absolute).replace_extension(".gnuplot.log");
-  const int status = run_gnuplot(program, run_script, log);
+  const int status = run_gnuplot(program, run_script.temporary(), log);
   const std::string messages = read_all(log);
   std::filesystem::remove(log, ec);
   if (status == 127)
@@ -328,10 +321,10 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
   if (status != 0)
     throw InputError("gnuplot failed on " + files.script.string() + " (exit " + std::to_string(status) +
                      "): " + printable_text(first_error_line(messages), 300));
-  if (!std::filesystem::exists(drawing) || std::filesystem::file_size(drawing) == 0)
+  if (!std::filesystem::exists(drawing.temporary()) || std::filesystem::file_size(drawing.temporary()) == 0)
     throw InputError("gnuplot wrote no image " + files.image.string() + ": " +
                      printable_text(first_error_line(messages), 300));
-  commit_temporary(drawing, files.image);
+  drawing.commit();
   return files;
 }
 
