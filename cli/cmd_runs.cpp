@@ -12,6 +12,7 @@
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/sign_convention.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
@@ -46,9 +47,7 @@ void print_runs_csv(const std::vector<StoredRun>& runs) {
     std::set<std::string> sources;
     for (const auto& force : run.tau_b) {
       // Forces on the body: a damping magnitude as tabulated is negated.
-      out += "," + (force ? shortest_number(force->sign == SignConvention::OpposingMotion ? -force->value.total
-                                                                                          : force->value.total)
-                          : std::string());
+      out += "," + (force ? shortest_number(to_on_body(force->value.total, force->sign)) : std::string());
       if (force) sources.insert(force->source_path);
     }
     std::string list;

@@ -1,6 +1,5 @@
 #include "src/core/run.hpp"
 
-#include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 
 namespace hydrocoef {
@@ -35,17 +34,6 @@ std::string describe(const RunKey& key) {
     out += ' ' + name + '=' + shortest_number(value == 0.0 ? 0.0 : value);
   if (key.nu_b == std::array<double, 6>{} && key.disturbances.empty()) out += " (at rest)";
   return out;
-}
-
-std::string_view to_string(SignConvention convention) {
-  return convention == SignConvention::OnBody ? "on-body" : "opposing";
-}
-
-SignConvention parse_sign_convention(std::string_view text) {
-  if (text == "on-body") return SignConvention::OnBody;
-  if (text == "opposing") return SignConvention::OpposingMotion;
-  throw InputError("unknown sign convention '" + std::string(text) +
-                   "': expected 'on-body' (force on the body) or 'opposing' (positive opposes motion)");
 }
 
 }  // namespace hydrocoef

@@ -11,6 +11,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
+#include "src/core/sign_convention.hpp"
 #include "src/core/version.hpp"
 #include "src/export/export.hpp"
 #include "src/fit/damping_law.hpp"
@@ -234,7 +235,6 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
   for (const auto& [key, fit] : chosen) {
     const auto [dof, variable] = key;
     const std::string& x = fit->variable;
-    const double sign = fit->sign == SignConvention::OpposingMotion ? -1.0 : 1.0;
     GazeboFitSource source;
     source.dof = dof;
     source.variable = variable;
@@ -251,7 +251,7 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
         throw InputError(describe_fit(*fit) + ": coefficient of '" + c.term + "' is " + shortest_number(c.value) +
                          "; expected a finite number");
       }
-      const double on_body = sign * c.value;
+      const double on_body = to_on_body(c.value, fit->sign);
       if (c.term == term_name(DampingTerm::Linear, x)) {
         source.linear = on_body;
       } else if (c.term == term_name(DampingTerm::SignedQuadratic, x)) {
