@@ -16,6 +16,13 @@ std::string_view trim(std::string_view text, std::string_view blanks) {
   return trim_right(trim_left(text, blanks), blanks);
 }
 
+std::string without_blanks(std::string_view text, std::string_view blanks) {
+  std::string out;
+  for (const char c : text)
+    if (blanks.find(c) == std::string_view::npos) out += c;
+  return out;
+}
+
 std::vector<std::string_view> split(std::string_view text, char separator) {
   std::vector<std::string_view> fields;
   for (std::size_t start = 0;;) {

@@ -8,6 +8,7 @@
 // character. kWhitespace and kSpaceTab name the two sets most formats use.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -26,6 +27,9 @@ std::string_view trim(std::string_view text, std::string_view blanks = kWhitespa
 std::string_view trim_left(std::string_view text, std::string_view blanks = kWhitespace);
 /// `text` without the characters of `blanks` at its end.
 std::string_view trim_right(std::string_view text, std::string_view blanks = kWhitespace);
+
+/// `text` with every character of `blanks` left out, wherever it is: "u | u |" -> "u|u|".
+std::string without_blanks(std::string_view text, std::string_view blanks = kWhitespace);
 
 /// The fields between `separator`s, empty ones kept: "a,,b" -> {"a", "", "b"},
 /// "a," -> {"a", ""}, "" -> {""}. Fields are not trimmed.

@@ -133,9 +133,8 @@ Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> di
   Vector6 tau = Vector6::Zero();
   for (const Law& law : laws_) {
     const double x = nu_r_b[static_cast<Eigen::Index>(law.variable)];
-    double sum = 0.0;
-    for (std::size_t k = 0; k < law.count; ++k) sum += law.coefficients[k] * basis_value(law.terms[k], x);
-    tau[static_cast<Eigen::Index>(law.dof)] += sum;
+    tau[static_cast<Eigen::Index>(law.dof)] +=
+        damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
   }
   // Written before they are read; left uninitialised on purpose (hot path).
   std::array<double, kMaxAxes> point;

@@ -9,12 +9,12 @@
 #include <fstream>
 #include <map>
 
+#include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/core/version.hpp"
 #include "src/export/export.hpp"
-#include "src/fit/damping_law.hpp"
 
 namespace hydrocoef {
 

@@ -7,11 +7,11 @@
 #include <set>
 #include <sstream>
 
+#include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
-#include "src/fit/damping_law.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/surface/stored_surface.hpp"
 
@@ -88,16 +88,16 @@ std::string axis_label(const std::string& name, const std::string& unit) {
 
 double evaluate_fit(const FitRecord& fit, double x) {
   const DampingLawSpec spec = parse_damping_terms(fit.terms);
-  double sum = 0.0;
+  std::vector<double> coefficients;  // in term order
   for (const auto term : spec.terms) {
     const std::string name = term_name(term, spec.variable);
     const auto it = std::find_if(fit.coefficients.begin(), fit.coefficients.end(),
                                  [&](const FitRecord::Coefficient& c) { return c.term == name; });
     if (it == fit.coefficients.end())
       throw InputError("fit '" + fit.name + "': no coefficient for term " + name + " of its law " + fit.terms);
-    sum += it->value * basis_value(term, x);
+    coefficients.push_back(it->value);
   }
-  return sum;
+  return damping_law_value(spec.terms, coefficients, x);
 }
 
 std::vector<FitRecord> fit_family(Database& database, const std::string& name) {

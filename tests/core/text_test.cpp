@@ -47,6 +47,13 @@ TEST(Trim, ResultIsAViewIntoTheText) {
   EXPECT_LE(none.data(), blanks.data() + blanks.size());
 }
 
+TEST(WithoutBlanks, LeavesOutBlanksEverywhere) {
+  EXPECT_EQ(without_blanks(" u | u |\t"), "u|u|");
+  EXPECT_EQ(without_blanks("huber : 0.01", " "), "huber:0.01");
+  EXPECT_EQ(without_blanks("a\fb", " \t\r\n"), "a\fb");
+  EXPECT_EQ(without_blanks(" \t "), "");
+}
+
 TEST(Split, KeepsEmptyFields) {
   EXPECT_EQ(split("a,b,c", ','), (std::vector<std::string_view>{"a", "b", "c"}));
   EXPECT_EQ(split("a,,b", ','), (std::vector<std::string_view>{"a", "", "b"}));
