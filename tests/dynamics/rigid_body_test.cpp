@@ -64,7 +64,7 @@ TEST(SphereAddedMass, HalfTheDisplacedMassInTranslationOnly) {
 
 TEST(SphereAddedMass, RotationalEntriesAsGivenAndBadSizesRefused) {
   const Matrix6 ma = sphere_added_mass(1000.0, 0.1, Vector3(0.01, 0.02, 0.03));
-  EXPECT_TRUE(ma.topLeftCorner<3, 3>() == sphere_added_mass(1000.0, 0.1).topLeftCorner<3, 3>());
+  EXPECT_TRUE((ma.topLeftCorner<3, 3>() == sphere_added_mass(1000.0, 0.1).topLeftCorner<3, 3>()));
   EXPECT_EQ(ma(3, 3), 0.01);
   EXPECT_EQ(ma(4, 4), 0.02);
   EXPECT_EQ(ma(5, 5), 0.03);
