@@ -43,10 +43,10 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
     const GridAxis& axis = table.axes()[a];
     const double lower = axis.breakpoints.front(), upper = axis.breakpoints.back();
     if (axis.extrapolation == Extrapolation::Error && (lower > 0.0 || upper < 0.0))
-      refusals.push_back("axis " + axis.name + " covers [" + number(lower) + ", " + number(upper) +
+      refusals.push_back("axis " + axis.name + " covers [" + shortest_number(lower) + ", " + shortest_number(upper) +
                          "] and refuses values outside it (policy error): a query at " + axis.name +
-                         " = 0 (at rest) fails; build the surface with --extrapolate " + axis.name +
-                         "=clamp or " + axis.name + "=linear if the controller will ask there");
+                         " = 0 (at rest) fails; build the surface with --extrapolate " + axis.name + "=clamp or " +
+                         axis.name + "=linear if the controller will ask there");
   }
 
   if (args.json) {
@@ -78,9 +78,9 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
             << table.node_count() << " nodes) as " << export_format_name(format) << "\n";
   for (std::size_t a = 0; a < table.axis_count(); ++a) {
     const GridAxis& axis = table.axes()[a];
-    std::cout << "  axis " << axis.name << " [" << metadata.axis_units[a] << "] in [" << number(axis.breakpoints.front())
-              << ", " << number(axis.breakpoints.back()) << "], outside: " << extrapolation_name(axis.extrapolation)
-              << '\n';
+    std::cout << "  axis " << axis.name << " [" << metadata.axis_units[a] << "] in ["
+              << shortest_number(axis.breakpoints.front()) << ", " << shortest_number(axis.breakpoints.back())
+              << "], outside: " << extrapolation_name(axis.extrapolation) << '\n';
   }
   std::cout << "  outputs";
   for (std::size_t k = 0; k < table.output_count(); ++k)

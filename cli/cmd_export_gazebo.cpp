@@ -9,9 +9,11 @@
 #include <tuple>
 
 #include "cli/common.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/run_selection.hpp"
+#include "src/core/text.hpp"
+#include "src/dynamics/rigid_body.hpp"
 #include "src/export/export.hpp"
 #include "src/export/gazebo_export.hpp"
 #include "src/store/database.hpp"
@@ -42,17 +44,12 @@ struct GazeboArgs {
 std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& option,
                                   const std::string& what) {
   std::vector<double> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+  for (const std::string_view item : split(text, ',')) {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (item.empty() || ec != std::errc() || end != item.data() + item.size() || !std::isfinite(value))
-      throw InputError(option + " '" + text + "': found '" + item + "', expected " + what);
+      throw InputError(option + " '" + text + "': found '" + std::string(item) + "', expected " + what);
     out.push_back(value);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
   }
   if (out.size() != count)
     throw InputError(option + " '" + text + "': " + std::to_string(out.size()) + " numbers; expected " + what);
@@ -83,16 +80,17 @@ std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args) {
             "6x6 matrix from '" + *args.added_mass_matrix + "' (kg, kg m, kg m^2)"};
   }
   if (!args.rho) throw InputError("--sphere-radius needs --rho RHO (fluid density, kg/m^3)");
-  std::optional<std::array<double, 3>> rotation;
+  std::optional<Vector3> rotation;
   std::string rotation_text;
   if (args.rotation) {
     const auto r = parse_numbers(*args.rotation, 3, "--added-mass-rotation", "three numbers a,b,c in kg m^2");
-    rotation = std::array<double, 3>{r[0], r[1], r[2]};
+    rotation = Vector3(r[0], r[1], r[2]);
     rotation_text = ", rotation " + *args.rotation + " kg m^2 as given";
   }
-  const Matrix6 ma = sphere_added_mass(*args.sphere_radius, *args.rho, rotation);
-  return {ma, "sphere of radius " + number(*args.sphere_radius) + " m in fluid of density " + number(*args.rho) +
-                  " kg/m^3: 2/3 pi rho R^3 = " + significant(ma[0]) + " kg in each translation" + rotation_text};
+  const Matrix6 ma = sphere_added_mass(*args.rho, *args.sphere_radius, rotation);
+  return {ma, "sphere of radius " + shortest_number(*args.sphere_radius) + " m in fluid of density " +
+                  shortest_number(*args.rho) + " kg/m^3: 2/3 pi rho R^3 = " + significant(ma(0, 0)) +
+                  " kg in each translation" + rotation_text};
 }
 
 void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
@@ -151,9 +149,9 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
                           {"file", args.output},
                           {"sign_convention", "on-body"},
                           {"frame", gz ? (options.link_axes == GazeboLinkAxes::Flu ? "flu" : "frd") : "frd"},
-                          {"linear_b", coefficients.linear_b},
-                          {"quadratic_b", coefficients.quadratic_b},
-                          {"added_mass_b", coefficients.added_mass_b},
+                          {"linear_b", row_major(coefficients.linear_b)},
+                          {"quadratic_b", row_major(coefficients.quadratic_b)},
+                          {"added_mass_b", row_major(coefficients.added_mass_b)},
                           {"added_mass_source", coefficients.added_mass_source},
                           {"notes", coefficients.notes}};
     if (gz) out["link_name"] = options.link_name;
@@ -200,11 +198,10 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
         first = false;
       }
     } else {
-      std::cout << " linear " << significant(coefficients.linear_b[6 * dof + dof]) << " "
-                << damping_unit(dof, dof, false) << ", quadratic "
-                << significant(coefficients.quadratic_b[6 * dof + dof]) << " " << damping_unit(dof, dof, true)
-                << ", added mass " << significant(coefficients.added_mass_b[6 * dof + dof]) << " "
-                << (dof < 3 ? "kg" : "kg m^2");
+      std::cout << " linear " << significant(coefficients.linear_b(dof, dof)) << " " << damping_unit(dof, dof, false)
+                << ", quadratic " << significant(coefficients.quadratic_b(dof, dof)) << " "
+                << damping_unit(dof, dof, true) << ", added mass " << significant(coefficients.added_mass_b(dof, dof))
+                << " " << (dof < 3 ? "kg" : "kg m^2");
     }
     std::cout << '\n';
     for (const GazeboFitSource& s : coefficients.sources) {

@@ -12,6 +12,7 @@
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/sign_convention.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
@@ -38,17 +39,15 @@ void print_runs_csv(const std::vector<StoredRun>& runs) {
   out += ",sources\n";
   for (const auto& run : runs) {
     out += std::to_string(run.id) + "," + escape::csv_field(run.key.body);
-    for (const double v : run.key.nu_b) out += "," + number(v);
+    for (const double v : run.key.nu_b) out += "," + shortest_number(v);
     for (const auto& name : disturbance_names) {
       const auto found = run.key.disturbances.find(name);
-      out += "," + (found == run.key.disturbances.end() ? std::string() : number(found->second));
+      out += "," + (found == run.key.disturbances.end() ? std::string() : shortest_number(found->second));
     }
     std::set<std::string> sources;
     for (const auto& force : run.tau_b) {
       // Forces on the body: a damping magnitude as tabulated is negated.
-      out += "," + (force ? number(force->sign == SignConvention::OpposingMotion ? -force->value.total
-                                                                                  : force->value.total)
-                          : std::string());
+      out += "," + (force ? shortest_number(to_on_body(force->value.total, force->sign)) : std::string());
       if (force) sources.insert(force->source_path);
     }
     std::string list;

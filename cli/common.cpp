@@ -47,13 +47,6 @@ std::array<double, 3> parse_triple(const std::string& text, const std::string& o
   return out;
 }
 
-std::string number(double value) {
-  std::array<char, 32> buffer{};
-  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;
-  return std::string(buffer.data(), end);
-}
-
 void add_selection_options(CLI::App& command, SelectionArgs& args) {
   command.add_option("--where", args.where,
                      "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity "

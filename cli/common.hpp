@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
 #include "src/core/run_selection.hpp"
 #include "src/fit/coefficient_curve.hpp"
@@ -61,8 +62,9 @@ std::pair<std::string, std::string> parse_text_assignment(const std::string& tex
 std::array<double, 3> parse_triple(const std::string& text, const std::string& option);
 
 
-/// Shortest text that reads back as the same double.
-std::string number(double value);
+/// shortest_number (src/core/numbers.hpp) under its old CLI name, kept only
+/// for cmd_fit.cpp and cmd_simulate.cpp; new code calls shortest_number.
+inline std::string number(double value) { return shortest_number(value); }
 /// A number in engineering style with `digits` significant digits.
 std::string significant(double value, int digits = 6);
 

@@ -16,6 +16,7 @@
 #include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
 #include "src/core/names.hpp"
+#include "src/core/text.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
@@ -30,13 +31,9 @@ constexpr std::string_view kNullToken = "null";
 constexpr std::string_view kNodeNumber = "Node Number";
 constexpr std::array<std::string_view, 3> kCoordinateNames = {"X", "Y", "Z"};
 
+// Blanks within a line (a \r left by CRLF line ends included).
+constexpr std::string_view kBlanks = " \t\r";
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
-  while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
-  return text;
-}
 
 // Quoted for a message, shortened, with every byte that is not printable
 // ASCII written as \xNN, so that binary input still gives a one-line,
@@ -118,7 +115,7 @@ class LineCursor {
   void skip_blank_lines() {
     while (!at_end()) {
       const LineCursor saved = *this;
-      if (!trim(take()).empty()) {
+      if (!trim(take(), kBlanks).empty()) {
         *this = saved;
         return;
       }
@@ -133,7 +130,7 @@ class LineCursor {
       const std::string_view text = take();
       // Rows start with a digit or a sign; only look closer when they do not.
       if (text.empty() || text.front() == '[' || is_blank(text.front())) {
-        const std::string_view trimmed = trim(text);
+        const std::string_view trimmed = trim(text, kBlanks);
         if (trimmed.empty() || trimmed.front() == '[') {
           *this = saved;
           break;
@@ -173,7 +170,7 @@ std::vector<Block> scan_blocks(std::string_view text, const std::string& file) {
     if (cursor.at_end()) break;
     const std::size_t tag_line = cursor.line();
     const std::string_view tag = cursor.take();
-    if (trim(tag) != kNameTag) {
+    if (trim(tag, kBlanks) != kNameTag) {
       if (blocks.empty())
         throw InputError(
             SourceLocation{file, tag_line, 1},
@@ -186,7 +183,7 @@ std::vector<Block> scan_blocks(std::string_view text, const std::string& file) {
 
     Block block;
     block.name_line = cursor.line();
-    const std::string_view name = cursor.at_end() ? std::string_view{} : trim(cursor.take());
+    const std::string_view name = cursor.at_end() ? std::string_view{} : trim(cursor.take(), kBlanks);
     if (name.empty() || is_tag(name))
       throw InputError(SourceLocation{file, block.name_line, 1},
                        "found " + (name.empty() ? std::string("nothing") : shown(name)) + " after '[Name]' on line " +
@@ -201,13 +198,13 @@ std::vector<Block> scan_blocks(std::string_view text, const std::string& file) {
                        block_label(block.name) + ": the file ends after the location name; expected '[Data]'");
     const std::size_t data_line = cursor.line();
     const std::string_view data_tag = cursor.take();
-    if (trim(data_tag) != kDataTag)
+    if (trim(data_tag, kBlanks) != kDataTag)
       throw InputError(SourceLocation{file, data_line, 1},
                        block_label(block.name) + ": found " + shown(data_tag) + ", expected '[Data]'");
 
     block.header_line = cursor.line();
     const std::string_view header = cursor.at_end() ? std::string_view{} : cursor.take();
-    if (trim(header).empty() || is_tag(trim(header)))
+    if (trim(header, kBlanks).empty() || is_tag(trim(header, kBlanks)))
       throw InputError(SourceLocation{file, data_line, 1},
                        block_label(block.name) +
                            ": '[Data]' without a header line; expected column names such as "
@@ -222,7 +219,7 @@ std::vector<Block> scan_blocks(std::string_view text, const std::string& file) {
       if (cursor.at_end()) break;
       const LineCursor saved = cursor;
       const std::size_t section_line = cursor.line();
-      const std::string_view section_tag = trim(cursor.take());
+      const std::string_view section_tag = trim(cursor.take(), kBlanks);
       const bool faces = section_tag == kFacesTag;
       if (!faces && section_tag != kLinesTag) {
         cursor = saved;
@@ -297,7 +294,7 @@ Header parse_header(const Block& block, const std::string& file) {
     std::size_t stop = text.find(header.separator, start);
     if (stop == std::string_view::npos) stop = text.size();
     const std::string_view raw = text.substr(start, stop - start);
-    const std::string_view field = trim(raw);
+    const std::string_view field = trim(raw, kBlanks);
     Column column;
     column.header = std::string(field);
     column.column = start + static_cast<std::size_t>(field.empty() ? 0 : field.data() - raw.data()) + 1;
@@ -417,7 +414,7 @@ std::size_t column_of(const RowContext& row, const char* at) {
   // An empty last field (a row cut right after a separator) is not counted.
   const std::size_t separators = static_cast<std::size_t>(std::count(text.begin(), text.end(), row.header->separator));
   const std::size_t last = text.rfind(row.header->separator);
-  const bool empty_last = last != std::string_view::npos && trim(text.substr(last + 1)).empty();
+  const bool empty_last = last != std::string_view::npos && trim(text.substr(last + 1), kBlanks).empty();
   const std::size_t found = separators + (empty_last ? 0 : 1);
   const std::size_t expected = row.header->columns.size();
   throw InputError(SourceLocation{*row.file, row.line, 1},
@@ -498,7 +495,7 @@ const char* parse_row(const RowContext& row, double* values, const char** starts
     if (*p == separator) {
       // A separator after the last field is harmless; another field is not.
       const char* const eol = line_end_from(p, end);
-      if (trim(std::string_view(p + 1, static_cast<std::size_t>(eol - p - 1))).empty()) return eol;
+      if (trim(std::string_view(p + 1, static_cast<std::size_t>(eol - p - 1)), kBlanks).empty()) return eol;
       fail_field_count(row);
     }
     const char* ignored = nullptr;
@@ -510,7 +507,7 @@ const char* parse_row(const RowContext& row, double* values, const char** starts
 
 std::string_view field_text(const Header& header, const char* begin, const char* end) {
   const std::string_view rest(begin, static_cast<std::size_t>(line_end_from(begin, end) - begin));
-  return trim(rest.substr(0, rest.find(header.separator)));
+  return trim(rest.substr(0, rest.find(header.separator)), kBlanks);
 }
 
 bool same_value(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
@@ -737,7 +734,7 @@ SurfaceMesh read_cfdpost_export(const std::filesystem::path& file, const CfdPost
 bool looks_like_cfdpost_export(std::string_view head) {
   LineCursor cursor(without_byte_order_mark(head));
   cursor.skip_blank_lines();
-  return !cursor.at_end() && trim(cursor.take()) == kNameTag;
+  return !cursor.at_end() && trim(cursor.take(), kBlanks) == kNameTag;
 }
 
 std::vector<std::string> list_cfdpost_locations(std::string_view text, const std::string& file) {

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "src/core/text.hpp"
+
 namespace hydrocoef {
 namespace {
 
@@ -18,17 +20,6 @@ constexpr int kMaxDimensionExponent = 1000;
 constexpr std::string_view kCclBanner = "CFX Command Language for Run";
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
-
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
-  while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
-  return text;
-}
-
-std::string_view trim_left(std::string_view text) {
-  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
-  return text;
-}
 
 /// Runs of blanks as one space, trimmed: CCL names compare this way.
 std::string collapse_blanks(std::string_view text) {

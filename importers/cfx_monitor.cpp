@@ -13,6 +13,7 @@
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
 #include "src/core/source_file.hpp"
+#include "src/core/text.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
@@ -110,16 +111,12 @@ std::optional<std::size_t> recognise_component(std::string_view name) {
   return std::nullopt;
 }
 
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
 // "USER POINT,Fx" -> "Fx" (cfx5mondata); "Monitor Point: Hull Fx" -> "Hull Fx" (Export Plot Data).
 std::string without_category(const std::string& name) {
-  if (const auto comma = name.find(','); comma != std::string::npos) return std::string(trim(name.substr(comma + 1)));
-  if (const auto colon = name.find(": "); colon != std::string::npos) return std::string(trim(name.substr(colon + 2)));
+  if (const auto comma = name.find(','); comma != std::string::npos)
+    return std::string(trim(name.substr(comma + 1), kSpaceTab));
+  if (const auto colon = name.find(": "); colon != std::string::npos)
+    return std::string(trim(name.substr(colon + 2), kSpaceTab));
   return name;
 }
 
@@ -134,7 +131,7 @@ void check_options(const CfxMonitorOptions& options) {
   for (const auto& [component, monitor] : options.monitors) {
     if (!force_index(component))
       throw InputError("monitor mapping for " + in_quotes(component) + ": expected a component X Y Z K M N");
-    if (trim(monitor).empty())
+    if (trim(monitor, kSpaceTab).empty())
       throw InputError("monitor mapping for " + component + " names no monitor; expected e.g. " + component +
                        "=\"USER POINT,Fx\" or " + component + "=Fx1");
   }
@@ -150,7 +147,7 @@ std::array<std::optional<std::size_t>, 6> assign_columns(const std::vector<Heade
   std::array<std::optional<std::size_t>, 6> column_of;
   if (!options.monitors.empty()) {
     for (const auto& [component, given] : options.monitors) {
-      const std::string_view name = trim(given);
+      const std::string_view name = trim(given, kSpaceTab);
       std::vector<std::size_t> matches;
       for (std::size_t i = 1; i < columns.size(); ++i)
         if (names_column(columns[i], name)) matches.push_back(i);

@@ -10,15 +10,9 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef::vtk_detail::ensight {
-
-std::string trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n\v\f");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r\n\v\f");
-  return std::string(text.substr(first, last - first + 1));
-}
 
 std::vector<std::string> split_words(std::string_view text) {
   std::vector<std::string> words;
@@ -124,7 +118,7 @@ Case parse_case(const fs::path& case_file) {
     if (raw.size() > kMaxLineLength)
       throw fail("line of " + std::to_string(raw.size()) + " characters; VTK's EnSight reader reads at most " +
                  std::to_string(kMaxLineLength));
-    const std::string line = trim(raw);
+    const std::string line(trim(raw));
     if (line.empty() || line.front() == '#') continue;
     if (is_case_section(line)) {
       section = line;
@@ -146,7 +140,7 @@ Case parse_case(const fs::path& case_file) {
     }
     continued_times = nullptr;
     continued_numbers = nullptr;
-    const std::string key = lower_case(trim(line.substr(0, colon)));
+    const std::string key = lower_case(std::string(trim(std::string_view(line).substr(0, colon))));
     const std::vector<std::string> words = split_words(std::string_view(line).substr(colon + 1));
     std::string normal_key;
     for (const auto& word : split_words(key)) normal_key += (normal_key.empty() ? "" : " ") + word;

@@ -27,7 +27,6 @@ constexpr long long kMaxCount = std::numeric_limits<std::int32_t>::max();
 
 // Text helpers (ensight_case.cpp). Numbers are whole words: "+" allowed in
 // front, nothing after.
-std::string trim(std::string_view text);
 std::vector<std::string> split_words(std::string_view text);
 bool starts_with(std::string_view text, std::string_view prefix);
 std::optional<long long> parse_integer(std::string_view text);

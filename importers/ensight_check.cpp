@@ -49,6 +49,7 @@
 
 #include "importers/ensight_case.hpp"
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef::vtk_detail {
 namespace ensight {
@@ -194,7 +195,7 @@ class AsciiFile {
     std::string line;
     while (read_line(line)) {
       if (line.empty() || line.front() == '#') continue;
-      std::string trimmed = trim(line);
+      std::string trimmed(trim(line));
       if (trimmed.empty()) continue;
       pending_ = std::move(trimmed);
       return true;
@@ -272,7 +273,7 @@ class BinaryFile {
     read(buffer.data(), buffer.size());
     end_record(buffer.size(), expected);
     const auto end = std::find(buffer.begin(), buffer.end(), '\0');
-    return trim(std::string_view(buffer.data(), static_cast<std::size_t>(end - buffer.begin())));
+    return std::string(trim(std::string_view(buffer.data(), static_cast<std::size_t>(end - buffer.begin()))));
   }
   /// The format line and the file's two description lines.
   void descriptions() {

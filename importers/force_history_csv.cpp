@@ -11,6 +11,7 @@
 #include "importers/history_text.hpp"
 #include "importers/text_table.hpp"
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
@@ -19,12 +20,8 @@ namespace {
 std::string shown(std::string_view text) { return history_text::quoted(text); }
 
 constexpr Dimension kTime{{0, 0, 1, 0}};
-
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\r')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
-  return text;
-}
+// A cell or header of a CSV line: a \r left by CRLF line ends is a blank too.
+constexpr std::string_view kCellBlanks = " \t\r";
 
 std::string normalized(std::string_view name) {
   std::string out;
@@ -48,7 +45,7 @@ struct HeaderFound {
 };
 
 bool starts_with_number(std::string_view text) {
-  text = trim(text);
+  text = trim(text, kCellBlanks);
   if (!text.empty() && text.front() == '"') text.remove_prefix(1);
   if (!text.empty() && (text.front() == '+' || text.front() == '-')) text.remove_prefix(1);
   return !text.empty() && (std::isdigit(static_cast<unsigned char>(text.front())) || text.front() == '.');
@@ -106,7 +103,7 @@ HeaderFound find_header(std::string_view text, const std::string& file) {
     const std::size_t next = newline == std::string_view::npos ? text.size() : newline + 1;
     std::string_view raw = text.substr(offset, stop - offset);
     if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
-    const std::string_view content = trim(raw);
+    const std::string_view content = trim(raw, kCellBlanks);
     if (content.empty()) {
       offset = next;
       ++line;
@@ -146,7 +143,7 @@ HeaderFound find_header(std::string_view text, const std::string& file) {
       header.cells = split_blank_cells(header_text);
       for (Cell& cell : header.cells) cell.column += base;
     }
-    while (!header.cells.empty() && trim(header.cells.back().text).empty()) header.cells.pop_back();
+    while (!header.cells.empty() && trim(header.cells.back().text, kCellBlanks).empty()) header.cells.pop_back();
     for (Cell& cell : header.cells) cell.name = split_name_and_unit(cell.text);
     return header;
   }
@@ -196,7 +193,7 @@ std::optional<Target> recognise(const std::string& name) {
     }
   }
   // SNAME letters, upper case, with an optional part word before or after.
-  std::string rest(trim(name));
+  std::string rest(trim(name, kCellBlanks));
   std::string lower = rest;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   ForcePart part = ForcePart::Total;
@@ -214,11 +211,11 @@ std::optional<Target> recognise(const std::string& name) {
       break;
     }
   }
-  const std::string_view letter = trim(std::string_view(rest));
+  const std::string_view letter = trim(std::string_view(rest), kCellBlanks);
   std::string_view stripped = letter;
   while (!stripped.empty() && (stripped.front() == '_' || stripped.front() == '-')) stripped.remove_prefix(1);
   while (!stripped.empty() && (stripped.back() == '_' || stripped.back() == '-')) stripped.remove_suffix(1);
-  stripped = trim(stripped);
+  stripped = trim(stripped, kCellBlanks);
   if (stripped.size() == 1) {
     const std::string_view letters = "XYZKMN";
     const std::size_t index = letters.find(stripped[0]);

@@ -21,6 +21,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/huge_pages.hpp"
+#include "src/core/parallel.hpp"
 
 namespace hydrocoef::history_text {
 namespace {
@@ -339,20 +340,6 @@ void parse_chunk(Chunk& chunk, const RowSyntax& syntax, std::size_t numbers, dou
   chunk.rows = r - chunk.base;
 }
 
-// Runs work(c) for every chunk, on threads for all but the first.
-template <typename Work>
-void for_each_chunk(std::size_t count, Work work) {
-  if (count == 1) {
-    work(0);
-    return;
-  }
-  std::vector<std::thread> helpers;
-  helpers.reserve(count - 1);
-  for (std::size_t c = 1; c < count; ++c) helpers.emplace_back([&work, c] { work(c); });
-  work(0);
-  for (auto& helper : helpers) helper.join();
-}
-
 std::string column_label(const RowSyntax& syntax, std::size_t column) {
   std::string label = "column " + std::to_string(column + 1);
   if (column < syntax.names.size() && !syntax.names[column].empty()) label += " " + history_text::quoted(syntax.names[column]);
@@ -493,9 +480,8 @@ struct Appended {
 Appended append_rows(std::string_view data, std::size_t first_line, std::size_t before, const RowSyntax& syntax,
                      std::size_t numbers, const std::string& file, const RowSink& sink, const RowOptions& options) {
   // Chunks of at least 4 MB, split after a line end, one per core.
-  const unsigned cores = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::size_t by_size = std::max<std::size_t>(1, data.size() / (std::size_t{4} << 20));
-  const std::size_t count = std::min<std::size_t>(cores, by_size);
+  const unsigned count = parallel_threads(by_size, options.threads);
   std::vector<Chunk> chunks(count);
   const char* const begin = data.data();
   const char* const end = begin + data.size();
@@ -510,7 +496,7 @@ Appended append_rows(std::string_view data, std::size_t first_line, std::size_t 
     cursor = stop;
   }
 
-  for_each_chunk(count, [&](std::size_t c) { count_lines(chunks[c]); });
+  parallel_for(count, count, [&](std::size_t c) { count_lines(chunks[c]); });
   std::size_t capacity = before;
   std::size_t line = first_line;
   for (Chunk& chunk : chunks) {
@@ -529,7 +515,7 @@ Appended append_rows(std::string_view data, std::size_t first_line, std::size_t 
   for (std::size_t k = 0; k < numbers; ++k)
     if (sink.columns[k] != nullptr) columns[k] = sink.columns[k]->data();
   std::uint32_t* const lines = sink.lines != nullptr ? sink.lines->data() : nullptr;
-  for_each_chunk(count, [&](std::size_t c) { parse_chunk(chunks[c], syntax, numbers, columns.data(), lines); });
+  parallel_for(count, count, [&](std::size_t c) { parse_chunk(chunks[c], syntax, numbers, columns.data(), lines); });
 
   Appended result;
   result.newlines = line - first_line;

@@ -16,9 +16,13 @@
 
 #include "importers/history_text.hpp"
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
+
+// Blanks within a line of a force file (a \r left by CRLF line ends included).
+constexpr std::string_view kLineBlanks = " \t\r";
 
 namespace fs = std::filesystem;
 using Vector3 = std::array<double, 3>;
@@ -41,12 +45,6 @@ struct Header {
   std::string_view title;
 };
 
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\r')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
-  return text;
-}
-
 bool starts_with_word(std::string_view text, std::string_view word) {
   return text.substr(0, word.size()) == word &&
          (text.size() == word.size() || text[word.size()] == ' ' || text[word.size()] == '\t' || text[word.size()] == '(');
@@ -60,9 +58,9 @@ Header read_header(std::string_view text) {
   while (offset < text.size()) {
     const std::size_t newline = text.find('\n', offset);
     const std::size_t stop = newline == std::string_view::npos ? text.size() : newline;
-    const std::string_view raw = trim(text.substr(offset, stop - offset));
+    const std::string_view raw = trim(text.substr(offset, stop - offset), kLineBlanks);
     if (!raw.empty() && raw.front() != '#') break;
-    if (!raw.empty()) header.comments.push_back({line, trim(raw.substr(1))});
+    if (!raw.empty()) header.comments.push_back({line, trim(raw.substr(1), kLineBlanks)});
     if (newline == std::string_view::npos) {
       offset = text.size();
       break;
@@ -91,15 +89,15 @@ HeaderValues header_values(const Header& header) {
   for (const CommentLine& comment : header.comments) {
     const std::size_t colon = comment.text.find(':');
     if (colon == std::string_view::npos) continue;
-    const std::string_view key = trim(comment.text.substr(0, colon));
+    const std::string_view key = trim(comment.text.substr(0, colon), kLineBlanks);
     if (key.empty() || key.find_first_of(" \t") != std::string_view::npos) continue;
-    values[std::string(key)] = {comment.line, std::string(trim(comment.text.substr(colon + 1)))};
+    values[std::string(key)] = {comment.line, std::string(trim(comment.text.substr(colon + 1), kLineBlanks))};
   }
   return values;
 }
 
 std::optional<double> to_number(std::string_view text) {
-  text = trim(text);
+  text = trim(text, kLineBlanks);
   double value = 0.0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
@@ -107,12 +105,12 @@ std::optional<double> to_number(std::string_view text) {
 }
 
 std::optional<Vector3> to_vector(std::string_view text) {
-  text = trim(text);
+  text = trim(text, kLineBlanks);
   if (text.size() < 2 || text.front() != '(' || text.back() != ')') return std::nullopt;
   text = text.substr(1, text.size() - 2);
   Vector3 v{};
   for (std::size_t k = 0; k < 3; ++k) {
-    text = trim(text);
+    text = trim(text, kLineBlanks);
     std::size_t stop = text.find_first_of(" \t");
     if (stop == std::string_view::npos) stop = text.size();
     const auto value = to_number(text.substr(0, stop));
@@ -120,7 +118,7 @@ std::optional<Vector3> to_vector(std::string_view text) {
     v[k] = *value;
     text = text.substr(stop);
   }
-  if (!trim(text).empty()) return std::nullopt;
+  if (!trim(text, kLineBlanks).empty()) return std::nullopt;
   return v;
 }
 

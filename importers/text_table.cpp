@@ -4,17 +4,9 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "src/core/text.hpp"
+
 namespace hydrocoef {
-namespace {
-
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
-}
-
-}  // namespace
 
 std::vector<TextLine> split_lines(std::string_view bytes) {
   std::vector<TextLine> lines;
@@ -77,7 +69,7 @@ std::vector<TextField> split_fields(const TextLine& line, char delimiter, const 
     } else {
       std::size_t j = start;
       while (j < text.size() && text[j] != delimiter) ++j;
-      field.text = std::string(trim(text.substr(start, j - start)));
+      field.text = std::string(trim(text.substr(start, j - start), kSpaceTab));
       i = j;
     }
     fields.push_back(std::move(field));

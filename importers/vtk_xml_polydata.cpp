@@ -28,6 +28,7 @@
 #include "src/core/error.hpp"
 #include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
+#include "src/core/parallel.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -702,38 +703,14 @@ void run_task(const Task& task, const FileFormat& format, Scratch& scratch) {
   convert(job, scratch.decoded.data(), task.first, task.count);
 }
 
-/// Runs body(i, scratch) for i in [0, count) on every core; the error of the
-/// first failing task (in task order, so the message does not depend on
-/// timing) is rethrown.
+/// Runs body(i, scratch) for i in [0, count) on up to 8 cores, with one
+/// Scratch per thread; the error of the first failing task (in task order,
+/// so the message does not depend on timing) is rethrown.
 template <typename Body>
 void run_parallel(std::size_t count, Body body) {
-  const unsigned cores = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-  const std::size_t threads = std::min<std::size_t>(cores, count);
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
-  std::mutex error_mutex;
-  std::size_t failed_task = count;
-  std::exception_ptr error;
-  auto worker = [&] {
-    Scratch scratch;
-    for (std::size_t i = next++; i < count && !stop; i = next++) {
-      try {
-        body(i, scratch);
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(error_mutex);
-        if (i < failed_task) {
-          failed_task = i;
-          error = std::current_exception();
-        }
-        stop = true;
-      }
-    }
-  };
-  std::vector<std::thread> helpers;
-  for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(worker);
-  worker();
-  for (auto& helper : helpers) helper.join();
-  if (error) std::rethrow_exception(error);
+  const unsigned threads = parallel_threads(count, std::min(8u, std::max(1u, std::thread::hardware_concurrency())));
+  std::vector<Scratch> scratch(threads);
+  parallel_for(count, threads, [&](std::size_t i, unsigned worker) { body(i, scratch[worker]); });
 }
 
 // --- the piece ---------------------------------------------------------------------------

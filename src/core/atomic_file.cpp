@@ -56,6 +56,20 @@ void commit_temporary(const std::filesystem::path& temporary, const std::filesys
   }
 }
 
+TemporaryFile::TemporaryFile(std::filesystem::path path)
+    : path_(std::move(path)), temporary_(temporary_beside(path_)) {}
+
+TemporaryFile::~TemporaryFile() {
+  if (committed_) return;
+  std::error_code ignored;
+  std::filesystem::remove(temporary_, ignored);
+}
+
+void TemporaryFile::commit() {
+  commit_temporary(temporary_, path_);
+  committed_ = true;
+}
+
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)), temporary_(temporary_beside(path_)) {
   file_ = std::fopen(temporary_.c_str(), "wbx");
   if (!file_)

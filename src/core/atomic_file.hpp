@@ -49,9 +49,32 @@ class AtomicFile {
 /// Writes bytes to `path` through an AtomicFile.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
-/// A temporary name beside `path` for writers that write files themselves
-/// (matio, VTK): ".NAME.tmp-PID-N" in the same directory. Throws InputError
-/// when the directory does not exist or `path` names a directory.
+/// A file written by someone else (matio, VTK's writers, gnuplot) under a
+/// temporary name beside its destination: the temporary is removed by the
+/// destructor unless commit() renamed it onto the destination.
+class TemporaryFile {
+ public:
+  /// Names ".NAME.tmp-PID-N" beside `path` (temporary_beside); creates nothing.
+  explicit TemporaryFile(std::filesystem::path path);
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  /// Renames the temporary onto `path` (commit_temporary).
+  void commit();
+
+  const std::filesystem::path& path() const { return path_; }
+  const std::filesystem::path& temporary() const { return temporary_; }
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path temporary_;
+  bool committed_ = false;
+};
+
+/// A temporary name beside `path`: ".NAME.tmp-PID-N" in the same directory.
+/// Throws InputError when the directory does not exist or `path` names a
+/// directory.
 std::filesystem::path temporary_beside(const std::filesystem::path& path);
 
 /// Renames a finished temporary onto `path`; removes the temporary and

@@ -10,10 +10,10 @@
 #include <cstring>
 #include <optional>
 #include <system_error>
-#include <thread>
 
 #include "src/core/error.hpp"
 #include "src/core/huge_pages.hpp"
+#include "src/core/parallel.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -67,11 +67,13 @@ FileBytes::FileBytes(const std::filesystem::path& path) {
       prefer_huge_pages(map, size);
       const bool split = size >= (std::size_t{1} << 21);
       const std::size_t half = split ? size / 2 : size;
-      ReadResult second;
-      std::thread helper;
-      if (split) helper = std::thread([&] { second = read_range(fd, map_ + half, half, size - half); });
-      const ReadResult first = read_range(fd, map_, 0, half);
-      if (split) helper.join();
+      ReadResult first, second;
+      parallel_for(split ? 2 : 1, 2, [&](std::size_t part) {
+        if (part == 0)
+          first = read_range(fd, map_, 0, half);
+        else
+          second = read_range(fd, map_ + half, half, size - half);
+      });
       if (first.error != 0 || second.error != 0) {
         ::munmap(map_, mapped_);
         map_ = nullptr;

@@ -1,8 +1,6 @@
 #include "src/core/run.hpp"
 
-#include <charconv>
-
-#include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -14,13 +12,6 @@ std::optional<std::size_t> index_of(const std::array<std::string_view, N>& names
   return std::nullopt;
 }
 
-std::string shortest(double value) {
-  std::array<char, 32> buffer{};
-  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;
-  return std::string(buffer.data(), end);
-}
-
 }  // namespace
 
 std::optional<std::size_t> velocity_index(std::string_view name) { return index_of(kVelocityNames, name); }
@@ -30,7 +21,7 @@ std::string disturbance_signature(const std::map<std::string, double>& disturban
   std::string out;
   for (const auto& [name, value] : disturbances) {
     if (!out.empty()) out += ';';
-    out += name + '=' + shortest(value == 0.0 ? 0.0 : value);  // folds -0 into 0
+    out += name + '=' + shortest_number(value == 0.0 ? 0.0 : value);  // folds -0 into 0
   }
   return out;
 }
@@ -38,21 +29,11 @@ std::string disturbance_signature(const std::map<std::string, double>& disturban
 std::string describe(const RunKey& key) {
   std::string out = key.body;
   for (std::size_t i = 0; i < 6; ++i)
-    if (key.nu_b[i] != 0.0) out += ' ' + std::string(kVelocityNames[i]) + '=' + shortest(key.nu_b[i]);
-  for (const auto& [name, value] : key.disturbances) out += ' ' + name + '=' + shortest(value == 0.0 ? 0.0 : value);
+    if (key.nu_b[i] != 0.0) out += ' ' + std::string(kVelocityNames[i]) + '=' + shortest_number(key.nu_b[i]);
+  for (const auto& [name, value] : key.disturbances)
+    out += ' ' + name + '=' + shortest_number(value == 0.0 ? 0.0 : value);
   if (key.nu_b == std::array<double, 6>{} && key.disturbances.empty()) out += " (at rest)";
   return out;
-}
-
-std::string_view to_string(SignConvention convention) {
-  return convention == SignConvention::OnBody ? "on-body" : "opposing";
-}
-
-SignConvention parse_sign_convention(std::string_view text) {
-  if (text == "on-body") return SignConvention::OnBody;
-  if (text == "opposing") return SignConvention::OpposingMotion;
-  throw InputError("unknown sign convention '" + std::string(text) +
-                   "': expected 'on-body' (force on the body) or 'opposing' (positive opposes motion)");
 }
 
 }  // namespace hydrocoef

@@ -16,6 +16,8 @@
 #include <string_view>
 #include <vector>
 
+#include "src/core/sign_convention.hpp"
+
 namespace hydrocoef {
 
 /// Velocity component names, in the order of nu_b.
@@ -43,15 +45,6 @@ std::string disturbance_signature(const std::map<std::string, double>& disturban
 /// One-line human form of a key: "asr-v u=0.1 r=0.2 current_v=0.05" (zero
 /// velocity components are left out).
 std::string describe(const RunKey& key);
-
-/// How the numbers of a force record are signed.
-enum class SignConvention {
-  OnBody,         ///< the force the fluid exerts on the body (SNAME); damping is negative
-  OpposingMotion  ///< a damping magnitude: positive opposes motion (the negative of OnBody)
-};
-std::string_view to_string(SignConvention convention);
-/// Parses "on-body" or "opposing"; throws InputError otherwise.
-SignConvention parse_sign_convention(std::string_view text);
 
 /// One generalized force component with its parts where known.
 struct ForceComponent {

@@ -6,6 +6,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -13,12 +14,6 @@ namespace {
 constexpr double kTolerance = 1e-9;
 
 double tolerance_at(double value) { return kTolerance * std::max(1.0, std::abs(value)); }
-
-std::string shortest(double value) {
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
-}
 
 [[noreturn]] void refuse(std::string_view clause, const std::string& found, const std::string& expected) {
   throw InputError("--where '" + printable_text(clause, 80) + "': found " + found + ", expected " + expected);
@@ -79,8 +74,8 @@ std::string RunSelection::text() const {
   std::string out;
   for (const auto& c : clauses) {
     if (!out.empty()) out += ' ';
-    out += c.name + std::string(op_text(c.op)) + shortest(c.value);
-    if (c.op == SelectionClause::Op::Range) out += ":" + shortest(c.upper);
+    out += c.name + std::string(op_text(c.op)) + shortest_number(c.value);
+    if (c.op == SelectionClause::Op::Range) out += ":" + shortest_number(c.upper);
   }
   for (const auto id : excluded_runs) out += (out.empty() ? "" : " ") + std::string("exclude-run ") + std::to_string(id);
   return out;
@@ -136,7 +131,7 @@ SelectionClause parse_selection_clause(std::string_view text) {
     clause.value = parse_value(rest.substr(0, colon), text);
     clause.upper = parse_value(rest.substr(colon + 1), text);
     if (clause.upper < clause.value)
-      refuse(text, "the range " + shortest(clause.value) + ":" + shortest(clause.upper), "LOW <= HIGH");
+      refuse(text, "the range " + shortest_number(clause.value) + ":" + shortest_number(clause.upper), "LOW <= HIGH");
   } else {
     clause.value = parse_value(rest, text);
   }

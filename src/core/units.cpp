@@ -7,9 +7,13 @@
 #include <vector>
 
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
+
+// A unit text is one header cell or option value: \v and \f are not blanks there.
+constexpr std::string_view kUnitBlanks = " \t\r\n";
 
 struct Symbol {
   std::string_view name;
@@ -77,13 +81,6 @@ std::optional<Symbol> find_symbol(std::string_view name) {
   return std::nullopt;
 }
 
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
-}
-
 bool is_separator(char c) { return c == ' ' || c == '\t' || c == '*' || c == '.'; }
 
 [[noreturn]] void fail(std::string_view unit, const std::string& why) {
@@ -145,8 +142,9 @@ std::string si_unit_name(const Dimension& dimension) {
 }
 
 Unit parse_unit(std::string_view text) {
-  std::string_view body = trim(text);
-  if (!body.empty() && body.front() == '[' && body.back() == ']') body = trim(body.substr(1, body.size() - 2));
+  std::string_view body = trim(text, kUnitBlanks);
+  if (!body.empty() && body.front() == '[' && body.back() == ']')
+    body = trim(body.substr(1, body.size() - 2), kUnitBlanks);
   Unit unit;
   unit.text = std::string(body);
   int sign = 1;
@@ -189,12 +187,12 @@ bool dimension_matches(const Dimension& found, const Dimension& expected) {
 }
 
 NameAndUnit split_name_and_unit(std::string_view header) {
-  const auto text = trim(header);
+  const auto text = trim(header, kUnitBlanks);
   NameAndUnit out;
   const auto open = text.rfind('[');
   if (open != std::string_view::npos && !text.empty() && text.back() == ']') {
-    out.name = std::string(trim(text.substr(0, open)));
-    out.unit = std::string(trim(text.substr(open + 1, text.size() - open - 2)));
+    out.name = std::string(trim(text.substr(0, open), kUnitBlanks));
+    out.unit = std::string(trim(text.substr(open + 1, text.size() - open - 2), kUnitBlanks));
     out.has_unit = true;
   } else {
     out.name = std::string(text);

@@ -4,13 +4,12 @@
 #include <set>
 
 #include "src/core/error.hpp"
+#include "src/core/sign_convention.hpp"
 
 namespace hydrocoef {
 namespace {
 
 std::string dof_context(std::size_t dof) { return "damping of " + std::string(kForceNames[dof]); }
-
-double sign_factor(SignConvention sign) { return sign == SignConvention::OnBody ? 1.0 : -1.0; }
 
 // The source name bound to each axis of a surface: the explicit binding or
 // the axis's own name.
@@ -63,7 +62,7 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
         law.count = d.law.terms.size();
         for (std::size_t k = 0; k < law.count; ++k) {
           law.terms[k] = d.law.terms[k];
-          law.coefficients[k] = sign_factor(d.sign) * d.coefficients[k];
+          law.coefficients[k] = to_on_body(d.coefficients[k], d.sign);
         }
         laws_.push_back(law);
         damped_[dof] = true;
@@ -125,7 +124,7 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
     }
     lookup->output[lookup->used] = p.surface.output_index(d.output);
     lookup->dof[lookup->used] = p.dof;
-    lookup->sign[lookup->used] = sign_factor(d.sign);
+    lookup->sign[lookup->used] = sign_factor(d.sign, SignConvention::OnBody);
     ++lookup->used;
   }
 }
@@ -134,9 +133,8 @@ Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> di
   Vector6 tau = Vector6::Zero();
   for (const Law& law : laws_) {
     const double x = nu_r_b[static_cast<Eigen::Index>(law.variable)];
-    double sum = 0.0;
-    for (std::size_t k = 0; k < law.count; ++k) sum += law.coefficients[k] * basis_value(law.terms[k], x);
-    tau[static_cast<Eigen::Index>(law.dof)] += sum;
+    tau[static_cast<Eigen::Index>(law.dof)] +=
+        damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
   }
   // Written before they are read; left uninitialised on purpose (hot path).
   std::array<double, kMaxAxes> point;

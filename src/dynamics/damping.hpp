@@ -1,7 +1,7 @@
 // Hydrodynamic damping of each degree of freedom, D(nu_r) nu_r of Fossen's
 // model, as the dynamics model evaluates it: per generalized-force component
-// either a constant damping law (terms of one relative velocity component, as
-// src/fit/damping_law.hpp fits them) or one output of a coefficient surface
+// either a constant damping law (terms of one relative velocity component,
+// src/core/damping_terms.hpp) or one output of a coefficient surface
 // whose axes are relative velocity components or named disturbance
 // parameters supplied by the scenario (e.g. "current_v").
 //
@@ -27,9 +27,10 @@
 #include <string>
 #include <vector>
 
+#include "src/core/damping_terms.hpp"
+#include "src/core/matrix6.hpp"
 #include "src/core/run.hpp"
 #include "src/dynamics/rigid_body.hpp"
-#include "src/fit/damping_law.hpp"
 #include "src/surface/coefficient_surface.hpp"
 
 namespace hydrocoef {

@@ -1,7 +1,12 @@
 #include "src/dynamics/rigid_body.hpp"
 
 #include <Eigen/Cholesky>
+#include <cmath>
 #include <numbers>
+#include <string>
+
+#include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 
@@ -23,10 +28,15 @@ Matrix6 rigid_body_mass_matrix(double mass_kg, const Matrix3& inertia_cg_b, cons
   return m;
 }
 
-Matrix6 sphere_added_mass(double rho_kg_m3, double radius_m) {
+Matrix6 sphere_added_mass(double rho_kg_m3, double radius_m, const std::optional<Vector3>& rotation_kg_m2) {
+  if (!(std::isfinite(radius_m) && radius_m > 0.0))
+    throw InputError("sphere radius " + shortest_number(radius_m) + " m; expected a finite radius > 0");
+  if (!(std::isfinite(rho_kg_m3) && rho_kg_m3 > 0.0))
+    throw InputError("fluid density " + shortest_number(rho_kg_m3) + " kg/m^3; expected a finite density > 0");
   const double half_displaced = 2.0 / 3.0 * std::numbers::pi * rho_kg_m3 * radius_m * radius_m * radius_m;
   Matrix6 m = Matrix6::Zero();
   m.diagonal().head<3>().setConstant(half_displaced);
+  if (rotation_kg_m2) m.diagonal().tail<3>() = *rotation_kg_m2;
   return m;
 }
 

@@ -22,12 +22,14 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <optional>
+
+#include "src/core/matrix6.hpp"
+
 namespace hydrocoef {
 
 using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
-using Vector6 = Eigen::Matrix<double, 6, 1>;
-using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
 /// The cross-product matrix: skew(a) * b == a.cross(b).
 Matrix3 skew(const Vector3& a);
@@ -39,12 +41,20 @@ Matrix3 skew(const Vector3& a);
 /// in body axes [kg m^2] (symmetric); r_g_b: CG position from CO [m].
 Matrix6 rigid_body_mass_matrix(double mass_kg, const Matrix3& inertia_cg_b, const Vector3& r_g_b);
 
-/// The added mass of a sphere of radius_m in a fluid of density rho_kg_m3 in
-/// an unbounded ideal fluid: half the displaced fluid mass, (2/3) pi rho R^3,
-/// in each translation, and none in rotation (a sphere displaces no fluid when
-/// it turns about its centre). Returned as the positive matrix
-/// M_A = -diag(X_udot, Y_vdot, Z_wdot, K_pdot, M_qdot, N_rdot) about the centre.
-Matrix6 sphere_added_mass(double rho_kg_m3, double radius_m);
+/// The added mass of a sphere about its centre, as the positive matrix
+/// M_A = -diag(X_udot, Y_vdot, Z_wdot, K_pdot, M_qdot, N_rdot):
+///   rho_kg_m3:      density of the fluid [kg/m^3], finite and > 0;
+///   radius_m:       radius of the sphere [m], finite and > 0;
+///   rotation_kg_m2: the rotational entries (-K_pdot, -M_qdot, -N_rdot)
+///                   [kg m^2] as given; none by default.
+/// In each translation it is half the displaced fluid mass, (2/3) pi rho R^3
+/// [kg] (an unbounded ideal fluid). Potential flow gives a sphere no
+/// rotational added mass (it displaces no fluid when it turns about its
+/// centre), so without rotation_kg_m2 M_A is singular in p, q, r; give
+/// entries from experiment or CFD when a consumer needs them. Throws
+/// InputError for a radius or density that is not finite and > 0.
+Matrix6 sphere_added_mass(double rho_kg_m3, double radius_m,
+                          const std::optional<Vector3>& rotation_kg_m2 = std::nullopt);
 
 /// C(nu) of the file comment for a symmetric mass matrix M (M_RB, M_A or their sum).
 Matrix6 coriolis_matrix(const Matrix6& mass, const Vector6& nu_b);

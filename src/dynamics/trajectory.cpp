@@ -1,28 +1,22 @@
 #include "src/dynamics/trajectory.hpp"
 
 #include <array>
-#include <charconv>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 namespace {
-
-void append_number(std::string& line, double value) {
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  line.append(buffer.data(), result.ptr);
-}
 
 template <class Vector>
 void append_all(std::string& line, const Vector& v) {
   for (Eigen::Index i = 0; i < v.size(); ++i) {
     line += ',';
-    append_number(line, v[i]);
+    append_shortest_number(line, v[i]);
   }
 }
 
@@ -55,7 +49,7 @@ void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>
   std::string line;
   for (const auto& s : samples) {
     line.clear();
-    append_number(line, s.t_s);
+    append_shortest_number(line, s.t_s);
     append_all(line, s.p_n);
     append_all(line, s.euler_rad);
     append_all(line, s.q_nb);

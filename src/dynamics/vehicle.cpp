@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "src/core/error.hpp"
+#include "src/core/sign_convention.hpp"
 #include "src/dynamics/json_input.hpp"
 
 namespace hydrocoef {
@@ -81,8 +82,7 @@ Thruster read_thruster(const Json& value, const std::string& file, std::size_t i
 
 SignConvention read_sign(const Json& object, const std::string& file, const std::string& path) {
   const std::string text = ji::string(ji::require(object, file, path, "sign"), file, ji::join(path, "sign"));
-  if (text == "on-body") return SignConvention::OnBody;
-  if (text == "opposing") return SignConvention::OpposingMotion;
+  if (const auto convention = sign_convention_named(text)) return *convention;
   ji::fail(file, ji::join(path, "sign"), "found \"" + text + "\", expected \"on-body\" or \"opposing\"");
 }
 

@@ -27,7 +27,7 @@
 //                       "axes": {"r": "r", "current_u": "current_u"}, "sign": "on-body"}, ...}
 //   }
 // A law's keys are its terms (1, x, x|x|, x^2, x^3, |x| of one velocity
-// component; see damping_law.hpp), its values the coefficients. DOFs not in
+// component; see src/core/damping_terms.hpp), its values the coefficients. DOFs not in
 // "damping" have none. "sign" is "on-body" (force on the body, damping
 // negative) or "opposing" (damping magnitude, positive opposes motion).
 #pragma once

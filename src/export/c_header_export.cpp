@@ -2,13 +2,13 @@
 
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <set>
 
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/version.hpp"
 
 namespace hydrocoef {
@@ -42,23 +42,14 @@ class LiteralWriter {
   LiteralWriter(bool single, std::string what) : single_(single), what_(std::move(what)) {}
 
   std::string operator()(double value) const {
-    std::array<char, 48> buffer{};
-    std::to_chars_result result{};
-    if (single_) {
-      if (std::abs(value) > static_cast<double>(std::numeric_limits<float>::max())) {
-        throw InputError("format c --float: " + what_ + " value " + shortest_number(value) +
-                         " does not fit in a float; expected |value| <= 3.4e38 (export in double precision)");
-      }
-      result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), static_cast<float>(value));
-    } else {
-      result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    if (!single_) return shortest_number(value);
+    if (std::abs(value) > static_cast<double>(std::numeric_limits<float>::max())) {
+      throw InputError("format c --float: " + what_ + " value " + shortest_number(value) +
+                       " does not fit in a float; expected |value| <= 3.4e38 (export in double precision)");
     }
-    std::string text(buffer.data(), result.ptr);
-    if (single_) {
-      if (text.find_first_of(".e") == std::string::npos) text += ".0";
-      text += "f";
-    }
-    return text;
+    std::string text = shortest_float(static_cast<float>(value));
+    if (text.find_first_of(".e") == std::string::npos) text += ".0";
+    return text + "f";
   }
 
  private:

@@ -2,6 +2,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 

@@ -4,7 +4,6 @@
 
 #include <array>
 #include <cerrno>
-#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -154,13 +153,6 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
       return {path};
   }
   return {};
-}
-
-std::string shortest_number(double value) {
-  std::array<char, 32> buffer{};
-  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  if (ec != std::errc()) return "nan";
-  return std::string(buffer.data(), end);
 }
 
 std::string provenance_line(const ExportMetadata& metadata) {

@@ -98,9 +98,6 @@ std::string xml_escape(std::string_view text);
 /// Text safe inside an XML comment: no "--" (written "- -") and no trailing "-".
 std::string xml_comment_safe(std::string_view text);
 
-/// Shortest decimal text that reads back as the same double ("0.1", "1e-300").
-std::string shortest_number(double value);
-
 /// One line of provenance for file comments: surface, body, runs, hash, date.
 std::string provenance_line(const ExportMetadata& metadata);
 

@@ -8,12 +8,13 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <numbers>
 
+#include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
+#include "src/core/sign_convention.hpp"
 #include "src/core/version.hpp"
 #include "src/export/export.hpp"
-#include "src/fit/damping_law.hpp"
 
 namespace hydrocoef {
 
@@ -98,18 +99,20 @@ GazeboLinkAxes parse_gazebo_link_axes(std::string_view text) {
 
 std::string check_added_mass(const Matrix6& added_mass) {
   double largest = 0.0;
-  for (std::size_t k = 0; k < 36; ++k) {
-    if (!std::isfinite(added_mass[k])) {
-      throw InputError("added-mass entry (" + std::string(kForceNames[k / 6]) + ", " +
-                       std::string(kVelocityNames[k % 6]) + ") is " + shortest_number(added_mass[k]) +
-                       "; expected finite numbers");
+  for (std::size_t i = 0; i < 6; ++i) {
+    for (std::size_t j = 0; j < 6; ++j) {
+      const double value = added_mass(i, j);
+      if (!std::isfinite(value)) {
+        throw InputError("added-mass entry (" + std::string(kForceNames[i]) + ", " + std::string(kVelocityNames[j]) +
+                         ") is " + shortest_number(value) + "; expected finite numbers");
+      }
+      largest = std::max(largest, std::abs(value));
     }
-    largest = std::max(largest, std::abs(added_mass[k]));
   }
   for (std::size_t i = 0; i < 6; ++i) {
     for (std::size_t j = i + 1; j < 6; ++j) {
-      const double a = added_mass[6 * i + j];
-      const double b = added_mass[6 * j + i];
+      const double a = added_mass(i, j);
+      const double b = added_mass(j, i);
       if (std::abs(a - b) > 1e-9 * largest) {
         throw InputError("added-mass matrix is not symmetric: entry (" + std::to_string(i + 1) + "," +
                          std::to_string(j + 1) + ") = " + shortest_number(a) + " but (" + std::to_string(j + 1) +
@@ -118,11 +121,10 @@ std::string check_added_mass(const Matrix6& added_mass) {
       }
     }
   }
-  const Eigen::Map<const Eigen::Matrix<double, 6, 6, Eigen::RowMajor>> given(added_mass.data());
-  const Eigen::Matrix<double, 6, 6> symmetric = 0.5 * (given + given.transpose());
-  const Eigen::LLT<Eigen::Matrix<double, 6, 6>> cholesky(symmetric);
+  const Matrix6 symmetric = 0.5 * (added_mass + added_mass.transpose());
+  const Eigen::LLT<Matrix6> cholesky(symmetric);
   if (cholesky.info() == Eigen::Success) return {};
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(symmetric, Eigen::EigenvaluesOnly);
+  const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(symmetric, Eigen::EigenvaluesOnly);
   const double smallest = eigen.eigenvalues()(0);
   if (smallest < -1e-12 * largest || largest == 0.0)
     throw InputError("added-mass matrix is not positive semi-definite: smallest eigenvalue " +
@@ -134,20 +136,9 @@ std::string check_added_mass(const Matrix6& added_mass) {
 }
 
 Matrix6 added_mass_diagonal(const std::array<double, 6>& diagonal) {
-  Matrix6 out{};
-  for (std::size_t i = 0; i < 6; ++i) out[6 * i + i] = diagonal[i];
+  Matrix6 out = Matrix6::Zero();
+  for (std::size_t i = 0; i < 6; ++i) out(i, i) = diagonal[i];
   return out;
-}
-
-Matrix6 sphere_added_mass(double radius, double rho, const std::optional<std::array<double, 3>>& rotation) {
-  if (!(std::isfinite(radius) && radius > 0.0))
-    throw InputError("sphere radius " + shortest_number(radius) + " m; expected a finite radius > 0");
-  if (!(std::isfinite(rho) && rho > 0.0))
-    throw InputError("fluid density " + shortest_number(rho) + " kg/m^3; expected a finite density > 0");
-  const double translation = 2.0 / 3.0 * std::numbers::pi * rho * radius * radius * radius;
-  // Potential flow gives a sphere no rotational added mass: 0 unless given.
-  if (!rotation) return added_mass_diagonal({translation, translation, translation, 0.0, 0.0, 0.0});
-  return added_mass_diagonal({translation, translation, translation, (*rotation)[0], (*rotation)[1], (*rotation)[2]});
 }
 
 Matrix6 read_added_mass_matrix(const std::filesystem::path& path) {
@@ -180,9 +171,9 @@ Matrix6 read_added_mass_matrix(const std::filesystem::path& path) {
     throw InputError(SourceLocation{path.string(), 0, 0},
                      std::to_string(values.size()) + " numbers; expected 36, the 6x6 added-mass matrix row by row");
   }
-  Matrix6 out{};
-  std::copy(values.begin(), values.end(), out.begin());
-  return out;
+  std::array<double, 36> row_by_row{};
+  std::copy(values.begin(), values.end(), row_by_row.begin());
+  return from_row_major(row_by_row);
 }
 
 GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const GazeboRequest& request) {
@@ -244,7 +235,6 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
   for (const auto& [key, fit] : chosen) {
     const auto [dof, variable] = key;
     const std::string& x = fit->variable;
-    const double sign = fit->sign == SignConvention::OpposingMotion ? -1.0 : 1.0;
     GazeboFitSource source;
     source.dof = dof;
     source.variable = variable;
@@ -261,7 +251,7 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
         throw InputError(describe_fit(*fit) + ": coefficient of '" + c.term + "' is " + shortest_number(c.value) +
                          "; expected a finite number");
       }
-      const double on_body = sign * c.value;
+      const double on_body = to_on_body(c.value, fit->sign);
       if (c.term == term_name(DampingTerm::Linear, x)) {
         source.linear = on_body;
       } else if (c.term == term_name(DampingTerm::SignedQuadratic, x)) {
@@ -286,8 +276,8 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
       linear += 2.0 * quadratic * x0;
       quadratic = 0.0;
     }
-    out.linear_b[6 * dof + variable] = linear;
-    out.quadratic_b[6 * dof + variable] = quadratic;
+    out.linear_b(dof, variable) = linear;
+    out.quadratic_b(dof, variable) = quadratic;
     const std::string law = std::string(kForceNames[dof]) + " in " + x;
     if (source.dropped_constant) {
       out.notes.push_back(law + ": constant term " + shortest_number(*source.dropped_constant) + " " +
@@ -330,27 +320,30 @@ std::vector<GazeboElement> gazebo_elements(const GazeboCoefficients& c, const Ga
     for (std::size_t i = 0; i < 6; ++i) {
       for (std::size_t j = 0; j < 6; ++j) {
         if (i == j) continue;
-        if (c.linear_b[6 * i + j] != 0.0) coupled_linear = true;
-        if (c.quadratic_b[6 * i + j] != 0.0) {
+        if (c.linear_b(i, j) != 0.0) coupled_linear = true;
+        if (c.quadratic_b(i, j) != 0.0) {
           const std::string x(kVelocityNames[j]);
           throw InputError("flavor uuv: the law of " + std::string(kForceNames[i]) + " in " + x + "|" + x +
-                           "| (a cross-coupling quadratic term, " + shortest_number(c.quadratic_b[6 * i + j]) +
-                           " " + damping_unit(i, j, true) +
+                           "| (a cross-coupling quadratic term, " + shortest_number(c.quadratic_b(i, j)) + " " +
+                           damping_unit(i, j, true) +
                            ") cannot be written: uuv_simulator's fossen model uses only the diagonal of "
-                           "quadratic_damping; expected --flavor gz (which takes it as " + kGzForce[i] +
-                           kGzVelocity[j] + "abs" + kGzVelocity[j] + "), --linearize-at U0, or no such fit");
+                           "quadratic_damping; expected --flavor gz (which takes it as " +
+                           kGzForce[i] + kGzVelocity[j] + "abs" + kGzVelocity[j] +
+                           "), --linearize-at U0, or no such fit");
         }
       }
     }
-    out.push_back({"added_mass", std::vector<double>(c.added_mass_b.begin(), c.added_mass_b.end()),
+    const std::array<double, 36> added_mass = row_major(c.added_mass_b);
+    out.push_back({"added_mass", std::vector<double>(added_mass.begin(), added_mass.end()),
                    "positive Ma, 6x6 row-major, rows X..N, columns u..r derivatives; kg, kg m, kg m^2"});
     GazeboElement linear{"linear_damping", {}, ""};
     if (coupled_linear) {
-      linear.values.assign(c.linear_b.begin(), c.linear_b.end());
+      const std::array<double, 36> linear_b = row_major(c.linear_b);
+      linear.values.assign(linear_b.begin(), linear_b.end());
       linear.unit = "on-body, 6x6 row-major (cross-coupling laws present), rows X..N, columns u..r; N/(m/s), "
                     "N/(rad/s), N m/(m/s), N m/(rad/s)";
     } else {
-      for (std::size_t i = 0; i < 6; ++i) linear.values.push_back(c.linear_b[6 * i + i]);
+      for (std::size_t i = 0; i < 6; ++i) linear.values.push_back(c.linear_b(i, i));
       linear.unit = "on-body diagonal Xu Yv Zw Kp Mq Nr; N/(m/s) x3, N m/(rad/s) x3";
     }
     out.push_back(std::move(linear));
@@ -358,7 +351,7 @@ std::vector<GazeboElement> gazebo_elements(const GazeboCoefficients& c, const Ga
                    "0: hydrocoef's laws are of one velocity component, so none is proportional to u nu_j"});
     GazeboElement quadratic{"quadratic_damping", {}, "on-body diagonal Xu|u| Yv|v| Zw|w| Kp|p| Mq|q| Nr|r|; "
                                                      "N/(m/s)^2 x3, N m/(rad/s)^2 x3"};
-    for (std::size_t i = 0; i < 6; ++i) quadratic.values.push_back(c.quadratic_b[6 * i + i]);
+    for (std::size_t i = 0; i < 6; ++i) quadratic.values.push_back(c.quadratic_b(i, i));
     out.push_back(std::move(quadratic));
     return out;
   }
@@ -374,19 +367,19 @@ std::vector<GazeboElement> gazebo_elements(const GazeboCoefficients& c, const Ga
   for (std::size_t i = 0; i < 6; ++i) {
     for (std::size_t j = 0; j < 6; ++j) {
       // SNAME derivative X_udot = -Ma(0,0); "+ 0.0" keeps -0 out of the file.
-      const double value = -t[i] * t[j] * c.added_mass_b[6 * i + j] + 0.0;
+      const double value = -t[i] * t[j] * c.added_mass_b(i, j) + 0.0;
       if (i == j || value != 0.0) out.push_back({name(i, j, "Dot", false), {value}, added_mass_unit(i, j)});
     }
   }
   for (std::size_t i = 0; i < 6; ++i) {
     for (std::size_t j = 0; j < 6; ++j) {
-      const double value = t[i] * t[j] * c.linear_b[6 * i + j] + 0.0;
+      const double value = t[i] * t[j] * c.linear_b(i, j) + 0.0;
       if (i == j || value != 0.0) out.push_back({name(i, j, "", false), {value}, damping_unit(i, j, false)});
     }
   }
   for (std::size_t i = 0; i < 6; ++i) {
     for (std::size_t j = 0; j < 6; ++j) {
-      const double value = t[i] * t[j] * c.quadratic_b[6 * i + j] + 0.0;
+      const double value = t[i] * t[j] * c.quadratic_b(i, j) + 0.0;
       if (i == j || value != 0.0) out.push_back({name(i, j, "", true), {value}, damping_unit(i, j, true)});
     }
   }
@@ -449,7 +442,7 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
     for (std::size_t i = 0; i < 6; ++i) {
       for (std::size_t j = i; j < 6; ++j) {
         const std::string tag = std::string{kSdf[i]} + kSdf[j];
-        block += "<" + tag + ">" + shortest_number(t[i] * t[j] * c.added_mass_b[6 * i + j] + 0.0) + "</" + tag + ">";
+        block += "<" + tag + ">" + shortest_number(t[i] * t[j] * c.added_mass_b(i, j) + 0.0) + "</" + tag + ">";
       }
     }
     text += comment(block + "</fluid_added_mass>");

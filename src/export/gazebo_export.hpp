@@ -35,15 +35,11 @@
 #include <utility>
 #include <vector>
 
+#include "src/core/matrix6.hpp"
 #include "src/core/run.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef {
-
-/// A 6x6 matrix, row-major: element (i, j) at [6 * i + j]. Rows are the
-/// generalized force X, Y, Z, K, M, N; columns the velocity u, v, w, p, q, r
-/// (or its derivative, for added mass).
-using Matrix6 = std::array<double, 36>;
 
 /// Where a damping coefficient came from.
 struct GazeboFitSource {
@@ -67,11 +63,12 @@ struct GazeboFitSource {
 /// The parameters both plugins are written from, in hydrocoef body axes.
 struct GazeboCoefficients {
   std::string body;
-  /// On-body damping: tau_i = linear_b(i,j) nu_j + quadratic_b(i,j) |nu_j| nu_j.
-  /// After linearisation (linearized_at), quadratic_b is all zero.
-  Matrix6 linear_b{};
-  Matrix6 quadratic_b{};
-  Matrix6 added_mass_b{};  ///< Ma, positive, symmetric positive definite
+  /// On-body damping: tau_i = linear_b(i,j) nu_j + quadratic_b(i,j) |nu_j| nu_j
+  /// (rows X..N, columns u..r). After linearisation (linearized_at),
+  /// quadratic_b is all zero.
+  Matrix6 linear_b = Matrix6::Zero();
+  Matrix6 quadratic_b = Matrix6::Zero();
+  Matrix6 added_mass_b = Matrix6::Zero();  ///< Ma, positive, symmetric positive definite
   std::string added_mass_source;  ///< how Ma was given, for the file's comments
   std::optional<double> linearized_at;  ///< U0 [m/s] when quadratic terms were linearised
   std::vector<GazeboFitSource> sources;  ///< in DOF order
@@ -97,7 +94,7 @@ struct GazeboRequest {
   /// 0, 0, 0, 0): linear += 2 b |x0| (x0 = U0 for laws in u, 0 otherwise),
   /// quadratic = 0. The force at the operating point itself is not carried.
   std::optional<double> linearize_at;
-  Matrix6 added_mass{};            ///< positive Ma in body axes (kg, kg m, kg m^2)
+  Matrix6 added_mass = Matrix6::Zero();  ///< positive Ma in body axes (kg, kg m, kg m^2)
   std::string added_mass_source;   ///< e.g. "--added-mass 1,2,3,4,5,6"
 };
 
@@ -121,12 +118,6 @@ std::string check_added_mass(const Matrix6& added_mass);
 
 /// Ma = diag(d) (kg x3, kg m^2 x3).
 Matrix6 added_mass_diagonal(const std::array<double, 6>& diagonal);
-
-/// A sphere's added mass: half the displaced fluid mass, 2/3 pi rho R^3, in
-/// each translation; the rotation entries (kg m^2) as given, else 0 (a sphere
-/// in ideal flow has none; check_added_mass accepts the singular Ma with a
-/// note). radius in m, rho in kg/m^3, both > 0.
-Matrix6 sphere_added_mass(double radius, double rho, const std::optional<std::array<double, 3>>& rotation);
 
 /// Reads 36 numbers, row-major (kg, kg m, kg m^2), separated by white space,
 /// commas or semicolons; '#' starts a comment. InputError with file and line

@@ -1,6 +1,7 @@
 #include "src/export/jsbsim_export.hpp"
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/version.hpp"
 
 namespace hydrocoef {

@@ -8,6 +8,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/version.hpp"
 
 namespace hydrocoef {
@@ -214,12 +215,10 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
       script_text(table, metadata, settings, function_name, path.filename().string(), table_names);
 
   // Both files go through temporaries; the .mat is renamed first, the script second.
-  const std::filesystem::path temporary = temporary_beside(path);
+  TemporaryFile mat_file(path);
   {
-    MatFile mat(temporary);
+    MatFile mat(mat_file.temporary());
     if (!mat.ok()) {
-      std::error_code ec;
-      std::filesystem::remove(temporary, ec);
       throw InputError("cannot write '" + path.string() + "': libmatio could not create it (is the directory "
                        "writable?)");
     }
@@ -239,28 +238,12 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
     }
     if (ok) ok = mat.write("info", MAT_C_CHAR, MAT_T_UINT8, {1, info_text.size()}, info_text.data());
     ok = mat.close() && ok;
-    if (!ok) {
-      std::error_code ec;
-      std::filesystem::remove(temporary, ec);
-      throw InputError("cannot write '" + path.string() + "': libmatio failed while writing it");
-    }
+    if (!ok) throw InputError("cannot write '" + path.string() + "': libmatio failed while writing it");
   }
-  const std::filesystem::path script_temporary = temporary_beside(script_path);
-  try {
-    write_file_atomically(script_temporary, script);
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove(temporary, ec);
-    throw;
-  }
-  try {
-    commit_temporary(temporary, path);
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove(script_temporary, ec);
-    throw;
-  }
-  commit_temporary(script_temporary, script_path);
+  TemporaryFile script_file(script_path);
+  write_file_atomically(script_file.temporary(), script);
+  mat_file.commit();
+  script_file.commit();
   return {path, script_path};
 }
 

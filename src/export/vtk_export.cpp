@@ -39,7 +39,7 @@ void write_vtk(const GridTable& table, const ExportMetadata& metadata, const std
                      names + "); a VTK grid has at most 3 dimensions; expected 1 to 3 axes (use --format csv, json "
                      "or c for more)");
   }
-  const std::filesystem::path temporary = temporary_beside(path);
+  TemporaryFile file(path);
 
   vtkNew<vtkRectilinearGrid> grid;
   int dims[3] = {1, 1, 1};
@@ -94,25 +94,23 @@ void write_vtk(const GridTable& table, const ExportMetadata& metadata, const std
   int written = 0;
   if (path.extension() == ".vtk") {
     vtkNew<vtkRectilinearGridWriter> writer;
-    writer->SetFileName(temporary.c_str());
+    writer->SetFileName(file.temporary().c_str());
     writer->SetInputData(grid);
     writer->SetFileTypeToBinary();
     writer->SetHeader(("hydrocoef surface " + metadata.surface_name).substr(0, 200).c_str());
     written = writer->Write();
   } else {
     vtkNew<vtkXMLRectilinearGridWriter> writer;
-    writer->SetFileName(temporary.c_str());
+    writer->SetFileName(file.temporary().c_str());
     writer->SetInputData(grid);
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
     written = writer->Write();
   }
   std::error_code ec;
-  if (written != 1 || !std::filesystem::exists(temporary, ec)) {
-    std::filesystem::remove(temporary, ec);
+  if (written != 1 || !std::filesystem::exists(file.temporary(), ec))
     throw InputError("cannot write '" + path.string() + "': VTK's writer failed (is the directory writable?)");
-  }
-  commit_temporary(temporary, path);
+  file.commit();
 }
 
 }  // namespace hydrocoef

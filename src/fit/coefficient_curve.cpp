@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <numeric>
@@ -11,17 +10,11 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/surface/pchip.hpp"
 
 namespace hydrocoef {
 namespace {
-
-std::string shortest(double value) {
-  std::array<char, 32> buffer{};
-  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;
-  return std::string(buffer.data(), end);
-}
 
 struct Interval {
   std::size_t k;  // levels[k] <= level <= levels[k + 1]
@@ -45,9 +38,9 @@ void check_level(const CoefficientCurve& curve, double level) {
                      std::to_string(curve.values.size()) + " values and " + std::to_string(curve.polynomial.size()) +
                      " polynomial coefficients; expected a curve from fit_coefficient_curves");
   if (!(level >= curve.levels.front() && level <= curve.levels.back()))
-    throw InputError("coefficient curve '" + curve.term + "' evaluated at disturbance level " + shortest(level) +
-                     ", outside its fitted levels [" + shortest(curve.levels.front()) + ", " +
-                     shortest(curve.levels.back()) +
+    throw InputError("coefficient curve '" + curve.term + "' evaluated at disturbance level " + shortest_number(level) +
+                     ", outside its fitted levels [" + shortest_number(curve.levels.front()) + ", " +
+                     shortest_number(curve.levels.back()) +
                      "]; expected a level within that range (curves do not "
                      "extrapolate)");
 }
@@ -95,8 +88,8 @@ std::vector<LevelFit> fit_per_level(const DampingLawSpec& spec, std::span<const 
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(disturbance[i]))
       throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable + " = " +
-                       shortest(x[i]) + ", force = " + shortest(y[i]) + ", disturbance = " + shortest(disturbance[i]) +
-                       "; expected finite values");
+                       shortest_number(x[i]) + ", force = " + shortest_number(y[i]) +
+                       ", disturbance = " + shortest_number(disturbance[i]) + "; expected finite values");
 
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -122,14 +115,15 @@ std::vector<LevelFit> fit_per_level(const DampingLawSpec& spec, std::span<const 
       const std::string why = runs + "; the damping law '" + format_damping_terms(spec) + "' has " +
                               std::to_string(spec.terms.size()) + " terms and needs at least " +
                               std::to_string(spec.terms.size()) + " runs at each level";
-      if (!skipped) throw InputError("disturbance level " + shortest(level) + " has " + why);
+      if (!skipped) throw InputError("disturbance level " + shortest_number(level) + " has " + why);
       skipped->push_back({level, level_x.size(), why});
       continue;
     }
     try {
       fits.push_back({level, fit_damping_law(spec, level_x, level_y, options)});
     } catch (const InputError& error) {
-      if (!skipped) throw InputError("at disturbance level " + shortest(level) + " (" + runs + "): " + error.what());
+      if (!skipped)
+        throw InputError("at disturbance level " + shortest_number(level) + " (" + runs + "): " + error.what());
       skipped->push_back({level, level_x.size(), runs + ": " + error.what()});
     }
   }
@@ -149,7 +143,8 @@ std::vector<CoefficientCurve> fit_coefficient_curves(const std::vector<LevelFit>
 
   for (const LevelFit& entry : levels)
     if (!std::isfinite(entry.level))
-      throw InputError("a per-level fit has disturbance level " + shortest(entry.level) + "; expected a finite level");
+      throw InputError("a per-level fit has disturbance level " + shortest_number(entry.level) +
+                       "; expected a finite level");
   std::vector<std::size_t> order(levels.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(),
@@ -160,20 +155,20 @@ std::vector<CoefficientCurve> fit_coefficient_curves(const std::vector<LevelFit>
   for (std::size_t s = 0; s < order.size(); ++s) {
     const LevelFit& entry = levels[order[s]];
     if (s > 0 && entry.level == levels[order[s - 1]].level)
-      throw InputError("disturbance level " + shortest(entry.level) +
+      throw InputError("disturbance level " + shortest_number(entry.level) +
                        " appears twice among the per-level fits; expected one fit per level");
     if (entry.fit.spec.variable != spec.variable || entry.fit.spec.terms != spec.terms)
-      throw InputError("the fit at disturbance level " + shortest(entry.level) + " is of the law '" +
+      throw InputError("the fit at disturbance level " + shortest_number(entry.level) + " is of the law '" +
                        format_damping_terms(entry.fit.spec) + "' but the others are of '" + law +
                        "'; expected one law at every level");
     if (entry.fit.coefficients.size() != spec.terms.size())
-      throw InputError("the fit at disturbance level " + shortest(entry.level) + " has " +
+      throw InputError("the fit at disturbance level " + shortest_number(entry.level) + " has " +
                        std::to_string(entry.fit.coefficients.size()) + " coefficients for " +
                        std::to_string(spec.terms.size()) + " terms; expected one per term");
     for (std::size_t j = 0; j < spec.terms.size(); ++j)
       if (!std::isfinite(entry.fit.coefficients[j]))
         throw InputError("coefficient of '" + term_name(spec.terms[j], spec.variable) + "' at disturbance level " +
-                         shortest(entry.level) + " is " + shortest(entry.fit.coefficients[j]) +
+                         shortest_number(entry.level) + " is " + shortest_number(entry.fit.coefficients[j]) +
                          "; expected a finite value");
   }
 

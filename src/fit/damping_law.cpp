@@ -5,26 +5,25 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "src/core/error.hpp"
-#include "src/core/run.hpp"
+#include "src/core/numbers.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
 
 // A law has each DampingTerm at most once.
 constexpr std::size_t kMaxTerms = 6;
-constexpr std::string_view kAcceptedTerms =
-    "accepted terms are 1, x, x|x|, x^2, x^3 and |x| with x one of u, v, w, p, q, r, e.g. '1,u,u|u|'";
+// What a loss text may hold around and inside its parts.
+constexpr std::string_view kLossBlanks = " \t\r\n";
 constexpr std::string_view kAcceptedLosses =
     "expected 'squared', 'huber:SCALE', 'cauchy:SCALE' or 'soft-l1:SCALE' with SCALE > 0 in the force's unit";
 
@@ -32,64 +31,6 @@ constexpr std::string_view kAcceptedLosses =
 // this; the up-front check uses the same limit so both agree on what is degenerate.
 constexpr double kMinReciprocalConditionNumber = 1e-14;
 const double kMinSingularValueRatio = std::sqrt(kMinReciprocalConditionNumber);
-
-std::string shortest(double value) {
-  std::array<char, 32> buffer{};
-  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;
-  return std::string(buffer.data(), end);
-}
-
-// Built by appending: GCC 12 raises a false -Wrestrict on "'" + std::string(...) in release builds.
-std::string quoted(std::string_view text) {
-  std::string out = "'";
-  out += text;
-  out += '\'';
-  return out;
-}
-
-std::string without_whitespace(std::string_view text) {
-  std::string out;
-  for (char c : text)
-    if (c != ' ' && c != '\t' && c != '\n' && c != '\r') out += c;
-  return out;
-}
-
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
-}
-
-bool looks_like_a_name(std::string_view text) {
-  if (text.empty() || !std::isalpha(static_cast<unsigned char>(text.front()))) return false;
-  return std::all_of(text.begin(), text.end(),
-                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
-
-// Splits a term into its shape and the name it is a term of ("" for the
-// constant); the caller checks that the name is a velocity component.
-std::optional<std::pair<DampingTerm, std::string>> split_term(std::string_view term) {
-  if (term == "1") return std::pair{DampingTerm::Constant, std::string()};
-  std::pair<DampingTerm, std::string_view> split{DampingTerm::Linear, term};
-  if (term.size() >= 3 && term.front() == '|' && term.back() == '|') {
-    split = {DampingTerm::AbsLinear, term.substr(1, term.size() - 2)};
-  } else if (term.ends_with("^2")) {
-    split = {DampingTerm::Quadratic, term.substr(0, term.size() - 2)};
-  } else if (term.ends_with("^3")) {
-    split = {DampingTerm::Cubic, term.substr(0, term.size() - 2)};
-  } else if (term.ends_with('|')) {
-    // x|x|: both halves must name the same component.
-    const std::string_view outside = term.substr(0, term.find('|'));
-    const std::string_view inside = term.substr(outside.size());  // "|x|" when well formed
-    if (inside.size() != outside.size() + 2 || inside.front() != '|' || inside.substr(1, outside.size()) != outside)
-      return std::nullopt;
-    split = {DampingTerm::SignedQuadratic, outside};
-  }
-  if (!looks_like_a_name(split.second)) return std::nullopt;
-  return std::pair{split.first, std::string(split.second)};
-}
 
 std::string term_list(const DampingLawSpec& spec, const std::vector<std::size_t>& which) {
   std::string out;
@@ -104,23 +45,6 @@ std::vector<std::size_t> all_indices(std::size_t count) {
   std::vector<std::size_t> out(count);
   for (std::size_t j = 0; j < count; ++j) out[j] = j;
   return out;
-}
-
-void validate(const DampingLawSpec& spec) {
-  if (spec.terms.empty()) throw InputError("damping law has no terms; " + std::string(kAcceptedTerms));
-  const bool has_variable_term =
-      std::any_of(spec.terms.begin(), spec.terms.end(), [](DampingTerm t) { return t != DampingTerm::Constant; });
-  if (!has_variable_term)
-    throw InputError("damping law '" + format_damping_terms(spec) +
-                     "' has no term in a velocity component; " + std::string(kAcceptedTerms));
-  if (!velocity_index(spec.variable))
-    throw InputError("damping law variable '" + spec.variable +
-                     "' is not a velocity component; expected one of u, v, w, p, q, r");
-  for (std::size_t j = 0; j < spec.terms.size(); ++j)
-    for (std::size_t i = 0; i < j; ++i)
-      if (spec.terms[i] == spec.terms[j])
-        throw InputError("damping term '" + term_name(spec.terms[j], spec.variable) +
-                         "' appears twice; each term may appear once");
 }
 
 // One run's contribution r = sum_j c_j b_j(x) - y. The basis row is scaled by
@@ -222,7 +146,8 @@ ScaledSolution solve(const Eigen::MatrixXd& scaled_design, std::span<const doubl
                                         std::span<const double> x) {
   std::string detail;
   if (std::all_of(x.begin(), x.end(), [&](double value) { return value == x.front(); }))
-    detail = " (all " + std::to_string(x.size()) + " values of " + spec.variable + " are " + shortest(x.front()) + ")";
+    detail = " (all " + std::to_string(x.size()) + " values of " + spec.variable + " are " +
+             shortest_number(x.front()) + ")";
   if (which.size() == 1)
     throw InputError("damping term '" + term_list(spec, which) + "' is zero at every one of the " +
                      std::to_string(x.size()) + " runs" + detail +
@@ -252,89 +177,8 @@ std::vector<std::size_t> dependent_terms(const Eigen::MatrixXd& scaled_design) {
 
 }  // namespace
 
-DampingLawSpec parse_damping_terms(std::string_view text) {
-  const std::string quoted_text = quoted(text);
-  if (trimmed(text).empty())
-    throw InputError("empty damping term list " + quoted_text + "; " + std::string(kAcceptedTerms));
-
-  DampingLawSpec spec;
-  std::string first_term_with_variable;
-  std::size_t begin = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', begin);
-    const std::string_view raw =
-        trimmed(text.substr(begin, comma == std::string_view::npos ? text.npos : comma - begin));
-    if (raw.empty())
-      throw InputError("empty damping term in " + quoted_text + " (two commas, or a comma at an end); " +
-                       std::string(kAcceptedTerms));
-    const std::string term = without_whitespace(raw);
-    const auto parsed = split_term(term);
-    if (!parsed)
-      throw InputError("unknown damping term '" + std::string(raw) + "' in " + quoted_text + "; " +
-                       std::string(kAcceptedTerms));
-    const auto& [kind, variable] = *parsed;
-    if (kind != DampingTerm::Constant) {
-      if (!velocity_index(variable))
-        throw InputError("'" + variable + "' in damping term '" + std::string(raw) +
-                         "' is not a velocity component; expected one of u, v, w, p, q, r");
-      if (spec.variable.empty()) {
-        spec.variable = variable;
-        first_term_with_variable = raw;
-      } else if (variable != spec.variable) {
-        throw InputError("damping term '" + std::string(raw) + "' is in " + variable + " but '" +
-                         first_term_with_variable + "' is in " + spec.variable + " (in " + quoted_text +
-                         "); a damping law has terms of one velocity component only");
-      }
-    }
-    if (std::find(spec.terms.begin(), spec.terms.end(), kind) != spec.terms.end())
-      throw InputError("damping term '" + std::string(raw) + "' appears twice in " + quoted_text +
-                       "; each term may appear once");
-    spec.terms.push_back(kind);
-    if (comma == std::string_view::npos) break;
-    begin = comma + 1;
-  }
-  if (spec.variable.empty())
-    throw InputError("damping term list " + quoted_text + " has no term in a velocity component; " +
-                     std::string(kAcceptedTerms));
-  return spec;
-}
-
-std::string term_name(DampingTerm term, std::string_view variable) {
-  const std::string x(variable);
-  switch (term) {
-    case DampingTerm::Constant: return "1";
-    case DampingTerm::Linear: return x;
-    case DampingTerm::SignedQuadratic: return x + "|" + x + "|";
-    case DampingTerm::Quadratic: return x + "^2";
-    case DampingTerm::Cubic: return x + "^3";
-    case DampingTerm::AbsLinear: return "|" + x + "|";
-  }
-  throw std::invalid_argument("term_name: unknown DampingTerm");
-}
-
-std::string format_damping_terms(const DampingLawSpec& spec) {
-  std::string out;
-  for (DampingTerm term : spec.terms) {
-    if (!out.empty()) out += ',';
-    out += term_name(term, spec.variable);
-  }
-  return out;
-}
-
-double basis_value(DampingTerm term, double x) {
-  switch (term) {
-    case DampingTerm::Constant: return 1.0;
-    case DampingTerm::Linear: return x;
-    case DampingTerm::SignedQuadratic: return x * std::abs(x);
-    case DampingTerm::Quadratic: return x * x;
-    case DampingTerm::Cubic: return x * x * x;
-    case DampingTerm::AbsLinear: return std::abs(x);
-  }
-  throw std::invalid_argument("basis_value: unknown DampingTerm");
-}
-
 FitOptions parse_loss(std::string_view text) {
-  const std::string spelled = without_whitespace(text);
+  const std::string spelled = without_blanks(text, kLossBlanks);
   if (spelled == "squared") return {};
 
   const auto colon = spelled.find(':');
@@ -364,37 +208,21 @@ FitOptions parse_loss(std::string_view text) {
 std::string format_loss(const FitOptions& options) {
   switch (options.loss) {
     case LossKind::Squared: return "squared";
-    case LossKind::Huber: return "huber:" + shortest(options.loss_scale);
-    case LossKind::Cauchy: return "cauchy:" + shortest(options.loss_scale);
-    case LossKind::SoftLOne: return "soft-l1:" + shortest(options.loss_scale);
+    case LossKind::Huber: return "huber:" + shortest_number(options.loss_scale);
+    case LossKind::Cauchy: return "cauchy:" + shortest_number(options.loss_scale);
+    case LossKind::SoftLOne: return "soft-l1:" + shortest_number(options.loss_scale);
   }
   throw std::invalid_argument("format_loss: unknown LossKind");
 }
 
-double DampingLawFit::evaluate(double x) const {
-  double value = 0.0;
-  for (std::size_t j = 0; j < spec.terms.size() && j < coefficients.size(); ++j)
-    value += coefficients[j] * basis_value(spec.terms[j], x);
-  return value;
-}
-
-int term_power(DampingTerm term) {
-  switch (term) {
-    case DampingTerm::Constant: return 0;
-    case DampingTerm::Linear:
-    case DampingTerm::AbsLinear: return 1;
-    case DampingTerm::SignedQuadratic:
-    case DampingTerm::Quadratic: return 2;
-    case DampingTerm::Cubic: return 3;
-  }
-  return 0;
-}
+double DampingLawFit::evaluate(double x) const { return damping_law_value(spec.terms, coefficients, x); }
 
 DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
                               const FitOptions& options) {
-  validate(spec);
+  check_damping_law_spec(spec);
   if (options.loss != LossKind::Squared && !(std::isfinite(options.loss_scale) && options.loss_scale > 0.0))
-    throw InputError("loss scale " + shortest(options.loss_scale) + " for a robust loss: expected a finite scale > 0 "
+    throw InputError("loss scale " + shortest_number(options.loss_scale) +
+                     " for a robust loss: expected a finite scale > 0 "
                      "in the force's unit");
   if (x.size() != y.size())
     throw InputError("damping law fit got " + std::to_string(x.size()) + " velocity values but " +
@@ -406,8 +234,8 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
                      " terms and needs at least " + std::to_string(k) + " runs, found " + std::to_string(n));
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
-      throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable +
-                       " = " + shortest(x[i]) + ", force = " + shortest(y[i]) + "; expected finite values");
+      throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable + " = " +
+                       shortest_number(x[i]) + ", force = " + shortest_number(y[i]) + "; expected finite values");
 
   // The fit is made in units of the largest |x| and the largest |y|, so that
   // no power of a velocity and no square of a force over- or underflows
@@ -482,16 +310,17 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
     const double coefficient = to_law_units(scaled);
     if (!std::isfinite(coefficient) || (coefficient == 0.0 && scaled / column_scale(j) != 0.0 &&
                                         std::abs(scaled / column_scale(j)) > 1e-12))
-      throw InputError("the coefficient of " + term_name(term, spec.variable) + " is " + shortest(scaled / column_scale(j)) +
-                       " x " + shortest(y_scale) + " / " + shortest(x_scale) + "^" + std::to_string(term_power(term)) +
-                       ", outside the range of a double; expected velocities (largest |" + spec.variable + "| = " +
-                       shortest(x_scale) + ") and forces (largest " + shortest(y_scale) +
+      throw InputError("the coefficient of " + term_name(term, spec.variable) + " is " +
+                       shortest_number(scaled / column_scale(j)) + " x " + shortest_number(y_scale) + " / " +
+                       shortest_number(x_scale) + "^" + std::to_string(term_power(term)) +
+                       ", outside the range of a double; expected velocities (largest |" + spec.variable +
+                       "| = " + shortest_number(x_scale) + ") and forces (largest " + shortest_number(y_scale) +
                        ") whose powers in this law stay within double precision");
     fit.coefficients.push_back(coefficient);
     fit.std_errors.push_back(to_law_units(std::sqrt(residual_variance * solution.covariance(j, j))));
   }
   if (!std::isfinite(fit.rmse))
-    throw InputError("the residuals of the fit overflow (largest force " + shortest(y_scale) +
+    throw InputError("the residuals of the fit overflow (largest force " + shortest_number(y_scale) +
                      "); expected forces whose squares stay within double precision");
   return fit;
 }

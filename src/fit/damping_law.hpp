@@ -1,6 +1,7 @@
-// Damping laws: one generalized-force component written as a linear
-// combination of basis terms of one velocity component, for example the surge
-// law X(u) = c0 + c1 u + c2 u|u|, and their least-squares fit to CFD runs.
+// The least-squares fit of damping laws to CFD runs. A law (its terms and
+// their evaluation: src/core/damping_terms.hpp) is one generalized-force
+// component written as a linear combination of basis terms of one velocity
+// component, for example the surge law X(u) = c0 + c1 u + c2 u|u|.
 //
 // A law is linear in its coefficients, so the fit is an ordinary (or, with a
 // robust loss, iteratively reweighted) linear least-squares problem. It is
@@ -20,46 +21,9 @@
 #include <string_view>
 #include <vector>
 
+#include "src/core/damping_terms.hpp"
+
 namespace hydrocoef {
-
-/// A basis term of a damping law in the velocity component x.
-enum class DampingTerm {
-  Constant,         ///< 1: an offset, e.g. a CFD zero-speed bias
-  Linear,           ///< x
-  SignedQuadratic,  ///< x|x|: quadratic drag that keeps opposing motion when x changes sign
-  Quadratic,        ///< x^2: even in x
-  Cubic,            ///< x^3
-  AbsLinear         ///< |x|: even in x
-};
-
-/// Which terms a law has and which velocity component they are terms of.
-struct DampingLawSpec {
-  std::string variable;            ///< "u", "v", "w", "p", "q" or "r"
-  std::vector<DampingTerm> terms;  ///< in the order coefficients are reported; no repeats
-};
-
-/// Parses a comma-separated term list such as "1,u,u|u|" or "r, r|r|, r^3".
-/// Accepted terms are 1, x, x|x|, x^2, x^3 and |x| with x one of u, v, w, p,
-/// q, r; whitespace around and inside terms is ignored. Throws InputError,
-/// naming the offending term and listing the accepted forms, when the list is
-/// empty or has an empty entry, a term is unknown or repeated, the terms mix
-/// two velocity components ("u,r|r|"), or no term names a component (just "1").
-DampingLawSpec parse_damping_terms(std::string_view text);
-
-/// The term as parse_damping_terms accepts it: "1", "u", "u|u|", "u^2", "u^3", "|u|".
-/// variable: the velocity component's name, e.g. "u".
-std::string term_name(DampingTerm term, std::string_view variable);
-
-/// The canonical text of a spec, "1,u,u|u|"; parse_damping_terms reads it back.
-std::string format_damping_terms(const DampingLawSpec& spec);
-
-/// The power of the velocity in a term: 0 for the constant, 1 for x and |x|,
-/// 2 for x|x| and x^2, 3 for x^3 (a coefficient's unit is force / velocity^power).
-int term_power(DampingTerm term);
-
-/// The basis term's value at x (x in m/s or rad/s; result in x's unit to the
-/// term's power, 1 for Constant).
-double basis_value(DampingTerm term, double x);
 
 /// How residuals are penalized. Robust losses grow slower than r^2 beyond
 /// loss_scale, so a few bad runs cannot drag the law away from the rest.

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <system_error>
 
+#include "src/core/numbers.hpp"
+
 namespace hydrocoef {
 
 std::string default_fit_name(const std::string& body, const std::string& dof, const std::string& terms,
@@ -11,9 +13,7 @@ std::string default_fit_name(const std::string& body, const std::string& dof, co
 }
 
 std::string per_level_fit_name(const std::string& base, const std::string& by, double level) {
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, level);
-  return base + "[" + by + "=" + std::string(buffer, ec == std::errc() ? end : buffer) + "]";
+  return base + "[" + by + "=" + shortest_number(level) + "]";
 }
 
 std::optional<std::pair<std::string, double>> fit_level(const std::string& fit_name, const std::string& base) {

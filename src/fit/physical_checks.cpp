@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "src/core/sign_convention.hpp"
+
 namespace hydrocoef {
 namespace {
 
@@ -59,7 +61,7 @@ std::vector<LawCheck> check_damping_law(const LawCheckInput& input) {
   std::vector<LawCheck> out;
   // On the body, damping opposes motion: F·x <= 0. An opposing-convention
   // law is the negative of the force on the body.
-  const double s = input.sign == SignConvention::OnBody ? 1.0 : -1.0;
+  const double s = sign_factor(input.sign, SignConvention::OnBody);
   const std::string& x_name = input.spec.variable;
 
   SideQuadratic positive, negative;

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "src/core/damping_terms.hpp"
 #include "src/core/run.hpp"
-#include "src/fit/damping_law.hpp"
 
 namespace hydrocoef {
 

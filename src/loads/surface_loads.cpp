@@ -11,6 +11,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/huge_pages.hpp"
+#include "src/core/parallel.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -814,17 +815,12 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
     const auto points = static_cast<std::uint32_t>(mesh.point_count());
     const auto split = static_cast<std::uint32_t>(0.4 * points);  // lower vertices own more edges
     EdgeCounts low_edges, high_edges;
-    std::exception_ptr error;
-    std::thread helper([&] {
-      try {
+    parallel_for(2, 2, [&](std::size_t half) {
+      if (half == 0)
+        low_edges = count_edges(mesh, 0, split);
+      else
         high_edges = count_edges(mesh, split, points);
-      } catch (...) {
-        error = std::current_exception();
-      }
     });
-    low_edges = count_edges(mesh, 0, split);
-    helper.join();
-    if (error) std::rethrow_exception(error);
     loads.geometry.boundary_edges = low_edges.boundary + high_edges.boundary;
     loads.geometry.nonmanifold_edges = low_edges.nonmanifold + high_edges.nonmanifold;
     loads.geometry.inconsistent_edges = low_edges.inconsistent + high_edges.inconsistent;

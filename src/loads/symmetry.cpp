@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -64,9 +65,8 @@ std::vector<SymmetryPlane> parse_symmetry(std::string_view text) {
 std::string symmetry_text(const std::vector<SymmetryPlane>& planes) {
   std::string out;
   for (const auto& p : planes) {
-    char number[32];
-    const auto [end, ec] = std::to_chars(number, number + sizeof number, p.offset == 0.0 ? 0.0 : p.offset);
-    out += (out.empty() ? "" : ",") + std::string(1, static_cast<char>('x' + p.axis)) + "=" + std::string(number, end);
+    out += (out.empty() ? "" : ",") + std::string(1, static_cast<char>('x' + p.axis)) + "=" +
+           shortest_number(p.offset == 0.0 ? 0.0 : p.offset);
   }
   return out;
 }

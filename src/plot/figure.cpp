@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -18,6 +17,7 @@
 #include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 
 extern char** environ;
 
@@ -28,6 +28,14 @@ namespace {
 constexpr std::array<const char*, 8> kPalette = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                                  "#E69F00", "#56B4E9", "#000000", "#999999"};
 constexpr const char* kShade = "#DDDDDD";
+
+// A number as gnuplot reads it: shortest_number, but NaN and the infinities
+// as gnuplot spells them ("NaN", "Inf", "-Inf").
+std::string gnuplot_number(double value) {
+  if (std::isnan(value)) return "NaN";
+  if (std::isinf(value)) return value > 0 ? "Inf" : "-Inf";
+  return shortest_number(value);
+}
 
 std::string quoted(const std::string& text) { return escape::gnuplot_string(text); }
 
@@ -137,14 +145,6 @@ std::string first_error_line(const std::string& log) {
 
 }  // namespace
 
-std::string round_trip(double value) {
-  if (std::isnan(value)) return "NaN";
-  if (std::isinf(value)) return value > 0 ? "Inf" : "-Inf";
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
-}
-
 ImageFormat image_format(const std::filesystem::path& image) {
   const std::string ext = lower_extension(image);
   if (ext == ".png") return ImageFormat::Png;
@@ -165,7 +165,8 @@ std::string data_file_text(const Figure& figure) {
              "\n# x y z\n";
       for (std::size_t j = 0; j < m.y.size(); ++j) {
         for (std::size_t i = 0; i < m.x.size(); ++i)
-          out += round_trip(m.x[i]) + " " + round_trip(m.y[j]) + " " + round_trip(m.z[j * m.x.size() + i]) + "\n";
+          out += gnuplot_number(m.x[i]) + " " + gnuplot_number(m.y[j]) + " " + gnuplot_number(m.z[j * m.x.size() + i]) +
+                 "\n";
         out += "\n";
       }
       out += "\n";
@@ -176,7 +177,7 @@ std::string data_file_text(const Figure& figure) {
       out += "# block " + std::to_string(index.series[p][s]) + ": " + escape::gnuplot_comment(series.title) +
              "\n# x y\n";
       for (std::size_t i = 0; i < series.x.size(); ++i)
-        out += round_trip(series.x[i]) + " " + round_trip(series.y[i]) + "\n";
+        out += gnuplot_number(series.x[i]) + " " + gnuplot_number(series.y[i]) + "\n";
       out += "\n\n";
     }
   }
@@ -215,11 +216,13 @@ std::string script_text(const Figure& figure, const std::filesystem::path& data,
     gp << "unset object\nset title " << joined_lines(lines) << "\n";
     gp << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label) << "\n";
     if (panel.x_range)
-      gp << "set xrange [" << round_trip((*panel.x_range)[0]) << ":" << round_trip((*panel.x_range)[1]) << "]\n";
+      gp << "set xrange [" << gnuplot_number((*panel.x_range)[0]) << ":" << gnuplot_number((*panel.x_range)[1])
+         << "]\n";
     else
       gp << "set autoscale x\n";
     if (panel.y_range)
-      gp << "set yrange [" << round_trip((*panel.y_range)[0]) << ":" << round_trip((*panel.y_range)[1]) << "]\n";
+      gp << "set yrange [" << gnuplot_number((*panel.y_range)[0]) << ":" << gnuplot_number((*panel.y_range)[1])
+         << "]\n";
     else
       gp << "set autoscale y\n";
     if (panel.map) {
@@ -229,9 +232,9 @@ std::string script_text(const Figure& figure, const std::filesystem::path& data,
     }
     int object = 1;
     for (const auto& r : panel.shaded) {
-      gp << "set object " << object++ << " rectangle from first " << round_trip(r.x0) << ", "
-         << (r.y0 ? "first " + round_trip(*r.y0) : std::string("graph 0")) << " to first " << round_trip(r.x1) << ", "
-         << (r.y1 ? "first " + round_trip(*r.y1) : std::string("graph 1")) << " behind fc rgb '" << kShade
+      gp << "set object " << object++ << " rectangle from first " << gnuplot_number(r.x0) << ", "
+         << (r.y0 ? "first " + gnuplot_number(*r.y0) : std::string("graph 0")) << " to first " << gnuplot_number(r.x1)
+         << ", " << (r.y1 ? "first " + gnuplot_number(*r.y1) : std::string("graph 1")) << " behind fc rgb '" << kShade
          << "' fs solid 1.0 noborder\n";
     }
     std::vector<std::string> clauses;
@@ -301,21 +304,14 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
   // gnuplot draws into a temporary beside the image, renamed onto it only
   // when gnuplot succeeded: the image is whole or not there. The script kept
   // for the user names the image itself; the one run names the temporary.
-  const std::filesystem::path drawing = temporary_beside(files.image);
-  const std::filesystem::path run_script = temporary_beside(files.script);
-  struct Cleanup {
-    std::vector<std::filesystem::path> paths;
-    ~Cleanup() {
-      std::error_code ignored;
-      for (const auto& path : paths) std::filesystem::remove(path, ignored);
-    }
-  } cleanup{{drawing, run_script}};
-  write_file(run_script, script_text(figure, files.data, drawing, files.format, options));
+  TemporaryFile drawing(files.image);
+  const TemporaryFile run_script(files.script);  // never committed: removed at the end
+  write_file(run_script.temporary(), script_text(figure, files.data, drawing.temporary(), files.format, options));
 
   const char* configured = std::getenv("HYDROCOEF_GNUPLOT");
   const std::string program = configured && *configured ? configured : "gnuplot";
   const std::filesystem::path log = std::filesystem::path(absolute).replace_extension(".gnuplot.log");
-  const int status = run_gnuplot(program, run_script, log);
+  const int status = run_gnuplot(program, run_script.temporary(), log);
   const std::string messages = read_all(log);
   std::filesystem::remove(log, ec);
   if (status == 127)
@@ -325,10 +321,10 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
   if (status != 0)
     throw InputError("gnuplot failed on " + files.script.string() + " (exit " + std::to_string(status) +
                      "): " + printable_text(first_error_line(messages), 300));
-  if (!std::filesystem::exists(drawing) || std::filesystem::file_size(drawing) == 0)
+  if (!std::filesystem::exists(drawing.temporary()) || std::filesystem::file_size(drawing.temporary()) == 0)
     throw InputError("gnuplot wrote no image " + files.image.string() + ": " +
                      printable_text(first_error_line(messages), 300));
-  commit_temporary(drawing, files.image);
+  drawing.commit();
   return files;
 }
 

@@ -100,7 +100,4 @@ std::string gnuplot_script(const Figure& figure, const std::filesystem::path& da
 /// The data file render() writes.
 std::string data_file_text(const Figure& figure);
 
-/// Shortest text that reads back as the same double ("nan" for NaN).
-std::string round_trip(double value);
-
 }  // namespace hydrocoef::plot

@@ -7,11 +7,11 @@
 #include <set>
 #include <sstream>
 
+#include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
-#include "src/fit/fit_names.hpp"
+#include "src/core/sign_convention.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
-#include "src/fit/damping_law.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/surface/stored_surface.hpp"
 
@@ -88,16 +88,16 @@ std::string axis_label(const std::string& name, const std::string& unit) {
 
 double evaluate_fit(const FitRecord& fit, double x) {
   const DampingLawSpec spec = parse_damping_terms(fit.terms);
-  double sum = 0.0;
+  std::vector<double> coefficients;  // in term order
   for (const auto term : spec.terms) {
     const std::string name = term_name(term, spec.variable);
     const auto it = std::find_if(fit.coefficients.begin(), fit.coefficients.end(),
                                  [&](const FitRecord::Coefficient& c) { return c.term == name; });
     if (it == fit.coefficients.end())
       throw InputError("fit '" + fit.name + "': no coefficient for term " + name + " of its law " + fit.terms);
-    sum += it->value * basis_value(term, x);
+    coefficients.push_back(it->value);
   }
-  return sum;
+  return damping_law_value(spec.terms, coefficients, x);
 }
 
 std::vector<FitRecord> fit_family(Database& database, const std::string& name) {
@@ -149,7 +149,7 @@ Figure fit_figure(Database& database, const std::string& name) {
       const auto& force = run.tau_b[*dof];
       if (!force) continue;
       points.x.push_back(run.key.nu_b[*variable]);
-      points.y.push_back(force->sign == fit.sign ? force->value.total : -force->value.total);
+      points.y.push_back(to_convention(force->value.total, force->sign, fit.sign));
     }
     double lo = 0.0, hi = 0.0;
     if (!points.x.empty()) {
@@ -278,9 +278,7 @@ Figure surface_figure(Database& database, const std::string& name, const std::op
     }
     if (point.size() != surface.axis_count()) continue;
     double value = std::nan("");
-    if (force && run.tau_b[*force])
-      value = run.tau_b[*force]->sign == SignConvention::OnBody ? run.tau_b[*force]->value.total
-                                                                : -run.tau_b[*force]->value.total;
+    if (force && run.tau_b[*force]) value = to_on_body(run.tau_b[*force]->value.total, run.tau_b[*force]->sign);
     runs.x.push_back(point[0]);
     runs.y.push_back(surface.axis_count() == 1 ? value : point[1]);
     run_values.push_back(value);

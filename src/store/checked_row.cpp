@@ -1,5 +1,7 @@
 #include "src/store/checked_row.hpp"
 
+#include <sqlite3.h>
+
 #include <cmath>
 
 #include "src/core/error.hpp"

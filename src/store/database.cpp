@@ -1,5 +1,6 @@
 #include "src/store/database.hpp"
 
+#include <sqlite3.h>
 #include <unistd.h>
 
 #include <algorithm>

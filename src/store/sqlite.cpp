@@ -1,5 +1,7 @@
 #include "src/store/sqlite.hpp"
 
+#include <sqlite3.h>
+
 #include <cerrno>
 #include <charconv>
 #include <cstdlib>

@@ -1,15 +1,21 @@
 // A thin RAII layer over the SQLite C API for src/store: one connection, one
 // prepared statement, one transaction guard. Every SQLite failure becomes an
 // exception naming the database file and SQLite's own message.
+//
+// SQLite's own header stays out of this one (and so out of database.hpp and
+// everything that includes it): the handles are declared here, as SQLite
+// declares them, and only src/store's sources include <sqlite3.h>.
 #pragma once
-
-#include <sqlite3.h>
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+// SQLite's handle types, declared as <sqlite3.h> declares them.
+struct sqlite3;
+struct sqlite3_stmt;
 
 namespace hydrocoef::store {
 
@@ -88,7 +94,8 @@ class Statement {
   std::string get_text(int column) const;
   std::optional<double> get_optional_double(int column) const;
   std::vector<double> get_doubles(int column) const;
-  /// SQLITE_INTEGER, SQLITE_FLOAT, SQLITE_TEXT, SQLITE_BLOB or SQLITE_NULL.
+  /// SQLITE_INTEGER, SQLITE_FLOAT, SQLITE_TEXT, SQLITE_BLOB or SQLITE_NULL
+  /// (<sqlite3.h>).
   int column_type(int column) const;
   /// Size in bytes of a text or blob value.
   std::size_t column_bytes(int column) const;

@@ -2,24 +2,17 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/surface/pchip.hpp"
 
 namespace hydrocoef {
 
 namespace {
-
-std::string format_number(double value) {
-  std::array<char, 32> buffer{};
-  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  if (ec != std::errc()) return "?";
-  return std::string(buffer.data(), end);
-}
 
 bool is_cubic(Interpolation method) {
   return method == Interpolation::Pchip || method == Interpolation::Akima || method == Interpolation::NaturalSpline;
@@ -268,12 +261,12 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
     for (std::size_t i = 0; i < x.size(); ++i) {
       if (!std::isfinite(x[i])) {
         throw InputError("axis " + quoted(axis.name) + " breakpoint " + std::to_string(i) + " is " +
-                         format_number(x[i]) + "; expected a finite number");
+                         shortest_number(x[i]) + "; expected a finite number");
       }
       if (i > 0 && !(x[i] > x[i - 1])) {
-        throw InputError("axis " + quoted(axis.name) + " breakpoint " + std::to_string(i) + " (" + format_number(x[i]) +
-                         ") is not greater than breakpoint " + std::to_string(i - 1) + " (" + format_number(x[i - 1]) +
-                         "); expected strictly increasing breakpoints");
+        throw InputError("axis " + quoted(axis.name) + " breakpoint " + std::to_string(i) + " (" +
+                         shortest_number(x[i]) + ") is not greater than breakpoint " + std::to_string(i - 1) + " (" +
+                         shortest_number(x[i - 1]) + "); expected strictly increasing breakpoints");
       }
     }
     AxisLookup& lookup = lookup_[a];
@@ -329,7 +322,7 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
       node /= lookup_[a].count;
     }
     throw InputError("value of output " + quoted(outputs_[index % n_out]) + " at node (" + at + ") (values index " +
-                     std::to_string(index) + ") is " + format_number(values_[index]) + "; expected a finite number");
+                     std::to_string(index) + ") is " + shortest_number(values_[index]) + "; expected a finite number");
   }
 
   // Derivative tables for the cubic methods.
@@ -439,11 +432,11 @@ void GridTable::check_point(std::span<const double> point) const {
 
 void GridTable::throw_outside(std::size_t axis, double value) const {
   if (!std::isfinite(value)) {
-    throw InputError("axis " + quoted(axes_[axis].name) + " = " + format_number(value) +
+    throw InputError("axis " + quoted(axes_[axis].name) + " = " + shortest_number(value) +
                      " is not a number; expected a finite value");
   }
-  throw InputError("axis " + quoted(axes_[axis].name) + " = " + format_number(value) + " is outside [" +
-                   format_number(lookup_[axis].lo) + ", " + format_number(lookup_[axis].hi) +
+  throw InputError("axis " + quoted(axes_[axis].name) + " = " + shortest_number(value) + " is outside [" +
+                   shortest_number(lookup_[axis].lo) + ", " + shortest_number(lookup_[axis].hi) +
                    "]; expected a value in range (or an extrapolation policy)");
 }
 

@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -12,6 +11,7 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -32,13 +32,6 @@ constexpr double kMinPolynomialSingularRatio = 1e-10;
 // A sample whose leverage in the polynomial matrix is this close to 1 is the
 // only one fixing some polynomial direction: leaving it out is undefined.
 constexpr double kUndefinedLeverage = 1.0 - 1e-9;
-
-std::string shortest(double value) {
-  std::array<char, 32> buffer{};
-  auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;
-  return std::string(buffer.data(), end);
-}
 
 std::size_t polynomial_term_count(int degree, std::size_t axes) {
   std::size_t count = 1;
@@ -133,7 +126,7 @@ void check_distinct(std::span<const double> points, std::size_t axes, const std:
     const std::size_t j = std::max(order[s - 1], order[s]);
     if (!std::ranges::equal(sample(i), sample(j))) continue;
     std::vector<std::string> where;
-    for (std::size_t a = 0; a < axes; ++a) where.push_back(labels[a] + " = " + shortest(points[i * axes + a]));
+    for (std::size_t a = 0; a < axes; ++a) where.push_back(labels[a] + " = " + shortest_number(points[i * axes + a]));
     throw InputError("RBF samples " + std::to_string(i) + " and " + std::to_string(j) +
                      " (0-based) are at the same point (" + joined(where) +
                      "); expected distinct points (average repeated runs first)");
@@ -346,7 +339,8 @@ void RbfSurface::prepare(std::span<const double> points, std::span<const double>
                      " (the kernel is conditionally positive definite of order 2, so a lower degree does "
                      "not make the system uniquely solvable), or the linear kernel");
   if (!std::isfinite(smoothing_) || smoothing_ < 0.0)
-    throw InputError("RBF smoothing " + shortest(smoothing_) + "; expected a finite value >= 0 (0 interpolates)");
+    throw InputError("RBF smoothing " + shortest_number(smoothing_) +
+                     "; expected a finite value >= 0 (0 interpolates)");
   if (!options.length_scales.empty() && options.length_scales.size() != d)
     throw InputError("RBF surface got " + std::to_string(options.length_scales.size()) + " length scales for " +
                      std::to_string(d) + " axes; expected one per axis or none");
@@ -358,11 +352,11 @@ void RbfSurface::prepare(std::span<const double> points, std::span<const double>
     for (std::size_t a = 0; a < d; ++a)
       if (!std::isfinite(points[i * d + a]))
         throw InputError("RBF sample " + std::to_string(i) + " (0-based) has " + axis_labels_[a] + " = " +
-                         shortest(points[i * d + a]) + "; expected a finite coordinate");
+                         shortest_number(points[i * d + a]) + "; expected a finite coordinate");
     for (std::size_t k = 0; k < output_count; ++k)
       if (!std::isfinite(values[i * output_count + k]))
         throw InputError("RBF sample " + std::to_string(i) + " (0-based) has output " + std::to_string(k) + " = " +
-                         shortest(values[i * output_count + k]) + "; expected a finite value");
+                         shortest_number(values[i * output_count + k]) + "; expected a finite value");
   }
 
   polynomial_terms_ = polynomial_term_count(polynomial_degree_, d);
@@ -380,7 +374,7 @@ void RbfSurface::prepare(std::span<const double> points, std::span<const double>
       high = std::max(high, points[i * d + a]);
     }
     if (!(high > low))
-      throw InputError("RBF " + axis_labels_[a] + " has the same value " + shortest(low) + " at all " +
+      throw InputError("RBF " + axis_labels_[a] + " has the same value " + shortest_number(low) + " at all " +
                        std::to_string(n) +
                        " samples; expected samples spread along every axis (leave out an axis "
                        "that does not vary)");
@@ -392,7 +386,7 @@ void RbfSurface::prepare(std::span<const double> points, std::span<const double>
     } else {
       scale_[a] = options.length_scales[a];
       if (!std::isfinite(scale_[a]) || !(scale_[a] > 0.0))
-        throw InputError("RBF length scale " + shortest(scale_[a]) + " for " + axis_labels_[a] +
+        throw InputError("RBF length scale " + shortest_number(scale_[a]) + " for " + axis_labels_[a] +
                          "; expected a finite value > 0 in the axis's unit");
     }
     policy_[a] = options.out_of_range.empty() ? RbfOutOfRange::Error : options.out_of_range[a];
@@ -423,19 +417,19 @@ void RbfSurface::solve(std::span<const double> values) {
     const ClosestPair pair = closest_pair(centers_, d);  // near-duplicate samples are the usual cause
     throw InputError("RBF system for " + std::to_string(n) + " samples is numerically singular (" + why +
                      "); the closest samples are " + std::to_string(pair.first) + " and " +
-                     std::to_string(pair.second) + " (0-based) at scaled distance " + shortest(pair.distance) +
+                     std::to_string(pair.second) + " (0-based) at scaled distance " + shortest_number(pair.distance) +
                      "; expected well-separated samples, or smoothing > 0");
   };
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(system);
   if (const double rcond = lu.rcond(); !(rcond >= kMinReciprocalCondition))
-    throw_singular("reciprocal condition number " + shortest(rcond));
+    throw_singular("reciprocal condition number " + shortest_number(rcond));
   Eigen::MatrixXd solution = lu.solve(rhs);
   solution += lu.solve(rhs - system * solution);  // one step of iterative refinement
   const double residual = (rhs - system * solution).cwiseAbs().maxCoeff();
   const double residual_scale =
       system.cwiseAbs().rowwise().sum().maxCoeff() * solution.cwiseAbs().maxCoeff() + rhs.cwiseAbs().maxCoeff();
   if (residual_scale > 0.0 && !(residual <= kMaxRelativeResidual * residual_scale))
-    throw_singular("relative residual " + shortest(residual / residual_scale));
+    throw_singular("relative residual " + shortest_number(residual / residual_scale));
 
   kernel_weights_.resize(n * output_count);
   polynomial_weights_.resize(polynomial_terms_ * output_count);
@@ -483,12 +477,13 @@ void RbfSurface::evaluate_at(std::span<const double> point, std::span<double> ou
   for (std::size_t a = 0; a < d; ++a) {
     double x = point[a];
     if (!std::isfinite(x))
-      throw InputError("RBF query has " + axis_labels_[a] + " = " + shortest(x) + "; expected a finite value");
+      throw InputError("RBF query has " + axis_labels_[a] + " = " + shortest_number(x) + "; expected a finite value");
     if (x < lower_[a] || x > upper_[a]) {
       switch (policy_[a]) {
         case RbfOutOfRange::Error:
-          throw InputError("RBF query " + axis_labels_[a] + " = " + shortest(x) + " is outside the samples' range [" +
-                           shortest(lower_[a]) + ", " + shortest(upper_[a]) +
+          throw InputError("RBF query " + axis_labels_[a] + " = " + shortest_number(x) +
+                           " is outside the samples' range [" + shortest_number(lower_[a]) + ", " +
+                           shortest_number(upper_[a]) +
                            "]; expected a value within it (or --extrapolate clamp or extrapolate for that axis)");
         case RbfOutOfRange::Clamp:
           x = std::clamp(x, lower_[a], upper_[a]);
@@ -549,7 +544,8 @@ double RbfSurface::nearest_sample_distance(std::span<const double> point) const 
   std::array<double, kMaxAxes> z{};
   for (std::size_t a = 0; a < d; ++a) {
     if (!std::isfinite(point[a]))
-      throw InputError("RBF query has " + axis_labels_[a] + " = " + shortest(point[a]) + "; expected a finite value");
+      throw InputError("RBF query has " + axis_labels_[a] + " = " + shortest_number(point[a]) +
+                       "; expected a finite value");
     z[a] = (point[a] - midpoint_[a]) / scale_[a];
   }
   double best = std::numeric_limits<double>::infinity();
@@ -570,7 +566,7 @@ RbfGrid RbfSurface::resample(const std::vector<std::vector<double>>& breakpoints
     throw InputError("RBF resampling got breakpoints for " + std::to_string(breakpoints.size()) +
                      " axes; the surface has " + std::to_string(d));
   if (std::isnan(far_threshold) || far_threshold < 0.0)
-    throw InputError("RBF far-from-data threshold " + shortest(far_threshold) +
+    throw InputError("RBF far-from-data threshold " + shortest_number(far_threshold) +
                      "; expected a value >= 0 in scaled units (fractions of the samples' range)");
   std::size_t grid_points = 1;
   for (std::size_t a = 0; a < d; ++a) {
@@ -580,11 +576,11 @@ RbfGrid RbfSurface::resample(const std::vector<std::vector<double>>& breakpoints
     for (std::size_t b = 0; b < axis.size(); ++b) {
       if (!std::isfinite(axis[b]))
         throw InputError("RBF resampling: breakpoint " + std::to_string(b) + " on " + axis_labels_[a] + " is " +
-                         shortest(axis[b]) + "; expected finite values");
+                         shortest_number(axis[b]) + "; expected finite values");
       if (b > 0 && !(axis[b] > axis[b - 1]))
-        throw InputError("RBF resampling: breakpoints on " + axis_labels_[a] + " go from " + shortest(axis[b - 1]) +
-                         " to " + shortest(axis[b]) + " at index " + std::to_string(b) +
-                         "; expected strictly increasing values");
+        throw InputError("RBF resampling: breakpoints on " + axis_labels_[a] + " go from " +
+                         shortest_number(axis[b - 1]) + " to " + shortest_number(axis[b]) + " at index " +
+                         std::to_string(b) + "; expected strictly increasing values");
     }
     grid_points *= axis.size();
   }

@@ -9,6 +9,7 @@
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
+#include "src/core/sign_convention.hpp"
 #include "src/surface/stored_surface.hpp"
 
 namespace hydrocoef {
@@ -87,7 +88,7 @@ Samples collect(const std::vector<StoredRun>& runs, const SurfaceSpec& spec) {
     for (const auto& axis : spec.axes) samples.points.push_back(axis_value(run, axis));
     for (const auto& output : spec.outputs) {
       const StoredForce& force = *run.tau_b[*force_index(output)];
-      samples.values.push_back(force.sign == SignConvention::OpposingMotion ? -force.value.total : force.value.total);
+      samples.values.push_back(to_on_body(force.value.total, force.sign));
     }
   }
   if (samples.runs.empty())

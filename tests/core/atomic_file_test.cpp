@@ -52,6 +52,37 @@ TEST(AtomicFile, AbandonedFileLeavesTheOldOneAndNoTemporary) {
   EXPECT_EQ(entries(dir.path()), 1u);
 }
 
+TEST(TemporaryFile, AnotherWritersFileIsRenamedOnCommitAndRemovedOtherwise) {
+  test::TempDir dir;
+  write_file_atomically(dir / "out.vtr", "old");
+  {
+    // A writer (VTK, matio) that fails after creating its file.
+    TemporaryFile file(dir / "out.vtr");
+    EXPECT_EQ(file.temporary().parent_path(), dir.path());
+    EXPECT_NE(file.temporary(), dir / "out.vtr");
+    std::ofstream(file.temporary()) << "half";
+    EXPECT_EQ(entries(dir.path()), 2u);
+  }
+  EXPECT_EQ(read_all(dir / "out.vtr"), "old");
+  EXPECT_EQ(entries(dir.path()), 1u);
+  {
+    TemporaryFile file(dir / "out.vtr");
+    std::ofstream(file.temporary()) << "new";
+    file.commit();
+  }
+  EXPECT_EQ(read_all(dir / "out.vtr"), "new");
+  EXPECT_EQ(entries(dir.path()), 1u);
+  // A writer that never created its file: committing it is an InputError naming the destination.
+  TemporaryFile nothing(dir / "none.vtr");
+  try {
+    nothing.commit();
+    ADD_FAILURE() << "committing a file nobody wrote succeeded";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("none.vtr"), std::string::npos) << error.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "none.vtr"));
+}
+
 TEST(AtomicFile, ReplacesASymbolicLinkInsteadOfItsTarget) {
   test::TempDir dir;
   write_file_atomically(dir / "target.txt", "precious");

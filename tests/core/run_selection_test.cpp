@@ -10,12 +10,10 @@
 namespace hydrocoef {
 namespace {
 
+// Built in one go: GCC 12 at -O3 raises a false -Wstringop-overflow on
+// assigning "b" to a default-constructed key's body.
 RunKey key(double u, double v, std::map<std::string, double> disturbances = {}) {
-  RunKey k;
-  k.body = "b";
-  k.nu_b = {u, v, 0, 0, 0, 0};
-  k.disturbances = std::move(disturbances);
-  return k;
+  return RunKey{"b", {u, v, 0, 0, 0, 0}, std::move(disturbances)};
 }
 
 bool selects(const std::vector<std::string>& where, const RunKey& k, std::int64_t id = 1,

@@ -7,8 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
+
+#include "src/core/error.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -56,6 +60,19 @@ TEST(SphereAddedMass, HalfTheDisplacedMassInTranslationOnly) {
   for (Eigen::Index i = 0; i < 3; ++i) EXPECT_NEAR(ma(i, i), 0.5 * displaced, 1e-12);
   EXPECT_EQ(ma.bottomRightCorner(3, 3).norm(), 0.0);
   EXPECT_EQ((ma - Matrix6(ma.diagonal().asDiagonal())).norm(), 0.0);
+}
+
+TEST(SphereAddedMass, RotationalEntriesAsGivenAndBadSizesRefused) {
+  const Matrix6 ma = sphere_added_mass(1000.0, 0.1, Vector3(0.01, 0.02, 0.03));
+  EXPECT_TRUE((ma.topLeftCorner<3, 3>() == sphere_added_mass(1000.0, 0.1).topLeftCorner<3, 3>()));
+  EXPECT_EQ(ma(3, 3), 0.01);
+  EXPECT_EQ(ma(4, 4), 0.02);
+  EXPECT_EQ(ma(5, 5), 0.03);
+  EXPECT_EQ((ma - Matrix6(ma.diagonal().asDiagonal())).norm(), 0.0);
+  for (const double bad : {0.0, -0.1, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    EXPECT_THROW(sphere_added_mass(1000.0, bad), InputError) << bad;
+    EXPECT_THROW(sphere_added_mass(bad, 0.1), InputError) << bad;
+  }
 }
 
 TEST(Coriolis, SkewSymmetricAndDoesNoWorkForAnySymmetricMass) {

@@ -16,6 +16,7 @@
 #include <numbers>
 
 #include "src/core/error.hpp"
+#include "src/dynamics/rigid_body.hpp"
 #include "tests/support/expect_input_error.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -93,7 +94,7 @@ TEST(GazeboExport, UuvFileRoundTripsToTheFittedCoefficients) {
   const auto added = numbers_of(root, "added_mass");
   ASSERT_EQ(added.size(), 36u);
   const Matrix6 expected = request_with_mass().added_mass;
-  for (std::size_t k = 0; k < 36; ++k) EXPECT_EQ(added[k], expected[k]) << "entry " << k;
+  for (std::size_t k = 0; k < 36; ++k) EXPECT_EQ(added[k], expected(k / 6, k % 6)) << "entry " << k;
 
   // Provenance and conventions are in the file.
   const std::string text = test::read_text(path);
@@ -148,11 +149,11 @@ TEST(GazeboExport, GzCouplingsChangeSignFromFrdToFlu) {
   fits.push_back(make_fit("auv:N(v)", "N", "v", {{"v", -0.125}, {"v|v|", -0.5}}));
   GazeboRequest request = request_with_mass();
   request.fits = {{"Z", "auv:Z(u)"}, {"N", "auv:N(v)"}};
-  request.added_mass[6 * 0 + 4] = request.added_mass[6 * 4 + 0] = 0.3;  // X-q coupling, kg m
-  request.added_mass[6 * 1 + 5] = request.added_mass[6 * 5 + 1] = 0.2;  // Y-r coupling, kg m
+  request.added_mass(0, 4) = request.added_mass(4, 0) = 0.3;  // X-q coupling, kg m
+  request.added_mass(1, 5) = request.added_mass(5, 1) = 0.2;  // Y-r coupling, kg m
   const GazeboCoefficients coefficients = gazebo_coefficients(fits, request);
-  EXPECT_EQ(coefficients.linear_b[6 * 2 + 0], 0.75);
-  EXPECT_EQ(coefficients.linear_b[6 * 2 + 2], -4.5);  // Z's own law is still chosen by default
+  EXPECT_EQ(coefficients.linear_b(2, 0), 0.75);
+  EXPECT_EQ(coefficients.linear_b(2, 2), -4.5);  // Z's own law is still chosen by default
 
   GazeboWriteOptions options;
   options.flavor = GazeboFlavor::Gz;
@@ -198,9 +199,9 @@ TEST(GazeboExport, LinearizeAtForwardSpeedWritesTheTangentSlope) {
   GazeboRequest request = request_with_mass();
   request.linearize_at = 0.5;
   const GazeboCoefficients c = gazebo_coefficients(diagonal_fits(), request);
-  EXPECT_EQ(c.linear_b[0], -2.5 + 2.0 * -30.25 * 0.5);  // d(b u|u|)/du at U0 = 2 b |U0|
-  EXPECT_EQ(c.linear_b[6 * 5 + 5], -0.35);              // r0 = 0: the r|r| slope is 0
-  for (double q : c.quadratic_b) EXPECT_EQ(q, 0.0);
+  EXPECT_EQ(c.linear_b(0, 0), -2.5 + 2.0 * -30.25 * 0.5);  // d(b u|u|)/du at U0 = 2 b |U0|
+  EXPECT_EQ(c.linear_b(5, 5), -0.35);                      // r0 = 0: the r|r| slope is 0
+  EXPECT_TRUE((c.quadratic_b.array() == 0.0).all()) << c.quadratic_b;
   GazeboWriteOptions options;
   options.flavor = GazeboFlavor::Gz;
   const std::string text = gazebo_text(c, options);
@@ -217,8 +218,8 @@ TEST(GazeboExport, ConstantTermIsRefusedUnlessDroppedAndThenReported) {
   GazeboRequest request = request_with_mass();
   request.drop_constant = true;
   const GazeboCoefficients c = gazebo_coefficients(fits, request);
-  EXPECT_EQ(c.linear_b[35], -0.00607516);
-  EXPECT_EQ(c.quadratic_b[35], -0.0771371);
+  EXPECT_EQ(c.linear_b(5, 5), -0.00607516);
+  EXPECT_EQ(c.quadratic_b(5, 5), -0.0771371);
   ASSERT_TRUE(c.sources[5].dropped_constant.has_value());
   EXPECT_EQ(*c.sources[5].dropped_constant, 1.89812e-05);
   const std::string text = gazebo_text(c, {GazeboFlavor::Uuv});
@@ -241,15 +242,15 @@ TEST(GazeboExport, AddedMassMustBeSymmetricPositiveDefinite) {
   request.added_mass = added_mass_diagonal({5, 5, 5, 1, 1, -2});
   expect_input_error([&] { gazebo_coefficients(diagonal_fits(), request); },
                      {"not positive semi-definite", "smallest eigenvalue -2"});
-  request.added_mass = Matrix6{};
+  request.added_mass = Matrix6::Zero();
   expect_input_error([&] { gazebo_coefficients(diagonal_fits(), request); }, {"not positive semi-definite"});
   request.added_mass = added_mass_diagonal({5, 5, 5, 1, 1, 1});
-  request.added_mass[6 * 1 + 5] = 0.5;
+  request.added_mass(1, 5) = 0.5;
   expect_input_error([&] { gazebo_coefficients(diagonal_fits(), request); },
                      {"not symmetric", "(2,6) = 0.5", "(6,2) = 0"});
   // Indefinite although every diagonal entry is positive: eigenvalues 1 +- 2.
   request.added_mass = added_mass_diagonal({1, 1, 5, 1, 1, 1});
-  request.added_mass[1] = request.added_mass[6] = 2.0;
+  request.added_mass(0, 1) = request.added_mass(1, 0) = 2.0;
   try {
     check_added_mass(request.added_mass);
     ADD_FAILURE() << "an indefinite added mass was accepted";
@@ -260,17 +261,17 @@ TEST(GazeboExport, AddedMassMustBeSymmetricPositiveDefinite) {
     EXPECT_NEAR(std::strtod(message.c_str() + at + 20, nullptr), -1.0, 1e-12) << message;
   }
 
-  const Matrix6 sphere = sphere_added_mass(0.15, 998.2, std::array<double, 3>{0.01, 0.02, 0.03});
-  EXPECT_NEAR(sphere[0], 2.0 / 3.0 * std::numbers::pi * 998.2 * 0.15 * 0.15 * 0.15, 1e-12);
-  EXPECT_EQ(sphere[0], sphere[7]);
-  EXPECT_EQ(sphere[35], 0.03);
+  const Matrix6 sphere = sphere_added_mass(998.2, 0.15, Vector3(0.01, 0.02, 0.03));
+  EXPECT_NEAR(sphere(0, 0), 2.0 / 3.0 * std::numbers::pi * 998.2 * 0.15 * 0.15 * 0.15, 1e-12);
+  EXPECT_EQ(sphere(0, 0), sphere(1, 1));
+  EXPECT_EQ(sphere(5, 5), 0.03);
   EXPECT_EQ(check_added_mass(sphere), "");
   // Without rotational entries: a sphere has none; the singular Ma is accepted with a note.
-  const Matrix6 bare = sphere_added_mass(0.15, 998.2, std::nullopt);
-  EXPECT_EQ(bare[0], sphere[0]);
-  EXPECT_EQ(bare[21], 0.0);
-  EXPECT_EQ(bare[28], 0.0);
-  EXPECT_EQ(bare[35], 0.0);
+  const Matrix6 bare = sphere_added_mass(998.2, 0.15);
+  EXPECT_EQ(bare(0, 0), sphere(0, 0));
+  EXPECT_EQ(bare(3, 3), 0.0);
+  EXPECT_EQ(bare(4, 4), 0.0);
+  EXPECT_EQ(bare(5, 5), 0.0);
   const std::string note = check_added_mass(bare);
   EXPECT_NE(note.find("singular"), std::string::npos) << note;
   request = request_with_mass();
@@ -289,7 +290,7 @@ TEST(GazeboExport, MissingAndAmbiguousFitsAreRefused) {
   request.allow_missing = true;
   const GazeboCoefficients c = gazebo_coefficients(fits, request);
   EXPECT_EQ(c.missing_dofs, (std::vector<std::size_t>{1, 2}));
-  EXPECT_EQ(c.linear_b[7], 0.0);
+  EXPECT_EQ(c.linear_b(1, 1), 0.0);
   EXPECT_NE(gazebo_text(c, {GazeboFlavor::Uuv}).find("Y in v: no damping law; written as 0"), std::string::npos);
 
   fits = diagonal_fits();
@@ -298,7 +299,7 @@ TEST(GazeboExport, MissingAndAmbiguousFitsAreRefused) {
                      {"2 fits of X in u", "'auv:X'", "'auv:X-huber'", "--fit X=NAME"});
   request = request_with_mass();
   request.fits = {{"X", "auv:X-huber"}};
-  EXPECT_EQ(gazebo_coefficients(fits, request).linear_b[0], -2.0);
+  EXPECT_EQ(gazebo_coefficients(fits, request).linear_b(0, 0), -2.0);
   request.fits = {{"X", "auv:nope"}};
   expect_input_error([&] { gazebo_coefficients(fits, request); }, {"no fit named 'auv:nope'", "auv:X-huber"});
   request.fits = {{"Y", "auv:X"}};
@@ -339,14 +340,19 @@ TEST(GazeboExport, AddedMassMatrixFileIsReadRowByRow) {
     std::ofstream file(dir / "ma.txt");
     file << "# Ma of the AUV, kg / kg m / kg m^2\n";
     for (int i = 0; i < 6; ++i) {
-      for (int j = 0; j < 6; ++j) file << (i == j ? 10.0 + i : 0.0) + (i + j == 5 ? 0.25 : 0.0) << (j < 5 ? ", " : "");
+      // The anti-diagonal 0.25, and 7 at (X, v) only: rows are read as rows.
+      for (int j = 0; j < 6; ++j)
+        file << (i == j ? 10.0 + i : 0.0) + (i + j == 5 ? 0.25 : 0.0) + (i == 0 && j == 1 ? 7.0 : 0.0)
+             << (j < 5 ? ", " : "");
       file << "  # row " << i << "\n";
     }
   }
   const Matrix6 ma = read_added_mass_matrix(dir / "ma.txt");
-  EXPECT_EQ(ma[0], 10.0);
-  EXPECT_EQ(ma[5], 0.25);
-  EXPECT_EQ(ma[35], 15.0);
+  EXPECT_EQ(ma(0, 0), 10.0);
+  EXPECT_EQ(ma(0, 5), 0.25);
+  EXPECT_EQ(ma(5, 5), 15.0);
+  EXPECT_EQ(ma(0, 1), 7.0);
+  EXPECT_EQ(ma(1, 0), 0.0);
   {
     std::ofstream file(dir / "bad.txt");
     file << "1 2 3\n4 five 6\n";

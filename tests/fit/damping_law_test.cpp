@@ -1,6 +1,7 @@
 // Damping-law fitting: the ASR-V paper's published coefficients, a direct
 // least-squares cross-check with Eigen, exact recovery, robust losses, and the
-// parsers' and fitter's handling of bad input.
+// loss parser's and fitter's handling of bad input. (The term lists:
+// tests/core/damping_terms_test.cpp.)
 #include "src/fit/damping_law.hpp"
 
 #include <gtest/gtest.h>
@@ -217,65 +218,6 @@ TEST(DampingLawFit, RobustLossesIgnoreOutliersThatSquaredLossFollows) {
       EXPECT_GT(robust.std_errors[j], 0.0) << loss;
     }
   }
-}
-
-TEST(DampingLawTerms, ParsesEveryForm) {
-  const DampingLawSpec spec = parse_damping_terms("1,v,v|v|,v^2,v^3,|v|");
-  EXPECT_EQ(spec.variable, "v");
-  const std::vector<DampingTerm> expected = {DampingTerm::Constant,  DampingTerm::Linear,
-                                             DampingTerm::SignedQuadratic, DampingTerm::Quadratic,
-                                             DampingTerm::Cubic,     DampingTerm::AbsLinear};
-  EXPECT_EQ(spec.terms, expected);
-  EXPECT_EQ(format_damping_terms(spec), "1,v,v|v|,v^2,v^3,|v|");
-}
-
-TEST(DampingLawTerms, ToleratesWhitespaceAndKeepsOrder) {
-  const DampingLawSpec spec = parse_damping_terms("  r , r | r | ,\tr^3 ");
-  EXPECT_EQ(spec.variable, "r");
-  const std::vector<DampingTerm> expected = {DampingTerm::Linear, DampingTerm::SignedQuadratic, DampingTerm::Cubic};
-  EXPECT_EQ(spec.terms, expected);
-  EXPECT_EQ(format_damping_terms(spec), "r,r|r|,r^3");
-}
-
-TEST(DampingLawTerms, AcceptsEveryVelocityComponent) {
-  for (const char* name : {"u", "v", "w", "p", "q", "r"}) {
-    const std::string x(name);
-    const DampingLawSpec spec = parse_damping_terms(x + "|" + x + "|,1");
-    EXPECT_EQ(spec.variable, x);
-    EXPECT_EQ(format_damping_terms(spec), x + "|" + x + "|,1");
-  }
-}
-
-TEST(DampingLawTerms, NamesAndBasisValues) {
-  EXPECT_EQ(term_name(DampingTerm::Constant, "u"), "1");
-  EXPECT_EQ(term_name(DampingTerm::Linear, "q"), "q");
-  EXPECT_EQ(term_name(DampingTerm::SignedQuadratic, "u"), "u|u|");
-  EXPECT_EQ(term_name(DampingTerm::Quadratic, "v"), "v^2");
-  EXPECT_EQ(term_name(DampingTerm::Cubic, "r"), "r^3");
-  EXPECT_EQ(term_name(DampingTerm::AbsLinear, "w"), "|w|");
-
-  EXPECT_EQ(basis_value(DampingTerm::Constant, -3.0), 1.0);
-  EXPECT_EQ(basis_value(DampingTerm::Linear, -3.0), -3.0);
-  EXPECT_EQ(basis_value(DampingTerm::SignedQuadratic, -3.0), -9.0);
-  EXPECT_EQ(basis_value(DampingTerm::SignedQuadratic, 3.0), 9.0);
-  EXPECT_EQ(basis_value(DampingTerm::Quadratic, -3.0), 9.0);
-  EXPECT_EQ(basis_value(DampingTerm::Cubic, -3.0), -27.0);
-  EXPECT_EQ(basis_value(DampingTerm::AbsLinear, -3.0), 3.0);
-}
-
-TEST(DampingLawTerms, RejectsBadLists) {
-  expect_input_error([] { parse_damping_terms("1,u,u|u"); }, {"'u|u'", "accepted terms"});
-  expect_input_error([] { parse_damping_terms("u^4"); }, {"'u^4'", "accepted terms"});
-  expect_input_error([] { parse_damping_terms("u|r|"); }, {"'u|r|'"});
-  expect_input_error([] { parse_damping_terms("u,r|r|"); }, {"'r|r|'", "one velocity component"});
-  expect_input_error([] { parse_damping_terms("u,u|u|,u"); }, {"'u'", "twice"});
-  expect_input_error([] { parse_damping_terms(""); }, {"empty"});
-  expect_input_error([] { parse_damping_terms("   "); }, {"empty"});
-  expect_input_error([] { parse_damping_terms("1,,u"); }, {"empty", "'1,,u'"});
-  expect_input_error([] { parse_damping_terms("u,"); }, {"empty"});
-  expect_input_error([] { parse_damping_terms("x,x|x|"); }, {"'x'", "u, v, w, p, q, r"});
-  expect_input_error([] { parse_damping_terms("1,speed"); }, {"'speed'", "not a velocity component"});
-  expect_input_error([] { parse_damping_terms("1"); }, {"'1'", "no term in a velocity component"});
 }
 
 TEST(DampingLawLoss, ParsesEveryForm) {
