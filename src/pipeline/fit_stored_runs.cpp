@@ -1,13 +1,13 @@
 #include "src/pipeline/fit_stored_runs.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <map>
 #include <set>
 
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
+#include "src/core/numbers.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/fit/physical_checks.hpp"
 
@@ -16,13 +16,6 @@ namespace {
 
 std::string force_unit(std::size_t dof) { return dof < 3 ? "N" : "N m"; }
 std::string velocity_unit(std::size_t component) { return component < 3 ? "m/s" : "rad/s"; }
-
-std::string shortest(double value) {
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  (void)ec;
-  return std::string(buffer, end);
-}
 
 /// Names of the key parts (other velocity components, disturbances) that take
 /// more than one value among the runs: the law then mixes conditions.
@@ -143,7 +136,7 @@ LevelFitResult fit_stored_runs_by_level(Database& database, const LevelFitReques
     result.names.push_back(per_level_fit_name(result.base_name, request.by, level.level));
     // The level's selection: the fit's own and the level, as one selection that a refit reads back.
     const std::string selection = (result.setup.selection.empty() ? "" : result.setup.selection + " ") + request.by +
-                                  "=" + shortest(level.level);
+                                  "=" + shortest_number(level.level);
     std::vector<std::int64_t> level_runs;
     for (std::size_t i = 0; i < levels.size(); ++i)
       if (levels[i] == level.level) level_runs.push_back(samples.run_ids[i]);

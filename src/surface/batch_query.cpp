@@ -10,6 +10,9 @@
 
 #include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
+#include "src/core/parallel.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -39,11 +42,6 @@ std::string read_all(const std::string& path) {
   return data;
 }
 
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
-  return text;
-}
 
 /// Buffered output to a file or standard output; the file is written through
 /// an AtomicFile (a temporary renamed at the end), so a failed batch leaves
@@ -110,12 +108,6 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
   const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
   std::vector<double> point(n_axes), values(n_out), gradient(n_out * n_axes);
   result.text.reserve(rows.size() * (with_gradient ? 6 : 3) / 2 + 64);
-  const auto append_number = [&](double value) {
-    char digits[32];
-    const auto [end, ec] = std::to_chars(digits, digits + sizeof digits, value);
-    (void)ec;
-    result.text.append(digits, end);
-  };
   while (!rows.empty()) {
     const auto newline = rows.find('\n');
     std::string_view line = rows.substr(0, newline);
@@ -164,16 +156,16 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
     }
     for (std::size_t a = 0; a < n_axes; ++a) {
       if (a) result.text += ',';
-      append_number(point[a]);
+      append_shortest_number(result.text, point[a]);
     }
     for (std::size_t k = 0; k < n_out; ++k) {
       result.text += ',';
-      append_number(values[k]);
+      append_shortest_number(result.text, values[k]);
     }
     if (with_gradient)
       for (double g : gradient) {
         result.text += ',';
-        append_number(g);
+        append_shortest_number(result.text, g);
       }
     result.text += '\n';
     ++result.points;
@@ -255,16 +247,10 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
       slices.push_back(rest.substr(0, cut));
       rest.remove_prefix(cut);
     }
-    std::vector<std::thread> workers;
-    for (std::size_t t = 0; t < slices.size(); ++t) {
+    parallel_for(slices.size(), static_cast<unsigned>(threads), [&](std::size_t t) {
       results[t] = SliceResult{};
-      if (t + 1 == slices.size())
-        answer_slice(surface, column_axis, request.gradient, slices[t], results[t]);
-      else
-        workers.emplace_back(answer_slice, std::cref(surface), std::cref(column_axis), request.gradient, slices[t],
-                             std::ref(results[t]));
-    }
-    for (auto& worker : workers) worker.join();
+      answer_slice(surface, column_axis, request.gradient, slices[t], results[t]);
+    });
     for (std::size_t t = 0; t < slices.size(); ++t) {
       const SliceResult& result = results[t];
       if (result.error_line)

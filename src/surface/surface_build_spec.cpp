@@ -8,6 +8,7 @@
 #include <set>
 
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 #include "src/surface/breakpoints.hpp"
 #include "src/surface/grid_table.hpp"
 #include "src/surface/stored_surface.hpp"
@@ -18,17 +19,6 @@ namespace {
 using json = nlohmann::json;
 
 constexpr std::size_t kMaxResampleCount = 100000;
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto end = text.find(separator, start);
-    out.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
-    if (end == std::string::npos) return out;
-    start = end + 1;
-  }
-}
 
 std::pair<std::string, std::string> split_assignment(const std::string& text, const std::string& option) {
   const auto equals = text.find('=');
@@ -95,13 +85,13 @@ std::pair<std::string, std::vector<double>> parse_resample_entry(const std::stri
   if (spec.find(':') != std::string::npos) {
     const auto parts = split(spec, ':');
     if (parts.size() != 3) throw InputError(option + " '" + text + "': expected AXIS=FROM:TO:COUNT or AXIS=X1,X2,...");
-    const double from = finite_number(parts[0], option, text), to = finite_number(parts[1], option, text);
-    const double count = finite_number(parts[2], option, text);
+    const double from = finite_number(std::string(parts[0]), option, text), to = finite_number(std::string(parts[1]), option, text);
+    const double count = finite_number(std::string(parts[2]), option, text);
     if (!(to > from) || count < 2 || count != std::floor(count) || count > static_cast<double>(kMaxResampleCount))
       throw InputError(option + " '" + text + "': expected FROM < TO and a whole COUNT from 2 to 100000");
     out = evenly_spaced(from, to, static_cast<std::size_t>(count));
   } else {
-    for (const auto& part : split(spec, ',')) out.push_back(finite_number(part, option, text));
+    for (const auto& part : split(spec, ',')) out.push_back(finite_number(std::string(part), option, text));
   }
   return {axis, out};
 }
