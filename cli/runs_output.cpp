@@ -9,6 +9,7 @@
 
 #include "cli/common.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 
 namespace hydrocoef::cli {
@@ -52,16 +53,23 @@ void print_runs_csv(const std::vector<StoredRun>& runs) {
   out += ",sources\n";
   for (const auto& run : runs) {
     out += std::to_string(run.id) + "," + escape::csv_field(run.key.body);
-    for (const double v : run.key.nu_b) out += "," + shortest_number(v);
+    // Numbers are appended in place (GCC 12 at -O3 warned falsely on "," + a temporary string here).
+    for (const double v : run.key.nu_b) {
+      out += ',';
+      append_shortest_number(out, v);
+    }
     for (const auto& name : disturbance_names) {
-      const auto found = run.key.disturbances.find(name);
-      out += "," + (found == run.key.disturbances.end() ? std::string() : shortest_number(found->second));
+      out += ',';
+      if (const auto found = run.key.disturbances.find(name); found != run.key.disturbances.end())
+        append_shortest_number(out, found->second);
     }
     std::set<std::string> sources;
     for (const auto& force : run.tau_b) {
+      out += ',';
+      if (!force) continue;
       // Forces on the body: a damping magnitude as tabulated is negated.
-      out += "," + (force ? shortest_number(to_on_body(force->value.total, force->sign)) : std::string());
-      if (force) sources.insert(force->source_path);
+      append_shortest_number(out, to_on_body(force->value.total, force->sign));
+      sources.insert(force->source_path);
     }
     std::string list;
     for (const auto& source : sources) list += (list.empty() ? "" : ";") + source;
