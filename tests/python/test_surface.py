@@ -130,3 +130,26 @@ def test_one_axis_surface_extrapolates_as_built(db):
     r = np.array([0.0, 0.15, 0.5])
     assert np.all(np.isfinite(s(r=r)["N"]))
     assert s(r=0.0)["N"] == -0.00006  # the run at rest, a node
+
+
+def test_float64_columns_are_read_in_place(db):
+    """numpy reports its allocations to tracemalloc: the call allocates its
+    outputs and nothing for float64 inputs, contiguous or strided; other dtypes
+    are converted into new arrays."""
+    import tracemalloc
+    s = db.surface("grid-linear")
+    n = 500_000
+    uv = np.column_stack([np.full(n, 0.1), np.full(n, 0.05)])  # each column has a stride of 2 doubles
+    outputs = 2 * 8 * n
+
+    def peak(u, v):
+        tracemalloc.start()
+        try:
+            s(u=u, v=v)
+            return tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
+
+    assert peak(uv[:, 0], uv[:, 1]) < outputs + 100_000
+    assert peak(np.ascontiguousarray(uv[:, 0]), 0.05) < outputs + 100_000
+    assert peak(uv[:, 0].astype(np.float32), uv[:, 1]) > outputs + 8 * n * 0.9
