@@ -7,7 +7,10 @@
 // read where they are, without a copy; results go to strided columns the
 // caller owns. The points are cut into chunks that the threads take in turn;
 // no allocation is made per point (each thread has its own small point and
-// result buffers).
+// result buffers). A gridded table's points inside every axis's range take a
+// fast path, GridTable's own computation compiled for the table's axis count,
+// which gives GridTable::evaluate's numbers bit for bit; other points and
+// surfaces go through CoefficientSurface::evaluate.
 //
 // Units as CoefficientSurface: coordinates in axis units, values in output
 // units, gradients in output unit per axis unit.
