@@ -200,6 +200,33 @@ struct SurfaceInfo {
   std::string created_at;     ///< UTC, ISO 8601
 };
 
+/// A surface to build from stored runs: the options of `hydrocoef surface
+/// build`. Axes: velocity components (u..r) or disturbance names; outputs:
+/// force components X..N (forces on the body, N or N m).
+struct SurfaceBuildOptions {
+  std::string name;
+  std::string body;
+  std::vector<std::string> axes;
+  std::vector<std::string> outputs;
+  /// nearest, linear, pchip, makima, natural-spline (runs on a grid), or rbf (scattered runs).
+  std::string method = "linear";
+  /// Out-of-range policy: one for every axis, or "AXIS=POLICY" entries
+  /// (grid: error, clamp, linear, method; rbf: error, clamp, extrapolate). Empty: error.
+  std::vector<std::string> extrapolate;
+  std::vector<std::string> where;          ///< selection clauses, as for runs()
+  std::vector<std::int64_t> exclude_runs;  ///< run ids left out
+  std::vector<std::string> mirror;         ///< planes of symmetry: each run also stands for its image
+  std::vector<std::string> mirror_odd;     ///< disturbances that change sign in the mirror
+  std::string rbf_kernel = "cubic";        ///< rbf: cubic, thin-plate, linear
+  int rbf_degree = 1;                      ///< rbf: polynomial degree 0, 1, 2
+  double rbf_smoothing = 0.0;              ///< rbf: 0 interpolates
+  /// rbf: tabulate on these breakpoints (one list per axis, in axes order); empty: no grid.
+  std::vector<std::vector<double>> resample;
+  std::string resample_method = "linear";  ///< interpolation of the resampled grid
+  double far_threshold = 0.25;             ///< resampled grids: report points farther than this from every run
+  bool replace = false;                    ///< replace a stored surface of that name (else refused)
+};
+
 class Database {
  public:
   /// Opens (or with OpenMode::Create, makes) a run database. InputError when
@@ -239,6 +266,15 @@ class Database {
 
   /// The stored surfaces (of one body, or all when body is ""), by name.
   std::vector<SurfaceInfo> surfaces(const std::string& body = "") const;
+  /// Builds a surface from the selected runs and stores it with its build
+  /// specification, as `hydrocoef surface build` does. InputError when no run
+  /// is selected, the runs cannot make it, an option is bad, or the name is
+  /// taken (without replace).
+  SurfaceInfo build_surface(const SurfaceBuildOptions& options);
+  /// Builds stored surfaces again from the current runs with the
+  /// specification each was built with: the one named, else every surface
+  /// (only the stale ones when stale_only), as `hydrocoef surface rebuild`.
+  std::vector<SurfaceInfo> rebuild_surfaces(const std::string& name = "", bool stale_only = false);
   /// One stored surface, read whole: it stays valid after close(). InputError
   /// listing the stored names when there is none of that name.
   Surface surface(const std::string& name) const;

@@ -609,6 +609,64 @@ replace: replace a stored fit of that name; store=False: fit only. Returns a Fit
            "body"_a = py::none(), "The stored fits (of one body), by name: a list of Fit.")
       .def("surfaces", [](const Database& d, const py::object& body) { return d.surfaces(body.is_none() ? "" : body.cast<std::string>()); },
            "body"_a = py::none(), "The stored surfaces (of one body), by name: a list of SurfaceInfo.")
+      .def(
+          "build_surface",
+          [](Database& d, const std::string& name, const std::string& body, const py::object& axes,
+             const py::object& outputs, const std::string& method, const py::object& extrapolate,
+             const py::object& where, const py::object& exclude_runs, const py::object& mirror,
+             const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
+             const py::object& resample, const std::string& resample_method, double far_threshold, bool replace) {
+            hydrocoef::SurfaceBuildOptions options;
+            options.name = name;
+            options.body = body;
+            options.axes = texts(axes, "axes");
+            options.outputs = texts(outputs, "outputs");
+            options.method = method;
+            options.extrapolate = texts(extrapolate, "extrapolate");
+            options.where = texts(where, "where");
+            options.exclude_runs = run_ids(exclude_runs, "exclude_runs");
+            options.mirror = texts(mirror, "mirror");
+            options.mirror_odd = texts(mirror_odd, "mirror_odd");
+            options.rbf_kernel = rbf_kernel;
+            options.rbf_degree = rbf_degree;
+            options.rbf_smoothing = rbf_smoothing;
+            if (!resample.is_none()) {
+              try {
+                options.resample = resample.cast<std::vector<std::vector<double>>>();
+              } catch (const py::cast_error&) {
+                throw py::type_error("resample: expected one list of numbers per axis");
+              }
+            }
+            options.resample_method = resample_method;
+            options.far_threshold = far_threshold;
+            options.replace = replace;
+            py::gil_scoped_release release;
+            return d.build_surface(options);
+          },
+          "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear",
+          "extrapolate"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(),
+          "mirror"_a = py::none(), "mirror_odd"_a = py::none(), "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1,
+          "rbf_smoothing"_a = 0.0, "resample"_a = py::none(), "resample_method"_a = "linear",
+          "far_threshold"_a = 0.25, "replace"_a = false,
+          R"doc(Builds a surface from the selected runs and stores it, as `hydrocoef surface build`.
+
+axes: velocity components (u..r) or disturbance names; outputs: X..N (forces on the body).
+method: nearest, linear, pchip, makima, natural-spline (runs on a grid) or rbf (scattered runs).
+extrapolate: one policy for every axis or "AXIS=POLICY" entries (error, clamp, linear, method;
+rbf: error, clamp, extrapolate). where / exclude_runs / mirror / mirror_odd: as for fit().
+rbf_kernel, rbf_degree, rbf_smoothing, resample (one list of breakpoints per axis),
+resample_method, far_threshold: the RBF options. replace: replace a stored surface of that name.
+Returns a SurfaceInfo; the surface keeps its build specification for rebuild_surfaces().)doc")
+      .def(
+          "rebuild_surfaces",
+          [](Database& d, const py::object& name, bool stale_only) {
+            const std::string which = name.is_none() ? "" : name.cast<std::string>();
+            py::gil_scoped_release release;
+            return d.rebuild_surfaces(which, stale_only);
+          },
+          "name"_a = py::none(), py::kw_only(), "stale_only"_a = false,
+          "Builds stored surfaces again from the current runs with the options each was built with: the one named, "
+          "else every one (only stale ones with stale_only=True). Returns a list of SurfaceInfo.")
       .def("surface", &Database::surface, "name"_a,
            "One stored surface, read whole (it stays valid after close()). InputError listing the names when absent.")
       .def("__repr__", [](const Database& d) {

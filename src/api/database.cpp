@@ -147,14 +147,56 @@ std::vector<FitSummary> Database::fits(const std::string& body) const {
   return out;
 }
 
+namespace {
+
+SurfaceInfo surface_info(const SurfaceRecord& record, const CoefficientSurface& surface) {
+  return {record.name,         record.body,  record.kind,           surface.method_name(), surface.axis_names(),
+          surface.output_names(), record.stale, record.run_ids.size(), record.created_at};
+}
+
+}  // namespace
+
 std::vector<SurfaceInfo> Database::surfaces(const std::string& body) const {
   const std::lock_guard lock(impl_->mutex);
   std::vector<SurfaceInfo> out;
-  for (const SurfaceRecord& record : impl_->open_store().surfaces(optional_body(body))) {
-    // Read as `surface list` reads it: the definition checked against the data.
-    const CoefficientSurface surface = surface_from_record(record);
-    out.push_back({record.name, record.body, record.kind, surface.method_name(), surface.axis_names(),
-                   surface.output_names(), record.stale, record.run_ids.size(), record.created_at});
+  // Read as `surface list` reads it: the definition checked against the data.
+  for (const SurfaceRecord& record : impl_->open_store().surfaces(optional_body(body)))
+    out.push_back(surface_info(record, surface_from_record(record)));
+  return out;
+}
+
+SurfaceInfo Database::build_surface(const SurfaceBuildOptions& options) {
+  SurfaceBuildSpec spec;
+  spec.surface.axes = options.axes;
+  spec.surface.outputs = options.outputs;
+  spec.surface.method = options.method;
+  spec.surface.out_of_range = out_of_range_policies(options.axes, options.extrapolate, "extrapolate");
+  spec.surface.rbf.kernel = parse_rbf_kernel(options.rbf_kernel);
+  spec.surface.rbf.polynomial_degree = options.rbf_degree;
+  spec.surface.rbf.smoothing = options.rbf_smoothing;
+  if (!options.resample.empty()) spec.surface.resample = options.resample;
+  spec.surface.resample_method = options.resample_method;
+  spec.surface.far_threshold = options.far_threshold;
+  spec.where = options.where;
+  spec.exclude_runs = options.exclude_runs;
+  spec.mirror_planes = options.mirror;
+  spec.mirror_odd = options.mirror_odd;
+  const std::lock_guard lock(impl_->mutex);
+  const SurfaceBuildResult result =
+      build_and_store_surface(impl_->writable_store("a surface build"), options.name, options.body, spec,
+                              options.replace ? api_internal::StoreDatabase::NameTaken::Replace
+                                              : api_internal::StoreDatabase::NameTaken::Refuse);
+  return surface_info(result.stored.record, result.stored.surface);
+}
+
+std::vector<SurfaceInfo> Database::rebuild_surfaces(const std::string& name, bool stale_only) {
+  const std::lock_guard lock(impl_->mutex);
+  auto& store = impl_->writable_store("a surface rebuild");
+  std::vector<SurfaceInfo> out;
+  for (const SurfaceRecord& record :
+       surfaces_to_rebuild(store, name.empty() ? std::nullopt : std::optional(name), std::nullopt, stale_only)) {
+    const SurfaceBuildResult result = rebuild_surface(store, record);
+    out.push_back(surface_info(result.stored.record, result.stored.surface));
   }
   return out;
 }

@@ -1,6 +1,7 @@
 // Database::import_files (include/hydrocoef/database.hpp): `hydrocoef import`
 // without its printing. The library plans and reads the inputs
-// (src/pipeline/import_files.hpp); the store writes them in one transaction.
+// and stores them in one transaction (src/pipeline/import_files.hpp: read_import,
+// store_import), as the CLI does.
 #include "src/api/internal.hpp"
 
 #include <nlohmann/json.hpp>
@@ -55,20 +56,18 @@ ImportSummary Database::import_files(const std::vector<std::string>& paths, cons
   request.plan.prefer_surfaces = options.prefer_surfaces;
 
   // Everything is read before the database is touched: a bad input leaves it as it was.
-  const ImportPlan plan = plan_request(request);
-  const std::vector<ImportedInput> inputs = read_inputs(plan, request);
-  std::vector<ImportBatch> batches;
-  batches.reserve(inputs.size());
-  for (const auto& input : inputs) batches.push_back(input.batch);
+  ImportResult result = read_import(request);
   api_internal::StoreImportOptions store_options;
   store_options.components = options.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
   store_options.replace = options.replace;
   store_options.also = options.also;
-  std::vector<ImportOutcome> outcomes;
   {
     const std::lock_guard lock(impl_->mutex);
-    outcomes = impl_->writable_store("an import").import(batches, store_options);
+    store_import(impl_->writable_store("an import"), result, store_options);
   }
+  const auto& plan = result.plan;
+  const auto& inputs = result.inputs;
+  const auto& outcomes = result.outcomes;
 
   ImportSummary summary;
   summary.notes = plan.notes;
@@ -77,10 +76,10 @@ ImportSummary Database::import_files(const std::vector<std::string>& paths, cons
     const ImportOutcome& o = outcomes[i];
     summary.files.push_back({o.path, inputs[i].format, inputs[i].batch.runs.size(), o.runs_created, o.runs_extended,
                              o.already_imported, o.replaced, inputs[i].notes});
-    summary.runs_created += o.runs_created;
-    summary.runs_extended += o.runs_extended;
-    summary.already_imported += o.already_imported ? 1 : 0;
   }
+  summary.runs_created = result.runs_created;
+  summary.runs_extended = result.runs_extended;
+  summary.already_imported = result.already_imported;
   return summary;
 }
 

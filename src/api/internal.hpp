@@ -25,6 +25,8 @@
 #include "src/fit/fit_names.hpp"
 #include "src/fit/physical_checks.hpp"
 #include "src/pipeline/fit_runs.hpp"
+#include "src/pipeline/fit_stored_runs.hpp"
+#include "src/pipeline/surface_build.hpp"
 #include "src/pipeline/import_files.hpp"
 #include "src/pipeline/run_settings.hpp"
 #include "src/pipeline/sweep_keys.hpp"

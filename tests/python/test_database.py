@@ -98,3 +98,30 @@ def test_fit_is_the_cli_fit(db_path, tmp_path):
         dry = db.fit(body="asr-v", output="X", terms="u,u|u|", where=["u<=0.2"], store=False)
         assert dry.id == 0 and dry.where == "u<=0.2" and len(db.fits()) == 1
         assert "Fit" in repr(dry)
+
+
+def test_build_and_rebuild_surface_are_the_cli_ones(tmp_path):
+    path = tmp_path / "s.db"
+    with hydrocoef.Database(path) as db:
+        db.import_files([ASR_V / "asr-v-surge-damping.csv"], body="asr-v", settings={"sign": "opposing"})
+        info = db.build_surface("surge", body="asr-v", axes="u", outputs="X", method="pchip",
+                                extrapolate="linear", where=["u<=0.5"])
+        assert info.name == "surge" and info.method == "pchip" and not info.stale and info.run_count > 5
+        with pytest.raises(hydrocoef.InputError, match="give --replace"):
+            db.build_surface("surge", body="asr-v", axes="u", outputs="X")
+        s = db.surface("surge")
+        u = np.array([0.05, 0.25])
+        mine = s(u=u)["X"]
+    # The CLI answers the same at the same points, and lists what it was built from.
+    for k, value in enumerate(u):
+        assert cli_json(path, "query", "surge", f"u={value!r}")["values"]["X"] == mine[k]
+    listed = run_cli(path, "surface", "list")[1]
+    assert "u<=0.5" in listed
+    # A run changes: the surface is stale, the rebuild from its stored specification has the new value.
+    (tmp_path / "one.csv").write_text("u [m s^-1],X [N]\n0.04,1.5\n")
+    with hydrocoef.Database(path) as db:
+        db.import_files([tmp_path / "one.csv"], body="asr-v", settings={"sign": "opposing"}, replace=True)
+        assert db.surfaces()[0].stale
+        rebuilt = db.rebuild_surfaces(stale_only=True)
+        assert [r.name for r in rebuilt] == ["surge"] and not rebuilt[0].stale
+        assert db.surface("surge")(u=np.array([0.04]))["X"][0] == -1.5
