@@ -18,8 +18,7 @@
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
 #include "src/dynamics/simulation.hpp"
-#include "src/store/database.hpp"
-#include "src/surface/stored_surface.hpp"
+#include "src/dynamics/surface_source.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -27,15 +26,6 @@ namespace {
 constexpr std::array<const char*, 6> kVelocityUnits{"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
 constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
 constexpr const char* kSignNote = "forces on the body in body axes about CO (SNAME: damping is negative)";
-
-/// Surfaces come from the run database, opened on first use only.
-SurfaceResolver database_resolver(const GlobalOptions& global) {
-  auto database = std::make_shared<std::unique_ptr<Database>>();
-  return [database, &global](const std::string& name) {
-    if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::ReadOnly);
-    return load_surface(**database, name).surface;
-  };
-}
 
 nlohmann::json velocity_json(const Vector6& nu) {
   nlohmann::json out = nlohmann::json::object();
@@ -91,7 +81,7 @@ std::string integrator_text(const IntegratorSettings& s) {
 }
 
 void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
-  const VehicleModel model(load_vehicle(args.vehicle), database_resolver(global));
+  const VehicleModel model(load_vehicle(args.vehicle), database_surface_resolver(global.database));
   const Scenario scenario = load_scenario(args.scenario);
   std::optional<MeasuredTrajectory> measured;
   if (args.experiment) measured = read_measured_trajectory(*args.experiment);
@@ -205,7 +195,7 @@ struct EquilibriumArgs {
 };
 
 void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
-  const VehicleModel model(load_vehicle(args.vehicle), database_resolver(global));
+  const VehicleModel model(load_vehicle(args.vehicle), database_surface_resolver(global.database));
   EquilibriumInputs in;
   for (const auto& text : args.tau) {
     const auto [name, value] = parse_assignment(text, "--tau");

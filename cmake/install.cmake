@@ -1,12 +1,14 @@
 # What `cmake --install` puts under the prefix (included from CMakeLists.txt):
 #   bin/hydrocoef                           the CLI (linked with the static library)
 #   LIBDIR/libhydrocoef.so.0 (.so, .a)      the library, shared and static
-#   include/hydrocoef/*.hpp                 the public headers (include/hydrocoef/ of the source tree, and
-#                                           nothing else: src/ and importers/ are internal)
+#   include/hydrocoef/*.hpp                 the public headers (include/hydrocoef/ of the source tree and the
+#                                           generated version.hpp, nothing else: src/ and importers/ are internal)
 #   LIBDIR/cmake/hydrocoef/                 the CMake package: find_package(hydrocoef 0.1 CONFIG REQUIRED)
 #   LIBDIR/pkgconfig/hydrocoef.pc           pkg-config --cflags --libs hydrocoef (the shared library)
 #   share/hydrocoef/schema/*.sql            the database schema migrations (also compiled into the library)
 #   share/doc/hydrocoef/                    README.md, the data's PROVENANCE.md
+#   lib/python3/dist-packages/hydrocoef/    the Python module, when it is built (python/CMakeLists.txt installs
+#                                           it into HYDROCOEF_PYTHON_INSTALL_DIR)
 # LIBDIR is lib/<multiarch triplet> (lib/x86_64-linux-gnu), Debian's layout, whatever the prefix.
 #
 # Exported targets (cmake/hydrocoefConfig.cmake.in):
@@ -23,8 +25,8 @@ include(CMakePackageConfigHelpers)
 
 set(HYDROCOEF_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/hydrocoef" CACHE PATH
     "Where the CMake package files go (relative to the prefix)")
-# The Python module (python/) installs itself here, relative to the prefix: Debian's directory for
-# modules that work with every python3 version.
+# The Python module's directory, relative to the prefix: Debian's directory for modules of every python3
+# version. python/CMakeLists.txt, read before this file, sets the same default.
 set(HYDROCOEF_PYTHON_INSTALL_DIR "lib/python3/dist-packages" CACHE PATH
     "Where the Python module goes (relative to the prefix)")
 
@@ -34,10 +36,10 @@ install(TARGETS hydrocoef_shared EXPORT hydrocoefTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS hydrocoef EXPORT hydrocoefStaticTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS hydrocoef_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-if(IS_DIRECTORY ${PROJECT_SOURCE_DIR}/include/hydrocoef)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/hydrocoef DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-          FILES_MATCHING PATTERN "*.hpp")
-endif()
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/hydrocoef DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.hpp")
+install(FILES ${PROJECT_BINARY_DIR}/generated/include/hydrocoef/version.hpp
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hydrocoef)
 install(FILES ${HYDROCOEF_MIGRATIONS} DESTINATION ${CMAKE_INSTALL_DATADIR}/hydrocoef/schema)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/data/PROVENANCE.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
