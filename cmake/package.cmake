@@ -10,4 +10,8 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
+# The Python module (python/), when built, is in the package too; it needs numpy (which brings python3).
+if(TARGET hydrocoef_python)
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS python3-numpy)
+endif()
 include(CPack)

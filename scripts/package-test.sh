@@ -7,8 +7,10 @@
 #   3. tests/package/consumer, configured with find_package(hydrocoef 0.1 CONFIG REQUIRED) against the prefix,
 #      built against the shared and the static library, opens that database and gets the CLI's number;
 #   4. the same program compiled alone with `pkg-config --cflags --libs hydrocoef`, run with LD_LIBRARY_PATH;
+#      the installed Python module (when built) gets the same number;
 #   5. cpack -G DEB; apt-get install ./hydrocoef_*.deb; /usr/bin/hydrocoef makes and queries a database,
-#      the consumer built against /usr with pkg-config gets the same number; apt-get remove hydrocoef.
+#      the consumer built against /usr with pkg-config and /usr/bin/python3 get the same number;
+#      apt-get remove hydrocoef.
 # Step 5 installs a package system-wide (root or sudo; it is removed again); HYDROCOEF_PACKAGE_TEST_NO_DEB=1
 # skips it. Each check prints one line; the first failure exits 1 saying what was wrong.
 #   scripts/package-test.sh [BUILD_DIR]
@@ -27,7 +29,7 @@ work=$(mktemp -d /tmp/hydrocoef-package-test.XXXXXX)
 chmod 755 "$work" # apt-get reads the .deb as the _apt user
 installed_deb=false
 cleanup() {
-  if $installed_deb; then "${sudo_cmd[@]}" apt-get remove -y -qq hydrocoef >/dev/null 2>&1 || true; fi
+  if $installed_deb; then "${sudo_cmd[@]}" apt-get remove -y -qq -o DPkg::Lock::Timeout=300 hydrocoef >/dev/null 2>&1 || true; fi
   rm -rf "$work"
 }
 sudo_cmd=()
@@ -68,7 +70,7 @@ for header in "$prefix"/include/hydrocoef/*.hpp; do
     fail "the public header $(basename "$header") includes an internal header"
   fi
 done
-say "ok: cmake --install $(find "$prefix" -type f | wc -l) files under the prefix: CLI, libhydrocoef.so.$version and .a, $(ls "$prefix"/include/hydrocoef | wc -l) public headers, CMake package, pkg-config, schema, docs"
+say "ok: cmake --install $(find "$prefix" -type f | wc -l) files under the prefix: CLI, libhydrocoef.so.$version and .a, $(find "$prefix/include/hydrocoef" -name "*.hpp" | wc -l) public headers, CMake package, pkg-config, schema, docs"
 
 # --- 2. the installed CLI makes the database the consumers read --------------------------------------
 # query_value CLI DB SURFACE AXIS=VALUE OUTPUT: the output's value from `hydrocoef query --json`.
@@ -101,6 +103,17 @@ run_consumer() { # WHAT EXECUTABLE [ENV...]
     fail "$what: the consumer's checks (above)"
   }
   grep -q "consumer: ok X" "$work/consumer.log" || fail "$what: the consumer did not compare X: $(cat "$work/consumer.log")"
+}
+# The Python module, when the build made it: the same value through hydrocoef.Database(...).surface(...).
+python_check() { # WHAT [ENV...]
+  local what=$1
+  shift
+  env "$@" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c '
+import sys, hydrocoef
+x = float(hydrocoef.Database(sys.argv[1], mode="r").surface("surge")(u=0.25)["X"])
+expected = float(sys.argv[2])
+assert abs(x - expected) <= 1e-12 * max(1.0, abs(expected)), f"X(0.25) = {x!r}, the CLI query {expected!r}"
+print(hydrocoef.__file__)' "$db" "$x" >"$work/python.log" 2>&1 || fail "$what: the Python module: $(cat "$work/python.log")"
 }
 consumer_build="$work/consumer-build"
 cmake -S "$root/tests/package/consumer" -B "$consumer_build" -DCMAKE_PREFIX_PATH="$prefix" \
@@ -138,7 +151,7 @@ cmake -S "$work/wrong-version" -B "$work/wrong-version/build" -DCMAKE_PREFIX_PAT
 }
 
 # --- 4. pkg-config -----------------------------------------------------------------------------------
-pc_flags=$(PKG_CONFIG_PATH="$prefix/$multiarch/pkgconfig" pkg-config --cflags --libs hydrocoef) ||
+pc_flags=$(PKG_CONFIG_PATH="$prefix/$multiarch/pkgconfig" pkg-config --cflags --libs hydrocoef | xargs) ||
   fail "pkg-config --cflags --libs hydrocoef with PKG_CONFIG_PATH=$prefix/$multiarch/pkgconfig"
 [[ $pc_flags == *"-I$prefix/include"* && $pc_flags == *"-L$prefix/$multiarch"* && $pc_flags == *-lhydrocoef* ]] ||
   fail "pkg-config --cflags --libs hydrocoef gave '$pc_flags', not the prefix's include and library directories"
@@ -147,6 +160,15 @@ c++ -std=c++20 -O1 -o "$work/consumer_pc" "$root/tests/package/consumer/main.cpp
   fail "compiling the consumer with pkg-config --cflags --libs hydrocoef ($pc_flags)"
 run_consumer "pkg-config" "$work/consumer_pc" "LD_LIBRARY_PATH=$prefix/$multiarch"
 say "ok: pkg-config --cflags --libs hydrocoef ($pc_flags): the one-file consumer got X(0.25) = $x N"
+python_dir="$prefix/lib/python3/dist-packages"
+if [[ -d $python_dir/hydrocoef ]]; then
+  python_check "cmake --install" "PYTHONPATH=$python_dir"
+  grep -q "^$python_dir/hydrocoef/" "$work/python.log" || fail "python3 imported hydrocoef from elsewhere: $(cat "$work/python.log")"
+  say "ok: the installed Python module ($python_dir/hydrocoef) got X(0.25) = $x N"
+else
+  python_dir=
+  say "NOT RUN: the Python module (not built in $build: pybind11-dev, python3-dev, python3-numpy)"
+fi
 
 # --- 5. the Debian package ---------------------------------------------------------------------------
 if [[ ${HYDROCOEF_PACKAGE_TEST_NO_DEB:-} == 1 ]]; then
@@ -162,7 +184,7 @@ arch=$(dpkg --print-architecture)
 deb="$build/hydrocoef_${version}_$arch.deb"
 [[ -f $deb ]] || fail "cpack -G DEB did not make $deb: $(ls "$build"/*.deb 2>/dev/null)"
 depends=$(dpkg-deb --field "$deb" Depends)
-[[ $depends == *libvtk9* && $depends == *libceres* && $depends == *libc6* ]] ||
+[[ $depends == *libvtk9* && $depends == *libsqlite3-0* && $depends == *libstdc++6* ]] ||
   fail "$(basename "$deb") does not depend on the runtime libraries (dpkg-shlibdeps): Depends: $depends"
 if grep -q -- '-dev\b' <<<"$depends"; then fail "$(basename "$deb") depends on development packages: $depends"; fi
 say "ok: cpack -G DEB made $(basename "$deb") ($(du -k "$deb" | cut -f1) kB), Depends: $depends"
@@ -172,7 +194,7 @@ if dpkg-query -W -f='${Status}' hydrocoef 2>/dev/null | grep -q 'install ok inst
 fi
 cp "$deb" "$work/"
 installed_deb=true
-DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=300 \
   "$work/$(basename "$deb")" >"$work/apt.log" 2>&1 || {
   cat "$work/apt.log" >&2
   fail "apt-get install ./$(basename "$deb")"
@@ -187,13 +209,18 @@ done
 [[ $(/usr/bin/hydrocoef --version) == *"$version"* ]] || fail "/usr/bin/hydrocoef --version: $(/usr/bin/hydrocoef --version)"
 make_database /usr/bin/hydrocoef "$db"
 x=$(query_value /usr/bin/hydrocoef "$db" surge u=0.25 X)
-pc_flags=$(pkg-config --cflags --libs hydrocoef) || fail "pkg-config --cflags --libs hydrocoef after installing the package"
+pc_flags=$(pkg-config --cflags --libs hydrocoef | xargs) || fail "pkg-config --cflags --libs hydrocoef after installing the package"
 # shellcheck disable=SC2086 # pc_flags is a list of flags
 c++ -std=c++20 -O1 -o "$work/consumer_deb" "$root/tests/package/consumer/main.cpp" $pc_flags ||
   fail "compiling the consumer against the installed package ($pc_flags)"
 run_consumer "the Debian package" "$work/consumer_deb"
-say "ok: apt-get install ./$(basename "$deb"): /usr/bin/hydrocoef --version, import, surface build and query; the consumer built with pkg-config ($pc_flags) got X(0.25) = $x N"
-"${sudo_cmd[@]}" apt-get remove -y -qq hydrocoef >/dev/null 2>&1 || fail "apt-get remove hydrocoef"
+if [[ -n $python_dir ]]; then
+  python_check "the Debian package" "PYTHONPATH="
+  grep -q "^/usr/lib/python3/dist-packages/hydrocoef/" "$work/python.log" ||
+    fail "python3 did not import hydrocoef from the package: $(cat "$work/python.log")"
+fi
+say "ok: apt-get install ./$(basename "$deb"): /usr/bin/hydrocoef --version, import, surface build and query; the consumer built with pkg-config ($pc_flags)${python_dir:+ and the Python module} got X(0.25) = $x N"
+"${sudo_cmd[@]}" apt-get remove -y -qq -o DPkg::Lock::Timeout=300 hydrocoef >/dev/null 2>&1 || fail "apt-get remove hydrocoef"
 installed_deb=false
 [[ ! -e /usr/bin/hydrocoef ]] || fail "/usr/bin/hydrocoef is still there after apt-get remove hydrocoef"
 say "ok: apt-get remove hydrocoef left no /usr/bin/hydrocoef"
