@@ -86,7 +86,7 @@ void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
   std::optional<MeasuredTrajectory> measured;
   if (args.experiment) measured = read_measured_trajectory(*args.experiment);
   if (!(args.steady_fraction > 0.0 && args.steady_fraction <= 1.0))
-    throw InputError("--steady-fraction " + number(args.steady_fraction) + ": expected a number in (0, 1]");
+    throw InputError("--steady-fraction " + shortest_number(args.steady_fraction) + ": expected a number in (0, 1]");
 
   // A progress line on a terminal, at most five times a second.
   const bool tty = isatty(STDERR_FILENO) != 0;
