@@ -51,6 +51,28 @@ py::array to_numpy_strings(const std::vector<std::string>& texts) {
   return py::module_::import("numpy").attr("array")(list, "dtype"_a = "object");
 }
 
+/// The Database of a method's self. pybind11 would run a method on an
+/// instance whose C++ object was never made (Database.__new__(Database)
+/// without __init__) on uninitialised memory; this refuses it instead.
+Database& database_of(py::handle self) {
+  auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
+  auto holder = instance->get_value_and_holder(py::detail::get_type_info(typeid(Database)), false);
+  if (!holder || !holder.holder_constructed())
+    throw py::type_error("this hydrocoef.Database was made by __new__ without __init__; open one with "
+                         "hydrocoef.Database(path)");
+  return *holder.value_ptr<Database>();
+}
+
+/// Classes whose objects only the module makes (Surface, Fit, ...): __new__
+/// refuses, so that no object exists without its C++ part (pybind11 would run
+/// methods on uninitialised memory).
+void made_by_the_module_only(py::handle cls, const char* how) {
+  const std::string message = std::string(how);
+  cls.attr("__new__") = py::cpp_function(
+      [message](const py::args&, const py::kwargs&) -> py::object { throw py::type_error(message); },
+      py::name("__new__"));
+}
+
 std::string fspath(const py::handle& path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
 
 /// A list of run ids (None: empty).
@@ -304,7 +326,11 @@ std::string repr_fit(const hydrocoef::FitSummary& fit) {
   std::ostringstream out;
   out.precision(6);
   out << "<hydrocoef.Fit " << fit.name << ": " << fit.output << "(" << fit.variable << ") =";
-  for (const auto& c : fit.coefficients) out << " " << (c.value < 0 ? "- " : "+ ") << std::abs(c.value) << " " << c.term;
+  for (std::size_t k = 0; k < fit.coefficients.size(); ++k) {
+    const auto& c = fit.coefficients[k];
+    out << " " << (c.value < 0 ? "-" : k ? "+" : "") << (c.value < 0 || k ? " " : "") << std::abs(c.value)
+        << (c.term == "1" ? "" : " " + c.term);
+  }
   out << ", n=" << fit.n << ", rmse=" << fit.rmse << " " << (std::string("XYZ").find(fit.output) != std::string::npos ? "N" : "N m") << ">";
   return out.str();
 }
@@ -502,15 +528,20 @@ after that raises InputError "PATH: database is closed".)doc")
              return Database::open(fspath(path), parse_mode(mode));
            }),
            "path"_a, "mode"_a = "create")
-      .def_property_readonly("path", &Database::path)
-      .def_property_readonly("closed", [](const Database& d) { return !d.is_open(); })
-      .def_property_readonly("read_only", &Database::read_only)
-      .def("close", &Database::close, "Closes the file; surfaces already read stay valid.")
-      .def("__enter__", [](py::object self) { return self; })
-      .def("__exit__", [](Database& d, const py::args&) { d.close(); })
+      .def_property_readonly("path", [](py::handle self) { return database_of(self).path(); })
+      .def_property_readonly("closed", [](py::handle self) { return !database_of(self).is_open(); })
+      .def_property_readonly("read_only", [](py::handle self) { return database_of(self).read_only(); })
+      .def("close", [](py::handle self) { database_of(self).close(); },
+           "Closes the file; surfaces already read stay valid.")
+      .def("__enter__", [](py::object self) {
+        database_of(self);
+        return self;
+      })
+      .def("__exit__", [](py::handle self, const py::args&) { database_of(self).close(); })
       .def(
           "runs",
-          [](const Database& d, const py::object& where, const py::object& body, const py::object& exclude_runs) {
+          [](py::handle self, const py::object& where, const py::object& body, const py::object& exclude_runs) {
+            const Database& d = database_of(self);
             return runs_dict(d.runs(texts(where, "where"), body.is_none() ? "" : body.cast<std::string>(),
                                     run_ids(exclude_runs, "exclude_runs")));
           },
@@ -525,12 +556,13 @@ where missing), X_std_error ... N_std_error (standard error of a mean over a
 force history, nan where none), source (files, ';'-separated), history_flags.)doc")
       .def(
           "import_files",
-          [](Database& d, const py::object& paths, const py::object& body, const std::string& format,
+          [](py::handle self, const py::object& paths, const py::object& body, const std::string& format,
              const py::object& settings, const py::object& columns, const py::object& units,
              const py::object& disturbance_columns, const py::object& ignore, const py::object& monitors,
              std::size_t average_last, const py::object& include, const py::object& exclude,
              const py::object& key_from_name, const py::object& manifest, bool sidecars, bool prefer_surfaces,
              bool replace, const std::string& also, unsigned jobs) {
+            Database& d = database_of(self);
             std::vector<std::string> inputs;
             if (py::isinstance<py::str>(paths) || py::hasattr(paths, "__fspath__")) {
               inputs.push_back(fspath(paths));
@@ -579,7 +611,7 @@ Returns an ImportSummary. Every input is read before the database is written:
 a bad one raises InputError and leaves the database as it was. The GIL is released.)doc")
       .def(
           "fit",
-          [](Database& d, const std::string& body, const std::string& output, const std::string& terms,
+          [](py::handle self, const std::string& body, const std::string& output, const std::string& terms,
              const py::object& where, const py::object& exclude_runs, const py::object& mirror,
              const py::object& mirror_odd, const std::string& loss, const py::object& name, bool replace, bool store) {
             hydrocoef::FitOptions options;
@@ -594,7 +626,7 @@ a bad one raises InputError and leaves the database as it was. The GIL is releas
             options.name = name.is_none() ? "" : name.cast<std::string>();
             options.replace = replace;
             options.store = store;
-            return d.fit(options);
+            return database_of(self).fit(options);
           },
           py::kw_only(), "body"_a, "output"_a, "terms"_a, "where"_a = py::none(), "exclude_runs"_a = py::none(),
           "mirror"_a = py::none(), "mirror_odd"_a = py::none(), "loss"_a = "squared", "name"_a = py::none(),
@@ -605,13 +637,13 @@ output: X Y Z K M N; terms: e.g. "1,u,u|u|" (1, x, x|x|, x^2, x^3, |x| of one ve
 where / exclude_runs: the run selection; mirror: planes of symmetry ("v"), mirror_odd: disturbances
 that change sign; loss: squared, huber:S, cauchy:S, soft-l1:S; name: default body:X(terms);
 replace: replace a stored fit of that name; store=False: fit only. Returns a Fit.)doc")
-      .def("fits", [](const Database& d, const py::object& body) { return d.fits(body.is_none() ? "" : body.cast<std::string>()); },
+      .def("fits", [](py::handle self, const py::object& body) { return database_of(self).fits(body.is_none() ? "" : body.cast<std::string>()); },
            "body"_a = py::none(), "The stored fits (of one body), by name: a list of Fit.")
-      .def("surfaces", [](const Database& d, const py::object& body) { return d.surfaces(body.is_none() ? "" : body.cast<std::string>()); },
+      .def("surfaces", [](py::handle self, const py::object& body) { return database_of(self).surfaces(body.is_none() ? "" : body.cast<std::string>()); },
            "body"_a = py::none(), "The stored surfaces (of one body), by name: a list of SurfaceInfo.")
       .def(
           "build_surface",
-          [](Database& d, const std::string& name, const std::string& body, const py::object& axes,
+          [](py::handle self, const std::string& name, const std::string& body, const py::object& axes,
              const py::object& outputs, const std::string& method, const py::object& extrapolate,
              const py::object& where, const py::object& exclude_runs, const py::object& mirror,
              const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
@@ -640,6 +672,7 @@ replace: replace a stored fit of that name; store=False: fit only. Returns a Fit
             options.resample_method = resample_method;
             options.far_threshold = far_threshold;
             options.replace = replace;
+            Database& d = database_of(self);
             py::gil_scoped_release release;
             return d.build_surface(options);
           },
@@ -659,19 +692,25 @@ resample_method, far_threshold: the RBF options. replace: replace a stored surfa
 Returns a SurfaceInfo; the surface keeps its build specification for rebuild_surfaces().)doc")
       .def(
           "rebuild_surfaces",
-          [](Database& d, const py::object& name, bool stale_only) {
+          [](py::handle self, const py::object& name, bool stale_only) {
             const std::string which = name.is_none() ? "" : name.cast<std::string>();
+            Database& d = database_of(self);
             py::gil_scoped_release release;
             return d.rebuild_surfaces(which, stale_only);
           },
           "name"_a = py::none(), py::kw_only(), "stale_only"_a = false,
           "Builds stored surfaces again from the current runs with the options each was built with: the one named, "
           "else every one (only stale ones with stale_only=True). Returns a list of SurfaceInfo.")
-      .def("surface", &Database::surface, "name"_a,
+      .def("surface", [](py::handle self, const std::string& name) { return database_of(self).surface(name); }, "name"_a,
            "One stored surface, read whole (it stays valid after close()). InputError listing the names when absent.")
-      .def("__repr__", [](const Database& d) {
+      .def("__repr__", [](py::handle self) {
+        const Database& d = database_of(self);
         return "<hydrocoef.Database '" + d.path() + "'" + (d.is_open() ? (d.read_only() ? ", read only" : "") : ", closed") + ">";
       });
+
+  made_by_the_module_only(m.attr("Surface"), "hydrocoef.Surface objects come from Database.surface(name)");
+  for (const char* name : {"Fit", "SurfaceInfo", "ImportedFile", "ImportSummary"})
+    made_by_the_module_only(m.attr(name), (std::string("hydrocoef.") + name + " objects come from Database calls").c_str());
 
   // The public classes say they are hydrocoef's (help(), repr of the type), not the extension's
   // (Database is: hydrocoef.Database is its Python subclass in __init__.py).

@@ -222,33 +222,48 @@ struct Work {
 /// Points [i, end) on the fast path; i is where an exception left it.
 template <std::size_t N, std::size_t K, std::size_t kOutputs>
 void grid_points(Work& w, std::size_t& i, std::size_t end) {
+  // Everything the loop reads is a local copy (stores to the output columns
+  // cannot change it), so that it stays in registers.
   const LocalAxes<N> axes(*w.grid);
   const double* data = w.grid->data;
-  const std::size_t* offsets = w.grid->term_offsets.data();
+  constexpr std::size_t kTerms = power(K, N);
+  constexpr bool kLocalOffsets = kTerms <= 64;
+  std::array<std::size_t, kLocalOffsets ? kTerms : 1> local_offsets{};
+  if constexpr (kLocalOffsets) std::copy_n(w.grid->term_offsets.data(), kTerms, local_offsets.begin());
+  const std::size_t* offsets = kLocalOffsets ? local_offsets.data() : w.grid->term_offsets.data();
   std::array<const double*, N> in;
   std::array<std::ptrdiff_t, N> in_stride;
   for (std::size_t a = 0; a < N; ++a) {
     in[a] = w.inputs[a].data;
     in_stride[a] = w.inputs[a].stride;
   }
-  double* values = w.values.data();
   const std::size_t n_out = w.values.size();
   double* const out0 = w.outputs[0].data;
   const std::ptrdiff_t out0_stride = w.outputs[0].stride;
-  for (; i < end; ++i) {
-    const auto at = static_cast<std::ptrdiff_t>(i);
-    std::array<double, N> point;
-    for (std::size_t a = 0; a < N; ++a) point[a] = in[a][at * in_stride[a]];
-    if (!grid_inside<N, K, kOutputs>(axes, data, offsets, n_out, point.data(), values)) {
-      std::copy(point.begin(), point.end(), w.point.begin());
-      w.surface.evaluate(w.point, w.values);
+  std::array<double, kOutputs == 1 ? 1 : 0> one{};
+  double* const values = kOutputs == 1 ? one.data() : w.values.data();
+  std::size_t index = i;  // a local: i itself would be stored at every point
+  try {
+    for (; index < end; ++index) {
+      const auto at = static_cast<std::ptrdiff_t>(index);
+      std::array<double, N> point;
+      for (std::size_t a = 0; a < N; ++a) point[a] = in[a][at * in_stride[a]];
+      if (!grid_inside<N, K, kOutputs>(axes, data, offsets, n_out, point.data(), values)) [[unlikely]] {
+        std::copy(point.begin(), point.end(), w.point.begin());
+        w.surface.evaluate(w.point, w.values);
+        if constexpr (kOutputs == 1) values[0] = w.values[0];
+      }
+      if constexpr (kOutputs == 1) {
+        out0[at * out0_stride] = values[0];
+      } else {
+        for (std::size_t k = 0; k < n_out; ++k) w.outputs[k].data[at * w.outputs[k].stride] = values[k];
+      }
     }
-    if constexpr (kOutputs == 1) {
-      out0[at * out0_stride] = values[0];
-    } else {
-      for (std::size_t k = 0; k < n_out; ++k) w.outputs[k].data[at * w.outputs[k].stride] = values[k];
-    }
+  } catch (...) {
+    i = index;
+    throw;
   }
+  i = index;
 }
 
 /// Points [i, end) through CoefficientSurface (gradients, RBF, nearest).

@@ -135,3 +135,27 @@ def test_simulate_errors(db_path, tmp_path):
         hydrocoef.simulate(tmp_path / "missing.json", scenario)
     with pytest.raises(TypeError):
         hydrocoef.simulate(5, scenario)
+
+
+def test_objects_without_their_cpp_part_are_refused(db_path):
+    """pybind11 would run a method of an object made by __new__ alone on
+    uninitialised memory: such objects are refused, never used."""
+    import copy
+    bare = hydrocoef.Database.__new__(hydrocoef.Database)
+    for call in (lambda: bare.runs(), lambda: bare.close(), lambda: bare.path, lambda: repr(bare),
+                 lambda: bare.surface("x"), lambda: bare.import_files("x"), lambda: bare.__enter__()):
+        with pytest.raises(TypeError, match="__new__ without __init__"):
+            call()
+    for cls in (hydrocoef.Surface, hydrocoef.Fit, hydrocoef.SurfaceInfo, hydrocoef.ImportedFile,
+                hydrocoef.ImportSummary):
+        with pytest.raises(TypeError, match="come from"):
+            cls.__new__(cls)
+        with pytest.raises(TypeError):
+            cls()
+    with hydrocoef.Database(db_path, mode="r") as db:
+        surface = db.surface("asr-v-yaw")
+        with pytest.raises(TypeError):
+            copy.copy(surface)
+        with pytest.raises(TypeError):
+            copy.copy(db)
+    assert surface(r=0.1)["N"] < 0
