@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/common.hpp"
+#include "cli/surface_options.hpp"
 #include "src/core/escape.hpp"
 
 namespace hydrocoef::cli {
