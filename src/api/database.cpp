@@ -3,6 +3,7 @@
 // the fit src/api/fit.cpp.
 #include "src/api/internal.hpp"
 #include "src/core/text.hpp"
+#include "src/core/sign_convention.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -100,7 +101,7 @@ RunTable Database::runs(const std::vector<std::string>& where, const std::string
       const auto& force = run.tau_b[c];
       if (!force) continue;
       // Forces on the body, as `runs --csv` gives them: a damping magnitude as tabulated is negated.
-      table.force[c][i] = force->sign == SignConvention::OpposingMotion ? -force->value.total : force->value.total;
+      table.force[c][i] = to_on_body(force->value.total, force->sign);
       if (force->statistics) table.force_std_error[c][i] = force->statistics->values.standard_error;
       sources.insert(force->source_path);
     }

@@ -9,6 +9,7 @@
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
 #include "src/core/text.hpp"
+#include "src/core/sign_convention.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -139,7 +140,7 @@ FitSamples gather_fit_samples(Database& database, const std::string& body, std::
     const auto& force = *all[i].tau_b[dof];
     out.keys.push_back(all[i].key);
     out.x.push_back(all[i].key.nu_b[variable]);
-    out.y.push_back(force.sign == out.sign ? force.value.total : -force.value.total);
+    out.y.push_back(to_convention(force.value.total, force.sign, out.sign));
     out.run_ids.push_back(all[i].id);
     out.mirrored.push_back(i >= out.runs.size());
   }

@@ -10,6 +10,7 @@
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -37,22 +38,16 @@ std::string where_text(const Setting& setting) {
   throw InputError(where_text(setting) + ": setting '" + std::string(name) + "': expected " + expected);
 }
 
-std::string shortest(double value) {
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
-}
-
 nlohmann::json value_json(const SettingValue& value) {
   return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
 }
 
 std::string value_text(const SettingValue& value) {
-  if (const auto* number = std::get_if<double>(&value)) return shortest(*number);
+  if (const auto* number = std::get_if<double>(&value)) return shortest_number(*number);
   if (const auto* text = std::get_if<std::string>(&value)) return escape::json_text(nlohmann::json(*text));
   std::string out = "[";
   if (const auto* numbers = std::get_if<std::vector<double>>(&value)) {
-    for (std::size_t i = 0; i < numbers->size(); ++i) out += (i ? "," : "") + shortest((*numbers)[i]);
+    for (std::size_t i = 0; i < numbers->size(); ++i) out += (i ? "," : "") + shortest_number((*numbers)[i]);
   } else {
     const auto& texts = std::get<std::vector<std::string>>(value);
     for (std::size_t i = 0; i < texts.size(); ++i) out += (i ? "," : "") + escape::json_text(nlohmann::json(texts[i]));
