@@ -10,9 +10,10 @@
 #include <sstream>
 
 #include "cli/common.hpp"
+#include "cli/runs_output.hpp"
+#include "src/pipeline/run_curation.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
-#include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/store/database.hpp"
 
@@ -26,87 +27,6 @@ struct RunsArgs {
   bool csv = false;
 };
 
-/// The runs as CSV (RFC 4180; names through escape::csv_field): id, body,
-/// u..r, one column per disturbance any run has, X..N (forces on the body,
-/// SI), the force sources. Empty cells where a run has no such value.
-void print_runs_csv(const std::vector<StoredRun>& runs) {
-  std::set<std::string> disturbance_names;
-  for (const auto& run : runs)
-    for (const auto& [name, value] : run.key.disturbances) disturbance_names.insert(name);
-  std::string out = "id,body";
-  for (const auto name : kVelocityNames) out += "," + std::string(name);
-  for (const auto& name : disturbance_names) out += "," + escape::csv_field(name);
-  for (const auto name : kForceNames) out += "," + std::string(name);
-  out += ",sources\n";
-  for (const auto& run : runs) {
-    out += std::to_string(run.id) + "," + escape::csv_field(run.key.body);
-    // Numbers are appended in place (GCC 12 at -O3 warned falsely on "," + a temporary string here).
-    for (const double v : run.key.nu_b) {
-      out += ',';
-      append_shortest_number(out, v);
-    }
-    for (const auto& name : disturbance_names) {
-      out += ',';
-      if (const auto found = run.key.disturbances.find(name); found != run.key.disturbances.end())
-        append_shortest_number(out, found->second);
-    }
-    std::set<std::string> sources;
-    for (const auto& force : run.tau_b) {
-      out += ',';
-      if (!force) continue;
-      // Forces on the body: a damping magnitude as tabulated is negated.
-      append_shortest_number(out, to_on_body(force->value.total, force->sign));
-      sources.insert(force->source_path);
-    }
-    std::string list;
-    for (const auto& source : sources) list += (list.empty() ? "" : ";") + source;
-    out += "," + escape::csv_field(list) + "\n";
-  }
-  std::cout << out;
-}
-
-nlohmann::json run_json(const StoredRun& run) {
-  nlohmann::json out = key_json(run.key);
-  out["id"] = run.id;
-  out["density"] = run.fluid.density_kg_m3 ? nlohmann::json(*run.fluid.density_kg_m3) : nlohmann::json();
-  out["kinematic_viscosity"] =
-      run.fluid.kinematic_viscosity_m2_s ? nlohmann::json(*run.fluid.kinematic_viscosity_m2_s) : nlohmann::json();
-  out["reference_point"] = run.reference_point_b;
-  out["forces"] = nlohmann::json::object();
-  for (std::size_t i = 0; i < 6; ++i) {
-    if (!run.tau_b[i]) continue;
-    const auto& f = *run.tau_b[i];
-    out["forces"][std::string(kForceNames[i])] = {
-        {"total", f.value.total},
-        {"pressure", f.value.pressure ? nlohmann::json(*f.value.pressure) : nlohmann::json()},
-        {"viscous", f.value.viscous ? nlohmann::json(*f.value.viscous) : nlohmann::json()},
-        {"sign_convention", std::string(to_string(f.sign))},
-        {"source", f.source_path},
-        {"source_line", f.source_line}};
-    if (f.statistics) {
-      const auto& st = *f.statistics;
-      out["forces"][std::string(kForceNames[i])]["statistics"] = {
-          {"abscissa", st.abscissa},
-          {"window_method", st.window_method},
-          {"window", {st.window_first, st.window_last}},
-          {"samples", st.samples},
-          {"standard_error", st.values.standard_error},
-          {"spread", st.values.spread},
-          {"drift", st.values.drift},
-          {"effective_samples", st.values.effective_samples},
-          {"flags", st.flags}};
-    }
-  }
-  out["flags"] = run_flags(run);
-  return out;
-}
-
-/// A table cell of at least `width` characters that never runs into the next
-/// one: a longer text ("4.94066e-324", a long body name) gets one space after it.
-std::string cell(const std::string& text, std::size_t width) {
-  return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
-}
-
 void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::ReadOnly);
   RunFilter filter;
@@ -114,92 +34,19 @@ void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   const auto runs = selected_runs(database, filter, parse_selection(args.selection.where, args.selection.exclude_runs));
   if (args.csv) {
     print_runs_csv(runs);
-    return;
-  }
-  if (args.json) {
+  } else if (args.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& run : runs) out.push_back(run_json(run));
     std::cout << escape::json_text(out, 2) << '\n';
-    return;
+  } else {
+    print_runs_table(runs, args.body, global.database);
   }
-  if (runs.empty()) {
-    std::cout << "no runs" << (args.body ? " of body '" + *args.body + "'" : std::string()) << " in "
-              << global.database << '\n';
-    return;
-  }
-  // Only the velocity and force columns some run uses are shown.
-  std::array<bool, 6> velocity_used{}, force_used{};
-  bool any_history = false, any_tabulated = false;
-  for (const auto& run : runs)
-    for (const auto& force : run.tau_b) {
-      any_history = any_history || (force && force->statistics);
-      any_tabulated = any_tabulated || (force && force->sign == SignConvention::OpposingMotion);
-    }
-  for (const auto& run : runs)
-    for (std::size_t i = 0; i < 6; ++i) {
-      velocity_used[i] = velocity_used[i] || run.key.nu_b[i] != 0.0;
-      force_used[i] = force_used[i] || run.tau_b[i].has_value();
-    }
-  std::ostringstream table;
-  table << std::left << std::setw(6) << "id" << std::setw(12) << "body";
-  for (std::size_t i = 0; i < 6; ++i)
-    if (velocity_used[i]) table << std::setw(11) << kVelocityNames[i];
-  for (std::size_t i = 0; i < 6; ++i)
-    if (force_used[i]) table << std::setw(13) << kForceNames[i];
-  if (any_history) table << std::setw(12) << "history";
-  table << "disturbances\n";
-  for (const auto& run : runs) {
-    table << cell(std::to_string(run.id), 6) << cell(run.key.body, 12);
-    for (std::size_t i = 0; i < 6; ++i)
-      if (velocity_used[i]) table << cell(significant(run.key.nu_b[i], 6), 11);
-    for (std::size_t i = 0; i < 6; ++i) {
-      if (!force_used[i]) continue;
-      std::string text = run.tau_b[i] ? significant(run.tau_b[i]->value.total, 6) : "-";
-      if (run.tau_b[i] && run.tau_b[i]->sign == SignConvention::OpposingMotion) text += "*";
-      table << cell(text, 13);
-    }
-    if (any_history) {
-      // A run averaged from a force history: "ok" when it converged, else its flags.
-      bool averaged = false;
-      for (const auto& force : run.tau_b) averaged = averaged || (force && force->statistics);
-      std::string flags;
-      for (const auto& flag : run_flags(run)) flags += (flags.empty() ? "" : ",") + flag;
-      table << cell(!averaged ? "-" : flags.empty() ? "ok" : flags, 12);
-    }
-    std::string disturbances;
-    for (const auto& [name, value] : run.key.disturbances)
-      disturbances += (disturbances.empty() ? "" : " ") + name + "=" + significant(value, 6);
-    table << disturbances << '\n';
-  }
-  std::cout << table.str() << runs.size() << (runs.size() == 1 ? " run" : " runs")
-            << "; SI units (m/s, rad/s, N, N m); forces on the body"
-            << (any_tabulated ? "; * = as tabulated, positive opposes motion" : "")
-            << (any_history ? "; history: means over a force history, 'ok' when converged, else its flags "
-                              "('runs show ID' gives the window and standard errors)"
-                            : "")
-            << '\n';
 }
 
 struct ShowArgs {
   std::int64_t id = 0;
   bool json = false;
 };
-
-nlohmann::json import_json(const ImportRecord& record) {
-  nlohmann::json out = {{"import_id", record.id},
-                        {"path", record.path},
-                        {"resolved_path", record.resolved_path},
-                        {"sha256", record.sha256},
-                        {"size_bytes", record.size_bytes},
-                        {"reading", record.reading},
-                        {"importer", record.importer},
-                        {"importer_version", record.importer_version},
-                        {"hydrocoef_version", record.hydrocoef_version},
-                        {"imported_at", record.imported_at}};
-  const auto settings = nlohmann::json::parse(record.settings.empty() ? "{}" : record.settings, nullptr, false);
-  out["settings"] = settings.is_discarded() ? nlohmann::json(record.settings) : settings;
-  return out;
-}
 
 void run_show(const ShowArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::ReadOnly);
@@ -212,51 +59,7 @@ void run_show(const ShowArgs& args, const GlobalOptions& global) {
   for (const auto& force : run.tau_b)
     if (force && force->import_id && !imports.count(force->import_id))
       if (auto record = database.import_record(force->import_id)) imports.emplace(force->import_id, std::move(*record));
-  if (args.json) {
-    nlohmann::json out = run_json(run);
-    out["imports"] = nlohmann::json::array();
-    for (const auto& [id, record] : imports) out["imports"].push_back(import_json(record));
-    std::cout << escape::json_text(out, 2) << '\n';
-    return;
-  }
-  std::cout << "run " << run.id << ": " << describe(run.key) << '\n';
-  std::cout << "  fluid: rho " << (run.fluid.density_kg_m3 ? significant(*run.fluid.density_kg_m3, 6) + " kg m^-3" : "not given")
-            << ", nu " << (run.fluid.kinematic_viscosity_m2_s ? significant(*run.fluid.kinematic_viscosity_m2_s, 6) + " m^2 s^-1" : "not given")
-            << "; moment reference point (" << significant(run.reference_point_b[0], 6) << ", "
-            << significant(run.reference_point_b[1], 6) << ", " << significant(run.reference_point_b[2], 6)
-            << ") m, body axes\n";
-  for (std::size_t i = 0; i < 6; ++i) {
-    if (!run.tau_b[i]) continue;
-    const auto& f = *run.tau_b[i];
-    std::cout << "  " << kForceNames[i] << " = " << significant(f.value.total, 8) << (i < 3 ? " N" : " N m") << " ("
-              << to_string(f.sign) << "), from " << f.source_path << (f.source_line ? ":" + std::to_string(f.source_line) : "")
-              << (f.import_id ? ", import " + std::to_string(f.import_id) : std::string()) << '\n';
-    if (f.statistics) {
-      const auto& st = *f.statistics;
-      const std::string unit = i < 3 ? " N" : " N m";
-      std::string flags;
-      for (const auto& flag : st.flags) flags += (flags.empty() ? "" : ", ") + flag;
-      std::cout << "      mean over " << st.abscissa << " " << significant(st.window_first, 8) << " to "
-                << significant(st.window_last, 8) << " (" << st.samples << " samples, " << st.window_method
-                << "): standard error " << significant(st.values.standard_error, 3) << unit << " ("
-                << significant(st.values.effective_samples, 3) << " effective samples), spread "
-                << significant(st.values.spread, 3) << unit << ", drift " << significant(st.values.drift, 3) << unit
-                << (flags.empty() ? ", converged" : ", flags: " + flags) << '\n';
-    }
-  }
-  for (const auto& [id, record] : imports) {
-    std::cout << "  import " << id << ": " << record.path << " (" << (record.resolved_path.empty() ? "path not resolved" : record.resolved_path)
-              << "), sha256 " << record.sha256.substr(0, 16) << "..., " << record.importer << " " << record.importer_version
-              << ", hydrocoef " << (record.hydrocoef_version.empty() ? "(older)" : record.hydrocoef_version) << ", "
-              << record.imported_at << (record.reading.empty() ? "" : ", reading '" + record.reading + "'") << '\n';
-    const auto settings = nlohmann::json::parse(record.settings.empty() ? "{}" : record.settings, nullptr, false);
-    if (settings.is_object())
-      for (const auto& [name, setting] : settings.items())
-        if (setting.is_object())
-          std::cout << "    " << name << " = " << escape::json_text(setting.value("value", nlohmann::json())) << "  ("
-                    << setting.value("source", std::string()) << (setting.contains("where") ? ": " + escape::one_line(setting.value("where", std::string())) : "")
-                    << ")\n";
-  }
+  print_run(run, imports, args.json);
 }
 
 struct DeleteArgs {
@@ -268,32 +71,9 @@ struct DeleteArgs {
 };
 
 void run_delete(const DeleteArgs& args, const GlobalOptions& global) {
-  if (args.ids.empty() && args.selection.where.empty() && !args.source)
-    throw InputError("runs delete: nothing selected; expected run ids, --where CLAUSE or --source FILE");
   Database database(global.database, Database::OpenMode::MustExist);
-  std::vector<std::int64_t> ids = args.ids;
-  if (!args.selection.where.empty() || args.source) {
-    RunFilter filter;
-    filter.body = args.body;
-    auto runs = selected_runs(database, filter, parse_selection(args.selection.where, args.selection.exclude_runs));
-    if (args.source) {
-      // By the file the forces came from: as given, or the same file by content.
-      const std::string wanted = std::filesystem::exists(*args.source) ? std::filesystem::canonical(*args.source).string() : "";
-      std::erase_if(runs, [&](const StoredRun& run) {
-        for (const auto& force : run.tau_b) {
-          if (!force) continue;
-          if (force->source_path == *args.source) return false;
-          if (!wanted.empty() && std::filesystem::exists(force->source_path) &&
-              std::filesystem::canonical(force->source_path).string() == wanted)
-            return false;
-        }
-        return true;
-      });
-    }
-    for (const auto& run : runs) ids.push_back(run.id);
-    if (ids.empty()) throw InputError(SourceLocation{global.database}, "runs delete: no run matches; nothing was deleted");
-  }
-  const DeleteOutcome outcome = database.delete_runs(ids);
+  const DeleteOutcome outcome = delete_runs(
+      database, RunDeletion{args.ids, args.body, args.selection.where, args.selection.exclude_runs, args.source});
   if (args.json) {
     std::cout << escape::json_text({{"deleted_runs", outcome.runs},
                                     {"deleted_components", outcome.components},

@@ -13,65 +13,16 @@
 #include <numbers>
 
 #include "cli/common.hpp"
+#include "cli/simulate_output.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/error.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
 #include "src/dynamics/simulation.hpp"
-#include "src/store/database.hpp"
-#include "src/surface/stored_surface.hpp"
+#include "src/dynamics/surface_source.hpp"
 
 namespace hydrocoef::cli {
 namespace {
-
-constexpr std::array<const char*, 6> kVelocityUnits{"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
-constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
-constexpr const char* kSignNote = "forces on the body in body axes about CO (SNAME: damping is negative)";
-
-/// Surfaces come from the run database, opened on first use only.
-SurfaceResolver database_resolver(const GlobalOptions& global) {
-  auto database = std::make_shared<std::unique_ptr<Database>>();
-  return [database, &global](const std::string& name) {
-    if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::ReadOnly);
-    return load_surface(**database, name).surface;
-  };
-}
-
-nlohmann::json velocity_json(const Vector6& nu) {
-  nlohmann::json out = nlohmann::json::object();
-  for (std::size_t i = 0; i < 6; ++i) out[std::string(kVelocityNames[i])] = nu[static_cast<Eigen::Index>(i)];
-  return out;
-}
-
-nlohmann::json force_json(const Vector6& tau) {
-  nlohmann::json out = nlohmann::json::object();
-  for (std::size_t i = 0; i < 6; ++i) out[std::string(kForceNames[i])] = tau[static_cast<Eigen::Index>(i)];
-  return out;
-}
-
-nlohmann::json units_json() {
-  nlohmann::json out = nlohmann::json::object();
-  for (std::size_t i = 0; i < 6; ++i) {
-    out[std::string(kVelocityNames[i])] = kVelocityUnits[i];
-    out[std::string(kForceNames[i])] = kForceUnits[i];
-  }
-  return out;
-}
-
-nlohmann::json optional_number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
-
-void print_velocity_table(const Vector6& nu, const ForceBreakdown& forces) {
-  std::cout << "  " << std::left << std::setw(4) << "" << std::setw(17) << "velocity" << std::setw(7) << ""
-            << std::setw(4) << "" << std::setw(15) << "damping" << std::setw(15) << "control" << "\n";
-  for (std::size_t i = 0; i < 6; ++i) {
-    const auto k = static_cast<Eigen::Index>(i);
-    std::cout << "  " << std::setw(4) << kVelocityNames[i] << std::setw(17) << significant(nu[k], 9) << std::setw(7)
-              << kVelocityUnits[i] << std::setw(4) << kForceNames[i] << std::setw(15)
-              << significant(forces.damping_b[k], 6) << std::setw(15) << significant(forces.control_b[k], 6)
-              << kForceUnits[i] << '\n';
-  }
-  std::cout << std::right;
-}
 
 // ---- simulate ---------------------------------------------------------------
 
@@ -84,19 +35,13 @@ struct SimulateArgs {
   bool json = false;
 };
 
-std::string integrator_text(const IntegratorSettings& s) {
-  if (s.method == IntegratorSettings::Method::Rk4) return "rk4, step " + significant(s.step_s, 6) + " s";
-  return "dopri5, rtol " + significant(s.relative_tolerance, 3) + ", atol " + significant(s.absolute_tolerance, 3) +
-         ", max step " + significant(s.max_step_s, 6) + " s";
-}
-
 void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
-  const VehicleModel model(load_vehicle(args.vehicle), database_resolver(global));
+  const VehicleModel model(load_vehicle(args.vehicle), database_surface_resolver(global.database));
   const Scenario scenario = load_scenario(args.scenario);
   std::optional<MeasuredTrajectory> measured;
   if (args.experiment) measured = read_measured_trajectory(*args.experiment);
   if (!(args.steady_fraction > 0.0 && args.steady_fraction <= 1.0))
-    throw InputError("--steady-fraction " + number(args.steady_fraction) + ": expected a number in (0, 1]");
+    throw InputError("--steady-fraction " + shortest_number(args.steady_fraction) + ": expected a number in (0, 1]");
 
   // A progress line on a terminal, at most five times a second.
   const bool tty = isatty(STDERR_FILENO) != 0;
@@ -120,77 +65,9 @@ void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
     options.steady_fraction = args.steady_fraction;
     comparison = compare_with_experiment(*measured, result.samples, options);
   }
-  const TrajectorySample& last = result.samples.back();
-
-  if (args.json) {
-    nlohmann::json out = {{"vehicle", args.vehicle},
-                          {"scenario", args.scenario},
-                          {"name", scenario.name},
-                          {"duration", scenario.duration_s},
-                          {"integrator", integrator_text(scenario.integrator)},
-                          {"steps", result.steps},
-                          {"rejected_steps", result.rejected_steps},
-                          {"evaluations", result.evaluations},
-                          {"samples", result.samples.size()},
-                          {"wall_time_s", wall_s},
-                          {"notes", result.notes},
-                          {"trajectory", args.out ? nlohmann::json(*args.out) : nlohmann::json()},
-                          {"sign_convention", kSignNote},
-                          {"units", units_json()}};
-    out["final"] = {{"t", last.t_s},
-                    {"position_n", {{"x", last.p_n.x()}, {"y", last.p_n.y()}, {"z", last.p_n.z()}}},
-                    {"euler_rad", {{"phi", last.euler_rad[0]}, {"theta", last.euler_rad[1]}, {"psi", last.euler_rad[2]}}},
-                    {"velocity", velocity_json(last.nu_b)},
-                    {"relative_velocity", velocity_json(last.forces.nu_r_b)},
-                    {"forces",
-                     {{"control", force_json(last.forces.control_b)},
-                      {"damping", force_json(last.forces.damping_b)},
-                      {"hydrostatic", force_json(last.forces.hydrostatic_b)},
-                      {"coriolis", force_json(last.forces.coriolis_b)}}}};
-    if (measured) {
-      out["experiment"] = *args.experiment;
-      out["comparison"] = nlohmann::json::array();
-      for (const auto& c : comparison)
-        out["comparison"].push_back({{"component", c.component},
-                                     {"samples", c.samples},
-                                     {"rms_error", c.rms_error},
-                                     {"steady_measured", c.steady_measured},
-                                     {"steady_simulated", c.steady_simulated},
-                                     {"steady_error", c.steady_error},
-                                     {"t63_measured_s", optional_number(c.t63_measured_s)},
-                                     {"t63_simulated_s", optional_number(c.t63_simulated_s)}});
-    }
-    std::cout << escape::json_text(out, 2) << '\n';
-    return;
-  }
-
-  std::cout << "simulate " << (scenario.name.empty() ? args.scenario : scenario.name) << "\n  vehicle "
-            << (model.description().name.empty() ? args.vehicle : model.description().name) << " (" << args.vehicle
-            << "), scenario " << args.scenario << "\n  " << significant(scenario.duration_s, 6) << " s, "
-            << integrator_text(scenario.integrator) << ": " << result.steps << " steps";
-  if (result.rejected_steps) std::cout << " (" << result.rejected_steps << " rejected)";
-  std::cout << ", " << result.evaluations << " evaluations, " << significant(wall_s, 3) << " s wall\n\n";
-  std::cout << "  at t = " << significant(last.t_s, 6) << " s: position (" << significant(last.p_n.x(), 6) << ", "
-            << significant(last.p_n.y(), 6) << ", " << significant(last.p_n.z(), 6) << ") m NED, attitude (roll, pitch, yaw) ("
-            << significant(last.euler_rad[0] * 180.0 / std::numbers::pi, 5) << ", "
-            << significant(last.euler_rad[1] * 180.0 / std::numbers::pi, 5) << ", "
-            << significant(last.euler_rad[2] * 180.0 / std::numbers::pi, 5) << ") deg\n";
-  print_velocity_table(last.nu_b, last.forces);
-  std::cout << "  (" << kSignNote << ")\n";
-  for (const auto& note : result.notes) std::cout << "  note: " << note << '\n';
-  if (args.out) std::cout << "  trajectory: " << *args.out << " (" << result.samples.size() << " rows)\n";
-  if (measured) {
-    std::cout << "\n  comparison with " << *args.experiment << " (measured - simulated; steady = mean of the last "
-              << significant(100.0 * args.steady_fraction, 3) << " %)\n  " << std::left << std::setw(6) << "" << std::setw(8)
-              << "rows" << std::setw(14) << "RMS" << std::setw(14) << "steady meas." << std::setw(14) << "steady sim."
-              << std::setw(14) << "steady error" << std::setw(10) << "t63 meas." << "t63 sim. [s]\n";
-    for (const auto& c : comparison)
-      std::cout << "  " << std::setw(6) << c.component << std::setw(8) << c.samples << std::setw(14)
-                << significant(c.rms_error, 4) << std::setw(14) << significant(c.steady_measured, 5) << std::setw(14)
-                << significant(c.steady_simulated, 5) << std::setw(14) << significant(c.steady_error, 4) << std::setw(10)
-                << significant(c.t63_measured_s, 4) << significant(c.t63_simulated_s, 4) << '\n';
-    std::cout << std::right;
-  }
+  print_simulation(SimulationReport{args.vehicle, model.description().name, args.scenario, scenario, result, wall_s,
+                                   args.out, args.experiment, args.steady_fraction, comparison},
+                   args.json);
 }
 
 // ---- equilibrium ------------------------------------------------------------
@@ -205,7 +82,7 @@ struct EquilibriumArgs {
 };
 
 void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
-  const VehicleModel model(load_vehicle(args.vehicle), database_resolver(global));
+  const VehicleModel model(load_vehicle(args.vehicle), database_surface_resolver(global.database));
   EquilibriumInputs in;
   for (const auto& text : args.tau) {
     const auto [name, value] = parse_assignment(text, "--tau");
@@ -241,35 +118,10 @@ void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
     std::size_t worst = 0;
     eq.residual_b.cwiseAbs().maxCoeff(&worst);
     throw InputError("no steady state for this force: the residual stays at " + significant(eq.residual_b[static_cast<Eigen::Index>(worst)], 3) +
-                     " " + kForceUnits[worst] + " in " + std::string(kForceNames[worst]) +
+                     " " + force_unit(worst) + " in " + std::string(kForceNames[worst]) +
                      " (a DOF with a force but no damping, or a coupling that only a change of attitude could balance)");
   }
-  if (args.json) {
-    nlohmann::json out = {{"vehicle", args.vehicle},
-                          {"tau", force_json(in.tau_b)},
-                          {"velocity", velocity_json(eq.nu_b)},
-                          {"relative_velocity", velocity_json(eq.forces.nu_r_b)},
-                          {"damping", force_json(eq.forces.damping_b)},
-                          {"residual", force_json(eq.residual_b)},
-                          {"converged", eq.converged},
-                          {"iterations", eq.iterations},
-                          {"attitude_deg", {{"phi", attitude[0]}, {"theta", attitude[1]}, {"psi", attitude[2]}}},
-                          {"units", units_json()},
-                          {"sign_convention", kSignNote}};
-    std::cout << escape::json_text(out, 2) << '\n';
-    return;
-  }
-  std::cout << "equilibrium of " << (model.description().name.empty() ? args.vehicle : model.description().name)
-            << " under";
-  for (std::size_t i = 0; i < 6; ++i)
-    if (in.tau_b[static_cast<Eigen::Index>(i)] != 0.0)
-      std::cout << " " << kForceNames[i] << " = " << significant(in.tau_b[static_cast<Eigen::Index>(i)], 6) << " "
-                << kForceUnits[i];
-  if (in.tau_b.isZero()) std::cout << " no force";
-  std::cout << " (attitude held; " << eq.iterations << " iterations, largest residual "
-            << significant(eq.residual_b.cwiseAbs().maxCoeff(), 3) << ")\n";
-  print_velocity_table(eq.nu_b, eq.forces);
-  std::cout << "  (" << kSignNote << ")\n";
+  print_equilibrium(EquilibriumReport{args.vehicle, model.description().name, in, eq, attitude}, args.json);
 }
 
 }  // namespace

@@ -5,18 +5,15 @@
 #include <cstdio>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef::cli {
 namespace {
 
 double parse_finite(const std::string& text, const std::string& option, const std::string& whole) {
-  std::string_view body = text;
-  if (!body.empty() && body.front() == '+') body.remove_prefix(1);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
-  if (body.empty() || ec != std::errc{} || end != body.data() + body.size() || !std::isfinite(value))
-    throw InputError(option + " '" + whole + "': found '" + text + "', expected a finite number");
-  return value;
+  const auto value = parse_finite_number(text);
+  if (!value) throw InputError(option + " '" + whole + "': found '" + text + "', expected a finite number");
+  return *value;
 }
 
 }  // namespace

@@ -61,10 +61,6 @@ std::pair<std::string, std::string> parse_text_assignment(const std::string& tex
 /// Parses "x,y,z" into three finite numbers.
 std::array<double, 3> parse_triple(const std::string& text, const std::string& option);
 
-
-/// shortest_number (src/core/numbers.hpp) under its old CLI name, kept only
-/// for cmd_fit.cpp and cmd_simulate.cpp; new code calls shortest_number.
-inline std::string number(double value) { return shortest_number(value); }
 /// A number in engineering style with `digits` significant digits.
 std::string significant(double value, int digits = 6);
 

@@ -23,6 +23,12 @@ packages=(
   gnuplot-nox           # hydrocoef plot / report: PNG and SVG (pngcairo, svg terminals)
   chromium              # tests: the HTML report rendered headless
   clang libclang-rt-14-dev  # libFuzzer targets in tests/fuzz (scripts/fuzz.sh)
+  clang-format          # scripts/format.sh: the code style of .clang-format
+  dpkg-dev              # cpack -G DEB: dpkg-shlibdeps finds the package's runtime dependencies (scripts/package-test.sh)
+  pybind11-dev python3-dev python3-numpy  # the Python module (python/)
+  python3-pytest        # tests/python
+  python3-scipy         # bench/python_vs_scipy.py
+  python3-matplotlib    # examples/python/fit_and_plot.py draws its plot (prints numbers without it)
 )
 
 missing=()

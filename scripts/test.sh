@@ -2,7 +2,9 @@
 # The README's test command: installs what is missing, builds the test
 # configuration (AddressSanitizer + UBSan) and the libFuzzer targets (Clang),
 # runs the GoogleTest suite through ctest (the fuzz smoke run of every target
-# included), then builds and runs the heavy tests in an optimized build.
+# included), then builds and runs the heavy tests in an optimized build, and
+# from that build installs hydrocoef, builds programs against it and makes,
+# installs and removes its Debian package (scripts/package-test.sh).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/build.sh" test
@@ -15,3 +17,6 @@ ctest --test-dir "$root/build/test" --output-on-failure -j "$jobs" "$@"
 # build without sanitizers.
 bash "$root/scripts/build.sh" heavy
 ctest --test-dir "$root/build/heavy" --output-on-failure -j "$jobs" "$@"
+# hydrocoef as a library others build on: cmake --install, find_package and
+# pkg-config consumers, cpack -G DEB and apt-get install of the package.
+bash "$root/scripts/package-test.sh" "$root/build/heavy"

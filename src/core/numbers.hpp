@@ -10,7 +10,9 @@
 // "-inf", "nan" and "-nan" (a NaN with its sign bit set).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace hydrocoef {
 
@@ -24,5 +26,10 @@ void append_shortest_number(std::string& out, double value);
 /// The shortest text that reads back as the same float, e.g. 0.1f -> "0.1"
 /// (the double nearest 0.1f would need "0.10000000149011612").
 std::string shortest_float(float value);
+
+/// The whole of `text` read as a finite double (std::from_chars; a leading
+/// '+' is allowed, blanks are not); nullopt for anything else ("", "1x",
+/// "inf", "nan", 1e999). Callers say in their own message what was expected.
+std::optional<double> parse_finite_number(std::string_view text);
 
 }  // namespace hydrocoef

@@ -20,13 +20,9 @@ double tolerance_at(double value) { return kTolerance * std::max(1.0, std::abs(v
 }
 
 double parse_value(std::string_view text, std::string_view clause) {
-  std::string_view body = text;
-  if (!body.empty() && body.front() == '+') body.remove_prefix(1);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
-  if (body.empty() || ec != std::errc() || end != body.data() + body.size() || !std::isfinite(value))
-    refuse(clause, "'" + printable_text(text, 40) + "'", "a finite number");
-  return value;
+  const auto value = parse_finite_number(text);
+  if (!value) refuse(clause, "'" + printable_text(text, 40) + "'", "a finite number");
+  return *value;
 }
 
 std::string_view op_text(SelectionClause::Op op) {

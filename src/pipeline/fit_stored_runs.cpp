@@ -164,6 +164,30 @@ RefitResult refit_stored_fits(Database& database, const std::optional<std::strin
   return result;
 }
 
+std::vector<FitRecord> fits_made_from(Database& database, const std::string& body, const RunSelection& selection) {
+  const auto bodies = database.bodies();
+  if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) {
+    std::string names;
+    for (const auto& name : bodies) names += (names.empty() ? "" : ", ") + name;
+    throw InputError("no body '" + body + "' in " + database.path().string() + "; expected one of: " +
+                     (names.empty() ? "(none)" : names));
+  }
+  auto fits = database.fits(body);
+  if (selection.empty()) return fits;
+  const std::string wanted = selection.text();
+  std::erase_if(fits, [&](const FitRecord& fit) {
+    try {
+      return parse_selection_text(fit.run_filter).text() != wanted;
+    } catch (const InputError&) {
+      return true;  // a selection this version cannot read is no match
+    }
+  });
+  if (fits.empty())
+    throw InputError("no fits of body '" + body + "' made from the runs where " + wanted + " in " +
+                     database.path().string() + "; 'hydrocoef fits' shows each fit's selection");
+  return fits;
+}
+
 std::pair<CurveKind, int> parse_curve(const std::string& text) {
   if (text == "pchip") return {CurveKind::Pchip, 3};
   if (text.rfind("polynomial:", 0) == 0) {

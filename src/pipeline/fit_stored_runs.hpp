@@ -104,6 +104,12 @@ struct RefitResult {
 RefitResult refit_stored_fits(Database& database, const std::optional<std::string>& name,
                               const std::optional<std::string>& body);
 
+/// The stored fits of `body` made from exactly this selection of runs (a
+/// filtered fit, or one level of a per-level fit); every fit of the body for
+/// an empty selection. InputError when the body is not in the database
+/// (listing the bodies) or no fit was made from the selection.
+std::vector<FitRecord> fits_made_from(Database& database, const std::string& body, const RunSelection& selection);
+
 /// "polynomial:D" (least squares, degree D 0..9) or "pchip" (degree 3).
 std::pair<CurveKind, int> parse_curve(const std::string& text);
 

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/text.hpp"
 #include "src/surface/breakpoints.hpp"
 #include "src/surface/grid_table.hpp"
@@ -27,13 +28,9 @@ std::pair<std::string, std::string> split_assignment(const std::string& text, co
 }
 
 double finite_number(const std::string& text, const std::string& option, const std::string& whole) {
-  std::string_view body = text;
-  if (!body.empty() && body.front() == '+') body.remove_prefix(1);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
-  if (body.empty() || ec != std::errc{} || end != body.data() + body.size() || !std::isfinite(value))
-    throw InputError(option + " '" + whole + "': found '" + text + "', expected a finite number");
-  return value;
+  const auto value = parse_finite_number(text);
+  if (!value) throw InputError(option + " '" + whole + "': found '" + text + "', expected a finite number");
+  return *value;
 }
 
 /// Member `key` of a stored specification, checked to be of the expected type.

@@ -1,0 +1,170 @@
+// How the CLI reports a simulation and an equilibrium: the final state with
+// its forces and the comparison with an experiment, or JSON.
+#include "cli/simulate_output.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <numbers>
+
+#include "cli/common.hpp"
+#include "src/core/escape.hpp"
+
+namespace hydrocoef::cli {
+namespace {
+
+constexpr std::array<const char*, 6> kVelocityUnits{"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
+constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
+constexpr const char* kSignNote = "forces on the body in body axes about CO (SNAME: damping is negative)";
+
+nlohmann::json velocity_json(const Vector6& nu) {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < 6; ++i) out[std::string(kVelocityNames[i])] = nu[static_cast<Eigen::Index>(i)];
+  return out;
+}
+
+nlohmann::json force_json(const Vector6& tau) {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < 6; ++i) out[std::string(kForceNames[i])] = tau[static_cast<Eigen::Index>(i)];
+  return out;
+}
+
+nlohmann::json units_json() {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < 6; ++i) {
+    out[std::string(kVelocityNames[i])] = kVelocityUnits[i];
+    out[std::string(kForceNames[i])] = kForceUnits[i];
+  }
+  return out;
+}
+
+nlohmann::json optional_number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
+
+void print_velocity_table(const Vector6& nu, const ForceBreakdown& forces) {
+  std::cout << "  " << std::left << std::setw(4) << "" << std::setw(17) << "velocity" << std::setw(7) << ""
+            << std::setw(4) << "" << std::setw(15) << "damping" << std::setw(15) << "control" << "\n";
+  for (std::size_t i = 0; i < 6; ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    std::cout << "  " << std::setw(4) << kVelocityNames[i] << std::setw(17) << significant(nu[k], 9) << std::setw(7)
+              << kVelocityUnits[i] << std::setw(4) << kForceNames[i] << std::setw(15)
+              << significant(forces.damping_b[k], 6) << std::setw(15) << significant(forces.control_b[k], 6)
+              << kForceUnits[i] << '\n';
+  }
+  std::cout << std::right;
+}
+
+std::string integrator_text(const IntegratorSettings& s) {
+  if (s.method == IntegratorSettings::Method::Rk4) return "rk4, step " + significant(s.step_s, 6) + " s";
+  return "dopri5, rtol " + significant(s.relative_tolerance, 3) + ", atol " + significant(s.absolute_tolerance, 3) +
+         ", max step " + significant(s.max_step_s, 6) + " s";
+}
+
+}  // namespace
+
+std::string force_unit(std::size_t dof) { return kForceUnits[dof]; }
+
+void print_simulation(const SimulationReport& r, bool json) {
+  const TrajectorySample& last = r.result.samples.back();
+
+  if (json) {
+    nlohmann::json out = {{"vehicle", r.vehicle},
+                          {"scenario", r.scenario_path},
+                          {"name", r.scenario.name},
+                          {"duration", r.scenario.duration_s},
+                          {"integrator", integrator_text(r.scenario.integrator)},
+                          {"steps", r.result.steps},
+                          {"rejected_steps", r.result.rejected_steps},
+                          {"evaluations", r.result.evaluations},
+                          {"samples", r.result.samples.size()},
+                          {"wall_time_s", r.wall_s},
+                          {"notes", r.result.notes},
+                          {"trajectory", r.out ? nlohmann::json(*r.out) : nlohmann::json()},
+                          {"sign_convention", kSignNote},
+                          {"units", units_json()}};
+    out["final"] = {{"t", last.t_s},
+                    {"position_n", {{"x", last.p_n.x()}, {"y", last.p_n.y()}, {"z", last.p_n.z()}}},
+                    {"euler_rad", {{"phi", last.euler_rad[0]}, {"theta", last.euler_rad[1]}, {"psi", last.euler_rad[2]}}},
+                    {"velocity", velocity_json(last.nu_b)},
+                    {"relative_velocity", velocity_json(last.forces.nu_r_b)},
+                    {"forces",
+                     {{"control", force_json(last.forces.control_b)},
+                      {"damping", force_json(last.forces.damping_b)},
+                      {"hydrostatic", force_json(last.forces.hydrostatic_b)},
+                      {"coriolis", force_json(last.forces.coriolis_b)}}}};
+    if (r.experiment) {
+      out["experiment"] = *r.experiment;
+      out["comparison"] = nlohmann::json::array();
+      for (const auto& c : r.comparison)
+        out["comparison"].push_back({{"component", c.component},
+                                     {"samples", c.samples},
+                                     {"rms_error", c.rms_error},
+                                     {"steady_measured", c.steady_measured},
+                                     {"steady_simulated", c.steady_simulated},
+                                     {"steady_error", c.steady_error},
+                                     {"t63_measured_s", optional_number(c.t63_measured_s)},
+                                     {"t63_simulated_s", optional_number(c.t63_simulated_s)}});
+    }
+    std::cout << escape::json_text(out, 2) << '\n';
+    return;
+  }
+
+  std::cout << "simulate " << (r.scenario.name.empty() ? r.scenario_path : r.scenario.name) << "\n  vehicle "
+            << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " (" << r.vehicle
+            << "), scenario " << r.scenario_path << "\n  " << significant(r.scenario.duration_s, 6) << " s, "
+            << integrator_text(r.scenario.integrator) << ": " << r.result.steps << " steps";
+  if (r.result.rejected_steps) std::cout << " (" << r.result.rejected_steps << " rejected)";
+  std::cout << ", " << r.result.evaluations << " evaluations, " << significant(r.wall_s, 3) << " s wall\n\n";
+  std::cout << "  at t = " << significant(last.t_s, 6) << " s: position (" << significant(last.p_n.x(), 6) << ", "
+            << significant(last.p_n.y(), 6) << ", " << significant(last.p_n.z(), 6) << ") m NED, attitude (roll, pitch, yaw) ("
+            << significant(last.euler_rad[0] * 180.0 / std::numbers::pi, 5) << ", "
+            << significant(last.euler_rad[1] * 180.0 / std::numbers::pi, 5) << ", "
+            << significant(last.euler_rad[2] * 180.0 / std::numbers::pi, 5) << ") deg\n";
+  print_velocity_table(last.nu_b, last.forces);
+  std::cout << "  (" << kSignNote << ")\n";
+  for (const auto& note : r.result.notes) std::cout << "  note: " << note << '\n';
+  if (r.out) std::cout << "  trajectory: " << *r.out << " (" << r.result.samples.size() << " rows)\n";
+  if (r.experiment) {
+    std::cout << "\n  comparison with " << *r.experiment << " (measured - simulated; steady = mean of the last "
+              << significant(100.0 * r.steady_fraction, 3) << " %)\n  " << std::left << std::setw(6) << "" << std::setw(8)
+              << "rows" << std::setw(14) << "RMS" << std::setw(14) << "steady meas." << std::setw(14) << "steady sim."
+              << std::setw(14) << "steady error" << std::setw(10) << "t63 meas." << "t63 sim. [s]\n";
+    for (const auto& c : r.comparison)
+      std::cout << "  " << std::setw(6) << c.component << std::setw(8) << c.samples << std::setw(14)
+                << significant(c.rms_error, 4) << std::setw(14) << significant(c.steady_measured, 5) << std::setw(14)
+                << significant(c.steady_simulated, 5) << std::setw(14) << significant(c.steady_error, 4) << std::setw(10)
+                << significant(c.t63_measured_s, 4) << significant(c.t63_simulated_s, 4) << '\n';
+    std::cout << std::right;
+  }
+}
+
+void print_equilibrium(const EquilibriumReport& r, bool json) {
+  if (json) {
+    nlohmann::json out = {{"vehicle", r.vehicle},
+                          {"tau", force_json(r.in.tau_b)},
+                          {"velocity", velocity_json(r.eq.nu_b)},
+                          {"relative_velocity", velocity_json(r.eq.forces.nu_r_b)},
+                          {"damping", force_json(r.eq.forces.damping_b)},
+                          {"residual", force_json(r.eq.residual_b)},
+                          {"converged", r.eq.converged},
+                          {"iterations", r.eq.iterations},
+                          {"attitude_deg", {{"phi", r.attitude[0]}, {"theta", r.attitude[1]}, {"psi", r.attitude[2]}}},
+                          {"units", units_json()},
+                          {"sign_convention", kSignNote}};
+    std::cout << escape::json_text(out, 2) << '\n';
+    return;
+  }
+  std::cout << "equilibrium of " << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name)
+            << " under";
+  for (std::size_t i = 0; i < 6; ++i)
+    if (r.in.tau_b[static_cast<Eigen::Index>(i)] != 0.0)
+      std::cout << " " << kForceNames[i] << " = " << significant(r.in.tau_b[static_cast<Eigen::Index>(i)], 6) << " "
+                << kForceUnits[i];
+  if (r.in.tau_b.isZero()) std::cout << " no force";
+  std::cout << " (attitude held; " << r.eq.iterations << " iterations, largest residual "
+            << significant(r.eq.residual_b.cwiseAbs().maxCoeff(), 3) << ")\n";
+  print_velocity_table(r.eq.nu_b, r.eq.forces);
+  std::cout << "  (" << kSignNote << ")\n";
+}
+
+
+}  // namespace hydrocoef::cli

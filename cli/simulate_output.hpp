@@ -1,0 +1,43 @@
+// How the CLI reports a simulation and an equilibrium (text or JSON).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/dynamics/equilibrium.hpp"
+#include "src/dynamics/experiment.hpp"
+#include "src/dynamics/simulation.hpp"
+
+namespace hydrocoef::cli {
+
+/// What a simulate command ran and got.
+struct SimulationReport {
+  const std::string& vehicle;          ///< the vehicle file
+  const std::string& vehicle_name;     ///< its name ("" when it gives none)
+  const std::string& scenario_path;
+  const Scenario& scenario;
+  const SimulationResult& result;
+  double wall_s = 0.0;
+  const std::optional<std::string>& out;         ///< the trajectory CSV written, if any
+  const std::optional<std::string>& experiment;  ///< the measured trajectory compared with, if any
+  double steady_fraction = 0.2;
+  const std::vector<ComponentComparison>& comparison;
+};
+
+/// What an equilibrium command solved.
+struct EquilibriumReport {
+  const std::string& vehicle;
+  const std::string& vehicle_name;
+  const EquilibriumInputs& in;
+  const EquilibriumResult& eq;
+  const std::array<double, 3>& attitude;  ///< roll, pitch, yaw held [deg]
+};
+
+void print_simulation(const SimulationReport& report, bool json);
+void print_equilibrium(const EquilibriumReport& report, bool json);
+/// "N" for X, Y, Z; "N m" for K, M, N.
+std::string force_unit(std::size_t dof);
+
+}  // namespace hydrocoef::cli

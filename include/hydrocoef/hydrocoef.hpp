@@ -1,0 +1,34 @@
+// hydrocoef: CFD results to hydrodynamic coefficient databases. The public
+// C++ API, all of it (every header includes only the standard library and
+// these):
+//
+//   hydrocoef/hydrocoef.hpp    this file: includes the others
+//   hydrocoef/error.hpp        InputError, the exception for bad input, with the CLI's message
+//   hydrocoef/version.hpp      kVersion ("0.1.0"), kVersionMajor/Minor/Patch
+//   hydrocoef/database.hpp     Database: open a run database, list and select
+//                              runs, import CFD results, fit damping laws,
+//                              list fits and surfaces, read a surface
+//   hydrocoef/surface.hpp      Surface: a coefficient surface evaluated at a
+//                              point, with its gradient, or at many points at
+//                              once on every core
+//   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
+//                              trajectory as columns
+//
+// Link with the CMake target hydrocoef::hydrocoef (find_package(hydrocoef)).
+// Conventions throughout: SI units; body axes after Fossen/SNAME (x forward,
+// y starboard, z down); velocity u, v, w [m/s], p, q, r [rad/s]; generalized
+// force X, Y, Z [N], K, M, N [N m] on the body in body axes, about the run's
+// reference point (a damping force is negative along the motion).
+//
+// A small example:
+//
+//   auto db = hydrocoef::Database::open("asr-v.db", hydrocoef::OpenMode::ReadOnly);
+//   hydrocoef::Surface yaw = db.surface("asr-v-yaw");        // N(r)
+//   double n = yaw.evaluate({0.15})[0];                       // N m at r = 0.15 rad/s
+#pragma once
+
+#include "hydrocoef/database.hpp"
+#include "hydrocoef/error.hpp"
+#include "hydrocoef/simulation.hpp"
+#include "hydrocoef/surface.hpp"
+#include "hydrocoef/version.hpp"

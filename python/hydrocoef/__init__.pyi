@@ -1,0 +1,135 @@
+# Type stubs for the Python module hydrocoef (python/src/module.cpp, python/hydrocoef/__init__.py).
+import os
+from typing import Any, Iterable, Mapping, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+_Path = Union[str, os.PathLike[str]]
+_Texts = Union[str, Sequence[str], None]
+_Values = Union[float, int, npt.ArrayLike]
+
+class InputError(ValueError):
+    """Bad input, with the message the hydrocoef command-line tool prints."""
+
+class Table(dict[str, np.ndarray]):
+    units: dict[str, str]
+    notes: list[str]
+    def to_pandas(self) -> Any: ...
+
+class Surface:
+    @property
+    def name(self) -> str: ...
+    @property
+    def body(self) -> str: ...
+    @property
+    def method(self) -> str: ...
+    @property
+    def stale(self) -> bool: ...
+    @property
+    def axes(self) -> list[str]: ...
+    @property
+    def outputs(self) -> list[str]: ...
+    @property
+    def axis_units(self) -> list[str]: ...
+    @property
+    def output_units(self) -> list[str]: ...
+    @property
+    def bounds(self) -> dict[str, tuple[float, float]]: ...
+    @property
+    def out_of_range(self) -> dict[str, str]: ...
+    def __call__(self, values: Mapping[str, _Values] | None = ..., /, *, gradient: bool = ..., threads: int = ...,
+                 **axes: _Values) -> dict[str, np.ndarray]: ...
+
+class Fit:
+    name: str
+    body: str
+    output: str
+    variable: str
+    terms: str
+    loss: str
+    where: str
+    mirror: str
+    sign_convention: str
+    @property
+    def coefficients(self) -> dict[str, float]: ...
+    @property
+    def std_errors(self) -> dict[str, float]: ...
+    @property
+    def units(self) -> dict[str, str]: ...
+    rmse: float
+    r2: float
+    n: int
+    runs: list[int]
+    warnings: list[str]
+    id: int
+    stale: bool
+    created_at: str
+
+class SurfaceInfo:
+    name: str
+    body: str
+    kind: str
+    method: str
+    axes: list[str]
+    outputs: list[str]
+    stale: bool
+    run_count: int
+    created_at: str
+
+class ImportedFile:
+    path: str
+    format: str
+    runs: int
+    runs_created: int
+    runs_extended: int
+    already_imported: bool
+    replaced: bool
+    notes: list[str]
+
+class ImportSummary:
+    files: list[ImportedFile]
+    notes: list[str]
+    excluded: int
+    runs_created: int
+    runs_extended: int
+    already_imported: int
+
+class Database:
+    def __init__(self, path: _Path, mode: str = "create") -> None: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def closed(self) -> bool: ...
+    @property
+    def read_only(self) -> bool: ...
+    def close(self) -> None: ...
+    def __enter__(self) -> Database: ...
+    def __exit__(self, *args: Any) -> None: ...
+    def runs(self, where: _Texts = None, body: str | None = None,
+             exclude_runs: Iterable[int] | None = None) -> Table: ...
+    def import_files(self, paths: Union[_Path, Sequence[_Path]], *, body: str | None = None, format: str = "auto",
+                     settings: Mapping[str, Any] | None = None, columns: Mapping[str, str] | None = None,
+                     units: Mapping[str, str] | None = None, disturbance_columns: _Texts = None,
+                     ignore: _Texts = None, monitors: Mapping[str, str] | None = None, average_last: int = 1,
+                     include: _Texts = None, exclude: _Texts = None, key_from_name: str | None = None,
+                     manifest: _Path | None = None, sidecars: bool = True, prefer_surfaces: bool = False,
+                     replace: bool = False, also: str = "", jobs: int = 0) -> ImportSummary: ...
+    def fit(self, *, body: str, output: str, terms: str, where: _Texts = None,
+            exclude_runs: Iterable[int] | None = None, mirror: _Texts = None, mirror_odd: _Texts = None,
+            loss: str = "squared", name: str | None = None, replace: bool = False, store: bool = True) -> Fit: ...
+    def fits(self, body: str | None = None) -> list[Fit]: ...
+    def build_surface(self, name: str, *, body: str, axes: _Texts, outputs: _Texts, method: str = "linear",
+                      extrapolate: _Texts = None, where: _Texts = None, exclude_runs: Sequence[int] | None = None,
+                      mirror: _Texts = None, mirror_odd: _Texts = None, rbf_kernel: str = "cubic",
+                      rbf_degree: int = 1, rbf_smoothing: float = 0.0,
+                      resample: Sequence[Sequence[float]] | None = None, resample_method: str = "linear",
+                      far_threshold: float = 0.25, replace: bool = False) -> SurfaceInfo: ...
+    def rebuild_surfaces(self, name: str | None = None, *, stale_only: bool = False) -> list[SurfaceInfo]: ...
+    def surfaces(self, body: str | None = None) -> list[SurfaceInfo]: ...
+    def surface(self, name: str) -> Surface: ...
+
+def simulate(vehicle: Union[_Path, Mapping[str, Any]], scenario: Union[_Path, Mapping[str, Any]],
+             database: Union[_Path, Database, None] = None) -> Table: ...

@@ -1,0 +1,212 @@
+// Database (include/hydrocoef/database.hpp): opening and closing, and what is
+// read back: runs as columns, fits, surfaces. The import is src/api/import.cpp,
+// the fit src/api/fit.cpp.
+#include "src/api/internal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace hydrocoef::api {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+api_internal::StoreDatabase::OpenMode store_mode(OpenMode mode) {
+  switch (mode) {
+    case OpenMode::ReadOnly: return api_internal::StoreDatabase::OpenMode::ReadOnly;
+    case OpenMode::ReadWrite: return api_internal::StoreDatabase::OpenMode::MustExist;
+    case OpenMode::Create: return api_internal::StoreDatabase::OpenMode::CreateIfMissing;
+  }
+  throw std::invalid_argument("hydrocoef::Database::open: unknown OpenMode");
+}
+
+std::optional<std::string> optional_body(const std::string& body) {
+  return body.empty() ? std::nullopt : std::optional<std::string>(body);
+}
+
+std::string joined(const std::vector<std::string>& texts, const char* separator) {
+  std::string out;
+  for (const auto& text : texts) out += (out.empty() ? "" : separator) + text;
+  return out;
+}
+
+}  // namespace
+
+api_internal::StoreDatabase& Database::Impl::open_store() {
+  if (!store) throw InputError(SourceLocation{path}, "database is closed");
+  return *store;
+}
+
+api_internal::StoreDatabase& Database::Impl::writable_store(const char* what) {
+  auto& open = open_store();
+  if (read_only)
+    throw InputError(SourceLocation{path}, std::string("database is open read-only; ") + what +
+                                               " needs it opened with OpenMode::ReadWrite or OpenMode::Create");
+  return open;
+}
+
+Database::Database(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Database::Database(Database&&) noexcept = default;
+Database& Database::operator=(Database&&) noexcept = default;
+Database::~Database() = default;
+
+Database Database::open(const std::string& path, OpenMode mode) {
+  auto impl = std::make_unique<Impl>();
+  impl->path = path;
+  impl->read_only = mode == OpenMode::ReadOnly;
+  impl->store.emplace(path, store_mode(mode));
+  return Database(std::move(impl));
+}
+
+const std::string& Database::path() const { return impl_->path; }
+
+bool Database::is_open() const {
+  const std::lock_guard lock(impl_->mutex);
+  return impl_->store.has_value();
+}
+
+bool Database::read_only() const { return impl_->read_only; }
+
+void Database::close() {
+  const std::lock_guard lock(impl_->mutex);
+  impl_->store.reset();
+}
+
+RunTable Database::runs(const std::vector<std::string>& where, const std::string& body,
+                        const std::vector<std::int64_t>& exclude_runs) const {
+  const RunSelection selection = parse_selection(where, exclude_runs);
+  const std::lock_guard lock(impl_->mutex);
+  RunFilter filter;
+  filter.body = optional_body(body);
+  auto runs = impl_->open_store().runs(filter);
+  std::erase_if(runs, [&](const StoredRun& run) { return !selection.matches(run.key, run.id); });
+
+  RunTable table;
+  const std::size_t n = runs.size();
+  std::set<std::string> disturbance_names;
+  for (const auto& run : runs)
+    for (const auto& [name, value] : run.key.disturbances) disturbance_names.insert(name);
+  for (const auto& name : disturbance_names) table.disturbances[name].assign(n, kNaN);
+  for (std::size_t c = 0; c < 6; ++c) {
+    table.velocity[c].resize(n);
+    table.force[c].assign(n, kNaN);
+    table.force_std_error[c].assign(n, kNaN);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const StoredRun& run = runs[i];
+    table.id.push_back(run.id);
+    table.body.push_back(run.key.body);
+    std::set<std::string> sources;
+    for (std::size_t c = 0; c < 6; ++c) {
+      table.velocity[c][i] = run.key.nu_b[c];
+      const auto& force = run.tau_b[c];
+      if (!force) continue;
+      // Forces on the body, as `runs --csv` gives them: a damping magnitude as tabulated is negated.
+      table.force[c][i] = force->sign == SignConvention::OpposingMotion ? -force->value.total : force->value.total;
+      if (force->statistics) table.force_std_error[c][i] = force->statistics->values.standard_error;
+      sources.insert(force->source_path);
+    }
+    for (const auto& [name, value] : run.key.disturbances) table.disturbances[name][i] = value;
+    table.source.push_back(joined(std::vector<std::string>(sources.begin(), sources.end()), ";"));
+    table.history_flags.push_back(joined(run_flags(run), ","));
+  }
+  return table;
+}
+
+std::vector<FitSummary> Database::fits(const std::string& body) const {
+  const std::lock_guard lock(impl_->mutex);
+  std::vector<FitSummary> out;
+  for (const FitRecord& record : impl_->open_store().fits(optional_body(body))) {
+    FitSummary fit;
+    fit.name = record.name;
+    fit.body = record.body;
+    fit.output = record.dof;
+    fit.variable = record.variable;
+    fit.terms = record.terms;
+    fit.loss = record.loss;
+    fit.where = record.run_filter;
+    fit.mirror = record.mirror;
+    fit.sign_convention = std::string(to_string(record.sign));
+    const auto units = coefficient_units(record.terms, record.dof, record.variable);
+    for (std::size_t k = 0; k < record.coefficients.size(); ++k) {
+      const auto& c = record.coefficients[k];
+      fit.coefficients.push_back(
+          {c.term, c.value, c.std_error.value_or(kNaN), k < units.size() ? units[k] : std::string()});
+    }
+    fit.rmse = record.rmse;
+    fit.r2 = record.r2;
+    fit.n = record.n;
+    fit.runs = record.run_ids;
+    fit.id = record.id;
+    fit.stale = record.stale;
+    fit.created_at = record.created_at;
+    out.push_back(std::move(fit));
+  }
+  return out;
+}
+
+namespace {
+
+SurfaceInfo surface_info(const SurfaceRecord& record, const CoefficientSurface& surface) {
+  return {record.name,         record.body,  record.kind,           surface.method_name(), surface.axis_names(),
+          surface.output_names(), record.stale, record.run_ids.size(), record.created_at};
+}
+
+}  // namespace
+
+std::vector<SurfaceInfo> Database::surfaces(const std::string& body) const {
+  const std::lock_guard lock(impl_->mutex);
+  std::vector<SurfaceInfo> out;
+  // Read as `surface list` reads it: the definition checked against the data.
+  for (const SurfaceRecord& record : impl_->open_store().surfaces(optional_body(body)))
+    out.push_back(surface_info(record, surface_from_record(record)));
+  return out;
+}
+
+SurfaceInfo Database::build_surface(const SurfaceBuildOptions& options) {
+  SurfaceBuildSpec spec;
+  spec.surface.axes = options.axes;
+  spec.surface.outputs = options.outputs;
+  spec.surface.method = options.method;
+  spec.surface.out_of_range = out_of_range_policies(options.axes, options.extrapolate, "extrapolate");
+  spec.surface.rbf.kernel = parse_rbf_kernel(options.rbf_kernel);
+  spec.surface.rbf.polynomial_degree = options.rbf_degree;
+  spec.surface.rbf.smoothing = options.rbf_smoothing;
+  if (!options.resample.empty()) spec.surface.resample = options.resample;
+  spec.surface.resample_method = options.resample_method;
+  spec.surface.far_threshold = options.far_threshold;
+  spec.where = options.where;
+  spec.exclude_runs = options.exclude_runs;
+  spec.mirror_planes = options.mirror;
+  spec.mirror_odd = options.mirror_odd;
+  const std::lock_guard lock(impl_->mutex);
+  const SurfaceBuildResult result =
+      build_and_store_surface(impl_->writable_store("a surface build"), options.name, options.body, spec,
+                              options.replace ? api_internal::StoreDatabase::NameTaken::Replace
+                                              : api_internal::StoreDatabase::NameTaken::Refuse);
+  return surface_info(result.stored.record, result.stored.surface);
+}
+
+std::vector<SurfaceInfo> Database::rebuild_surfaces(const std::string& name, bool stale_only) {
+  const std::lock_guard lock(impl_->mutex);
+  auto& store = impl_->writable_store("a surface rebuild");
+  std::vector<SurfaceInfo> out;
+  for (const SurfaceRecord& record :
+       surfaces_to_rebuild(store, name.empty() ? std::nullopt : std::optional(name), std::nullopt, stale_only)) {
+    const SurfaceBuildResult result = rebuild_surface(store, record);
+    out.push_back(surface_info(result.stored.record, result.stored.surface));
+  }
+  return out;
+}
+
+Surface Database::surface(const std::string& name) const {
+  const std::lock_guard lock(impl_->mutex);
+  StoredSurface stored = load_surface(impl_->open_store(), name);
+  std::string method = stored.surface.method_name();
+  return Surface(std::make_shared<const Surface::Impl>(Surface::Impl{
+      std::move(stored.surface), stored.record.name, stored.record.body, std::move(method), stored.record.stale}));
+}
+
+}  // namespace hydrocoef::api

@@ -1,0 +1,399 @@
+#include "src/surface/batch_evaluation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "src/core/error.hpp"
+
+namespace hydrocoef {
+namespace {
+
+// Points per chunk: large enough that taking a chunk (one atomic add) costs
+// nothing beside it, small enough that two threads finish close together.
+constexpr std::size_t kChunkPoints = 8192;
+
+// ---- The fast path of gridded tables ----------------------------------------
+//
+// A gridded table's linear or cubic Hermite interpolant at a point inside
+// every axis's range, with the axis count N and the terms per axis K (2:
+// linear; 4: pchip, makima, natural spline) fixed at compile time and the
+// table's layout read once per batch from its documented data (values(),
+// hermite_data(), see grid_table.hpp), so that a point costs its arithmetic
+// and no call. It is GridTable::evaluate's own computation, done in the same
+// order (the cell, the weights, the product of the weights of axes 0..N-2,
+// then per output the sum over the last axis's terms of partial sums), so it
+// gives the same numbers bit for bit; tests/surface/batch_evaluation_test.cpp
+// checks that for every method and axis count. A point outside a range, or
+// NaN, goes to CoefficientSurface::evaluate: its extrapolation policy or its
+// message.
+
+constexpr std::size_t power(std::size_t base, std::size_t exponent) {
+  std::size_t result = 1;
+  for (std::size_t i = 0; i < exponent; ++i) result *= base;
+  return result;
+}
+
+struct GridLayout {
+  std::size_t n_out = 0;
+  const double* data = nullptr;  // values() (linear) or hermite_data() (cubic)
+  std::array<const double*, kMaxGridAxes> x{};
+  std::array<std::size_t, kMaxGridAxes> last_cell{};
+  std::array<std::size_t, kMaxGridAxes> stride{};  // data elements between neighbouring nodes along the axis
+  std::array<double, kMaxGridAxes> lo{}, hi{}, inv_step{};
+  std::array<bool, kMaxGridAxes> even{};
+  std::vector<std::size_t> term_offsets;  // of the K^N terms from the cell's base, axis 0's term fastest
+};
+
+GridLayout grid_layout(const GridTable& table, std::size_t terms_per_axis) {
+  const std::size_t n = table.axis_count(), n_out = table.output_count();
+  const bool cubic = terms_per_axis == 4;
+  GridLayout g;
+  g.n_out = n_out;
+  g.data = cubic ? table.hermite_data().data() : table.values().data();
+  const std::size_t node_block = cubic ? (std::size_t{1} << n) * n_out : n_out;
+  std::size_t nodes = 1;
+  std::array<std::array<std::size_t, 4>, kMaxGridAxes> axis_offsets{};
+  for (std::size_t a = 0; a < n; ++a) {
+    const auto& x = table.axes()[a].breakpoints;
+    g.x[a] = x.data();
+    g.last_cell[a] = x.size() - 2;
+    g.stride[a] = nodes * node_block;
+    g.lo[a] = x.front();
+    g.hi[a] = x.back();
+    g.inv_step[a] = 1.0 / ((x.back() - x.front()) / static_cast<double>(x.size() - 1));
+    g.even[a] = table.evenly_spaced(a);
+    const std::size_t slope = (std::size_t{1} << a) * n_out;
+    axis_offsets[a] = cubic ? std::array<std::size_t, 4>{0, slope, g.stride[a], g.stride[a] + slope}
+                            : std::array<std::size_t, 4>{0, g.stride[a], 0, 0};
+    nodes *= x.size();
+  }
+  g.term_offsets.assign(power(terms_per_axis, n), 0);
+  for (std::size_t t = 0; t < g.term_offsets.size(); ++t) {
+    std::size_t rest = t;
+    for (std::size_t a = 0; a < n; ++a) {
+      g.term_offsets[t] += axis_offsets[a][rest % terms_per_axis];
+      rest /= terms_per_axis;
+    }
+  }
+  return g;
+}
+
+// The cubic Hermite basis on a cell of width h at t (grid_table.cpp's).
+inline void hermite_weights(double t, double h, double* w) {
+  const double t2 = t * t;
+  const double t3 = t2 * t;
+  w[0] = 2.0 * t3 - 3.0 * t2 + 1.0;
+  w[1] = h * (t3 - 2.0 * t2 + t);
+  w[2] = 3.0 * t2 - 2.0 * t3;
+  w[3] = h * (t3 - t2);
+}
+
+/// The axes of a GridLayout with N known at compile time, copied where each
+/// thread's loop keeps them: stores to the output columns (doubles) cannot
+/// alias a local copy, so its numbers stay in registers.
+template <std::size_t N>
+struct LocalAxes {
+  std::array<const double*, N> x;
+  std::array<std::size_t, N> last_cell, stride;
+  std::array<double, N> lo, hi, inv_step;
+  std::array<bool, N> even;
+
+  explicit LocalAxes(const GridLayout& g) {
+    for (std::size_t a = 0; a < N; ++a) {
+      x[a] = g.x[a];
+      last_cell[a] = g.last_cell[a];
+      stride[a] = g.stride[a];
+      lo[a] = g.lo[a];
+      hi[a] = g.hi[a];
+      inv_step[a] = g.inv_step[a];
+      even[a] = g.even[a];
+    }
+  }
+};
+
+/// out[j * out_stride] for outputs j0 .. j0+M-1: GridTable's accumulate.
+template <std::size_t M, std::size_t kInner, std::size_t K>
+inline void accumulate(const double* inner, const double* last, const std::size_t* offsets, const double* data,
+                       double* out) {
+  std::array<double, M> total{};
+  for (std::size_t e = 0; e < K; ++e) {
+    std::array<double, M> part{};
+    const std::size_t* term_offsets = offsets + e * kInner;
+    for (std::size_t t = 0; t < kInner; ++t) {
+      const double* row = data + term_offsets[t];
+      const double w = inner[t];
+      for (std::size_t j = 0; j < M; ++j) part[j] += w * row[j];
+    }
+    for (std::size_t j = 0; j < M; ++j) total[j] += last[e] * part[j];
+  }
+  for (std::size_t j = 0; j < M; ++j) out[j] = total[j];
+}
+
+/// Every output at a point inside every axis's range; false (nothing
+/// written) when a coordinate is outside its range or NaN.
+template <std::size_t N, std::size_t K, std::size_t kOutputs>
+inline bool grid_inside(const LocalAxes<N>& g, const double* data, const std::size_t* offsets, std::size_t n_out,
+                        const double* point, double* out) {
+  std::array<std::array<double, K>, N> w;
+  std::size_t base = 0;
+#pragma GCC unroll 6
+  for (std::size_t a = 0; a < N; ++a) {
+    const double value = point[a];
+    if (!(value >= g.lo[a] && value <= g.hi[a])) return false;
+    const double* x = g.x[a];
+    const std::size_t last_cell = g.last_cell[a];
+    std::size_t cell;
+    if (g.even[a]) {
+      // Through a signed integer: x86-64 converts a double to one in one instruction.
+      cell = std::min(static_cast<std::size_t>(static_cast<std::int64_t>((value - g.lo[a]) * g.inv_step[a])), last_cell);
+      if (value < x[cell]) {
+        --cell;
+      } else if (cell < last_cell && value >= x[cell + 1]) {
+        ++cell;
+      }
+    } else {
+      const double* first = x;
+      std::size_t length = last_cell + 1;
+      while (length > 1) {
+        const std::size_t half = length / 2;
+        first = first[half] <= value ? first + half : first;
+        length -= half;
+      }
+      cell = static_cast<std::size_t>(first - x);
+    }
+    const double h = x[cell + 1] - x[cell];
+    const double t = (value - x[cell]) / h;
+    base += cell * g.stride[a];
+    if constexpr (K == 2) {
+      w[a][0] = 1.0 - t;
+      w[a][1] = t;
+    } else {
+      hermite_weights(t, h, w[a].data());
+    }
+  }
+  constexpr std::size_t kInner = power(K, N - 1);
+  std::array<double, kInner> inner;
+  inner[0] = 1.0;
+  std::size_t length = 1;
+  for (std::size_t a = 0; a + 1 < N; ++a) {
+    for (std::size_t e = K; e-- > 1;)
+      for (std::size_t j = 0; j < length; ++j) inner[e * length + j] = inner[j] * w[a][e];
+    for (std::size_t j = 0; j < length; ++j) inner[j] *= w[a][0];
+    length *= K;
+  }
+  const double* cell_data = data + base;
+  const double* last = w[N - 1].data();
+  if constexpr (kOutputs > 0) {
+    accumulate<kOutputs, kInner, K>(inner.data(), last, offsets, cell_data, out);
+    return true;
+  }
+  std::size_t j = 0;
+  for (; j + 4 <= n_out; j += 4) accumulate<4, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j);
+  if (n_out - j >= 2) {
+    accumulate<2, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j);
+    j += 2;
+  }
+  if (j < n_out) accumulate<1, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j);
+  return true;
+}
+
+// ---- The batch ------------------------------------------------------------------
+
+/// The columns and the scratch space of one thread.
+struct Work {
+  const CoefficientSurface& surface;
+  std::span<const StridedInput> inputs;
+  std::span<const StridedOutput> outputs;
+  std::span<const StridedOutput> gradients;
+  const GridLayout* grid = nullptr;
+  std::vector<double> point, values, gradient;
+};
+
+/// Points [i, end) on the fast path; i is where an exception left it.
+template <std::size_t N, std::size_t K, std::size_t kOutputs>
+void grid_points(Work& w, std::size_t& i, std::size_t end) {
+  const LocalAxes<N> axes(*w.grid);
+  const double* data = w.grid->data;
+  const std::size_t* offsets = w.grid->term_offsets.data();
+  std::array<const double*, N> in;
+  std::array<std::ptrdiff_t, N> in_stride;
+  for (std::size_t a = 0; a < N; ++a) {
+    in[a] = w.inputs[a].data;
+    in_stride[a] = w.inputs[a].stride;
+  }
+  double* values = w.values.data();
+  const std::size_t n_out = w.values.size();
+  double* const out0 = w.outputs[0].data;
+  const std::ptrdiff_t out0_stride = w.outputs[0].stride;
+  for (; i < end; ++i) {
+    const auto at = static_cast<std::ptrdiff_t>(i);
+    std::array<double, N> point;
+    for (std::size_t a = 0; a < N; ++a) point[a] = in[a][at * in_stride[a]];
+    if (!grid_inside<N, K, kOutputs>(axes, data, offsets, n_out, point.data(), values)) {
+      std::copy(point.begin(), point.end(), w.point.begin());
+      w.surface.evaluate(w.point, w.values);
+    }
+    if constexpr (kOutputs == 1) {
+      out0[at * out0_stride] = values[0];
+    } else {
+      for (std::size_t k = 0; k < n_out; ++k) w.outputs[k].data[at * w.outputs[k].stride] = values[k];
+    }
+  }
+}
+
+/// Points [i, end) through CoefficientSurface (gradients, RBF, nearest).
+void any_points(Work& w, std::size_t& i, std::size_t end) {
+  const std::size_t n_axes = w.point.size(), n_out = w.values.size();
+  const bool with_gradient = !w.gradients.empty();
+  for (; i < end; ++i) {
+    const auto at = static_cast<std::ptrdiff_t>(i);
+    for (std::size_t a = 0; a < n_axes; ++a) w.point[a] = w.inputs[a].data[at * w.inputs[a].stride];
+    if (with_gradient) {
+      w.surface.evaluate_with_gradient(w.point, w.values, w.gradient);
+      for (std::size_t g = 0; g < w.gradient.size(); ++g)
+        w.gradients[g].data[at * w.gradients[g].stride] = w.gradient[g];
+    } else {
+      w.surface.evaluate(w.point, w.values);
+    }
+    for (std::size_t k = 0; k < n_out; ++k) w.outputs[k].data[at * w.outputs[k].stride] = w.values[k];
+  }
+}
+
+using PointsFunction = void (*)(Work&, std::size_t&, std::size_t);
+
+// Per axis count: any number of outputs, and one output (the common case, with its sum unrolled).
+template <std::size_t K, std::size_t kOutputs, std::size_t... N>
+constexpr std::array<PointsFunction, sizeof...(N)> grid_functions(std::index_sequence<N...>) {
+  return {&grid_points<N + 1, K, kOutputs>...};
+}
+
+/// How the batch evaluates its points: the fast path for a gridded table with
+/// linear or cubic Hermite interpolation (without gradients), else the surface's own calls.
+PointsFunction points_function(const CoefficientSurface& surface, bool with_gradient, std::optional<GridLayout>& grid) {
+  const GridTable* table = surface.grid();
+  if (with_gradient || !table || table->axis_count() < 1 || table->axis_count() > kMaxGridAxes ||
+      table->method() == Interpolation::Nearest)
+    return &any_points;
+  static constexpr auto kLinear = grid_functions<2, 0>(std::make_index_sequence<kMaxGridAxes>());
+  static constexpr auto kCubic = grid_functions<4, 0>(std::make_index_sequence<kMaxGridAxes>());
+  static constexpr auto kLinearOne = grid_functions<2, 1>(std::make_index_sequence<kMaxGridAxes>());
+  static constexpr auto kCubicOne = grid_functions<4, 1>(std::make_index_sequence<kMaxGridAxes>());
+  const bool cubic = table->method() != Interpolation::Linear, one = table->output_count() == 1;
+  grid = grid_layout(*table, cubic ? 4 : 2);
+  return (cubic ? (one ? kCubicOne : kCubic) : (one ? kLinearOne : kLinear))[table->axis_count() - 1];
+}
+
+/// What the threads share: the columns, the next chunk to take, and the first
+/// failure found so far.
+class Batch {
+ public:
+  Batch(const CoefficientSurface& surface, std::size_t count, std::span<const StridedInput> inputs,
+        std::span<const StridedOutput> outputs, std::span<const StridedOutput> gradients)
+      : surface_(surface), count_(count), inputs_(inputs), outputs_(outputs), gradients_(gradients),
+        points_(points_function(surface, !gradients.empty(), grid_)), first_failure_(count) {}
+
+  /// Takes chunks until none is left or every chunk left starts after a
+  /// failure already found (chunks are taken in index order, so none of them
+  /// can hold the first failing point).
+  void work() {
+    const std::size_t n_axes = surface_.axis_count(), n_out = surface_.output_count();
+    Work w{surface_,
+           inputs_,
+           outputs_,
+           gradients_,
+           grid_ ? &*grid_ : nullptr,
+           std::vector<double>(n_axes),
+           std::vector<double>(n_out),
+           std::vector<double>(gradients_.empty() ? 0 : n_out * n_axes)};
+    for (;;) {
+      const std::size_t begin = next_chunk_.fetch_add(1, std::memory_order_relaxed) * kChunkPoints;
+      if (begin >= count_ || begin >= first_failure_.load(std::memory_order_relaxed)) return;
+      std::size_t i = begin;
+      try {
+        points_(w, i, std::min(count_, begin + kChunkPoints));
+      } catch (const InputError& error) {
+        record_failure(i, error.what());
+      } catch (...) {
+        const std::lock_guard lock(mutex_);
+        if (!bug_) bug_ = std::current_exception();
+        first_failure_.store(0, std::memory_order_relaxed);  // everyone stops
+      }
+    }
+  }
+
+  /// Throws what the batch found, if anything: a bug first, else the first failing point.
+  void finish() const {
+    if (bug_) std::rethrow_exception(bug_);
+    if (failure_point_ < count_) throw InputError("point " + std::to_string(failure_point_) + ": " + failure_message_);
+  }
+
+ private:
+  void record_failure(std::size_t point, const char* message) {
+    const std::lock_guard lock(mutex_);
+    if (point >= failure_point_) return;
+    failure_point_ = point;
+    failure_message_ = message;
+    if (point < first_failure_.load(std::memory_order_relaxed)) first_failure_.store(point, std::memory_order_relaxed);
+  }
+
+  const CoefficientSurface& surface_;
+  const std::size_t count_;
+  const std::span<const StridedInput> inputs_;
+  const std::span<const StridedOutput> outputs_;
+  const std::span<const StridedOutput> gradients_;
+  std::optional<GridLayout> grid_;  // before points_, which fills it
+  const PointsFunction points_;
+  std::atomic<std::size_t> next_chunk_{0};
+  std::atomic<std::size_t> first_failure_;  // a hint for skipping chunks; failure_point_ is the answer
+  std::mutex mutex_;
+  std::size_t failure_point_ = static_cast<std::size_t>(-1);
+  std::string failure_message_;
+  std::exception_ptr bug_;
+};
+
+void check_columns(const char* what, std::size_t expected, std::size_t given, std::size_t count, auto columns) {
+  if (given != expected)
+    throw std::invalid_argument("evaluate_batch: " + std::to_string(given) + " " + what + " columns; expected " +
+                                std::to_string(expected));
+  if (count > 0)
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (!columns[c].data)
+        throw std::invalid_argument(std::string("evaluate_batch: ") + what + " column " + std::to_string(c) +
+                                    " has no data");
+}
+
+}  // namespace
+
+void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::span<const StridedInput> inputs,
+                    std::span<const StridedOutput> outputs, std::span<const StridedOutput> gradients,
+                    unsigned threads) {
+  const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
+  check_columns("input", n_axes, inputs.size(), count, inputs);
+  check_columns("output", n_out, outputs.size(), count, outputs);
+  if (!gradients.empty()) check_columns("gradient", n_out * n_axes, gradients.size(), count, gradients);
+  if (count == 0) return;
+
+  const std::size_t chunks = (count + kChunkPoints - 1) / kChunkPoints;
+  std::size_t workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
+  workers = std::min(workers, chunks);
+  Batch batch(surface, count, inputs, outputs, gradients);
+  {
+    std::vector<std::jthread> pool;
+    pool.reserve(workers - 1);
+    for (std::size_t t = 1; t < workers; ++t) pool.emplace_back([&batch] { batch.work(); });
+    batch.work();  // the calling thread is one of the workers
+  }  // joined
+  batch.finish();
+}
+
+}  // namespace hydrocoef
