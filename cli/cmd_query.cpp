@@ -16,6 +16,7 @@
 #include "src/core/escape.hpp"
 #include "src/surface/batch_query.hpp"
 #include "src/surface/stored_surface.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -36,11 +37,6 @@ void warn_if_stale(const SurfaceRecord& record) {
               << ")\n";
 }
 
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
-  return out;
-}
 
 void query_point(const QueryArgs& args, const StoredSurface& stored) {
   const CoefficientSurface& surface = stored.surface;
@@ -55,7 +51,7 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
   for (std::size_t a = 0; a < n_axes; ++a)
     if (std::isnan(point[a]))
       throw InputError("no value for axis '" + surface.axis_names()[a] + "'; surface '" + args.name +
-                       "' needs one value for each of its axes: " + join(surface.axis_names()) +
+                       "' needs one value for each of its axes: " + join(surface.axis_names(), ", ") +
                        " (e.g. " + surface.axis_names()[a] + "=0.1)");
   std::vector<double> out(n_out), gradient(n_out * n_axes);
   if (args.gradient)

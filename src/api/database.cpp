@@ -2,6 +2,7 @@
 // read back: runs as columns, fits, surfaces. The import is src/api/import.cpp,
 // the fit src/api/fit.cpp.
 #include "src/api/internal.hpp"
+#include "src/core/text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -26,11 +27,6 @@ std::optional<std::string> optional_body(const std::string& body) {
   return body.empty() ? std::nullopt : std::optional<std::string>(body);
 }
 
-std::string joined(const std::vector<std::string>& texts, const char* separator) {
-  std::string out;
-  for (const auto& text : texts) out += (out.empty() ? "" : separator) + text;
-  return out;
-}
 
 }  // namespace
 
@@ -109,8 +105,8 @@ RunTable Database::runs(const std::vector<std::string>& where, const std::string
       sources.insert(force->source_path);
     }
     for (const auto& [name, value] : run.key.disturbances) table.disturbances[name][i] = value;
-    table.source.push_back(joined(std::vector<std::string>(sources.begin(), sources.end()), ";"));
-    table.history_flags.push_back(joined(run_flags(run), ","));
+    table.source.push_back(join(std::vector<std::string>(sources.begin(), sources.end()), ";"));
+    table.history_flags.push_back(join(run_flags(run), ","));
   }
   return table;
 }

@@ -31,6 +31,9 @@ std::string_view trim_right(std::string_view text, std::string_view blanks = kWh
 /// `text` with every character of `blanks` left out, wherever it is: "u | u |" -> "u|u|".
 std::string without_blanks(std::string_view text, std::string_view blanks = kWhitespace);
 
+/// The items with `separator` between them: {"u", "v"}, ", " -> "u, v".
+std::string join(const std::vector<std::string>& items, std::string_view separator);
+
 /// The fields between `separator`s, empty ones kept: "a,,b" -> {"a", "", "b"},
 /// "a," -> {"a", ""}, "" -> {""}. Fields are not trimmed.
 std::vector<std::string_view> split(std::string_view text, char separator);

@@ -8,6 +8,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -17,21 +18,11 @@ namespace {
 using KeyIdentity = std::tuple<std::string, std::array<double, 6>, std::string>;
 KeyIdentity identity(const RunKey& key) { return {key.body, key.nu_b, disturbance_signature(key.disturbances)}; }
 
-std::string join(const std::vector<std::string>& items, char separator) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : std::string(1, separator)) + item;
-  return out;
-}
-
-std::vector<std::string> split(std::string_view text, char separator) {
+/// The fields between commas as strings; none for "".
+std::vector<std::string> comma_list(std::string_view text) {
   std::vector<std::string> out;
   if (text.empty()) return out;
-  for (std::size_t start = 0;;) {
-    const std::size_t end = text.find(separator, start);
-    out.emplace_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
-    if (end == std::string_view::npos) break;
-    start = end + 1;
-  }
+  for (const auto field : split(text, ',')) out.emplace_back(field);
   return out;
 }
 
@@ -39,7 +30,7 @@ std::vector<std::string> split(std::string_view text, char separator) {
 
 std::string MirrorSpec::text() const {
   if (planes.empty()) return {};
-  return join(planes, ',') + (odd.empty() ? "" : "/" + join(odd, ','));
+  return join(planes, ",") + (odd.empty() ? "" : "/" + join(odd, ","));
 }
 
 std::vector<std::vector<BodyMirror>> MirrorSpec::images() const {
@@ -79,8 +70,8 @@ MirrorSpec make_mirror_spec(const std::vector<std::string>& planes, const std::v
 MirrorSpec parse_mirror_spec(std::string_view text) {
   if (text.empty()) return {};
   const auto slash = text.find('/');
-  return make_mirror_spec(split(text.substr(0, slash), ','),
-                          slash == std::string_view::npos ? std::vector<std::string>{} : split(text.substr(slash + 1), ','));
+  return make_mirror_spec(comma_list(text.substr(0, slash)),
+                          slash == std::string_view::npos ? std::vector<std::string>{} : comma_list(text.substr(slash + 1)));
 }
 
 std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection) {
@@ -162,7 +153,7 @@ std::string unconverged_runs_warning(const std::vector<StoredRun>& runs, std::si
     const auto& force = run.tau_b[dof];
     if (!force || !force->statistics || force->statistics->flags.empty()) continue;
     if (count++ < 10) list += (list.empty() ? "" : "; ") + std::string("run ") + std::to_string(run.id) + " (" +
-                              join(force->statistics->flags, ',') + ")";
+                              join(force->statistics->flags, ",") + ")";
   }
   if (count == 0) return {};
   if (count > 10) list += "; and " + std::to_string(count - 10) + " more";

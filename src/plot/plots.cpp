@@ -14,6 +14,7 @@
 #include "src/dynamics/experiment.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/surface/stored_surface.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef::plot {
 namespace {
@@ -40,11 +41,6 @@ std::vector<double> linspace(double from, double to, std::size_t count) {
   return out;
 }
 
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
 
 /// "X = 0.0155 u + 11 u|u|" from a stored fit.
 std::string law_text(const FitRecord& fit) {
@@ -113,7 +109,7 @@ std::vector<FitRecord> fit_family(Database& database, const std::string& name) {
   if (family.empty()) {
     std::vector<std::string> names;
     for (const auto& fit : fits) names.push_back(fit.name);
-    throw InputError("no fit '" + name + "' in " + database.path().string() + "; stored fits: " + join(names));
+    throw InputError("no fit '" + name + "' in " + database.path().string() + "; stored fits: " + join(names, ", "));
   }
   // The pooled fit first, then the levels in increasing order.
   std::stable_sort(family.begin(), family.end(), [&](const FitRecord& a, const FitRecord& b) {
@@ -252,7 +248,7 @@ Figure surface_figure(Database& database, const std::string& name, const std::op
   const CoefficientSurface& surface = stored.surface;
   if (surface.axis_count() > 2)
     throw InputError("surface '" + name + "' has " + std::to_string(surface.axis_count()) + " axes (" +
-                     join(surface.axis_names()) + "); plots draw 1 or 2 axes");
+                     join(surface.axis_names(), ", ") + "); plots draw 1 or 2 axes");
   const std::size_t k = output ? surface.output_index(*output) : 0;
   const std::string out_name = surface.output_names()[k];
   const std::string out_label = axis_label(out_name, surface.output_units()[k]) + " (on body: damping negative)";

@@ -17,11 +17,6 @@
 namespace hydrocoef {
 namespace {
 
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
-  return out;
-}
 
 /// Reads a whole file or standard input ("-").
 std::string read_all(const std::string& path) {
@@ -197,7 +192,7 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
   while (!rest.empty() && (header = trim(next_line())).empty()) {
   }
   if (header.empty())
-    throw InputError(source + ": empty; expected a header naming the axes (" + join(surface.axis_names()) + ")");
+    throw InputError(source + ": empty; expected a header naming the axes (" + join(surface.axis_names(), ", ") + ")");
   std::vector<std::size_t> column_axis;
   std::vector<bool> seen(n_axes, false);
   for (std::size_t start = 0; start <= header.size();) {
@@ -209,7 +204,7 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
     if (a == n_axes)
       throw InputError(SourceLocation{source, line_number, start + 1},
                        "column '" + printable_text(name, 40) + "' is not an axis of surface '" + request.surface_name + "'; expected the axes " +
-                           join(surface.axis_names()));
+                           join(surface.axis_names(), ", "));
     if (seen[a]) throw InputError(SourceLocation{source, line_number, start + 1}, "column '" + printable_text(name, 40) + "' repeats");
     seen[a] = true;
     column_axis.push_back(a);
@@ -220,7 +215,7 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
     if (!seen[a])
       throw InputError(SourceLocation{source, line_number, 0},
                        "no column for axis '" + surface.axis_names()[a] + "'; expected columns " +
-                           join(surface.axis_names()));
+                           join(surface.axis_names(), ", "));
 
   Output out(request.output);
   for (std::size_t a = 0; a < n_axes; ++a) out.text((a ? "," : "") + surface.axis_names()[a]);

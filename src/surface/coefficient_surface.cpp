@@ -4,15 +4,11 @@
 
 #include "src/core/error.hpp"
 #include "src/core/run.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
 
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
-  return out;
-}
 
 std::vector<std::string> units_or_default(std::vector<std::string> units, const std::vector<std::string>& names,
                                           const char* what) {
@@ -31,7 +27,7 @@ std::size_t find_name(const std::vector<std::string>& names, std::string_view na
     if (names[i] == name) return i;
   const std::string plural = std::string_view(what) == "axis" ? "axes" : std::string(what) + "s";
   throw InputError(std::string("the surface has no ") + what + " '" + std::string(name) + "'; its " +
-                   (names.size() == 1 ? std::string(what) + " is " : plural + " are ") + join(names));
+                   (names.size() == 1 ? std::string(what) + " is " : plural + " are ") + join(names, ", "));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -106,11 +107,6 @@ double squared_distance(const double* a, const double* b, std::size_t axes) {
   return r2;
 }
 
-std::string joined(const std::vector<std::string>& parts) {
-  std::string out;
-  for (const auto& part : parts) out += (out.empty() ? "" : ", ") + part;
-  return out;
-}
 
 // Exact duplicates, found by sorting the samples lexicographically and
 // comparing neighbours (n log n rather than all pairs).
@@ -128,7 +124,7 @@ void check_distinct(std::span<const double> points, std::size_t axes, const std:
     std::vector<std::string> where;
     for (std::size_t a = 0; a < axes; ++a) where.push_back(labels[a] + " = " + shortest_number(points[i * axes + a]));
     throw InputError("RBF samples " + std::to_string(i) + " and " + std::to_string(j) +
-                     " (0-based) are at the same point (" + joined(where) +
+                     " (0-based) are at the same point (" + join(where, ", ") +
                      "); expected distinct points (average repeated runs first)");
   }
 }
@@ -156,7 +152,7 @@ Eigen::MatrixXd polynomial_matrix(const std::vector<double>& centers, std::size_
                                   ? "they lie on one line, plane or hyperplane (a linear relation between the axes)"
                                   : "they lie on one quadric (e.g. a circle, a parabola or two lines)";
     throw InputError("the " + std::to_string(n) + " RBF samples do not determine a degree-" + std::to_string(degree) +
-                     " polynomial over " + joined(labels) + ": its " + std::to_string(terms) + " terms have rank " +
+                     " polynomial over " + join(labels, ", ") + ": its " + std::to_string(terms) + " terms have rank " +
                      std::to_string(rank) + " on them, so " + shape +
                      "; expected samples spread in every direction, or a lower polynomial degree");
   }
