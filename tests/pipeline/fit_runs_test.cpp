@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
+#include "tests/support/import_batch.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -26,17 +27,7 @@ ImportBatch run_file(int id, double u, double v, double r, double y, double k, d
   run.tau_b[1] = ForceComponent{y, std::nullopt, std::nullopt};
   run.tau_b[3] = ForceComponent{k, std::nullopt, std::nullopt};
   run.tau_b[5] = ForceComponent{n, std::nullopt, std::nullopt};
-  ImportBatch batch;
-  char hash[65];
-  std::snprintf(hash, sizeof hash, "%064x", id);
-  batch.source.path = "case-" + std::to_string(id) + ".csv";
-  batch.source.sha256 = hash;
-  batch.source.size_bytes = 1;
-  batch.source.importer = "test";
-  batch.source.importer_version = "1";
-  batch.source.settings_key = "id=" + std::to_string(id);
-  batch.runs = {run};
-  return batch;
+  return test::one_run_batch(id, run);
 }
 
 // Sway force of a port-starboard symmetric body: odd in v, with a small

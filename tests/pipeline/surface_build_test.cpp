@@ -12,6 +12,7 @@
 #include "src/core/error.hpp"
 #include "src/store/sqlite.hpp"
 #include "tests/support/expect_input_error.hpp"
+#include "tests/support/import_batch.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -28,17 +29,7 @@ ImportBatch run_file(int id, double u, double v) {
   run.key.body = "boat";
   run.key.nu_b = {u, v, 0, 0, 0, 0};
   run.tau_b[0] = ForceComponent{surge(u, v), std::nullopt, std::nullopt};
-  ImportBatch batch;
-  char hash[65];
-  std::snprintf(hash, sizeof hash, "%064x", id);
-  batch.source.path = "case-" + std::to_string(id) + ".csv";
-  batch.source.sha256 = hash;
-  batch.source.size_bytes = 1;
-  batch.source.importer = "test";
-  batch.source.importer_version = "1";
-  batch.source.settings_key = "id=" + std::to_string(id);
-  batch.runs = {run};
-  return batch;
+  return test::one_run_batch(id, run);
 }
 
 // Runs on the grid u in {0, 0.1, 0.2, 0.3} x v in {-0.1, 0, 0.1}.
