@@ -156,7 +156,7 @@ pc_flags=$(PKG_CONFIG_PATH="$prefix/$multiarch/pkgconfig" pkg-config --cflags --
 [[ $pc_flags == *"-I$prefix/include"* && $pc_flags == *"-L$prefix/$multiarch"* && $pc_flags == *-lhydrocoef* ]] ||
   fail "pkg-config --cflags --libs hydrocoef gave '$pc_flags', not the prefix's include and library directories"
 # shellcheck disable=SC2086 # pc_flags is a list of flags
-c++ -std=c++20 -O1 -o "$work/consumer_pc" "$root/tests/package/consumer/main.cpp" $pc_flags ||
+c++ -std=c++17 -O1 -o "$work/consumer_pc" "$root/tests/package/consumer/main.cpp" $pc_flags ||
   fail "compiling the consumer with pkg-config --cflags --libs hydrocoef ($pc_flags)"
 run_consumer "pkg-config" "$work/consumer_pc" "LD_LIBRARY_PATH=$prefix/$multiarch"
 say "ok: pkg-config --cflags --libs hydrocoef ($pc_flags): the one-file consumer got X(0.25) = $x N"
@@ -211,7 +211,7 @@ make_database /usr/bin/hydrocoef "$db"
 x=$(query_value /usr/bin/hydrocoef "$db" surge u=0.25 X)
 pc_flags=$(pkg-config --cflags --libs hydrocoef | xargs) || fail "pkg-config --cflags --libs hydrocoef after installing the package"
 # shellcheck disable=SC2086 # pc_flags is a list of flags
-c++ -std=c++20 -O1 -o "$work/consumer_deb" "$root/tests/package/consumer/main.cpp" $pc_flags ||
+c++ -std=c++17 -O1 -o "$work/consumer_deb" "$root/tests/package/consumer/main.cpp" $pc_flags ||
   fail "compiling the consumer against the installed package ($pc_flags)"
 run_consumer "the Debian package" "$work/consumer_deb"
 if [[ -n $python_dir ]]; then
