@@ -10,7 +10,7 @@
 #      the installed Python module (when built) gets the same number;
 #   5. cpack -G DEB; apt-get install ./hydrocoef_*.deb; /usr/bin/hydrocoef makes and queries a database,
 #      the consumer built against /usr with pkg-config and /usr/bin/python3 get the same number;
-#      apt-get remove hydrocoef.
+#      apt-get purge hydrocoef (no trace left in dpkg either).
 # Step 5 installs a package system-wide (root or sudo; it is removed again); HYDROCOEF_PACKAGE_TEST_NO_DEB=1
 # skips it. Each check prints one line; the first failure exits 1 saying what was wrong.
 #   scripts/package-test.sh [BUILD_DIR]
@@ -29,7 +29,7 @@ work=$(mktemp -d /tmp/hydrocoef-package-test.XXXXXX)
 chmod 755 "$work" # apt-get reads the .deb as the _apt user
 installed_deb=false
 cleanup() {
-  if $installed_deb; then "${sudo_cmd[@]}" apt-get remove -y -qq -o DPkg::Lock::Timeout=300 hydrocoef >/dev/null 2>&1 || true; fi
+  if $installed_deb; then "${sudo_cmd[@]}" apt-get purge -y -qq -o DPkg::Lock::Timeout=300 hydrocoef >/dev/null 2>&1 || true; fi
   rm -rf "$work"
 }
 sudo_cmd=()
@@ -190,7 +190,7 @@ if grep -q -- '-dev\b' <<<"$depends"; then fail "$(basename "$deb") depends on d
 say "ok: cpack -G DEB made $(basename "$deb") ($(du -k "$deb" | cut -f1) kB), Depends: $depends"
 
 if dpkg-query -W -f='${Status}' hydrocoef 2>/dev/null | grep -q 'install ok installed'; then
-  fail "a hydrocoef package is installed already (apt-get remove hydrocoef first): this test installs and removes its own"
+  fail "a hydrocoef package is installed already (apt-get purge hydrocoef first): this test installs and removes its own"
 fi
 cp "$deb" "$work/"
 installed_deb=true
@@ -220,7 +220,8 @@ if [[ -n $python_dir ]]; then
     fail "python3 did not import hydrocoef from the package: $(cat "$work/python.log")"
 fi
 say "ok: apt-get install ./$(basename "$deb"): /usr/bin/hydrocoef --version, import, surface build and query; the consumer built with pkg-config ($pc_flags)${python_dir:+ and the Python module} got X(0.25) = $x N"
-"${sudo_cmd[@]}" apt-get remove -y -qq -o DPkg::Lock::Timeout=300 hydrocoef >/dev/null 2>&1 || fail "apt-get remove hydrocoef"
+"${sudo_cmd[@]}" apt-get purge -y -qq -o DPkg::Lock::Timeout=300 hydrocoef >/dev/null 2>&1 || fail "apt-get purge hydrocoef"
 installed_deb=false
-[[ ! -e /usr/bin/hydrocoef ]] || fail "/usr/bin/hydrocoef is still there after apt-get remove hydrocoef"
-say "ok: apt-get remove hydrocoef left no /usr/bin/hydrocoef"
+[[ ! -e /usr/bin/hydrocoef ]] || fail "/usr/bin/hydrocoef is still there after apt-get purge hydrocoef"
+if dpkg-query -W hydrocoef >/dev/null 2>&1; then fail "dpkg still lists hydrocoef after apt-get purge hydrocoef"; fi
+say "ok: apt-get purge hydrocoef left no /usr/bin/hydrocoef and no trace in dpkg"
