@@ -5,8 +5,7 @@ in one run, on the same 2-D table and the same random points.
 The table: 20 x 20 nodes, u in [0, 0.38] m/s, v in [-0.2, 0.2] m/s, one output
 X = -10 u|u| - 2 v + 0.3 u v [N] (forces on the body). It is imported into a
 temporary run database through the module, and two surfaces are built from it
-with the `hydrocoef surface build` command of the same build: linear and
-PCHIP. scipy gets the same node values in a RegularGridInterpolator with
+(Database.build_surface): linear and PCHIP. scipy gets the same node values in a RegularGridInterpolator with
 method "linear" and "pchip" (scipy 1.10 has "pchip": successive 1-D PCHIP
 interpolation along each axis).
 
@@ -24,15 +23,12 @@ times it on the first N points only (the time is then scaled to the full count
 and printed as such).
 
   PYTHONPATH=build/release/python /usr/bin/python3 bench/python_vs_scipy.py \
-      [--points 1000000] [--repeats 5] [--cli build/release/hydrocoef] [--scipy-pchip-points N]
+      [--points 1000000] [--repeats 5] [--scipy-pchip-points N]
 """
 
 import argparse
 import os
 import pathlib
-import shutil
-import subprocess
-import sys
 import tempfile
 import time
 
@@ -42,21 +38,12 @@ from scipy.interpolate import RegularGridInterpolator
 
 import hydrocoef
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
 U = np.linspace(0.0, 0.38, 20)
 V = np.linspace(-0.2, 0.2, 20)
 
 
 def table_values(u, v):
     return -10 * u * np.abs(u) - 2 * v + 0.3 * u * v
-
-
-def find_cli(given):
-    for candidate in (given, os.environ.get("HYDROCOEF_CLI"), ROOT / "build" / "release" / "hydrocoef",
-                      shutil.which("hydrocoef")):
-        if candidate and pathlib.Path(candidate).is_file():
-            return str(candidate)
-    sys.exit("python_vs_scipy: no hydrocoef binary to build the surfaces with; give --cli PATH")
 
 
 def best_of(repeats, call):
@@ -69,7 +56,7 @@ def best_of(repeats, call):
     return best, result
 
 
-def make_surfaces(directory, cli):
+def make_surfaces(directory):
     db_path = pathlib.Path(directory) / "bench.db"
     csv = pathlib.Path(directory) / "table.csv"
     uu, vv = np.meshgrid(U, V, indexing="ij")
@@ -79,10 +66,8 @@ def make_surfaces(directory, cli):
             out.write(f"{a!r},{b!r},{x!r}\n")
     with hydrocoef.Database(db_path) as db:
         db.import_files(csv, body="bench")
-    for method in ("linear", "pchip"):
-        subprocess.run([cli, "--db", str(db_path), "surface", "build", method, "--body", "bench", "--outputs", "X",
-                        "--axes", "u,v", "--method", method], check=True, stdout=subprocess.DEVNULL)
-    with hydrocoef.Database(db_path, mode="r") as db:
+        for method in ("linear", "pchip"):
+            db.build_surface(method, body="bench", outputs=["X"], axes=["u", "v"], method=method)
         return {method: db.surface(method) for method in ("linear", "pchip")}
 
 
@@ -90,7 +75,6 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--points", type=int, default=1_000_000)
     parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--cli", help="the hydrocoef binary (default: $HYDROCOEF_CLI, build/release/hydrocoef)")
     parser.add_argument("--scipy-pchip-points", type=int, default=0,
                         help="time scipy's pchip on the first N points only and scale (0: all points)")
     args = parser.parse_args()
@@ -103,7 +87,7 @@ def main():
     values = table_values(uu, vv)
 
     with tempfile.TemporaryDirectory() as directory:
-        surfaces = make_surfaces(directory, find_cli(args.cli))
+        surfaces = make_surfaces(directory)
     print(f"{args.points} random points on a 20 x 20 table, one output; numpy {np.__version__}, "
           f"scipy {scipy.__version__}, hydrocoef {hydrocoef.__version__}, {os.cpu_count()} cores; "
           f"best of {args.repeats}\n")

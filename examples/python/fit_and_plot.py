@@ -11,10 +11,9 @@ What it does, with the hydrocoef module:
   2. fits the paper's laws  X(u) = c0 + c1 u + c2 u|u|  and
      N(r) = c0 + c1 r + c2 r|r|  (Ceres least squares), printing each
      coefficient with its standard error and unit;
-  3. builds the lookup surfaces X(u) and N(r) (PCHIP through the runs; with the
-     `hydrocoef surface build` command of the same build, the library's
-     surface-build entry point being the CLI's for now) and evaluates them and
-     their slopes on a grid of 201 points with one vectorised call each;
+  3. builds the lookup surfaces X(u) and N(r) (PCHIP through the runs, continued
+     linearly beyond them, as `hydrocoef surface build` does) and evaluates
+     them and their slopes on a grid of 201 points with one vectorised call each;
   4. plots runs, fitted laws and surfaces to a PNG (matplotlib, Agg backend),
      or prints a table of numbers when matplotlib is not installed.
 
@@ -24,15 +23,11 @@ Expected (README, paper eq. 5 and 6):
 
 Run from the repository after a build (scripts/build.sh):
   PYTHONPATH=build/release/python /usr/bin/python3 examples/python/fit_and_plot.py \
-      [--db build/asr-v-python.db] [--png build/asr-v-python.png] [--cli build/release/hydrocoef]
+      [--db build/asr-v-python.db] [--png build/asr-v-python.png]
 """
 
 import argparse
-import os
 import pathlib
-import shutil
-import subprocess
-import sys
 
 import numpy as np
 
@@ -41,14 +36,6 @@ import hydrocoef
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 TABLES = ROOT / "examples" / "asr-v"
-
-
-def find_cli(given):
-    for candidate in (given, os.environ.get("HYDROCOEF_CLI"), ROOT / "build" / "release" / "hydrocoef",
-                      shutil.which("hydrocoef")):
-        if candidate and pathlib.Path(candidate).is_file():
-            return str(candidate)
-    sys.exit("fit_and_plot: no hydrocoef binary to build the surfaces with; give --cli PATH")
 
 
 def law_text(fit):
@@ -70,9 +57,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--db", default=str(ROOT / "build" / "asr-v-python.db"))
     parser.add_argument("--png", default=str(ROOT / "build" / "asr-v-python.png"))
-    parser.add_argument("--cli", help="the hydrocoef binary (default: $HYDROCOEF_CLI, build/release/hydrocoef)")
     args = parser.parse_args()
-    cli = find_cli(args.cli)
     pathlib.Path(args.db).parent.mkdir(parents=True, exist_ok=True)
 
     with hydrocoef.Database(args.db, mode="create") as db:
@@ -95,12 +80,10 @@ def main():
             for term in fit.coefficients:
                 print(f"    {term:6s} {fit.coefficients[term]: .6g} ± {fit.std_errors[term]:.2g} {fit.units[term]}")
 
-    # 3. Surfaces through the runs (forces on the body), built by the CLI.
-    for name, output, axis in (("asr-v-surge", "X", "u"), ("asr-v-yaw", "N", "r")):
-        subprocess.run([cli, "--db", args.db, "surface", "build", name, "--body", "asr-v", "--outputs", output,
-                        "--axes", axis, "--method", "pchip", "--extrapolate", "linear", "--replace"],
-                       check=True, stdout=subprocess.DEVNULL)
-    with hydrocoef.Database(args.db, mode="r") as db:
+        # 3. Surfaces through the runs (forces on the body).
+        for name, output, axis in (("asr-v-surge", "X", "u"), ("asr-v-yaw", "N", "r")):
+            db.build_surface(name, body="asr-v", outputs=[output], axes=[axis], method="pchip",
+                             extrapolate=["linear"], replace=True)
         surge, yaw = db.surface("asr-v-surge"), db.surface("asr-v-yaw")
     u = np.linspace(0.0, 0.38, 201)
     r = np.linspace(0.0, 0.2792, 201)
