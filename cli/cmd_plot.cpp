@@ -5,8 +5,9 @@
 #include <memory>
 
 #include "cli/common.hpp"
+#include "cli/plot_common.hpp"
 #include "src/fit/fit_names.hpp"
-#include "src/core/escape.hpp"
+#include "src/pipeline/fit_stored_runs.hpp"
 #include "src/core/error.hpp"
 #include "src/dynamics/vehicle.hpp"
 #include "src/plot/plots.hpp"
@@ -15,76 +16,6 @@
 
 namespace hydrocoef::cli {
 namespace {
-
-struct CommonPlotArgs {
-  std::optional<std::string> output;
-  std::string size = "900x600";
-  bool json = false;
-};
-
-plot::RenderOptions parse_size(const std::string& text) {
-  const auto x = text.find('x');
-  plot::RenderOptions options;
-  try {
-    if (x == std::string::npos) throw std::invalid_argument(text);
-    std::size_t used_w = 0, used_h = 0;
-    options.width = std::stoi(text.substr(0, x), &used_w);
-    options.height = std::stoi(text.substr(x + 1), &used_h);
-    if (used_w != x || used_h != text.size() - x - 1) throw std::invalid_argument(text);
-  } catch (const std::exception&) {
-    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT in pixels, e.g. 900x600");
-  }
-  return options;
-}
-
-/// "asr-v:X(1,u,u|u|)" -> "asr-v_X_1_u_u_u_.png": a default image name.
-std::string default_image(const std::string& kind, const std::string& name) {
-  std::string out = kind + "-";
-  for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.') ? c : '_';
-  return out + ".png";
-}
-
-void print_result(const plot::Figure& figure, const plot::RenderedFiles& files, const CommonPlotArgs& args) {
-  const char* format = files.format == plot::ImageFormat::Png ? "png" : "svg";
-  if (args.json) {
-    nlohmann::json out = {{"title", figure.title},
-                          {"image", files.image.string()},
-                          {"data", files.data.string()},
-                          {"script", files.script.string()},
-                          {"format", format},
-                          {"width", files.width},
-                          {"height", files.height}};
-    out["series"] = nlohmann::json::array();
-    for (const auto& panel : figure.panels) {
-      if (panel.map)
-        out["series"].push_back(
-            {{"panel", panel.title}, {"title", "colour map"}, {"points", panel.map->x.size() * panel.map->y.size()}});
-      for (const auto& s : panel.series)
-        out["series"].push_back({{"panel", panel.title}, {"title", s.title}, {"points", s.x.size()}});
-    }
-    std::cout << escape::json_text(out, 2) << '\n';
-    return;
-  }
-  std::cout << "plot " << figure.title << "\n  wrote " << files.image.string() << " (" << format << ", " << files.width
-            << "x" << files.height << " px)\n  values " << files.data.string() << ", gnuplot script "
-            << files.script.string() << '\n';
-}
-
-void render_and_print(const plot::Figure& figure, const std::string& default_name, const CommonPlotArgs& args) {
-  const std::string image = args.output.value_or(default_name);
-  plot::image_format(image);  // refuse a bad name before drawing anything
-  const auto files = plot::render(figure, image, parse_size(args.size));
-  print_result(figure, files, args);
-}
-
-/// surface_style: the image is -o only, since --output names the surface's output there.
-void add_common(CLI::App* command, CommonPlotArgs& args, bool surface_style = false) {
-  command->add_option(surface_style ? "-o" : "-o,--output", args.output,
-                      "Image to write: FILE.png or FILE.svg (FILE.dat, FILE.gp beside it)");
-  command->add_option("--size", args.size, "Image size WIDTHxHEIGHT [pixels]")->capture_default_str();
-  command->add_flag("--json", args.json, "Print JSON: the files written and the series drawn");
-}
-
 
 struct FitPlotArgs : CommonPlotArgs {
   std::string name;
@@ -146,16 +77,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   add_common(curves, *curves_args);
   curves->callback([curves_args, &global] {
     const auto& a = *curves_args;
-    std::string base;
-    if (a.name) {
-      base = *a.name;
-    } else {
-      if (!a.body || !a.dof || !a.terms)
-        throw InputError(
-            "plot curves: give a fit name, or --body, --dof and "
-            "--terms as given to fit --by");
-      base = *a.body + ":" + *a.dof + "(" + format_damping_terms(parse_damping_terms(*a.terms)) + ")";
-    }
+    const std::string base = a.name ? *a.name : curves_base_name(a.body, a.dof, a.terms);
     const auto [kind, degree] = parse_curve(a.curve);
     Database database(global.database, Database::OpenMode::ReadOnly);
     if (a.by) {
@@ -215,17 +137,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     const auto& a = *steady_args;
     const auto dof = force_index(a.dof);
     if (!dof) throw InputError("--dof '" + a.dof + "': expected X, Y, Z, K, M or N");
-    std::vector<double> taus = a.taus;
-    if (a.tau_from || a.tau_to) {
-      if (!a.tau_from || !a.tau_to || !(*a.tau_to > *a.tau_from) || a.count < 2 || a.count > 1000)
-        throw InputError(
-            "--tau-from/--tau-to/--count: expected FROM < TO and "
-            "a count of 2 to 1000");
-      for (std::size_t i = 0; i < a.count; ++i)
-        taus.push_back(*a.tau_from +
-                       (*a.tau_to - *a.tau_from) * static_cast<double>(i) / static_cast<double>(a.count - 1));
-    }
-    if (taus.empty()) throw InputError("plot steady: give --tau values or --tau-from, --tau-to and --count");
+    const std::vector<double> taus = steady_forces(a.taus, a.tau_from, a.tau_to, a.count);
     auto database = std::make_shared<std::unique_ptr<Database>>();
     const SurfaceResolver resolver = [database, &global](const std::string& name) {
       if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::ReadOnly);

@@ -171,4 +171,34 @@ void print_surface(const StoredSurface& stored, bool json) {
   print_quality(record, stored.surface);
 }
 
+nlohmann::json surface_build_json(const SurfaceBuildResult& result) {
+  nlohmann::json out = surface_json(result.stored.record, result.stored.surface, false);
+  out["runs_skipped"] = result.runs_skipped;
+  out["mirror"] = result.mirror;
+  out["mirror_images"] = result.mirror_images;
+  out["id"] = result.stored.record.id;
+  return out;
+}
+
+void print_surface_build(const SurfaceBuildResult& result, const std::string& database) {
+  const auto& [record, surface] = result.stored;
+  std::cout << "surface " << record.name << " of body " << record.body << ": " << record.kind << ", "
+            << surface.method_name() << ", " << record.run_ids.size() << " runs";
+  if (result.runs_skipped) std::cout << " (" << result.runs_skipped << " runs without every output skipped)";
+  if (!result.mirror.empty())
+    std::cout << "\n  mirror " << result.mirror << ": " << result.runs_measured << " runs and " << result.mirror_images
+              << " mirror images (never stored as runs)"
+              << (result.images_skipped
+                      ? ", " + std::to_string(result.images_skipped) + " images left out at measured keys"
+                      : std::string());
+  std::cout << "\n  axes:\n";
+  print_axes(surface);
+  std::cout << "  outputs: ";
+  for (std::size_t k = 0; k < surface.output_count(); ++k)
+    std::cout << (k ? ", " : "") << surface.output_names()[k] << " [" << surface.output_units()[k] << "]";
+  std::cout << " (forces on the body)\n";
+  print_quality(record, surface);
+  std::cout << "  stored as surface " << record.id << " in " << database << '\n';
+}
+
 }  // namespace hydrocoef::cli

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/pipeline/surface_build.hpp"
 #include "src/store/database.hpp"
 #include "src/surface/coefficient_surface.hpp"
 #include "src/surface/stored_surface.hpp"
@@ -21,5 +22,9 @@ nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurfac
 void print_surface_list(const std::vector<SurfaceRecord>& records, const std::string& database, bool json);
 /// surface show: one surface in full (or JSON with breakpoints).
 void print_surface(const StoredSurface& stored, bool json);
+/// surface build and rebuild: what was built from which runs, and where it
+/// was stored (text, or the JSON of surface_json with the run counts).
+void print_surface_build(const SurfaceBuildResult& result, const std::string& database);
+nlohmann::json surface_build_json(const SurfaceBuildResult& result);
 
 }  // namespace hydrocoef::cli

@@ -169,8 +169,4 @@ std::string sign_convention_text(const std::string& convention) {
   return "on-body: the force of the fluid on the body (SNAME), damping is negative";
 }
 
-std::string xml_escape(std::string_view text) { return escape::xml_text(text); }
-
-std::string xml_comment_safe(std::string_view text) { return escape::xml_comment(text); }
-
 }  // namespace hydrocoef

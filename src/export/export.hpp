@@ -93,11 +93,6 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
 /// InputError otherwise.
 void check_metadata(const GridTable& table, const ExportMetadata& metadata);
 
-/// Text for an XML attribute or element: & < > " ' as entities.
-std::string xml_escape(std::string_view text);
-/// Text safe inside an XML comment: no "--" (written "- -") and no trailing "-".
-std::string xml_comment_safe(std::string_view text);
-
 /// One line of provenance for file comments: surface, body, runs, hash, date.
 std::string provenance_line(const ExportMetadata& metadata);
 

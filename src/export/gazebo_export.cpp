@@ -14,6 +14,7 @@
 #include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/core/version.hpp"
+#include "src/core/escape.hpp"
 #include "src/export/export.hpp"
 
 namespace hydrocoef {
@@ -33,7 +34,7 @@ std::string join_ids(const std::vector<std::int64_t>& ids) {
 }
 
 std::string comment(const std::string& text, const std::string& indent = "") {
-  return indent + "<!-- " + xml_comment_safe(text) + " -->\n";
+  return indent + "<!-- " + escape::xml_comment(text) + " -->\n";
 }
 
 std::string added_mass_unit(std::size_t i, std::size_t j) {
@@ -468,10 +469,10 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
     text += "</hydrodynamic_model>\n";
   } else {
     text += "<plugin filename=\"gz-sim-hydrodynamics-system\" name=\"gz::sim::systems::Hydrodynamics\">\n";
-    text += "  <link_name>" + xml_escape(options.link_name) + "</link_name>\n";
+    text += "  <link_name>" + escape::xml_text(options.link_name) + "</link_name>\n";
     for (const GazeboElement& e : elements) {
       text += "  <" + e.name + ">" + shortest_number(e.values.front()) + "</" + e.name + ">  <!-- " +
-              xml_comment_safe(e.unit) + " -->\n";
+              escape::xml_comment(e.unit) + " -->\n";
     }
     text += "</plugin>\n";
   }

@@ -1,6 +1,7 @@
 #include "src/export/jsbsim_export.hpp"
 
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/version.hpp"
 
@@ -31,27 +32,27 @@ std::string jsbsim_text(const GridTable& table, const ExportMetadata& metadata) 
   const std::vector<double>& values = table.values();
   const auto& x = [&](std::size_t a) -> const std::vector<double>& { return table.axes()[a].breakpoints; };
   std::string text = "<?xml version=\"1.0\"?>\n";
-  text += "<!-- hydrocoef " + std::string(kVersion) + " export of " + xml_comment_safe(provenance_line(metadata)) +
+  text += "<!-- hydrocoef " + std::string(kVersion) + " export of " + escape::xml_comment(provenance_line(metadata)) +
           " -->\n";
-  text += "<!-- outputs in sign convention " + xml_comment_safe(sign_convention_text(metadata.sign_convention)) +
+  text += "<!-- outputs in sign convention " + escape::xml_comment(sign_convention_text(metadata.sign_convention)) +
           "; body axes x forward, y starboard, z down (SNAME); SI units -->\n";
-  text += "<hydrocoef_tables surface=\"" + xml_escape(metadata.surface_name) + "\" body=\"" +
-          xml_escape(metadata.body) + "\" sha256=\"" + metadata.content_sha256 + "\">\n";
+  text += "<hydrocoef_tables surface=\"" + escape::xml_text(metadata.surface_name) + "\" body=\"" +
+          escape::xml_text(metadata.body) + "\" sha256=\"" + metadata.content_sha256 + "\">\n";
   static const char* kLookup[] = {"row", "column", "table"};
   for (std::size_t k = 0; k < n_out; ++k) {
     const std::string& output = table.outputs()[k];
-    text += "  <function name=\"hydrocoef/" + xml_escape(metadata.surface_name) + "/" + xml_escape(output) + "\">\n";
+    text += "  <function name=\"hydrocoef/" + escape::xml_text(metadata.surface_name) + "/" + escape::xml_text(output) + "\">\n";
     std::string description = output + " [" + metadata.output_units[k] + "], linear interpolation, end values held";
     for (std::size_t a = 0; a < n; ++a) {
       description += "; " + table.axes()[a].name + " [" + metadata.axis_units[a] + "] valid in [" +
                      shortest_number(x(a).front()) + ", " + shortest_number(x(a).back()) + "] (" +
                      std::string(extrapolation_name(table.axes()[a].extrapolation)) + " outside)";
     }
-    text += "    <description>" + xml_escape(description) + "</description>\n";
+    text += "    <description>" + escape::xml_text(description) + "</description>\n";
     text += "    <table>\n";
     for (std::size_t a = 0; a < n; ++a) {
       text += "      <independentVar lookup=\"" + std::string(kLookup[a]) + "\">hydrocoef/" +
-              xml_escape(table.axes()[a].name) + "</independentVar>\n";
+              escape::xml_text(table.axes()[a].name) + "</independentVar>\n";
     }
     const std::size_t n0 = x(0).size();
     const std::size_t n1 = n >= 2 ? x(1).size() : 1;

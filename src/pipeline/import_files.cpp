@@ -12,12 +12,12 @@
 #include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
-#include <thread>
 
 #include "importers/force_history_csv.hpp"
 #include "importers/force_table.hpp"
 #include "importers/openfoam_forces.hpp"
 #include "src/core/error.hpp"
+#include "src/core/parallel.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/version.hpp"
@@ -522,34 +522,20 @@ ImportedInput read_input(const PlannedInput& input, const ImportRequest& request
 }
 
 std::vector<ImportedInput> read_inputs(const ImportPlan& plan, const ImportRequest& request) {
+  // Files in plan order on request.jobs threads (0: every core); the first
+  // file that cannot be read, in plan order, is the error (src/core/parallel.hpp).
   const std::size_t count = plan.inputs.size();
   std::vector<std::optional<ImportedInput>> results(count);
-  std::vector<std::exception_ptr> errors(count);
-  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<std::size_t> done{0};
   std::mutex progress_mutex;
-  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned jobs =
-      static_cast<unsigned>(std::clamp<std::size_t>(request.jobs ? request.jobs : hardware, 1, std::max<std::size_t>(count, 1)));
-  auto worker = [&] {
-    for (std::size_t i = next++; i < count; i = next++) {
-      try {
-        results[i] = read_input(plan.inputs[i], request);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-      const std::size_t finished = ++done;
-      if (request.progress) {
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        request.progress(finished, count, plan.inputs[i].path);
-      }
+  parallel_for(count, request.jobs, [&](std::size_t i) {
+    results[i] = read_input(plan.inputs[i], request);
+    const std::size_t finished = ++done;
+    if (request.progress) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      request.progress(finished, count, plan.inputs[i].path);
     }
-  };
-  std::vector<std::thread> threads;
-  for (unsigned t = 1; t < jobs; ++t) threads.emplace_back(worker);
-  worker();
-  for (auto& thread : threads) thread.join();
-  for (const auto& error : errors)
-    if (error) std::rethrow_exception(error);
+  });
   std::vector<ImportedInput> out;
   out.reserve(count);
   for (auto& r : results) out.push_back(std::move(*r));

@@ -2,18 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cstdint>
-#include <exception>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "src/core/error.hpp"
+#include "src/core/parallel.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -308,74 +305,6 @@ PointsFunction points_function(const CoefficientSurface& surface, bool with_grad
   return (cubic ? (one ? kCubicOne : kCubic) : (one ? kLinearOne : kLinear))[table->axis_count() - 1];
 }
 
-/// What the threads share: the columns, the next chunk to take, and the first
-/// failure found so far.
-class Batch {
- public:
-  Batch(const CoefficientSurface& surface, std::size_t count, std::span<const StridedInput> inputs,
-        std::span<const StridedOutput> outputs, std::span<const StridedOutput> gradients)
-      : surface_(surface), count_(count), inputs_(inputs), outputs_(outputs), gradients_(gradients),
-        points_(points_function(surface, !gradients.empty(), grid_)), first_failure_(count) {}
-
-  /// Takes chunks until none is left or every chunk left starts after a
-  /// failure already found (chunks are taken in index order, so none of them
-  /// can hold the first failing point).
-  void work() {
-    const std::size_t n_axes = surface_.axis_count(), n_out = surface_.output_count();
-    Work w{surface_,
-           inputs_,
-           outputs_,
-           gradients_,
-           grid_ ? &*grid_ : nullptr,
-           std::vector<double>(n_axes),
-           std::vector<double>(n_out),
-           std::vector<double>(gradients_.empty() ? 0 : n_out * n_axes)};
-    for (;;) {
-      const std::size_t begin = next_chunk_.fetch_add(1, std::memory_order_relaxed) * kChunkPoints;
-      if (begin >= count_ || begin >= first_failure_.load(std::memory_order_relaxed)) return;
-      std::size_t i = begin;
-      try {
-        points_(w, i, std::min(count_, begin + kChunkPoints));
-      } catch (const InputError& error) {
-        record_failure(i, error.what());
-      } catch (...) {
-        const std::lock_guard lock(mutex_);
-        if (!bug_) bug_ = std::current_exception();
-        first_failure_.store(0, std::memory_order_relaxed);  // everyone stops
-      }
-    }
-  }
-
-  /// Throws what the batch found, if anything: a bug first, else the first failing point.
-  void finish() const {
-    if (bug_) std::rethrow_exception(bug_);
-    if (failure_point_ < count_) throw InputError("point " + std::to_string(failure_point_) + ": " + failure_message_);
-  }
-
- private:
-  void record_failure(std::size_t point, const char* message) {
-    const std::lock_guard lock(mutex_);
-    if (point >= failure_point_) return;
-    failure_point_ = point;
-    failure_message_ = message;
-    if (point < first_failure_.load(std::memory_order_relaxed)) first_failure_.store(point, std::memory_order_relaxed);
-  }
-
-  const CoefficientSurface& surface_;
-  const std::size_t count_;
-  const std::span<const StridedInput> inputs_;
-  const std::span<const StridedOutput> outputs_;
-  const std::span<const StridedOutput> gradients_;
-  std::optional<GridLayout> grid_;  // before points_, which fills it
-  const PointsFunction points_;
-  std::atomic<std::size_t> next_chunk_{0};
-  std::atomic<std::size_t> first_failure_;  // a hint for skipping chunks; failure_point_ is the answer
-  std::mutex mutex_;
-  std::size_t failure_point_ = static_cast<std::size_t>(-1);
-  std::string failure_message_;
-  std::exception_ptr bug_;
-};
-
 void check_columns(const char* what, std::size_t expected, std::size_t given, std::size_t count, auto columns) {
   if (given != expected)
     throw std::invalid_argument("evaluate_batch: " + std::to_string(given) + " " + what + " columns; expected " +
@@ -398,17 +327,26 @@ void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::s
   if (!gradients.empty()) check_columns("gradient", n_out * n_axes, gradients.size(), count, gradients);
   if (count == 0) return;
 
+  // Chunks in index order on every core; a point that fails stops the batch
+  // with its index, and parallel_for rethrows the failure of the lowest
+  // chunk, so the error names the first failing point whatever the timing.
   const std::size_t chunks = (count + kChunkPoints - 1) / kChunkPoints;
-  std::size_t workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-  workers = std::min(workers, chunks);
-  Batch batch(surface, count, inputs, outputs, gradients);
-  {
-    std::vector<std::jthread> pool;
-    pool.reserve(workers - 1);
-    for (std::size_t t = 1; t < workers; ++t) pool.emplace_back([&batch] { batch.work(); });
-    batch.work();  // the calling thread is one of the workers
-  }  // joined
-  batch.finish();
+  std::optional<GridLayout> grid;
+  const PointsFunction points = points_function(surface, !gradients.empty(), grid);
+  std::vector<Work> scratch;
+  const unsigned workers = parallel_threads(chunks, threads);
+  scratch.reserve(workers);
+  for (unsigned w = 0; w < workers; ++w)
+    scratch.push_back(Work{surface, inputs, outputs, gradients, grid ? &*grid : nullptr, std::vector<double>(n_axes),
+                           std::vector<double>(n_out), std::vector<double>(gradients.empty() ? 0 : n_out * n_axes)});
+  parallel_for(chunks, workers, [&](std::size_t chunk, unsigned worker) {
+    std::size_t i = chunk * kChunkPoints;
+    try {
+      points(scratch[worker], i, std::min(count, i + kChunkPoints));
+    } catch (const InputError& error) {
+      throw InputError("point " + std::to_string(i) + ": " + error.what());
+    }
+  });
 }
 
 }  // namespace hydrocoef

@@ -93,6 +93,22 @@ std::pair<std::string, std::vector<double>> parse_resample_entry(const std::stri
   return {axis, out};
 }
 
+std::vector<std::vector<double>> resample_grid(const std::vector<std::string>& axes,
+                                               const std::vector<std::string>& entries, const std::string& option) {
+  std::map<std::string, std::vector<double>> by_axis;
+  for (const auto& text : entries) by_axis.insert(parse_resample_entry(text, option));
+  std::vector<std::vector<double>> grid;
+  for (const auto& axis : axes) {
+    const auto it = by_axis.find(axis);
+    if (it == by_axis.end())
+      throw InputError(option + " gives no breakpoints for axis '" + axis + "'; expected one " + option + " per axis");
+    grid.push_back(it->second);
+  }
+  if (by_axis.size() != axes.size())
+    throw InputError(option + " names an axis the surface does not have; its axes are given by --axes");
+  return grid;
+}
+
 json build_spec_json(const SurfaceBuildSpec& spec) {
   const SurfaceSpec& s = spec.surface;
   json out = {{"version", kBuildSpecVersion},
@@ -195,17 +211,7 @@ json build_spec_from_legacy_options(const json& legacy, const std::string& conte
     s.rbf.polynomial_degree = legacy.at("degree").get<int>();
     s.rbf.smoothing = legacy.at("smoothing").get<double>();
     const auto resample = legacy.at("resample").get<std::vector<std::string>>();
-    if (!resample.empty()) {
-      std::map<std::string, std::vector<double>> by_axis;
-      for (const auto& text : resample) by_axis.insert(parse_resample_entry(text, "--resample"));
-      std::vector<std::vector<double>> grid;
-      for (const auto& axis : s.axes) {
-        const auto it = by_axis.find(axis);
-        if (it == by_axis.end()) throw InputError("--resample gives no breakpoints for axis '" + axis + "'");
-        grid.push_back(it->second);
-      }
-      s.resample = std::move(grid);
-    }
+    if (!resample.empty()) s.resample = resample_grid(s.axes, resample, "--resample");
     s.resample_method = legacy.at("resample_method").get<std::string>();
     s.far_threshold = legacy.at("far_threshold").get<double>();
     return build_spec_json(spec);

@@ -61,4 +61,10 @@ std::vector<std::string> out_of_range_policies(const std::vector<std::string>& a
 /// spaced, 2 to 100000) or "AXIS=X1,X2,...".
 std::pair<std::string, std::vector<double>> parse_resample_entry(const std::string& text, const std::string& option);
 
+/// The resampling grid of a surface over `axes` from one entry per axis (the
+/// form of parse_resample_entry), in the order of `axes`. InputError when an
+/// axis has no entry or an entry names an axis the surface does not have.
+std::vector<std::vector<double>> resample_grid(const std::vector<std::string>& axes,
+                                               const std::vector<std::string>& entries, const std::string& option);
+
 }  // namespace hydrocoef

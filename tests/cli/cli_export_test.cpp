@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
@@ -168,6 +170,21 @@ TEST(CliExport, AnUnwritableDirectoryIsRefused) {
   EXPECT_NE(result.err.find("cannot write 'ro/out.csv'"), std::string::npos) << result.err;
   EXPECT_TRUE(std::filesystem::is_empty(dir / "ro"));
   std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_all);
+}
+
+// The same refusal where no user, root included, can write: the output's
+// directory is a regular file.
+TEST(CliExport, AnOutputUnderARegularFileIsRefused) {
+  TempDir dir;
+  make_database(dir);
+  { std::ofstream(dir / "plain") << "kept\n"; }
+  const auto result = run_cli({"export", "surge", "--format", "csv", "-o", "plain/out.csv"}, dir.path());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("cannot write 'plain/out.csv'"), std::string::npos) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  std::ifstream in(dir / "plain");
+  const std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(kept, "kept\n");
 }
 
 }  // namespace
