@@ -54,8 +54,9 @@ std::string make_file(bool moment) {
   text.reserve(185 * kSteps);
   text += moment ? "# Moment          \n" : "# Force           \n";
   text += "# CofR            : (0.0000000000e+00 0.0000000000e+00 0.0000000000e+00)\n#\n";
-  text += "# Time            \t(total_x total_y total_z)\t(pressure_x pressure_y pressure_z)\t(viscous_x viscous_y "
-          "viscous_z)\n";
+  text +=
+      "# Time            \t(total_x total_y total_z)\t(pressure_x pressure_y pressure_z)\t(viscous_x viscous_y "
+      "viscous_z)\n";
   std::mt19937_64 random(moment ? 2 : 1);
   std::normal_distribution<double> normal(0.0, 1.0);
   const double scale = moment ? 1e-5 : 0.1;
@@ -65,9 +66,9 @@ std::string make_file(bool moment) {
     e = 0.9 * e + 0.05 * normal(random);
     const double p[3] = {scale * (0.8 + e), scale * (0.1 * e - 0.02), scale * (0.03 + 0.5 * e)};
     const double v[3] = {scale * 0.1 * (1 + 0.1 * e), scale * 1e-3 * e, -scale * 4e-3 * e};
-    const int n = std::snprintf(line, sizeof line,
-                                "%-18zu\t(%.10e %.10e %.10e)\t(%.10e %.10e %.10e)\t(%.10e %.10e %.10e)\n", i,
-                                p[0] + v[0], p[1] + v[1], p[2] + v[2], p[0], p[1], p[2], v[0], v[1], v[2]);
+    const int n =
+        std::snprintf(line, sizeof line, "%-18zu\t(%.10e %.10e %.10e)\t(%.10e %.10e %.10e)\t(%.10e %.10e %.10e)\n", i,
+                      p[0] + v[0], p[1] + v[1], p[2] + v[2], p[0], p[1], p[2], v[0], v[1], v[2]);
     text.append(line, static_cast<std::size_t>(n));
   }
   return text;
@@ -140,7 +141,8 @@ ForceHistory synthetic_history(std::size_t n, bool parts) {
     double e = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       e = 0.8 * e + normal(random);
-      total[i] = 1.0 + static_cast<double>(c) + 20.0 * std::exp(-static_cast<double>(i) / (0.01 * static_cast<double>(n))) + 0.1 * e;
+      total[i] = 1.0 + static_cast<double>(c) +
+                 20.0 * std::exp(-static_cast<double>(i) / (0.01 * static_cast<double>(n))) + 0.1 * e;
     }
     if (parts) {
       auto& pressure = h.values(ForcePart::Pressure, static_cast<HistoryComponent>(c));
@@ -165,8 +167,8 @@ void BM_AnalyzeHistory(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
   state.SetComplexityN(static_cast<std::int64_t>(n));
-  state.counters["ns/sample"] =
-      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns/sample"] = benchmark::Counter(
+      static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_AnalyzeHistory)
     ->Arg(100000)

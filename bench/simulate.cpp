@@ -60,7 +60,8 @@ VehicleModel six_surface_model(Interpolation method) {
   for (std::size_t dof = 0; dof < 6; ++dof) {
     const std::string name = std::string("s") + kAxes[dof][0];
     surfaces.emplace_back(name, damping_surface(kAxes[dof][0], kAxes[dof][1], {std::string(kForceNames[dof])}, method));
-    v.damping[dof] = {DofDamping::Kind::Surface, {}, {}, name, std::string(kForceNames[dof]), {}, SignConvention::OnBody};
+    v.damping[dof] = {DofDamping::Kind::Surface, {}, {}, name, std::string(kForceNames[dof]), {},
+                      SignConvention::OnBody};
   }
   return VehicleModel(v, [surfaces](const std::string& name) {
     for (const auto& [n, s] : surfaces)

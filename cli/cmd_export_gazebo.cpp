@@ -41,7 +41,8 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::ReadOnly);
   // --where picks the fits made from that selection of runs (a filtered fit
   // or one level of a per-level fit), e.g. the model at one current.
-  const auto fits = fits_made_from(database, args.body, parse_selection(args.selection.where, args.selection.exclude_runs));
+  const auto fits =
+      fits_made_from(database, args.body, parse_selection(args.selection.where, args.selection.exclude_runs));
   const GazeboCoefficients coefficients = gazebo_coefficients(fits, request);
   const std::vector<GazeboElement> elements = gazebo_elements(coefficients, options);
   write_gazebo(coefficients, options, args.output);

@@ -35,15 +35,24 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
   if (args.refit) {
     if (!args.dof.empty() || !args.terms.empty() || args.by || !args.selection.where.empty() ||
         !args.selection.exclude_runs.empty() || !args.mirror.empty())
-      throw InputError("--refit makes stored fits again as they were made; expected only --name, --body and --json with it");
+      throw InputError(
+          "--refit makes stored fits again as they were made; expected only --name, --body and --json with it");
     Database database(global.database, Database::OpenMode::MustExist);
     const auto result = refit_stored_fits(database, args.name,
                                           args.body.empty() ? std::nullopt : std::optional<std::string>(args.body));
     print_refit(result, global.database, args.json);
     return;
   }
-  FitRequest request{args.body,         args.dof,    args.terms,   args.loss, args.selection.where,
-                     args.selection.exclude_runs, args.mirror, args.mirror_odd, args.name, !args.no_store,
+  FitRequest request{args.body,
+                     args.dof,
+                     args.terms,
+                     args.loss,
+                     args.selection.where,
+                     args.selection.exclude_runs,
+                     args.mirror,
+                     args.mirror_odd,
+                     args.name,
+                     !args.no_store,
                      args.replace ? Database::NameTaken::Replace : Database::NameTaken::Refuse};
   Database database(global.database, Database::OpenMode::MustExist);
   if (args.by) {
@@ -72,8 +81,9 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
       "fit", "Fit a damping law F_dof = sum c_k term_k(x) to the runs of a body (Ceres least squares) and store it");
   command->add_option("--body", args->body, "Body whose runs are fitted (required unless --refit)");
   command->add_option("--dof", args->dof, "Force component: X Y Z K M N (required unless --refit)");
-  command->add_option("--terms", args->terms, "Terms of one velocity component x: 1, x, x|x|, x^2, x^3, |x| "
-                                              "(e.g. 1,u,u|u|; required unless --refit)");
+  command->add_option("--terms", args->terms,
+                      "Terms of one velocity component x: 1, x, x|x|, x^2, x^3, |x| "
+                      "(e.g. 1,u,u|u|; required unless --refit)");
   command->add_option("--loss", args->loss, "squared, or a robust loss huber:S, cauchy:S, soft-l1:S (S in N or N m)")
       ->capture_default_str();
   add_selection_options(*command, args->selection);
@@ -103,6 +113,5 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
   list->add_flag("--json", fits_args->json, "Print JSON");
   list->callback([fits_args, &global] { run_fits(*fits_args, global); });
 }
-
 
 }  // namespace hydrocoef::cli

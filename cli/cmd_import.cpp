@@ -12,8 +12,8 @@
 #include "cli/common.hpp"
 #include "cli/import_output.hpp"
 #include "cli/surface_options.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/pipeline/import_files.hpp"
 #include "src/pipeline/sweep_keys.hpp"
 #include "src/store/database.hpp"
@@ -92,9 +92,12 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
 
 void add_import_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<ImportArgs>();
-  auto* command = app.add_subcommand("import", "Import CFD results (files, folders, OpenFOAM case folders) into the run database");
-  command->add_option("inputs", args->inputs, "Files, folders or case folders to import (all in one transaction)")->required();
-  command->add_option("--format", args->format, "auto (by extension and content), table, monitor, history, cfdpost or vtk")
+  auto* command =
+      app.add_subcommand("import", "Import CFD results (files, folders, OpenFOAM case folders) into the run database");
+  command->add_option("inputs", args->inputs, "Files, folders or case folders to import (all in one transaction)")
+      ->required();
+  command
+      ->add_option("--format", args->format, "auto (by extension and content), table, monitor, history, cfdpost or vtk")
       ->capture_default_str();
   command->add_option("--body", args->surface.body, "Body name the runs belong to (default vehicle)");
   add_surface_options(*command, args->surface);
@@ -115,8 +118,10 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
                       "Tables, monitors, histories: on-body (force on the body; the default) or opposing (positive "
                       "opposes motion)");
   command->add_option("--monitor", args->monitors, "Monitor: COMPONENT=COLUMN, e.g. X=\"USER POINT,Fx\" (repeatable)");
-  command->add_option("--average-last", args->average_last, "Monitor: average the last N iterations (as --window last:N; by default the steady window "
-                      "is found as for any force history)")
+  command
+      ->add_option("--average-last", args->average_last,
+                   "Monitor: average the last N iterations (as --window last:N; by default the steady window "
+                   "is found as for any force history)")
       ->capture_default_str();
   command->add_option("--jobs", args->jobs, "Inputs read in parallel (default: the number of cores)");
   command->add_flag("--replace", args->replace,

@@ -5,8 +5,8 @@
 
 #include "cli/common.hpp"
 #include "cli/surface_options.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/pipeline/import_files.hpp"
 
 namespace hydrocoef::cli {
@@ -28,8 +28,9 @@ void run_integrate(const IntegrateArgs& args) {
   const ImportPlan plan = plan_request(request);
   const ImportedInput input = read_input(plan.inputs.front(), request);
   if (!input.surface)
-    throw InputError(SourceLocation{args.file}, "is a " + input.format + ", not a surface export; expected a CFD-Post "
-                                                "export or a VTK-family file (import reads the others)");
+    throw InputError(SourceLocation{args.file}, "is a " + input.format +
+                                                    ", not a surface export; expected a CFD-Post "
+                                                    "export or a VTK-family file (import reads the others)");
   const auto& key = input.surface->batch.runs.front().key;
   if (args.json) {
     auto out = surface_run_json(*input.surface);
@@ -51,8 +52,10 @@ void add_integrate_command(CLI::App& app) {
   auto args = std::make_shared<IntegrateArgs>();
   auto* command = app.add_subcommand(
       "integrate", "Integrate surface pressure and wall shear of one export into forces and moments (not stored)");
-  command->add_option("file", args->file, "CFD-Post export (.csv/.txt) or VTK-family file (.vtk .vtp .vtu .vtm "
-                                          ".case .cgns)")
+  command
+      ->add_option("file", args->file,
+                   "CFD-Post export (.csv/.txt) or VTK-family file (.vtk .vtp .vtu .vtm "
+                   ".case .cgns)")
       ->required();
   command->add_option("--format", args->format, "auto, cfdpost or vtk")->capture_default_str();
   add_surface_options(*command, args->surface);

@@ -6,10 +6,10 @@
 
 #include "cli/common.hpp"
 #include "cli/plot_common.hpp"
-#include "src/fit/fit_names.hpp"
-#include "src/pipeline/fit_stored_runs.hpp"
 #include "src/core/error.hpp"
 #include "src/dynamics/vehicle.hpp"
+#include "src/fit/fit_names.hpp"
+#include "src/pipeline/fit_stored_runs.hpp"
 #include "src/plot/plots.hpp"
 #include "src/store/database.hpp"
 #include "src/surface/stored_surface.hpp"

@@ -14,9 +14,9 @@
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/text.hpp"
 #include "src/surface/batch_query.hpp"
 #include "src/surface/stored_surface.hpp"
-#include "src/core/text.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -37,7 +37,6 @@ void warn_if_stale(const SurfaceRecord& record) {
               << ")\n";
 }
 
-
 void query_point(const QueryArgs& args, const StoredSurface& stored) {
   const CoefficientSurface& surface = stored.surface;
   const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
@@ -51,8 +50,8 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
   for (std::size_t a = 0; a < n_axes; ++a)
     if (std::isnan(point[a]))
       throw InputError("no value for axis '" + surface.axis_names()[a] + "'; surface '" + args.name +
-                       "' needs one value for each of its axes: " + join(surface.axis_names(), ", ") +
-                       " (e.g. " + surface.axis_names()[a] + "=0.1)");
+                       "' needs one value for each of its axes: " + join(surface.axis_names(), ", ") + " (e.g. " +
+                       surface.axis_names()[a] + "=0.1)");
   std::vector<double> out(n_out), gradient(n_out * n_axes);
   if (args.gradient)
     surface.evaluate_with_gradient(point, out, gradient);
@@ -96,7 +95,8 @@ void query_batch(const QueryArgs& args, const StoredSurface& stored) {
     std::cerr << "hydrocoef: " << points << " points of surface '" << args.name << "' written to " << args.output
               << '\n';
   if (args.json && args.output != "-")
-    std::cout << escape::json_text(nlohmann::json{{"surface", args.name}, {"points", points}, {"output", args.output}}, 2)
+    std::cout << escape::json_text(nlohmann::json{{"surface", args.name}, {"points", points}, {"output", args.output}},
+                                   2)
               << '\n';
 }
 

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "cli/common.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/report/report.hpp"
 #include "src/store/database.hpp"
 

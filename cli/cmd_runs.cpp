@@ -11,10 +11,10 @@
 
 #include "cli/common.hpp"
 #include "cli/runs_output.hpp"
-#include "src/pipeline/run_curation.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/sign_convention.hpp"
+#include "src/pipeline/run_curation.hpp"
 #include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
@@ -53,7 +53,8 @@ void run_show(const ShowArgs& args, const GlobalOptions& global) {
   const auto all = database.runs();
   const auto found = std::find_if(all.begin(), all.end(), [&](const StoredRun& run) { return run.id == args.id; });
   if (found == all.end())
-    throw InputError(SourceLocation{global.database}, "no run " + std::to_string(args.id) + "; 'hydrocoef runs' lists them");
+    throw InputError(SourceLocation{global.database},
+                     "no run " + std::to_string(args.id) + "; 'hydrocoef runs' lists them");
   const StoredRun& run = *found;
   std::map<std::int64_t, ImportRecord> imports;
   for (const auto& force : run.tau_b)
@@ -107,15 +108,17 @@ void add_runs_command(CLI::App& app, const GlobalOptions& global) {
   });
 
   auto show = std::make_shared<ShowArgs>();
-  auto* show_command = command->add_subcommand("show", "One run with its full provenance: every force's file, import and settings");
+  auto* show_command =
+      command->add_subcommand("show", "One run with its full provenance: every force's file, import and settings");
   show_command->add_option("id", show->id, "Run id (hydrocoef runs lists them)")->required();
   show_command->add_flag("--json", show->json, "Print JSON");
   show_command->callback([show, &global] { run_show(*show, global); });
 
   auto remove = std::make_shared<DeleteArgs>();
   auto* delete_command = command->add_subcommand(
-      "delete", "Delete runs by id, by --where selection or by --source file, in one transaction; fits and surfaces "
-                "built from them become stale");
+      "delete",
+      "Delete runs by id, by --where selection or by --source file, in one transaction; fits and surfaces "
+      "built from them become stale");
   delete_command->add_option("ids", remove->ids, "Run ids");
   delete_command->add_option("--body", remove->body, "With --where or --source: only runs of this body");
   add_selection_options(*delete_command, remove->selection);

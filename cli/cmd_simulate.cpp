@@ -14,8 +14,8 @@
 
 #include "cli/common.hpp"
 #include "cli/simulate_output.hpp"
-#include "src/core/escape.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
 #include "src/dynamics/simulation.hpp"
@@ -66,7 +66,7 @@ void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
     comparison = compare_with_experiment(*measured, result.samples, options);
   }
   print_simulation(SimulationReport{args.vehicle, model.description().name, args.scenario, scenario, result, wall_s,
-                                   args.out, args.experiment, args.steady_fraction, comparison},
+                                    args.out, args.experiment, args.steady_fraction, comparison},
                    args.json);
 }
 
@@ -117,9 +117,11 @@ void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
   if (!eq.converged) {
     std::size_t worst = 0;
     eq.residual_b.cwiseAbs().maxCoeff(&worst);
-    throw InputError("no steady state for this force: the residual stays at " + significant(eq.residual_b[static_cast<Eigen::Index>(worst)], 3) +
-                     " " + force_unit(worst) + " in " + std::string(kForceNames[worst]) +
-                     " (a DOF with a force but no damping, or a coupling that only a change of attitude could balance)");
+    throw InputError(
+        "no steady state for this force: the residual stays at " +
+        significant(eq.residual_b[static_cast<Eigen::Index>(worst)], 3) + " " + force_unit(worst) + " in " +
+        std::string(kForceNames[worst]) +
+        " (a DOF with a force but no damping, or a coupling that only a change of attitude could balance)");
   }
   print_equilibrium(EquilibriumReport{args.vehicle, model.description().name, in, eq, attitude}, args.json);
 }
@@ -131,12 +133,14 @@ void add_simulate_command(CLI::App& app, const GlobalOptions& global) {
   auto* command = app.add_subcommand(
       "simulate", "Run a scenario on a vehicle with the 6-DOF lookup-table model (RK4 or Dormand-Prince)");
   command->add_option("--vehicle", args->vehicle, "Vehicle description (JSON)")->required();
-  command->add_option("--scenario", args->scenario, "Scenario (JSON): inputs over time, duration, output rate")->required();
+  command->add_option("--scenario", args->scenario, "Scenario (JSON): inputs over time, duration, output rate")
+      ->required();
   command->add_option("--out", args->out, "Write the trajectory (time, pose, velocity, forces) to this CSV");
   command->add_option("--experiment", args->experiment,
                       "Measured trajectory CSV (t and velocity columns) to compare with: RMS, steady error, 63 % time");
-  command->add_option("--steady-fraction", args->steady_fraction,
-                      "Fraction of the compared record at its end taken as steady state")
+  command
+      ->add_option("--steady-fraction", args->steady_fraction,
+                   "Fraction of the compared record at its end taken as steady state")
       ->capture_default_str();
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_simulate(*args, global); });
@@ -146,9 +150,11 @@ void add_equilibrium_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<EquilibriumArgs>();
   auto* command = app.add_subcommand("equilibrium", "Steady body velocity under a constant force (attitude held)");
   command->add_option("--vehicle", args->vehicle, "Vehicle description (JSON)")->required();
-  command->add_option("--tau", args->tau, "Force on the body NAME=VALUE, NAME one of X Y Z [N], K M N [N m] (repeatable)");
+  command->add_option("--tau", args->tau,
+                      "Force on the body NAME=VALUE, NAME one of X Y Z [N], K M N [N m] (repeatable)");
   command->add_option("--current", args->current, "Water velocity u|v|w=VALUE in body axes [m/s] (repeatable)");
-  command->add_option("--disturbance", args->disturbance, "Disturbance parameter NAME=VALUE read by surfaces (repeatable)");
+  command->add_option("--disturbance", args->disturbance,
+                      "Disturbance parameter NAME=VALUE read by surfaces (repeatable)");
   command->add_option("--attitude-deg", args->attitude, "Attitude held: roll,pitch,yaw [deg]")->capture_default_str();
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_equilibrium(*args, global); });

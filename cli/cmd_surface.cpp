@@ -16,8 +16,8 @@ namespace {
 void build(const SurfaceBuildArgs& args, const GlobalOptions& global) {
   const SurfaceBuildSpec spec = surface_build_spec(args);
   Database database(global.database, Database::OpenMode::MustExist);
-  const auto result = build_and_store_surface(database, args.name, args.body, spec,
-                                              args.replace ? Database::NameTaken::Replace : Database::NameTaken::Refuse);
+  const auto result = build_and_store_surface(
+      database, args.name, args.body, spec, args.replace ? Database::NameTaken::Replace : Database::NameTaken::Refuse);
   if (args.json) {
     std::cout << escape::json_text(surface_build_json(result), 2) << '\n';
   } else {
@@ -34,8 +34,8 @@ struct NameArgs {
 
 void rebuild(const NameArgs& args, const GlobalOptions& global) {
   Database database(global.database, Database::OpenMode::MustExist);
-  const auto targets = surfaces_to_rebuild(database, args.name.empty() ? std::nullopt : std::optional(args.name),
-                                           args.body, args.stale);
+  const auto targets =
+      surfaces_to_rebuild(database, args.name.empty() ? std::nullopt : std::optional(args.name), args.body, args.stale);
   if (targets.empty() && !args.json) std::cout << "no surface to rebuild\n";
   nlohmann::json rebuilt = nlohmann::json::array();
   for (const auto& record : targets) {
@@ -76,8 +76,9 @@ void add_surface_command(CLI::App& app, const GlobalOptions& global) {
   b->callback([build_args, &global] { build(*build_args, global); });
 
   auto rebuild_args = std::make_shared<NameArgs>();
-  auto* r = surface->add_subcommand("rebuild", "Build stored surfaces again from the current runs, with the options "
-                                               "they were built with (one by name, or every --stale one)");
+  auto* r = surface->add_subcommand("rebuild",
+                                    "Build stored surfaces again from the current runs, with the options "
+                                    "they were built with (one by name, or every --stale one)");
   r->add_option("name", rebuild_args->name, "Surface name (omit with --stale or to rebuild all)");
   r->add_option("--body", rebuild_args->body, "Only this body's surfaces");
   r->add_flag("--stale", rebuild_args->stale, "Only surfaces whose runs changed");

@@ -20,8 +20,7 @@ double parse_finite(const std::string& text, const std::string& option, const st
 
 std::pair<std::string, std::string> parse_text_assignment(const std::string& text, const std::string& option) {
   const auto equals = text.find('=');
-  if (equals == std::string::npos || equals == 0)
-    throw InputError(option + " '" + text + "': expected NAME=VALUE");
+  if (equals == std::string::npos || equals == 0) throw InputError(option + " '" + text + "': expected NAME=VALUE");
   return {text.substr(0, equals), text.substr(equals + 1)};
 }
 
@@ -37,8 +36,8 @@ std::array<double, 3> parse_triple(const std::string& text, const std::string& o
     const auto comma = text.find(',', start);
     if ((i < 2) == (comma == std::string::npos))
       throw InputError(option + " '" + text + "': expected three comma-separated numbers x,y,z");
-    out[i] = parse_finite(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option,
-                          text);
+    out[i] =
+        parse_finite(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option, text);
     start = comma + 1;
   }
   return out;

@@ -81,7 +81,8 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
                                                        : "as tabulated, positive opposes motion")
             << "\n\n";
   std::cout << std::left << "  " << std::setw(8) << "term" << std::setw(16) << "coefficient" << std::setw(14)
-            << "std. error" << "unit\n";
+            << "std. error"
+            << "unit\n";
   for (std::size_t k = 0; k < spec.terms.size(); ++k)
     std::cout << "  " << std::setw(8) << term_name(spec.terms[k], spec.variable) << std::setw(16)
               << significant(fit.coefficients[k], 7) << std::setw(14)
@@ -90,9 +91,9 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
   if (images > 0 || samples.images_skipped > 0)
     std::cout << "\n  mirror " << setup.mirror.text() << ": " << samples.runs.size() << " runs and " << images
               << " mirror images (never stored as runs)"
-              << (samples.images_skipped ? "; " + std::to_string(samples.images_skipped) +
-                                               " images left out at the keys of measured runs"
-                                         : std::string())
+              << (samples.images_skipped
+                      ? "; " + std::to_string(samples.images_skipped) + " images left out at the keys of measured runs"
+                      : std::string())
               << '\n';
   std::cout << "\n  n = " << fit.n << " samples, RMSE = " << significant(fit.rmse, 4) << " " << force_unit(setup.dof)
             << ", R^2 = " << significant(fit.r2, 8)
@@ -115,14 +116,22 @@ void print_level_fit(const LevelFitResult& result, const LevelFitRequest& reques
   const auto& curves = result.curves;
   const std::string& by = request.by;
   if (json) {
-    nlohmann::json out = {{"name", result.base_name},  {"body", request.fit.body}, {"dof", request.fit.dof},
-                          {"variable", spec.variable}, {"terms", format_damping_terms(spec)},
-                          {"by", by},                  {"curve", request.curve}, {"where", setup.selection},
+    nlohmann::json out = {{"name", result.base_name},
+                          {"body", request.fit.body},
+                          {"dof", request.fit.dof},
+                          {"variable", spec.variable},
+                          {"terms", format_damping_terms(spec)},
+                          {"by", by},
+                          {"curve", request.curve},
+                          {"where", setup.selection},
                           {"sign_convention", std::string(to_string(setup.samples.sign))}};
     out["levels"] = nlohmann::json::array();
     for (std::size_t l = 0; l < fits.size(); ++l) {
-      nlohmann::json item = {{"level", fits[l].level}, {"name", result.names[l]},      {"n", fits[l].fit.n},
-                             {"rmse", fits[l].fit.rmse}, {"r2", optional_number(fits[l].fit.r2)},
+      nlohmann::json item = {{"level", fits[l].level},
+                             {"name", result.names[l]},
+                             {"n", fits[l].fit.n},
+                             {"rmse", fits[l].fit.rmse},
+                             {"r2", optional_number(fits[l].fit.r2)},
                              {"stored", result.ids[l].has_value()}};
       for (std::size_t k = 0; k < spec.terms.size(); ++k) {
         const std::string term = term_name(spec.terms[k], spec.variable);
@@ -151,8 +160,10 @@ void print_level_fit(const LevelFitResult& result, const LevelFitRequest& reques
   }
   std::cout << "fit " << result.base_name << " at each level of " << by << " (" << fits.size() << " levels)\n\n  "
             << std::left << std::setw(12) << by;
-  for (std::size_t k = 0; k < spec.terms.size(); ++k) std::cout << std::setw(16) << term_name(spec.terms[k], spec.variable);
-  std::cout << std::setw(6) << "n" << "R^2\n";
+  for (std::size_t k = 0; k < spec.terms.size(); ++k)
+    std::cout << std::setw(16) << term_name(spec.terms[k], spec.variable);
+  std::cout << std::setw(6) << "n"
+            << "R^2\n";
   for (const auto& level : fits) {
     std::cout << "  " << std::setw(12) << significant(level.level, 6);
     for (double c : level.fit.coefficients) std::cout << std::setw(16) << significant(c, 7);
@@ -187,8 +198,11 @@ void print_refit(const RefitResult& result, const std::string& database, bool js
   if (json) {
     nlohmann::json out = nlohmann::json::array();
     for (std::size_t i = 0; i < made.size(); ++i) {
-      nlohmann::json item = {{"name", made[i].name}, {"n", made[i].n}, {"runs", made[i].run_ids},
-                             {"rmse", made[i].rmse}, {"r2", optional_number(made[i].r2)}};
+      nlohmann::json item = {{"name", made[i].name},
+                             {"n", made[i].n},
+                             {"runs", made[i].run_ids},
+                             {"rmse", made[i].rmse},
+                             {"r2", optional_number(made[i].r2)}};
       for (const auto& c : made[i].coefficients) item["coefficients"][c.term] = c.value;
       for (const auto& c : chosen[i].coefficients) item["previous_coefficients"][c.term] = c.value;
       out.push_back(item);
@@ -206,7 +220,8 @@ void print_refit(const RefitResult& result, const std::string& database, bool js
     for (std::size_t k = 0; k < made[i].coefficients.size(); ++k) {
       const auto& c = made[i].coefficients[k];
       std::cout << " " << c.term << " = " << significant(c.value, 7);
-      if (k < chosen[i].coefficients.size()) std::cout << " (was " << significant(chosen[i].coefficients[k].value, 7) << ")";
+      if (k < chosen[i].coefficients.size())
+        std::cout << " (was " << significant(chosen[i].coefficients[k].value, 7) << ")";
     }
     std::cout << '\n';
   }
@@ -217,12 +232,21 @@ void print_fits(const std::vector<FitRecord>& fits, const std::string& database,
   if (json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& fit : fits) {
-      nlohmann::json item = {{"id", fit.id},         {"name", fit.name},     {"body", fit.body},
-                             {"dof", fit.dof},       {"variable", fit.variable}, {"terms", fit.terms},
-                             {"loss", fit.loss},     {"where", fit.run_filter},
+      nlohmann::json item = {{"id", fit.id},
+                             {"name", fit.name},
+                             {"body", fit.body},
+                             {"dof", fit.dof},
+                             {"variable", fit.variable},
+                             {"terms", fit.terms},
+                             {"loss", fit.loss},
+                             {"where", fit.run_filter},
                              {"sign_convention", std::string(to_string(fit.sign))},
-                             {"n", fit.n},           {"rmse", fit.rmse},     {"r2", fit.r2},
-                             {"created_at", fit.created_at}, {"runs", fit.run_ids}, {"stale", fit.stale},
+                             {"n", fit.n},
+                             {"rmse", fit.rmse},
+                             {"r2", fit.r2},
+                             {"created_at", fit.created_at},
+                             {"runs", fit.run_ids},
+                             {"stale", fit.stale},
                              {"mirror", fit.mirror}};
       item["coefficients"] = nlohmann::json::object();
       item["std_errors"] = nlohmann::json::object();

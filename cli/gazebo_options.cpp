@@ -32,8 +32,8 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count, co
 }  // namespace
 
 std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args) {
-  const int sources = int(args.added_mass.has_value()) + int(args.added_mass_matrix.has_value()) +
-                      int(args.sphere_radius.has_value());
+  const int sources =
+      int(args.added_mass.has_value()) + int(args.added_mass_matrix.has_value()) + int(args.sphere_radius.has_value());
   if (sources != 1) {
     throw InputError(std::string(sources == 0 ? "no added mass given" : "more than one added mass given") +
                      "; expected exactly one of --added-mass d1,...,d6, --added-mass-matrix FILE or --sphere-radius "
@@ -41,13 +41,14 @@ std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args) {
   }
   if (args.rho && !args.sphere_radius) throw InputError("--rho applies to --sphere-radius only; expected both");
   if (args.rotation && !args.sphere_radius)
-    throw InputError("--added-mass-rotation applies to --sphere-radius only; expected both (or give the whole "
-                     "diagonal with --added-mass)");
+    throw InputError(
+        "--added-mass-rotation applies to --sphere-radius only; expected both (or give the whole "
+        "diagonal with --added-mass)");
   if (args.added_mass) {
     const auto d = parse_numbers(*args.added_mass, 6, "--added-mass",
                                  "six numbers Xu' Yv' Zw' (kg) Kp' Mq' Nr' (kg m^2), comma-separated");
-    return {added_mass_diagonal({d[0], d[1], d[2], d[3], d[4], d[5]}), "diagonal " + *args.added_mass +
-                                                                           " (kg x3, kg m^2 x3)"};
+    return {added_mass_diagonal({d[0], d[1], d[2], d[3], d[4], d[5]}),
+            "diagonal " + *args.added_mass + " (kg x3, kg m^2 x3)"};
   }
   if (args.added_mass_matrix) {
     return {read_added_mass_matrix(*args.added_mass_matrix),

@@ -27,17 +27,18 @@ void print_gazebo_export(const GazeboCoefficients& coefficients, const std::vect
     out["linearized_at"] = coefficients.linearized_at ? nlohmann::json(*coefficients.linearized_at) : nlohmann::json();
     out["fits"] = nlohmann::json::array();
     for (const GazeboFitSource& s : coefficients.sources) {
-      nlohmann::json fit = {{"dof", std::string(gazebo_dof_name(s.dof))},
-                            {"variable", std::string(gazebo_velocity_name(s.variable))},
-                            {"name", s.fit_name},
-                            {"id", s.fit_id},
-                            {"terms", s.terms},
-                            {"stored_sign", std::string(to_string(s.stored_sign))},
-                            {"linear", s.linear},
-                            {"quadratic", s.quadratic},
-                            {"units", {{"linear", damping_unit(s.dof, s.variable, false)},
-                                       {"quadratic", damping_unit(s.dof, s.variable, true)}}},
-                            {"runs", s.run_ids}};
+      nlohmann::json fit = {
+          {"dof", std::string(gazebo_dof_name(s.dof))},
+          {"variable", std::string(gazebo_velocity_name(s.variable))},
+          {"name", s.fit_name},
+          {"id", s.fit_id},
+          {"terms", s.terms},
+          {"stored_sign", std::string(to_string(s.stored_sign))},
+          {"linear", s.linear},
+          {"quadratic", s.quadratic},
+          {"units",
+           {{"linear", damping_unit(s.dof, s.variable, false)}, {"quadratic", damping_unit(s.dof, s.variable, true)}}},
+          {"runs", s.run_ids}};
       fit["dropped_constant"] = s.dropped_constant ? nlohmann::json(*s.dropped_constant) : nlohmann::json();
       out["fits"].push_back(fit);
     }

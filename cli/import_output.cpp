@@ -29,7 +29,8 @@ std::string input_line(const ImportedInput& input, const ImportOutcome& outcome)
     std::string forces;
     for (std::size_t i = 0; i < 6; ++i) {
       if (!run.tau_b[i]) continue;
-      forces += std::string(forces.empty() ? "" : " ") + std::string(kForceNames[i]) + "=" + significant(run.tau_b[i]->total, 4);
+      forces += std::string(forces.empty() ? "" : " ") + std::string(kForceNames[i]) + "=" +
+                significant(run.tau_b[i]->total, 4);
       if (run.statistics && run.statistics->components[i])
         forces += "±" + significant(run.statistics->components[i]->standard_error, 2);
     }
@@ -44,8 +45,12 @@ std::string input_line(const ImportedInput& input, const ImportOutcome& outcome)
 }
 
 nlohmann::json statistics_json(const RunStatistics& s) {
-  nlohmann::json out = {{"abscissa", s.abscissa},         {"window", s.window_method}, {"window_first", s.window_first},
-                        {"window_last", s.window_last},   {"samples", s.samples},      {"flags", s.flags},
+  nlohmann::json out = {{"abscissa", s.abscissa},
+                        {"window", s.window_method},
+                        {"window_first", s.window_first},
+                        {"window_last", s.window_last},
+                        {"samples", s.samples},
+                        {"flags", s.flags},
                         {"components", nlohmann::json::object()}};
   for (std::size_t i = 0; i < 6; ++i)
     if (const auto& c = s.components[i])
@@ -68,32 +73,36 @@ void print_import(const ImportResult& result, const std::string& database, bool 
     for (std::size_t i = 0; i < outcomes.size(); ++i) {
       const auto& o = outcomes[i];
       const auto& input = inputs[i];
-      nlohmann::json file = {{"path", o.path},
-                             {"format", input.format},
-                             {"sha256", o.sha256},
-                             {"status", o.already_imported ? "already_imported" : o.replaced ? "replaced" : "imported"},
-                             {"import_id", o.import_id},
-                             {"reading", o.reading},
-                             {"runs_in_file", input.batch.runs.size()},
-                             {"runs_created", o.runs_created},
-                             {"runs_extended", o.runs_extended},
-                             {"components_written", o.components_written},
-                             {"settings", nlohmann::json::parse(input.batch.source.settings.empty() ? "{}" : input.batch.source.settings)},
-                             {"notes", input.notes}};
+      nlohmann::json file = {
+          {"path", o.path},
+          {"format", input.format},
+          {"sha256", o.sha256},
+          {"status", o.already_imported ? "already_imported"
+                     : o.replaced       ? "replaced"
+                                        : "imported"},
+          {"import_id", o.import_id},
+          {"reading", o.reading},
+          {"runs_in_file", input.batch.runs.size()},
+          {"runs_created", o.runs_created},
+          {"runs_extended", o.runs_extended},
+          {"components_written", o.components_written},
+          {"settings", nlohmann::json::parse(input.batch.source.settings.empty() ? "{}" : input.batch.source.settings)},
+          {"notes", input.notes}};
       if (o.already_imported) {
         file["previous_path"] = o.previous_path;
         file["previously_imported_at"] = o.previously_imported_at;
       }
       if (input.batch.runs.size() == 1) {
         file["key"] = key_json(input.batch.runs.front().key);
-        if (input.batch.runs.front().statistics) file["statistics"] = statistics_json(*input.batch.runs.front().statistics);
+        if (input.batch.runs.front().statistics)
+          file["statistics"] = statistics_json(*input.batch.runs.front().statistics);
       }
       if (input.surface) file["surface"] = surface_run_json(*input.surface);
       out["files"].push_back(file);
     }
-    out["summary"] = {{"files", outcomes.size()}, {"runs", runs},         {"runs_created", created},
-                      {"runs_extended", extended}, {"already_imported", already}, {"replaced", replaced},
-                      {"excluded", plan.excluded}};
+    out["summary"] = {
+        {"files", outcomes.size()},    {"runs", runs},         {"runs_created", created},  {"runs_extended", extended},
+        {"already_imported", already}, {"replaced", replaced}, {"excluded", plan.excluded}};
     // plan: the folder walk, sidecars and case files' settings; read: parsing,
     // integration and window analysis of every input (on every core); store:
     // the one transaction.
@@ -106,12 +115,14 @@ void print_import(const ImportResult& result, const std::string& database, bool 
   if (!quiet) {
     for (std::size_t i = 0; i < outcomes.size(); ++i) std::cout << input_line(inputs[i], outcomes[i]) << '\n';
     for (const auto& [text, count] : notes)
-      std::cout << "note" << (count > 1 ? " (" + std::to_string(count) + " inputs)" : std::string()) << ": " << text << '\n';
+      std::cout << "note" << (count > 1 ? " (" + std::to_string(count) + " inputs)" : std::string()) << ": " << text
+                << '\n';
   }
-  std::cout << "imported " << outcomes.size() << (outcomes.size() == 1 ? " input" : " inputs") << " into "
-            << database << ": " << created << " new " << (created == 1 ? "run" : "runs") << ", " << extended
-            << " extended, " << already << " already imported"
-            << (replaced ? ", " + std::to_string(replaced) + " replaced" : std::string()) << (plan.excluded ? ", " + std::to_string(plan.excluded) + " left out by the filters" : std::string())
+  std::cout << "imported " << outcomes.size() << (outcomes.size() == 1 ? " input" : " inputs") << " into " << database
+            << ": " << created << " new " << (created == 1 ? "run" : "runs") << ", " << extended << " extended, "
+            << already << " already imported"
+            << (replaced ? ", " + std::to_string(replaced) + " replaced" : std::string())
+            << (plan.excluded ? ", " + std::to_string(plan.excluded) + " left out by the filters" : std::string())
             << ", " << notes.size() << (notes.size() == 1 ? " note" : " notes") << '\n';
 }
 

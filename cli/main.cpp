@@ -10,10 +10,11 @@
 
 int main(int argc, char** argv) {
   using namespace hydrocoef;
-  CLI::App app{"hydrocoef: CFD results to hydrodynamic coefficient databases.\n"
-               "Body axes x forward, y starboard, z down; SI units; forces on the body unless a record says "
-               "otherwise.",
-               "hydrocoef"};
+  CLI::App app{
+      "hydrocoef: CFD results to hydrodynamic coefficient databases.\n"
+      "Body axes x forward, y starboard, z down; SI units; forces on the body unless a record says "
+      "otherwise.",
+      "hydrocoef"};
   app.set_version_flag("--version", std::string("hydrocoef ") + kVersion);
   app.require_subcommand(1);
   app.fallthrough();

@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
-#include "src/core/damping_terms.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -77,8 +77,8 @@ void add_common(CLI::App* command, CommonPlotArgs& args, bool surface_style) {
   command->add_flag("--json", args.json, "Print JSON: the files written and the series drawn");
 }
 
-std::vector<double> steady_forces(const std::vector<double>& taus, std::optional<double> from,
-                                  std::optional<double> to, std::size_t count) {
+std::vector<double> steady_forces(const std::vector<double>& taus, std::optional<double> from, std::optional<double> to,
+                                  std::size_t count) {
   std::vector<double> out = taus;
   if (from || to) {
     if (!from || !to || !(*to > *from) || count < 2 || count > 1000)

@@ -34,8 +34,8 @@ void render_and_print(const plot::Figure& figure, const std::string& default_nam
 
 /// plot steady's forces: the --tau values, then --count values evenly from
 /// --tau-from to --tau-to. InputError when none are given or the range is bad.
-std::vector<double> steady_forces(const std::vector<double>& taus, std::optional<double> from,
-                                  std::optional<double> to, std::size_t count);
+std::vector<double> steady_forces(const std::vector<double>& taus, std::optional<double> from, std::optional<double> to,
+                                  std::size_t count);
 
 /// plot curves' base fit name from --body, --dof and --terms (as fit --by
 /// names its per-level fits). InputError when one is missing.

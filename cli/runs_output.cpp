@@ -98,16 +98,15 @@ nlohmann::json run_json(const StoredRun& run) {
         {"source_line", f.source_line}};
     if (f.statistics) {
       const auto& st = *f.statistics;
-      out["forces"][std::string(kForceNames[i])]["statistics"] = {
-          {"abscissa", st.abscissa},
-          {"window_method", st.window_method},
-          {"window", {st.window_first, st.window_last}},
-          {"samples", st.samples},
-          {"standard_error", st.values.standard_error},
-          {"spread", st.values.spread},
-          {"drift", st.values.drift},
-          {"effective_samples", st.values.effective_samples},
-          {"flags", st.flags}};
+      out["forces"][std::string(kForceNames[i])]["statistics"] = {{"abscissa", st.abscissa},
+                                                                  {"window_method", st.window_method},
+                                                                  {"window", {st.window_first, st.window_last}},
+                                                                  {"samples", st.samples},
+                                                                  {"standard_error", st.values.standard_error},
+                                                                  {"spread", st.values.spread},
+                                                                  {"drift", st.values.drift},
+                                                                  {"effective_samples", st.values.effective_samples},
+                                                                  {"flags", st.flags}};
     }
   }
   out["flags"] = run_flags(run);
@@ -117,8 +116,7 @@ nlohmann::json run_json(const StoredRun& run) {
 void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<std::string>& body,
                       const std::string& database) {
   if (runs.empty()) {
-    std::cout << "no runs" << (body ? " of body '" + *body + "'" : std::string()) << " in "
-              << database << '\n';
+    std::cout << "no runs" << (body ? " of body '" + *body + "'" : std::string()) << " in " << database << '\n';
     return;
   }
   // Only the velocity and force columns some run uses are shown.
@@ -174,7 +172,6 @@ void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<st
             << '\n';
 }
 
-
 void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>& imports, bool json) {
   if (json) {
     nlohmann::json out = run_json(run);
@@ -184,8 +181,11 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
     return;
   }
   std::cout << "run " << run.id << ": " << describe(run.key) << '\n';
-  std::cout << "  fluid: rho " << (run.fluid.density_kg_m3 ? significant(*run.fluid.density_kg_m3, 6) + " kg m^-3" : "not given")
-            << ", nu " << (run.fluid.kinematic_viscosity_m2_s ? significant(*run.fluid.kinematic_viscosity_m2_s, 6) + " m^2 s^-1" : "not given")
+  std::cout << "  fluid: rho "
+            << (run.fluid.density_kg_m3 ? significant(*run.fluid.density_kg_m3, 6) + " kg m^-3" : "not given")
+            << ", nu "
+            << (run.fluid.kinematic_viscosity_m2_s ? significant(*run.fluid.kinematic_viscosity_m2_s, 6) + " m^2 s^-1"
+                                                   : "not given")
             << "; moment reference point (" << significant(run.reference_point_b[0], 6) << ", "
             << significant(run.reference_point_b[1], 6) << ", " << significant(run.reference_point_b[2], 6)
             << ") m, body axes\n";
@@ -193,7 +193,8 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
     if (!run.tau_b[i]) continue;
     const auto& f = *run.tau_b[i];
     std::cout << "  " << kForceNames[i] << " = " << significant(f.value.total, 8) << (i < 3 ? " N" : " N m") << " ("
-              << to_string(f.sign) << "), from " << f.source_path << (f.source_line ? ":" + std::to_string(f.source_line) : "")
+              << to_string(f.sign) << "), from " << f.source_path
+              << (f.source_line ? ":" + std::to_string(f.source_line) : "")
               << (f.import_id ? ", import " + std::to_string(f.import_id) : std::string()) << '\n';
     if (f.statistics) {
       const auto& st = *f.statistics;
@@ -209,8 +210,9 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
     }
   }
   for (const auto& [id, record] : imports) {
-    std::cout << "  import " << id << ": " << record.path << " (" << (record.resolved_path.empty() ? "path not resolved" : record.resolved_path)
-              << "), sha256 " << record.sha256.substr(0, 16) << "..., " << record.importer << " " << record.importer_version
+    std::cout << "  import " << id << ": " << record.path << " ("
+              << (record.resolved_path.empty() ? "path not resolved" : record.resolved_path) << "), sha256 "
+              << record.sha256.substr(0, 16) << "..., " << record.importer << " " << record.importer_version
               << ", hydrocoef " << (record.hydrocoef_version.empty() ? "(older)" : record.hydrocoef_version) << ", "
               << record.imported_at << (record.reading.empty() ? "" : ", reading '" + record.reading + "'") << '\n';
     const auto settings = nlohmann::json::parse(record.settings.empty() ? "{}" : record.settings, nullptr, false);
@@ -218,10 +220,10 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
       for (const auto& [name, setting] : settings.items())
         if (setting.is_object())
           std::cout << "    " << name << " = " << escape::json_text(setting.value("value", nlohmann::json())) << "  ("
-                    << setting.value("source", std::string()) << (setting.contains("where") ? ": " + escape::one_line(setting.value("where", std::string())) : "")
+                    << setting.value("source", std::string())
+                    << (setting.contains("where") ? ": " + escape::one_line(setting.value("where", std::string())) : "")
                     << ")\n";
   }
 }
-
 
 }  // namespace hydrocoef::cli

@@ -42,7 +42,8 @@ nlohmann::json optional_number(double value) { return std::isfinite(value) ? nlo
 
 void print_velocity_table(const Vector6& nu, const ForceBreakdown& forces) {
   std::cout << "  " << std::left << std::setw(4) << "" << std::setw(17) << "velocity" << std::setw(7) << ""
-            << std::setw(4) << "" << std::setw(15) << "damping" << std::setw(15) << "control" << "\n";
+            << std::setw(4) << "" << std::setw(15) << "damping" << std::setw(15) << "control"
+            << "\n";
   for (std::size_t i = 0; i < 6; ++i) {
     const auto k = static_cast<Eigen::Index>(i);
     std::cout << "  " << std::setw(4) << kVelocityNames[i] << std::setw(17) << significant(nu[k], 9) << std::setw(7)
@@ -81,16 +82,17 @@ void print_simulation(const SimulationReport& r, bool json) {
                           {"trajectory", r.out ? nlohmann::json(*r.out) : nlohmann::json()},
                           {"sign_convention", kSignNote},
                           {"units", units_json()}};
-    out["final"] = {{"t", last.t_s},
-                    {"position_n", {{"x", last.p_n.x()}, {"y", last.p_n.y()}, {"z", last.p_n.z()}}},
-                    {"euler_rad", {{"phi", last.euler_rad[0]}, {"theta", last.euler_rad[1]}, {"psi", last.euler_rad[2]}}},
-                    {"velocity", velocity_json(last.nu_b)},
-                    {"relative_velocity", velocity_json(last.forces.nu_r_b)},
-                    {"forces",
-                     {{"control", force_json(last.forces.control_b)},
-                      {"damping", force_json(last.forces.damping_b)},
-                      {"hydrostatic", force_json(last.forces.hydrostatic_b)},
-                      {"coriolis", force_json(last.forces.coriolis_b)}}}};
+    out["final"] = {
+        {"t", last.t_s},
+        {"position_n", {{"x", last.p_n.x()}, {"y", last.p_n.y()}, {"z", last.p_n.z()}}},
+        {"euler_rad", {{"phi", last.euler_rad[0]}, {"theta", last.euler_rad[1]}, {"psi", last.euler_rad[2]}}},
+        {"velocity", velocity_json(last.nu_b)},
+        {"relative_velocity", velocity_json(last.forces.nu_r_b)},
+        {"forces",
+         {{"control", force_json(last.forces.control_b)},
+          {"damping", force_json(last.forces.damping_b)},
+          {"hydrostatic", force_json(last.forces.hydrostatic_b)},
+          {"coriolis", force_json(last.forces.coriolis_b)}}}};
     if (r.experiment) {
       out["experiment"] = *r.experiment;
       out["comparison"] = nlohmann::json::array();
@@ -109,15 +111,15 @@ void print_simulation(const SimulationReport& r, bool json) {
   }
 
   std::cout << "simulate " << (r.scenario.name.empty() ? r.scenario_path : r.scenario.name) << "\n  vehicle "
-            << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " (" << r.vehicle
-            << "), scenario " << r.scenario_path << "\n  " << significant(r.scenario.duration_s, 6) << " s, "
+            << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " (" << r.vehicle << "), scenario "
+            << r.scenario_path << "\n  " << significant(r.scenario.duration_s, 6) << " s, "
             << integrator_text(r.scenario.integrator) << ": " << r.result.steps << " steps";
   if (r.result.rejected_steps) std::cout << " (" << r.result.rejected_steps << " rejected)";
   std::cout << ", " << r.result.evaluations << " evaluations, " << significant(r.wall_s, 3) << " s wall\n\n";
   std::cout << "  at t = " << significant(last.t_s, 6) << " s: position (" << significant(last.p_n.x(), 6) << ", "
-            << significant(last.p_n.y(), 6) << ", " << significant(last.p_n.z(), 6) << ") m NED, attitude (roll, pitch, yaw) ("
-            << significant(last.euler_rad[0] * 180.0 / std::numbers::pi, 5) << ", "
-            << significant(last.euler_rad[1] * 180.0 / std::numbers::pi, 5) << ", "
+            << significant(last.p_n.y(), 6) << ", " << significant(last.p_n.z(), 6)
+            << ") m NED, attitude (roll, pitch, yaw) (" << significant(last.euler_rad[0] * 180.0 / std::numbers::pi, 5)
+            << ", " << significant(last.euler_rad[1] * 180.0 / std::numbers::pi, 5) << ", "
             << significant(last.euler_rad[2] * 180.0 / std::numbers::pi, 5) << ") deg\n";
   print_velocity_table(last.nu_b, last.forces);
   std::cout << "  (" << kSignNote << ")\n";
@@ -125,14 +127,15 @@ void print_simulation(const SimulationReport& r, bool json) {
   if (r.out) std::cout << "  trajectory: " << *r.out << " (" << r.result.samples.size() << " rows)\n";
   if (r.experiment) {
     std::cout << "\n  comparison with " << *r.experiment << " (measured - simulated; steady = mean of the last "
-              << significant(100.0 * r.steady_fraction, 3) << " %)\n  " << std::left << std::setw(6) << "" << std::setw(8)
-              << "rows" << std::setw(14) << "RMS" << std::setw(14) << "steady meas." << std::setw(14) << "steady sim."
-              << std::setw(14) << "steady error" << std::setw(10) << "t63 meas." << "t63 sim. [s]\n";
+              << significant(100.0 * r.steady_fraction, 3) << " %)\n  " << std::left << std::setw(6) << ""
+              << std::setw(8) << "rows" << std::setw(14) << "RMS" << std::setw(14) << "steady meas." << std::setw(14)
+              << "steady sim." << std::setw(14) << "steady error" << std::setw(10) << "t63 meas."
+              << "t63 sim. [s]\n";
     for (const auto& c : r.comparison)
       std::cout << "  " << std::setw(6) << c.component << std::setw(8) << c.samples << std::setw(14)
                 << significant(c.rms_error, 4) << std::setw(14) << significant(c.steady_measured, 5) << std::setw(14)
-                << significant(c.steady_simulated, 5) << std::setw(14) << significant(c.steady_error, 4) << std::setw(10)
-                << significant(c.t63_measured_s, 4) << significant(c.t63_simulated_s, 4) << '\n';
+                << significant(c.steady_simulated, 5) << std::setw(14) << significant(c.steady_error, 4)
+                << std::setw(10) << significant(c.t63_measured_s, 4) << significant(c.t63_simulated_s, 4) << '\n';
     std::cout << std::right;
   }
 }
@@ -153,8 +156,7 @@ void print_equilibrium(const EquilibriumReport& r, bool json) {
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "equilibrium of " << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name)
-            << " under";
+  std::cout << "equilibrium of " << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " under";
   for (std::size_t i = 0; i < 6; ++i)
     if (r.in.tau_b[static_cast<Eigen::Index>(i)] != 0.0)
       std::cout << " " << kForceNames[i] << " = " << significant(r.in.tau_b[static_cast<Eigen::Index>(i)], 6) << " "
@@ -165,6 +167,5 @@ void print_equilibrium(const EquilibriumReport& r, bool json) {
   print_velocity_table(r.eq.nu_b, r.eq.forces);
   std::cout << "  (" << kSignNote << ")\n";
 }
-
 
 }  // namespace hydrocoef::cli

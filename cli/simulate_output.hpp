@@ -14,8 +14,8 @@ namespace hydrocoef::cli {
 
 /// What a simulate command ran and got.
 struct SimulationReport {
-  const std::string& vehicle;          ///< the vehicle file
-  const std::string& vehicle_name;     ///< its name ("" when it gives none)
+  const std::string& vehicle;       ///< the vehicle file
+  const std::string& vehicle_name;  ///< its name ("" when it gives none)
   const std::string& scenario_path;
   const Scenario& scenario;
   const SimulationResult& result;

@@ -18,23 +18,26 @@ void add_surface_build_options(CLI::App& command, SurfaceBuildArgs& args) {
   command.add_option("--method", args.method, "nearest, linear, pchip, makima, natural-spline, or rbf")
       ->capture_default_str();
   command.add_option("--extrapolate", args.extrapolate,
-                "Out-of-range policy for every axis, or AXIS=POLICY (repeatable): error (default), clamp, linear, "
-                "method; for rbf: error, clamp, extrapolate");
-  command.add_option("--where", args.where,
-                 "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity component "
-                 "(SI) or disturbance; repeatable, all must hold");
+                     "Out-of-range policy for every axis, or AXIS=POLICY (repeatable): error (default), clamp, linear, "
+                     "method; for rbf: error, clamp, extrapolate");
+  command.add_option(
+      "--where", args.where,
+      "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity component "
+      "(SI) or disturbance; repeatable, all must hold");
   command.add_flag("--replace", args.replace, "Replace a stored surface of the same name");
-  command.add_option("--exclude-run", args.exclude_runs, "Leave out the run with this id (repeatable; leave-one-out by hand)");
+  command.add_option("--exclude-run", args.exclude_runs,
+                     "Leave out the run with this id (repeatable; leave-one-out by hand)");
   add_mirror_options(command, args.mirror, args.mirror_odd);
   command.add_option("--kernel", args.kernel, "RBF kernel: cubic, thin-plate, linear")->capture_default_str();
   command.add_option("--degree", args.degree, "RBF polynomial degree (0, 1, 2)")->capture_default_str();
   command.add_option("--smoothing", args.smoothing, "RBF smoothing (0 interpolates)")->capture_default_str();
   command.add_option("--resample", args.resample,
-                "Tabulate the RBF on a grid: AXIS=FROM:TO:COUNT or AXIS=X1,X2,... (one per axis)");
+                     "Tabulate the RBF on a grid: AXIS=FROM:TO:COUNT or AXIS=X1,X2,... (one per axis)");
   command.add_option("--resample-method", args.resample_method, "Interpolation of the resampled grid")
       ->capture_default_str();
-  command.add_option("--far-threshold", args.far_threshold,
-                "Report grid points farther than this from every run (fraction of the runs' range)")
+  command
+      .add_option("--far-threshold", args.far_threshold,
+                  "Report grid points farther than this from every run (fraction of the runs' range)")
       ->capture_default_str();
 }
 

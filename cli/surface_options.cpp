@@ -12,7 +12,8 @@
 namespace hydrocoef::cli {
 
 void add_surface_options(CLI::App& command, SurfaceArgs& args) {
-  command.add_option("--location", args.locations, "Patch, block, zone or [Name] to integrate (repeatable; default all)");
+  command.add_option("--location", args.locations,
+                     "Patch, block, zone or [Name] to integrate (repeatable; default all)");
   command.add_option("--pressure", args.pressure, "Pressure array (default: Pressure, or OpenFOAM's p)");
   command.add_option("--shear", args.shear,
                      "Wall shear: a vector array or three comma-separated arrays; 'none' for no viscous part "
@@ -43,8 +44,9 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
   command.add_option("--set", args.set,
                      "Run key: velocity (u v w [m/s], p q r [rad/s], body axes) or disturbance, NAME=VALUE "
                      "(repeatable)");
-  command.add_flag("--no-sidecar", args.no_sidecar,
-                   "Ignore sidecar files (FILE.json beside a file, hydrocoef-run.json in its folder and the folders above)");
+  command.add_flag(
+      "--no-sidecar", args.no_sidecar,
+      "Ignore sidecar files (FILE.json beside a file, hydrocoef-run.json in its folder and the folders above)");
 }
 
 SettingsLayer command_line_settings(const SurfaceArgs& args) {
@@ -157,9 +159,9 @@ std::string surface_run_text(const SurfaceRun& run) {
       << (run.pressure_kind == PressureKind::Static ? "static" : "kinematic") << ", shear '"
       << (run.shear_array.empty() ? "none" : run.shear_array) << "' "
       << (run.shear_convention == ShearConvention::OnWall ? "on-wall" : "on-fluid") << ")\n";
-  out << "  body axes (" << run.batch.runs.front().surface->axes << "), moments about (" << significant(l.reference_point[0])
-      << ", " << significant(l.reference_point[1]) << ", " << significant(l.reference_point[2])
-      << ") m; forces on the body\n";
+  out << "  body axes (" << run.batch.runs.front().surface->axes << "), moments about ("
+      << significant(l.reference_point[0]) << ", " << significant(l.reference_point[1]) << ", "
+      << significant(l.reference_point[2]) << ") m; forces on the body\n";
   out << "  " << std::setw(18) << "" << std::right << std::setw(15) << "x" << std::setw(15) << "y" << std::setw(15)
       << "z" << '\n';
   row("force pressure", l.force_pressure, "N");

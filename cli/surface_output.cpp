@@ -9,8 +9,8 @@
 
 #include "cli/common.hpp"
 #include "src/core/escape.hpp"
-#include "src/pipeline/surface_build.hpp"
 #include "src/export/export.hpp"
+#include "src/pipeline/surface_build.hpp"
 #include "src/surface/grid_table.hpp"
 
 namespace hydrocoef::cli {
@@ -53,7 +53,7 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const auto& name = surface.output_names()[k];
     const auto entry = quality.contains("outputs") && quality["outputs"].contains(name) ? quality["outputs"][name]
-                                                                                       : nlohmann::json::object();
+                                                                                        : nlohmann::json::object();
     std::cout << "    " << std::left << std::setw(4) << name << "max " << std::setw(12)
               << json_number_text(entry.value("loo_max", nlohmann::json()), 4) << "RMS " << std::setw(12)
               << json_number_text(entry.value("loo_rms", nlohmann::json()), 4) << surface.output_units()[k];
@@ -79,8 +79,8 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
 
 void print_axes(const CoefficientSurface& surface) {
   for (std::size_t a = 0; a < surface.axis_count(); ++a) {
-    std::cout << "    " << std::left << std::setw(12) << surface.axis_names()[a] << "[" << significant(surface.lower(a), 6)
-              << ", " << significant(surface.upper(a), 6) << "] "
+    std::cout << "    " << std::left << std::setw(12) << surface.axis_names()[a] << "["
+              << significant(surface.lower(a), 6) << ", " << significant(surface.upper(a), 6) << "] "
               << (surface.axis_units()[a].empty() ? "(SI)" : surface.axis_units()[a]);
     if (const GridTable* grid = surface.grid())
       std::cout << ", " << grid->axes()[a].breakpoints.size() << " breakpoints"
@@ -90,9 +90,13 @@ void print_axes(const CoefficientSurface& surface) {
 }
 
 nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurface& surface, bool with_values) {
-  nlohmann::json out = {{"name", record.name},       {"body", record.body},     {"kind", record.kind},
-                        {"method", record.method},   {"created_at", record.created_at},
-                        {"stale", record.stale},     {"runs", record.run_ids}};
+  nlohmann::json out = {{"name", record.name},
+                        {"body", record.body},
+                        {"kind", record.kind},
+                        {"method", record.method},
+                        {"created_at", record.created_at},
+                        {"stale", record.stale},
+                        {"runs", record.run_ids}};
   out["axes"] = nlohmann::json::array();
   for (std::size_t a = 0; a < surface.axis_count(); ++a) {
     nlohmann::json axis = {{"name", surface.axis_names()[a]},
@@ -136,9 +140,10 @@ void print_surface_list(const std::vector<SurfaceRecord>& records, const std::st
     std::cout << "no surfaces in " << database << '\n';
     return;
   }
-  std::cout << std::left << std::setw(20) << "name" << std::setw(10) << "body" << std::setw(6) << "kind" << std::setw(16)
-            << "method" << std::setw(18) << "axes" << std::setw(14) << "outputs" << std::setw(6) << "runs"
-            << std::setw(22) << "state" << "built from\n";
+  std::cout << std::left << std::setw(20) << "name" << std::setw(10) << "body" << std::setw(6) << "kind"
+            << std::setw(16) << "method" << std::setw(18) << "axes" << std::setw(14) << "outputs" << std::setw(6)
+            << "runs" << std::setw(22) << "state"
+            << "built from\n";
   for (const auto& record : records) {
     const CoefficientSurface surface = surface_from_record(record);
     std::string axes, outputs;

@@ -370,7 +370,6 @@ std::string si_unit_or_empty(const Dimension& dimension) {
   return dimension == kDimensionless ? std::string() : si_unit_name(dimension);
 }
 
-
 // ---------------------------------------------------------------------------
 // Values. Rows and faces are parsed straight from the section's bytes: the
 // line end is only looked for when something is wrong, so a short line costs

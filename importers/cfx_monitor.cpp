@@ -306,7 +306,8 @@ MonitorHeader read_monitor_header(std::string_view text, const std::string& file
     // Monitor names go into messages and --monitor: the name rule applies
     // (an empty column, as a trailing delimiter leaves, is only skipped).
     if (!field.text.empty())
-      check_name(NameKind::Field, field.text, SourceLocation{file, header_line->number, field.column}, "a monitor column");
+      check_name(NameKind::Field, field.text, SourceLocation{file, header_line->number, field.column},
+                 "a monitor column");
     HeaderColumn column;
     column.split = split_name_and_unit(field.text);
     column.short_name = without_category(column.split.name);
@@ -495,12 +496,12 @@ ForceHistory parse_cfx_monitor_history(std::string_view text, const std::string&
                      "no row has a value in every monitor used; expected the monitors' values");
   if (history.size() < options.average_last)
     throw InputError(SourceLocation{file, previous_line},
-                     "found " + std::to_string(history.size()) +
-                         (history.size() == 1 ? " iteration" : " iterations") + ", expected at least " +
-                         std::to_string(options.average_last) + " to average over the last " +
+                     "found " + std::to_string(history.size()) + (history.size() == 1 ? " iteration" : " iterations") +
+                         ", expected at least " + std::to_string(options.average_last) + " to average over the last " +
                          std::to_string(options.average_last));
   if (leading_empty > 0)
-    history.notes.push_back(std::to_string(leading_empty) + " leading rows without a value in every monitor used "
+    history.notes.push_back(std::to_string(leading_empty) +
+                            " leading rows without a value in every monitor used "
                             "were left out (monitors that start later)");
   HistorySourceFile source;
   source.path = file;

@@ -59,8 +59,8 @@ std::string excerpt(std::string_view text) {
 namespace {
 
 bool is_case_section(const std::string& line) {
-  static const std::set<std::string> sections{"FORMAT", "GEOMETRY", "VARIABLE", "TIME", "FILE",
-                                              "MATERIAL", "BLOCK_CONTINUATION", "SCRIPTS"};
+  static const std::set<std::string> sections{"FORMAT", "GEOMETRY", "VARIABLE",           "TIME",
+                                              "FILE",   "MATERIAL", "BLOCK_CONTINUATION", "SCRIPTS"};
   return sections.count(line) > 0;
 }
 
@@ -125,8 +125,9 @@ Case parse_case(const fs::path& case_file) {
       continued_times = nullptr;
       continued_numbers = nullptr;
       if (section == "FILE")
-        throw fail("single-file transient EnSight data (a FILE section) is not supported; expected one file per "
-                   "time step");
+        throw fail(
+            "single-file transient EnSight data (a FILE section) is not supported; expected one file per "
+            "time step");
       continue;
     }
     const auto colon = line.find(':');
@@ -152,7 +153,8 @@ Case parse_case(const fs::path& case_file) {
       if (type == "ensight gold") {
         gold = true;
       } else {
-        throw fail("EnSight format " + in_quotes(type) + " is not supported; expected 'ensight gold' (cfx5export "
+        throw fail("EnSight format " + in_quotes(type) +
+                   " is not supported; expected 'ensight gold' (cfx5export "
                    "-ensight writes EnSight Gold)");
       }
     } else if (section == "GEOMETRY") {
@@ -228,7 +230,8 @@ Case parse_case(const fs::path& case_file) {
                  std::to_string(steps));
     for (std::size_t i = 1; i < steps; ++i)
       if (!(set.times[i] > set.times[i - 1]))
-        throw fail(which + ": time value " + std::to_string(i + 1) + " does not follow its predecessor; expected "
+        throw fail(which + ": time value " + std::to_string(i + 1) +
+                   " does not follow its predecessor; expected "
                    "increasing time values");
     result.last_time = std::max(result.last_time.value_or(set.times.back()), set.times.back());
   }
@@ -252,7 +255,8 @@ Case parse_case(const fs::path& case_file) {
           throw InputError(SourceLocation{name, line},
                            "time set " + std::to_string(set_number) +
                                " has neither 'filename numbers:' nor 'filename start number:' and "
-                               "'filename increment:' for the '*' in " + in_quotes(pattern));
+                               "'filename increment:' for the '*' in " +
+                               in_quotes(pattern));
         file_name = replace_wildcards(pattern, number, case_file, line);
       }
     }

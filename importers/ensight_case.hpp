@@ -50,7 +50,7 @@ struct Variable {
   int time_set = 0;  // 0: none
   std::string pattern;
   std::size_t line = 0;
-  fs::path file;          // the file at the time step read
+  fs::path file;              // the file at the time step read
   std::set<long long> parts;  // the parts the file gives values for
 };
 

@@ -77,10 +77,9 @@ struct PartShape {
   std::size_t cells = 0;  // VTK makes one cell of every element
 
   std::size_t count_of(const std::string& type) const {
-    return std::accumulate(sections.begin(), sections.end(), std::size_t{0},
-                           [&type](std::size_t sum, const Section& section) {
-                             return section.type == type ? sum + section.count : sum;
-                           });
+    return std::accumulate(
+        sections.begin(), sections.end(), std::size_t{0},
+        [&type](std::size_t sum, const Section& section) { return section.type == type ? sum + section.count : sum; });
   }
 };
 
@@ -103,9 +102,9 @@ struct Geometry {
 /// nsided and nfaced), or -1 for anything else.
 int nodes_per_element(std::string_view type) {
   static const std::map<std::string_view, int> table{
-      {"point", 1},  {"bar2", 2},     {"bar3", 3},   {"tria3", 3},     {"tria6", 6},   {"quad4", 4},
-      {"quad8", 8},  {"tetra4", 4},   {"tetra10", 10}, {"pyramid5", 5}, {"pyramid13", 13}, {"penta6", 6},
-      {"penta15", 15}, {"hexa8", 8},  {"hexa20", 20}, {"nsided", 0},   {"nfaced", 0}};
+      {"point", 1},    {"bar2", 2},   {"bar3", 3},     {"tria3", 3},    {"tria6", 6},      {"quad4", 4},
+      {"quad8", 8},    {"tetra4", 4}, {"tetra10", 10}, {"pyramid5", 5}, {"pyramid13", 13}, {"penta6", 6},
+      {"penta15", 15}, {"hexa8", 8},  {"hexa20", 20},  {"nsided", 0},   {"nfaced", 0}};
   const auto found = table.find(type);
   return found == table.end() ? -1 : found->second;
 }
@@ -148,8 +147,7 @@ class AsciiFile {
     for (std::size_t row = 0; row < rows; ++row) integer_row(per_row, low, high, expected);
   }
   /// A line per entry of `per_row`, holding that many integers in [low, high].
-  void integer_rows(const std::vector<long long>& per_row, long long low, long long high,
-                    const std::string& expected) {
+  void integer_rows(const std::vector<long long>& per_row, long long low, long long high, const std::string& expected) {
     for (const long long count : per_row) integer_row(static_cast<std::size_t>(count), low, high, expected);
   }
   /// `count` lines of one integer each, in [low, high].
@@ -233,12 +231,13 @@ class AsciiFile {
                       prefix() + "the file ends where " + expected + " was expected (truncated?)");
   }
   InputError found(const std::string& text, const std::string& expected) const {
-    return InputError(SourceLocation{path_.string(), line_}, prefix() + "found " + excerpt(text) + "; expected " + expected);
+    return InputError(SourceLocation{path_.string(), line_},
+                      prefix() + "found " + excerpt(text) + "; expected " + expected);
   }
   InputError out_of_range(long long value, long long low, long long high, const std::string& expected) const {
     return InputError(SourceLocation{path_.string(), line_}, prefix() + "found " + std::to_string(value) +
-                                                                  "; expected " + expected + " in " +
-                                                                  std::to_string(low) + ".." + std::to_string(high));
+                                                                 "; expected " + expected + " in " +
+                                                                 std::to_string(low) + ".." + std::to_string(high));
   }
 
   fs::path path_;
@@ -254,7 +253,9 @@ class AsciiFile {
 class BinaryFile {
  public:
   BinaryFile(fs::path path, Encoding encoding, std::optional<bool> big_endian)
-      : path_(std::move(path)), in_(path_, std::ios::binary), fortran_(encoding == Encoding::FortranBinary),
+      : path_(std::move(path)),
+        in_(path_, std::ios::binary),
+        fortran_(encoding == Encoding::FortranBinary),
         big_endian_(big_endian) {
     if (!in_) throw InputError(SourceLocation{path_.string()}, "cannot be opened for reading");
     std::error_code error;
@@ -299,8 +300,7 @@ class BinaryFile {
   void integers(std::size_t rows, std::size_t per_row, long long low, long long high, const std::string& expected) {
     scan_integers(rows * per_row, low, high, expected, nullptr);
   }
-  void integer_rows(const std::vector<long long>& per_row, long long low, long long high,
-                    const std::string& expected) {
+  void integer_rows(const std::vector<long long>& per_row, long long low, long long high, const std::string& expected) {
     scan_integers(sum(per_row), low, high, expected, nullptr);
   }
   std::vector<long long> counts(std::size_t count, long long low, long long high, const std::string& expected) {
@@ -318,7 +318,8 @@ class BinaryFile {
   }
   void extents() { reals(6, "the extents"); }
   [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(SourceLocation{path_.string()}, prefix() + message + " (at byte " + std::to_string(position_) + ")");
+    throw InputError(SourceLocation{path_.string()},
+                     prefix() + message + " (at byte " + std::to_string(position_) + ")");
   }
 
  private:
@@ -414,15 +415,15 @@ std::pair<Encoding, std::optional<bool>> detect_encoding(const fs::path& file) {
     const auto* bytes = reinterpret_cast<const unsigned char*>(head.data());
     const bool little = bytes[0] == 80 && bytes[1] == 0 && bytes[2] == 0 && bytes[3] == 0;
     const bool big = bytes[0] == 0 && bytes[1] == 0 && bytes[2] == 0 && bytes[3] == 80;
-    if ((little || big) && holds_binary(std::string_view(head.data() + 4, 80)))
-      return {Encoding::FortranBinary, big};
+    if ((little || big) && holds_binary(std::string_view(head.data() + 4, 80))) return {Encoding::FortranBinary, big};
   }
   if (holds_binary(std::string_view(head.data(), std::min<std::size_t>(got, 80)))) return {Encoding::CBinary, {}};
   return {Encoding::Ascii, false};
 }
 
 std::string part_context(const PartShape& part) {
-  return "part " + std::to_string(part.number) + (part.description.empty() ? "" : " (" + in_quotes(part.description) + ")");
+  return "part " + std::to_string(part.number) +
+         (part.description.empty() ? "" : " (" + in_quotes(part.description) + ")");
 }
 
 /// Walks a geometry file; fails on anything VTK would misread.
@@ -462,7 +463,8 @@ std::vector<PartShape> scan_geometry(File& file) {
     const std::string coordinates = file.text("'coordinates'");
     if (starts_with(coordinates, "block"))
       file.fail("structured ('block') parts are not supported; expected 'coordinates'");
-    if (!starts_with(coordinates, "coordinates")) file.fail("found " + excerpt(coordinates) + "; expected 'coordinates'");
+    if (!starts_with(coordinates, "coordinates"))
+      file.fail("found " + excerpt(coordinates) + "; expected 'coordinates'");
     const long long nodes = file.integer("the number of nodes");
     if (nodes < 0 || nodes > kMaxCount) file.fail("number of nodes " + std::to_string(nodes) + " is out of range");
     part.nodes = static_cast<std::size_t>(nodes);
@@ -695,7 +697,7 @@ FileContents read_ensight(const fs::path& case_file, const ScopedVtkMessageCaptu
   reader->GetCellDataArraySelection()->DisableAllArrays();
   for (const auto& variable : spec.variables)
     (variable.association == FieldAssociation::Point ? reader->GetPointDataArraySelection()
-                                                      : reader->GetCellDataArraySelection())
+                                                     : reader->GetCellDataArraySelection())
         ->EnableArray(variable.description.c_str());
   // The last time of all time sets: VTK then reads each file at the last step
   // of its own time set.

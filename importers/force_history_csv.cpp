@@ -151,10 +151,11 @@ HeaderFound find_header(std::string_view text, const std::string& file) {
 }
 
 std::optional<HistoryAbscissa> abscissa_kind(const std::string& name) {
-  static const std::array<const char*, 6> times{"time", "t", "flowtime", "physicaltime", "solutiontime", "simulationtime"};
-  static const std::array<const char*, 9> iterations{"iteration",       "iterations",  "iter",
-                                                     "step",            "timestep",    "accumulatedtimestep",
-                                                     "outeriteration",  "iterationnumber", "it"};
+  static const std::array<const char*, 6> times{"time",          "t", "flowtime", "physicaltime", "solutiontime",
+                                                "simulationtime"};
+  static const std::array<const char*, 9> iterations{"iteration",      "iterations",      "iter",
+                                                     "step",           "timestep",        "accumulatedtimestep",
+                                                     "outeriteration", "iterationnumber", "it"};
   const std::string n = normalized(name);
   for (const char* t : times)
     if (n == t) return HistoryAbscissa::Time;
@@ -179,9 +180,24 @@ std::optional<ForcePart> part_word(std::string_view word) {
 
 std::optional<Target> recognise(const std::string& name) {
   static const std::array<std::pair<const char*, std::size_t>, 18> source{{
-      {"fx", 0}, {"fy", 1}, {"fz", 2}, {"forcex", 0},  {"forcey", 1},  {"forcez", 2},
-      {"mx", 3}, {"my", 4}, {"mz", 5}, {"momentx", 3}, {"momenty", 4}, {"momentz", 5},
-      {"tx", 3}, {"ty", 4}, {"tz", 5}, {"torquex", 3}, {"torquey", 4}, {"torquez", 5},
+      {"fx", 0},
+      {"fy", 1},
+      {"fz", 2},
+      {"forcex", 0},
+      {"forcey", 1},
+      {"forcez", 2},
+      {"mx", 3},
+      {"my", 4},
+      {"mz", 5},
+      {"momentx", 3},
+      {"momenty", 4},
+      {"momentz", 5},
+      {"tx", 3},
+      {"ty", 4},
+      {"tz", 5},
+      {"torquex", 3},
+      {"torquey", 4},
+      {"torquez", 5},
   }};
   static const std::array<const char*, 5> parts{"", "total", "pressure", "viscous", "porous"};
   const std::string n = normalized(name);
@@ -273,7 +289,8 @@ struct CsvState {
   std::vector<std::size_t> field_cell;  // per parsed field
 };
 
-std::unique_ptr<CsvState> prepare(std::string_view text, const std::string& file, const ForceHistoryCsvOptions& options) {
+std::unique_ptr<CsvState> prepare(std::string_view text, const std::string& file,
+                                  const ForceHistoryCsvOptions& options) {
   auto state = std::make_unique<CsvState>();
   state->file = file;
   state->header = find_header(text, file);
@@ -343,8 +360,8 @@ std::unique_ptr<CsvState> prepare(std::string_view text, const std::string& file
   }
   for (std::size_t i = 0; i < used.size(); ++i) {
     if (used[i].cell == *abscissa_column)
-      throw InputError(at(cells[used[i].cell]), shown(cells[used[i].cell].text) +
-                                                    " is the abscissa column; expected a force or moment column");
+      throw InputError(at(cells[used[i].cell]),
+                       shown(cells[used[i].cell].text) + " is the abscissa column; expected a force or moment column");
     if (used[i].target.naming != used.front().target.naming)
       throw InputError(at(cells[used[i].cell]),
                        "column " + shown(cells[used[i].cell].text) + " names a " +
@@ -375,8 +392,8 @@ std::unique_ptr<CsvState> prepare(std::string_view text, const std::string& file
       }
     }
     if (!given) {
-      if (expected != kDimensionless) notes.push_back("column " + shown(cell.text) + " has no unit: SI (" +
-                                                      si_unit_name(expected) + ") assumed");
+      if (expected != kDimensionless)
+        notes.push_back("column " + shown(cell.text) + " has no unit: SI (" + si_unit_name(expected) + ") assumed");
       return 1.0;
     }
     Unit unit;
@@ -424,7 +441,8 @@ std::unique_ptr<CsvState> prepare(std::string_view text, const std::string& file
     }
     for (std::size_t k = 0; k < used.size(); ++k)
       if (used[k].cell == c) {
-        sink.columns.push_back(&history.values(used[k].target.part, static_cast<HistoryComponent>(used[k].target.component)));
+        sink.columns.push_back(
+            &history.values(used[k].target.part, static_cast<HistoryComponent>(used[k].target.component)));
         state->scale_of_field.push_back(scales[k]);
       }
   }
@@ -471,8 +489,9 @@ ForceHistory finish(CsvState& state, const history_text::ParsedRows& rows, std::
       char values[64];
       std::snprintf(values, sizeof values, "%.9g is not after %.9g", history.abscissa_values[i],
                     history.abscissa_values[i - 1]);
-      throw InputError(SourceLocation{file, lines[i], 0}, std::string(abscissa_name(kind)) + " " + values + " on line " +
-                                                              std::to_string(lines[i - 1]) + "; expected increasing values");
+      throw InputError(SourceLocation{file, lines[i], 0}, std::string(abscissa_name(kind)) + " " + values +
+                                                              " on line " + std::to_string(lines[i - 1]) +
+                                                              "; expected increasing values");
     }
   bool any_force = false, any_moment = false;
   for (const Used& u : used) (u.target.component < 3 ? any_force : any_moment) = true;
@@ -526,7 +545,8 @@ ForceHistory finish(CsvState& state, const history_text::ParsedRows& rows, std::
 
 }  // namespace
 
-ForceHistory parse_force_history_csv(std::string_view text, const std::string& file, const ForceHistoryCsvOptions& options) {
+ForceHistory parse_force_history_csv(std::string_view text, const std::string& file,
+                                     const ForceHistoryCsvOptions& options) {
   const std::unique_ptr<CsvState> state = prepare(text, file, options);
   const history_text::ParsedRows rows =
       history_text::parse_rows(text.substr(state->rows.data_offset), state->rows.first_line, state->rows.syntax, file,

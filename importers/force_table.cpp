@@ -54,8 +54,8 @@ Column classify(const TextField& field, const std::string& file, std::size_t lin
     // its unit is converted to SI but not checked against a kind.
     column.role = ColumnRole::Disturbance;
     // A disturbance becomes part of run keys and --where clauses: an identifier.
-    column.name = check_name(NameKind::Parameter, header.name, SourceLocation{file, line, field.column},
-                             "the table header");
+    column.name =
+        check_name(NameKind::Parameter, header.name, SourceLocation{file, line, field.column}, "the table header");
     std::string unit_text = header.unit;
     if (const auto given = options.units.find(header.name); given != options.units.end()) unit_text = given->second;
     try {
@@ -74,8 +74,9 @@ Column classify(const TextField& field, const std::string& file, std::size_t lin
   } else {
     throw InputError(where, "column '" + field.text +
                                 "' is not a velocity (u v w p q r) or a force or moment (X Y Z K M N); map it "
-                                "with --column X=" + header.name + ", declare it a disturbance with --disturbance " +
-                                header.name + ", or skip it with --ignore " + header.name);
+                                "with --column X=" +
+                                header.name + ", declare it a disturbance with --disturbance " + header.name +
+                                ", or skip it with --ignore " + header.name);
   }
   column.name = component;
 
@@ -87,8 +88,9 @@ Column classify(const TextField& field, const std::string& file, std::size_t lin
   }
   const auto example = expected_example(column.role, column.component);
   if (!has_unit)
-    throw InputError(where, "column '" + printable_text(field.text, 60) + "' has no unit; expected e.g. '" + component + " [" +
-                                std::string(example) + "]', or give --unit " + component + "=" + std::string(example));
+    throw InputError(where, "column '" + printable_text(field.text, 60) + "' has no unit; expected e.g. '" + component +
+                                " [" + std::string(example) + "]', or give --unit " + component + "=" +
+                                std::string(example));
   Unit unit;
   try {
     unit = parse_unit(unit_text);
@@ -128,8 +130,9 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
     if (column.role != ColumnRole::Ignored) {
       if (const auto previous = seen.find(column.name); previous != seen.end())
         throw InputError(SourceLocation{file, header_line, field.column},
-                         "column '" + printable_text(field.text, 60) + "' gives '" + column.name + "' again (first at column " +
-                             std::to_string(previous->second) + "); expected each component once");
+                         "column '" + printable_text(field.text, 60) + "' gives '" + column.name +
+                             "' again (first at column " + std::to_string(previous->second) +
+                             "); expected each component once");
       const auto velocity = velocity_index(column.name);
       if (options.disturbances.count(column.name) || (velocity && options.velocity_b[*velocity] != 0.0))
         throw InputError(SourceLocation{file, header_line, field.column},
@@ -155,10 +158,10 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
     // One field more than the header is enough to say how many were found.
     const auto fields = split_fields(*line, delimiter, file, columns.size() + 1);
     if (fields.size() != columns.size())
-      throw InputError(SourceLocation{file, line->number},
-                       "found " + std::to_string(fields.size()) + " fields, expected " +
-                           std::to_string(columns.size()) + " (as in the header on line " +
-                           std::to_string(header_line) + ")");
+      throw InputError(SourceLocation{file, line->number}, "found " + std::to_string(fields.size()) +
+                                                               " fields, expected " + std::to_string(columns.size()) +
+                                                               " (as in the header on line " +
+                                                               std::to_string(header_line) + ")");
     ImportedRun run;
     run.key.body = options.body;
     run.key.disturbances = options.disturbances;
@@ -185,8 +188,8 @@ std::vector<ImportedRun> parse_force_table(std::string_view text, const std::str
     const std::string key = describe(run.key) + '|' + disturbance_signature(run.key.disturbances);
     if (const auto [previous, inserted] = key_lines.emplace(key, line->number); !inserted)
       throw InputError(SourceLocation{file, line->number},
-                       "run " + describe(run.key) + " appears twice (also on line " +
-                           std::to_string(previous->second) + "); expected one row per run");
+                       "run " + describe(run.key) + " appears twice (also on line " + std::to_string(previous->second) +
+                           "); expected one row per run");
     runs.push_back(std::move(run));
   }
   if (runs.empty())

@@ -265,14 +265,14 @@ const char* parse_delimited_row(const char* p, const char* end, const RowSyntax&
 struct Chunk {
   const char* begin = nullptr;
   const char* end = nullptr;
-  std::size_t newlines = 0;      // line ends in [begin, end)
-  std::size_t capacity = 0;      // rows it can hold: its lines, a last one without a line end included
-  std::size_t base = 0;          // its first row in the output
-  std::size_t first_line = 0;    // the file line of `begin`
-  std::size_t rows = 0;          // rows parsed
+  std::size_t newlines = 0;             // line ends in [begin, end)
+  std::size_t capacity = 0;             // rows it can hold: its lines, a last one without a line end included
+  std::size_t base = 0;                 // its first row in the output
+  std::size_t first_line = 0;           // the file line of `begin`
+  std::size_t rows = 0;                 // rows parsed
   std::size_t error_offset = kNoError;  // start of the first bad line, from `begin`
   std::size_t error_line = 0;
-  bool error_is_last_line = false;      // the bad line has no line end after it
+  bool error_is_last_line = false;  // the bad line has no line end after it
 };
 
 // Line ends in [begin, end): byte counters in 64 lanes, which the compiler
@@ -342,7 +342,8 @@ void parse_chunk(Chunk& chunk, const RowSyntax& syntax, std::size_t numbers, dou
 
 std::string column_label(const RowSyntax& syntax, std::size_t column) {
   std::string label = "column " + std::to_string(column + 1);
-  if (column < syntax.names.size() && !syntax.names[column].empty()) label += " " + history_text::quoted(syntax.names[column]);
+  if (column < syntax.names.size() && !syntax.names[column].empty())
+    label += " " + history_text::quoted(syntax.names[column]);
   return label;
 }
 
@@ -381,12 +382,13 @@ std::string column_label(const RowSyntax& syntax, std::size_t column) {
     if (p == end || *p == '\n') {
       if (syntax.delimiter != 0 && column > 0)  // after a delimiter: the field is there, and empty
         throw InputError(at(p), column_label(syntax, column) + ": found an empty field, expected a number" + cut_note);
-      throw InputError(at(p), "found " + std::to_string(found) + " fields, expected " + std::to_string(syntax.columns) +
-                                  cut_note);
+      throw InputError(
+          at(p), "found " + std::to_string(found) + " fields, expected " + std::to_string(syntax.columns) + cut_note);
     }
     if (!syntax.skip.empty() && syntax.skip[column]) {
       const char* q = syntax.delimiter != 0 ? skip_field(p, end, syntax.delimiter) : p + token_at(p).size();
-      if (q == nullptr) throw InputError(at(p), column_label(syntax, column) + ": a quoted field is not closed" + cut_note);
+      if (q == nullptr)
+        throw InputError(at(p), column_label(syntax, column) + ": a quoted field is not closed" + cut_note);
       p = q;
     } else {
       const bool quote = syntax.delimiter != 0 && *p == '"';
@@ -410,11 +412,12 @@ std::string column_label(const RowSyntax& syntax, std::size_t column) {
                                       ", expected a number in closed quotes" + cut_note);
         ++stop;
       }
-      const bool separated = stop == end || is_blank(*stop) || *stop == '\n' ||
-                             (syntax.delimiter != 0 ? *stop == syntax.delimiter : parens && (*stop == '(' || *stop == ')'));
+      const bool separated =
+          stop == end || is_blank(*stop) || *stop == '\n' ||
+          (syntax.delimiter != 0 ? *stop == syntax.delimiter : parens && (*stop == '(' || *stop == ')'));
       if (!separated)
-        throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted(token) + ", expected a number" +
-                                    cut_note);
+        throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted(token) +
+                                    ", expected a number" + cut_note);
       p = stop;
     }
     ++found;
@@ -427,7 +430,8 @@ std::string column_label(const RowSyntax& syntax, std::size_t column) {
         if (*p != syntax.delimiter)
           throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted(token_at(p)) +
                                       " after the number, expected " +
-                                      (syntax.delimiter == '\t' ? std::string("a tab") : "'" + std::string(1, syntax.delimiter) + "'"));
+                                      (syntax.delimiter == '\t' ? std::string("a tab")
+                                                                : "'" + std::string(1, syntax.delimiter) + "'"));
         ++p;
       }
     }
@@ -451,8 +455,8 @@ std::string column_label(const RowSyntax& syntax, std::size_t column) {
     throw InputError(SourceLocation{file, line, 0},
                      "the last row has no line end: the file ends inside it (a run stopped while writing?); "
                      "expected every row to end with a line end");
-  throw InputError(SourceLocation{file, line, 0}, "cannot read this row; expected " + std::to_string(syntax.columns) +
-                                                      " numbers");
+  throw InputError(SourceLocation{file, line, 0},
+                   "cannot read this row; expected " + std::to_string(syntax.columns) + " numbers");
 }
 
 }  // namespace
@@ -461,9 +465,7 @@ const char* read_finite_number(const char* begin, const char* end, double& value
   return read_number(begin, end, value);
 }
 
-std::string quoted(std::string_view text) {
-  return "'" + printable_text(text, 40) + "'";
-}
+std::string quoted(std::string_view text) { return "'" + printable_text(text, 40) + "'"; }
 
 namespace {
 
@@ -540,7 +542,8 @@ Appended append_rows(std::string_view data, std::size_t first_line, std::size_t 
     const Chunk& chunk = chunks[c];
     if (chunk.base != rows) {
       for (std::size_t k = 0; k < numbers; ++k)
-        if (columns[k] != nullptr) std::memmove(columns[k] + rows, columns[k] + chunk.base, chunk.rows * sizeof(double));
+        if (columns[k] != nullptr)
+          std::memmove(columns[k] + rows, columns[k] + chunk.base, chunk.rows * sizeof(double));
       if (lines != nullptr) std::memmove(lines + rows, lines + chunk.base, chunk.rows * sizeof(std::uint32_t));
     }
     rows += chunk.rows;
@@ -557,7 +560,8 @@ std::size_t parsed_fields(const RowSyntax& syntax, const RowSink& sink) {
   if (!syntax.skip.empty() && syntax.skip.size() != syntax.columns)
     throw std::invalid_argument("history rows: skip mask of the wrong size");
   std::size_t numbers = syntax.columns;
-  if (!syntax.skip.empty()) numbers = static_cast<std::size_t>(std::count(syntax.skip.begin(), syntax.skip.end(), false));
+  if (!syntax.skip.empty())
+    numbers = static_cast<std::size_t>(std::count(syntax.skip.begin(), syntax.skip.end(), false));
   if (sink.columns.size() != numbers) throw std::invalid_argument("history rows: one sink column per parsed field");
   return numbers;
 }
@@ -638,12 +642,14 @@ ParsedRows parse_rows(std::string_view data, std::size_t first_line, const RowSy
   return {appended.rows, appended.dropped_last_row};
 }
 
-StreamedRows parse_file_rows(const std::filesystem::path& path, const std::function<FileLayout(std::string_view)>& layout,
-                             const RowOptions& options, bool compute_sha256) {
+StreamedRows parse_file_rows(const std::filesystem::path& path,
+                             const std::function<FileLayout(std::string_view)>& layout, const RowOptions& options,
+                             bool compute_sha256) {
   const std::string file = path.string();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(SourceLocation{file}, "no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(SourceLocation{file}, "is a directory, expected a file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(SourceLocation{file}, "is a directory, expected a file");
   Descriptor descriptor{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   if (descriptor.fd < 0) throw InputError(SourceLocation{file}, std::string("cannot open: ") + std::strerror(errno));
   struct stat info {};
@@ -733,7 +739,8 @@ StreamedRows parse_file_rows(const std::filesystem::path& path, const std::funct
       if (!reserved && !at_end && expected_size > consumed && appended.rows > 0) {
         // Room for the rest at this block's bytes per row, and a little more.
         const double per_row = static_cast<double>(block.size()) / static_cast<double>(appended.rows);
-        const auto estimate = static_cast<std::size_t>(static_cast<double>(expected_size - consumed) / per_row * 1.02) + 1024;
+        const auto estimate =
+            static_cast<std::size_t>(static_cast<double>(expected_size - consumed) / per_row * 1.02) + 1024;
         reserve_sink(rows_layout.sink, rows + estimate);
         reserved = true;
       }

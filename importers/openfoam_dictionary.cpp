@@ -61,7 +61,8 @@ class FoamParser {
         if (c == '{' || c == '}' || c == ';') {
           // Inside a list, dictionaries and their ';' are part of the value
           // (fieldAverage's "fields ( p { mean on; } );").
-          if (parentheses == 0) fail("unexpected '" + std::string(1, c) + "' in the entry '" + printable_text(key, 40) + "'");
+          if (parentheses == 0)
+            fail("unexpected '" + std::string(1, c) + "' in the entry '" + printable_text(key, 40) + "'");
           value.tokens.emplace_back(1, c);
           ++at_;
           continue;
@@ -74,7 +75,8 @@ class FoamParser {
                "' is not one hydrocoef reads; expected plain values");
         if (!word.empty() && word[0] == '$') {
           const FoamValue* referenced = resolve(dictionary, word.substr(1));
-          if (!referenced) fail("'" + printable_text(word, 40) + "' refers to no entry of this or an enclosing dictionary");
+          if (!referenced)
+            fail("'" + printable_text(word, 40) + "' refers to no entry of this or an enclosing dictionary");
           value.tokens.insert(value.tokens.end(), referenced->tokens.begin(), referenced->tokens.end());
           continue;
         }
@@ -194,8 +196,8 @@ FoamDictionary FoamDictionary::read_nested(const std::filesystem::path& file, in
   std::error_code ec;
   const auto size = std::filesystem::file_size(file, ec);
   if (!ec && size > (std::uintmax_t{16} << 20))
-    throw InputError(SourceLocation{file.string()}, "is " + std::to_string(size) +
-                                                        " bytes; expected an OpenFOAM dictionary of at most 16 MB");
+    throw InputError(SourceLocation{file.string()},
+                     "is " + std::to_string(size) + " bytes; expected an OpenFOAM dictionary of at most 16 MB");
   const FileBytes bytes(file);
   return parse(bytes.view(), file, depth);
 }
@@ -239,9 +241,12 @@ double foam_scalar(const FoamValue& value, std::string_view what) {
   std::vector<std::string> rest;
   bool in_dimensions = false;
   for (const auto& token : value.tokens) {
-    if (token == "[") in_dimensions = true;
-    else if (token == "]") in_dimensions = false;
-    else if (!in_dimensions) rest.push_back(token);
+    if (token == "[")
+      in_dimensions = true;
+    else if (token == "]")
+      in_dimensions = false;
+    else if (!in_dimensions)
+      rest.push_back(token);
   }
   if (!rest.empty()) {
     if (const auto x = number(rest.back())) return *x;

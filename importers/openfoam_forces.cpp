@@ -39,15 +39,15 @@ struct CommentLine {
 
 struct Header {
   std::vector<CommentLine> comments;
-  std::size_t data_offset = 0;  // byte where the rows start
-  std::size_t data_line = 1;    // their first line
+  std::size_t data_offset = 0;           // byte where the rows start
+  std::size_t data_line = 1;             // their first line
   const CommentLine* columns = nullptr;  // the "# Time ..." line
   std::string_view title;
 };
 
 bool starts_with_word(std::string_view text, std::string_view word) {
-  return text.substr(0, word.size()) == word &&
-         (text.size() == word.size() || text[word.size()] == ' ' || text[word.size()] == '\t' || text[word.size()] == '(');
+  return text.substr(0, word.size()) == word && (text.size() == word.size() || text[word.size()] == ' ' ||
+                                                 text[word.size()] == '\t' || text[word.size()] == '(');
 }
 
 Header read_header(std::string_view text) {
@@ -130,7 +130,7 @@ struct Token {
   std::string group;               // name of a group "forces(...)", "" for a bare "(...)"
   std::vector<std::string> items;  // the group's items
   bool is_group = false;
-  std::size_t column = 0;          // 1-based, in the header line
+  std::size_t column = 0;  // 1-based, in the header line
 };
 
 bool is_group_name(std::string_view word) {
@@ -139,7 +139,8 @@ bool is_group_name(std::string_view word) {
 }
 
 // `line` is the comment text after '#'; `base` its column offset in the file line.
-std::vector<Token> tokenize_columns(std::string_view line, std::size_t base, const std::string& file, std::size_t line_no) {
+std::vector<Token> tokenize_columns(std::string_view line, std::size_t base, const std::string& file,
+                                    std::size_t line_no) {
   std::vector<Token> tokens;
   std::size_t i = 0;
   const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == ','; };
@@ -148,7 +149,8 @@ std::vector<Token> tokenize_columns(std::string_view line, std::size_t base, con
     std::string item;
     for (;; ++j) {
       if (j >= line.size())
-        throw InputError(SourceLocation{file, line_no, base + open + 1}, "'(' without a matching ')' in the column header");
+        throw InputError(SourceLocation{file, line_no, base + open + 1},
+                         "'(' without a matching ')' in the column header");
       const char c = line[j];
       if (c == ')' || blank(c)) {
         if (!item.empty()) token.items.push_back(item);
@@ -192,7 +194,8 @@ std::vector<Token> tokenize_columns(std::string_view line, std::size_t base, con
       // A name with a parenthesised part, as in Cd(f).
       const std::size_t close = line.find(')', j);
       if (close == std::string_view::npos)
-        throw InputError(SourceLocation{file, line_no, base + j + 1}, "'(' without a matching ')' in the column header");
+        throw InputError(SourceLocation{file, line_no, base + j + 1},
+                         "'(' without a matching ')' in the column header");
       j = close + 1;
       while (j < line.size() && !blank(line[j]) && line[j] != '(' && line[j] != ')') ++j;
       token.word = std::string(line.substr(i, j - i));
@@ -210,14 +213,10 @@ enum class Kind { Force, Moment, Foundation, Coefficients };
 
 std::string_view format_name(Kind kind) {
   switch (kind) {
-    case Kind::Force:
-      return "openfoam-force";
-    case Kind::Moment:
-      return "openfoam-moment";
-    case Kind::Foundation:
-      return "openfoam-forces";
-    case Kind::Coefficients:
-      return "openfoam-coefficient";
+    case Kind::Force: return "openfoam-force";
+    case Kind::Moment: return "openfoam-moment";
+    case Kind::Foundation: return "openfoam-forces";
+    case Kind::Coefficients: return "openfoam-coefficient";
   }
   return "";
 }
@@ -250,7 +249,8 @@ std::string file_stem_base(const std::string& file) {
   std::string name = fs::path(file).filename().string();
   if (name.size() > 4 && name.substr(name.size() - 4) == ".dat") name.resize(name.size() - 4);
   const std::size_t underscore = name.rfind('_');
-  if (underscore != std::string::npos && to_number(std::string_view(name).substr(underscore + 1))) name.resize(underscore);
+  if (underscore != std::string::npos && to_number(std::string_view(name).substr(underscore + 1)))
+    name.resize(underscore);
   return name;
 }
 
@@ -290,12 +290,14 @@ Layout layout_of(const Header& header, const std::string& file) {
     for (std::size_t t = 1; t < tokens.size(); ++t) {
       const Token& token = tokens[t];
       if (!token.is_group && token.word == "CofR") {
-        for (std::size_t k = 0; k < 3; ++k) layout.columns.push_back({Role::CentreOfRotation, ForcePart::Total, k, "CofR"});
+        for (std::size_t k = 0; k < 3; ++k)
+          layout.columns.push_back({Role::CentreOfRotation, ForcePart::Total, k, "CofR"});
         continue;
       }
       if (!token.is_group || token.group.empty())
-        throw unknown(token, "forces(pressure viscous [porous]) and moment(pressure viscous [porous]), as in the "
-                             "OpenFOAM Foundation's forces.dat");
+        throw unknown(token,
+                      "forces(pressure viscous [porous]) and moment(pressure viscous [porous]), as in the "
+                      "OpenFOAM Foundation's forces.dat");
       if (token.group == "localForces" || token.group == "localMoments") {
         layout.local_rows = true;
         continue;
@@ -305,9 +307,9 @@ Layout layout_of(const Header& header, const std::string& file) {
       for (const std::string& item : token.items) {
         const auto part = part_of(item);
         if (!part || *part == ForcePart::Total)
-          throw InputError(SourceLocation{file, line.line, token.column},
-                           "unknown part " + shown(item) + " in " + shown(token.group + "(...)") +
-                               "; expected pressure, viscous or porous");
+          throw InputError(SourceLocation{file, line.line, token.column}, "unknown part " + shown(item) + " in " +
+                                                                              shown(token.group + "(...)") +
+                                                                              "; expected pressure, viscous or porous");
         for (std::size_t k = 0; k < 3; ++k)
           layout.columns.push_back({Role::Value, *part, (force ? 0 : 3) + k,
                                     token.group + "(" + item + ")_" + std::string(1, char('x' + k))});
@@ -315,7 +317,8 @@ Layout layout_of(const Header& header, const std::string& file) {
     }
     if (!seen_force || !seen_moment)
       throw InputError(SourceLocation{file, line.line, 0},
-                       "the header names " + std::string(seen_force ? "forces but no moments" : "moments but no forces") +
+                       "the header names " +
+                           std::string(seen_force ? "forces but no moments" : "moments but no forces") +
                            "; expected both groups of the OpenFOAM Foundation's forces.dat");
     return layout;
   }
@@ -337,9 +340,9 @@ Layout layout_of(const Header& header, const std::string& file) {
       if (column.role == Role::Coefficient) {
         for (const Column& other : layout.columns)
           if (other.role == Role::Coefficient && other.component == column.component)
-            throw InputError(SourceLocation{file, line.line, token.column},
-                             "the coefficient " + shown(w) + " repeats " + shown(other.name) +
-                                 "; expected each coefficient once");
+            throw InputError(
+                SourceLocation{file, line.line, token.column},
+                "the coefficient " + shown(w) + " repeats " + shown(other.name) + "; expected each coefficient once");
         layout.coefficient_names.push_back(w);
       }
       layout.columns.push_back(column);
@@ -356,7 +359,8 @@ Layout layout_of(const Header& header, const std::string& file) {
   } else {
     throw InputError(SourceLocation{file, header.comments.front().line, 0},
                      "cannot tell force from moment: the header's title is " + shown(title) + " and the file is " +
-                         shown(fs::path(file).filename().string()) + "; expected the title 'Force' or 'Moment' "
+                         shown(fs::path(file).filename().string()) +
+                         "; expected the title 'Force' or 'Moment' "
                          "(force.dat, moment.dat)");
   }
   const std::size_t offset = layout.kind == Kind::Force ? 0 : 3;
@@ -367,7 +371,8 @@ Layout layout_of(const Header& header, const std::string& file) {
       throw unknown(token, "names such as total_x, pressure_y, viscous_z (ESI force.dat and moment.dat)");
     for (const std::string& word : words) {
       const std::size_t underscore = word.rfind('_');
-      const auto part = underscore == std::string::npos ? std::nullopt : part_of(std::string_view(word).substr(0, underscore));
+      const auto part =
+          underscore == std::string::npos ? std::nullopt : part_of(std::string_view(word).substr(0, underscore));
       const std::string axis = underscore == std::string::npos ? "" : word.substr(underscore + 1);
       if (!part || (axis != "x" && axis != "y" && axis != "z"))
         throw InputError(SourceLocation{file, line.line, token.column},
@@ -403,8 +408,8 @@ double reference_value(const HeaderValues& values, const char* key, std::optiona
                        std::string(key) + ": found " + shown(found->second.text) + ", expected a positive number");
     if (option && std::abs(*option - *value) > 1e-9 * std::abs(*value))
       throw InputError(SourceLocation{file, found->second.line, 0},
-                       std::string(key) + " is " + number_text(*value) + " in the header but " +
-                           number_text(*option) + " was given (" + option_name + "); expected them to agree");
+                       std::string(key) + " is " + number_text(*value) + " in the header but " + number_text(*option) +
+                           " was given (" + option_name + "); expected them to agree");
     return *value;
   }
   if (option) {
@@ -415,8 +420,7 @@ double reference_value(const HeaderValues& values, const char* key, std::optiona
                                              option_name + "); expected it to turn coefficients into forces");
 }
 
-std::optional<Vector3> direction(const HeaderValues& values, const char* key,
-                                 const std::string& file) {
+std::optional<Vector3> direction(const HeaderValues& values, const char* key, const std::string& file) {
   const auto found = values.find(key);
   if (found == values.end()) return std::nullopt;
   const auto v = to_vector(found->second.text);
@@ -466,20 +470,14 @@ std::unique_ptr<Prepared> prepare(std::string_view head, const std::string& file
   sink.lines = &p.lines;
   for (const Column& column : p.layout.columns) {
     switch (column.role) {
-      case Role::Time:
-        sink.columns.push_back(&p.history.abscissa_values);
-        break;
+      case Role::Time: sink.columns.push_back(&p.history.abscissa_values); break;
       case Role::Value:
       case Role::Coefficient:
         sink.columns.push_back(&p.history.values(column.part, static_cast<HistoryComponent>(column.component)));
         p.present[static_cast<std::size_t>(column.part)][column.component] = true;
         break;
-      case Role::CentreOfRotation:
-        sink.columns.push_back(&p.centre_column[column.component]);
-        break;
-      case Role::Ignored:
-        sink.columns.push_back(nullptr);
-        break;
+      case Role::CentreOfRotation: sink.columns.push_back(&p.centre_column[column.component]); break;
+      case Role::Ignored: sink.columns.push_back(nullptr); break;
     }
   }
   return prepared;
@@ -532,8 +530,9 @@ ForceHistory finish(Prepared& prepared, const history_text::ParsedRows& rows, st
         if (!series.empty()) keep_even(series);
     for (auto& series : centre_column)
       if (!series.empty()) keep_even(series);
-    history.notes.push_back(file + ": rows in the local coordinate system (localForces) are left out; the global "
-                                   "axes are kept");
+    history.notes.push_back(file +
+                            ": rows in the local coordinate system (localForces) are left out; the global "
+                            "axes are kept");
   }
   const std::size_t n = history.abscissa_values.size();
   source.rows = n;
@@ -699,7 +698,8 @@ void merge_moments(ForceHistory& forces, ForceHistory&& moments, bool drop_unpai
   };
   cut(forces);
   cut(moments);
-  if (forces.frame.moment_centre && moments.frame.moment_centre && *forces.frame.moment_centre != *moments.frame.moment_centre)
+  if (forces.frame.moment_centre && moments.frame.moment_centre &&
+      *forces.frame.moment_centre != *moments.frame.moment_centre)
     throw InputError(SourceLocation{moment_file},
                      "its CofR differs from that of " + force_file + "; expected one centre of rotation");
   if (!forces.frame.moment_centre) forces.frame.moment_centre = moments.frame.moment_centre;
@@ -746,7 +746,8 @@ void join(ForceHistory& joined, ForceHistory&& later) {
     if (!joined.moment_origin.empty()) joined.moment_origin.resize(keep);
   }
   const auto offset = static_cast<std::uint32_t>(joined.files.size());
-  joined.abscissa_values.insert(joined.abscissa_values.end(), later.abscissa_values.begin(), later.abscissa_values.end());
+  joined.abscissa_values.insert(joined.abscissa_values.end(), later.abscissa_values.begin(),
+                                later.abscissa_values.end());
   for (std::size_t part = 0; part < kForceParts; ++part)
     for (std::size_t c = 0; c < kHistoryComponents; ++c) {
       auto& to = joined.series[part][c];
@@ -789,7 +790,7 @@ void count_rows_used(ForceHistory& history) {
 
 struct FoundFile {
   fs::path path;
-  std::string base;        // force, moment, forces, coefficient, forceCoeffs
+  std::string base;                                             // force, moment, forces, coefficient, forceCoeffs
   double name_time = -std::numeric_limits<double>::infinity();  // the _<time> suffix
   double folder_time = 0.0;
 };
@@ -973,8 +974,8 @@ ForceHistory read_openfoam_forces(const fs::path& path, const OpenFoamForcesOpti
       } else {
         const FoundFile* only = force ? force : moment;
         history = read_one(only->path, options);
-        notes.push_back(only->path.string() + " has no " + (force ? "moment" : "force") + " file beside it: " +
-                        (force ? "moments" : "forces") + " are left empty");
+        notes.push_back(only->path.string() + " has no " + (force ? "moment" : "force") +
+                        " file beside it: " + (force ? "moments" : "forces") + " are left empty");
       }
     } else {
       if (files.size() > 1)
@@ -1001,8 +1002,7 @@ ForceHistory read_openfoam_forces(const fs::path& path, const OpenFoamForcesOpti
   for (auto& note : notes) joined.notes.push_back(std::move(note));
   for (const auto& file : ignored)
     joined.notes.push_back(file + " is left out: " +
-                           std::string(family == 0 ? "force.dat and moment.dat" : "forces.dat") +
-                           " are read instead");
+                           std::string(family == 0 ? "force.dat and moment.dat" : "forces.dat") + " are read instead");
   if (segments.size() > 1 && !single_file)
     joined.notes.push_back(std::to_string(segments.size()) + " files (restarts) joined in time order");
   count_rows_used(joined);

@@ -25,7 +25,7 @@ std::vector<TextLine> split_lines(std::string_view bytes) {
 }
 
 std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file,
-                                   std::size_t max_fields) {
+                                    std::size_t max_fields) {
   std::vector<TextField> fields;
   const std::string_view text = line.text;
   std::size_t i = 0;
@@ -33,9 +33,9 @@ std::vector<TextField> split_fields(const TextLine& line, char delimiter, const 
     // Memory stays a small multiple of the line's useful content: a line of
     // millions of empty fields is refused before they are stored.
     if (fields.size() == max_fields)
-      throw InputError(SourceLocation{file, line.number, i + 1},
-                       "more than " + std::to_string(max_fields) + " fields on the line; expected at most " +
-                           std::to_string(max_fields));
+      throw InputError(SourceLocation{file, line.number, i + 1}, "more than " + std::to_string(max_fields) +
+                                                                     " fields on the line; expected at most " +
+                                                                     std::to_string(max_fields));
     TextField field;
     std::size_t start = i;
     while (start < text.size() && (text[start] == ' ' || text[start] == '\t') && text[start] != delimiter) ++start;
@@ -109,8 +109,8 @@ double parse_number(const TextField& field, const std::string& file, std::size_t
     // smallest double is zero for every purpose here, an overflow is an error.
     const double magnitude = std::strtod(std::string(text).c_str(), nullptr);
     if (magnitude == 0.0) return 0.0;
-    throw InputError(where, context + "found '" + printable_text(field.text, 40) +
-                                "', expected a finite number within +-1.8e308");
+    throw InputError(
+        where, context + "found '" + printable_text(field.text, 40) + "', expected a finite number within +-1.8e308");
   }
   if (ec != std::errc{} || end != text.data() + text.size())
     throw InputError(where, context + "found '" + printable_text(field.text, 40) + "', expected a number");

@@ -33,7 +33,7 @@ inline constexpr std::size_t kMaxTextFields = 4096;
 /// and doubled quotes (""). An unterminated quote, or more than `max_fields`
 /// fields (a data line longer than its header), is an InputError at the line.
 std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file,
-                                   std::size_t max_fields = kMaxTextFields);
+                                    std::size_t max_fields = kMaxTextFields);
 
 /// Picks the delimiter of a header line: ',' if present outside quotes, else
 /// tab, else ';'.

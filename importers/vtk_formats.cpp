@@ -134,8 +134,8 @@ std::vector<Leaf> cgns_leaves(vtkMultiBlockDataSet* root) {
           leaves.push_back({zone_name, vtkDataSet::SafeDownCast(part)});
         } else if (part_name == "Patches" && patches != nullptr) {
           for (unsigned int q = 0; q < patches->GetNumberOfBlocks(); ++q)
-            leaves.push_back({zone_name + "/" + block_name(patches, q),
-                              vtkDataSet::SafeDownCast(patches->GetBlock(q)), true});
+            leaves.push_back(
+                {zone_name + "/" + block_name(patches, q), vtkDataSet::SafeDownCast(patches->GetBlock(q)), true});
         } else if (patches != nullptr) {
           collect_blocks(patches, zone_name + "/" + part_name, leaves);
         } else {
@@ -203,7 +203,7 @@ FileContents read_file(const fs::path& file, const ScopedVtkMessageCapture& capt
   if (error) throw InputError(where, "cannot be read: " + error.message());
 
   const std::string extension = lower_case(file.extension().string());
-  const std::string expected = extension == ".case" ? "an EnSight Gold case file"
+  const std::string expected = extension == ".case"   ? "an EnSight Gold case file"
                                : extension == ".cgns" ? "a CGNS file"
                                                       : "a VTK file";
   if (size == 0) throw InputError(where, "file is empty; expected " + expected);

@@ -27,8 +27,7 @@ namespace hydrocoef::vtk_detail {
 // InputError.
 class CollectingOutputWindow : public vtkOutputWindow {
  public:
-  vtkTypeMacro(CollectingOutputWindow, vtkOutputWindow)
-  static CollectingOutputWindow* New() {
+  vtkTypeMacro(CollectingOutputWindow, vtkOutputWindow) static CollectingOutputWindow* New() {
     auto* window = new CollectingOutputWindow;
     window->InitializeObjectBase();
     return window;

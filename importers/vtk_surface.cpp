@@ -4,6 +4,7 @@
 // and the arrays all selected locations hold.
 #include "importers/vtk_surface.hpp"
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkCellTypes.h>
@@ -11,6 +12,8 @@
 #include <vtkDataSet.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkGenericCell.h>
 #include <vtkGeometryFilter.h>
 #include <vtkIdList.h>
@@ -19,12 +22,9 @@
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
-#include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkDoubleArray.h>
-#include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -141,7 +141,8 @@ vtkSmartPointer<vtkDataSet> patch_surface(vtkDataSet* patch, const std::string& 
     if (type != VTK_TRIANGLE && type != VTK_QUAD && type != VTK_POLYGON && type != VTK_LINE && type != VTK_VERTEX)
       throw InputError(SourceLocation{file},
                        "boundary patch '" + location + "': VTK read cell " + std::to_string(cell) + " as cell type " +
-                           std::to_string(type) + "; expected triangles or quadrilaterals (VTK 9.1 reads a patch "
+                           std::to_string(type) +
+                           "; expected triangles or quadrilaterals (VTK 9.1 reads a patch "
                            "given as face elements: PointRange, PointList or ElementRange at FaceCenter)");
     patch->GetCellPoints(cell, ids);
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) new_index[static_cast<std::size_t>(ids->GetId(k))] = 0;
@@ -212,8 +213,8 @@ bool polygons_only(vtkDataSet* data) {
 }
 
 template <typename IdArray>
-void copy_polygons(IdArray* offsets, IdArray* connectivity, vtkIdType point_count, Part& part,
-                   const std::string& file, const std::string& location_name) {
+void copy_polygons(IdArray* offsets, IdArray* connectivity, vtkIdType point_count, Part& part, const std::string& file,
+                   const std::string& location_name) {
   const auto* off = offsets->GetPointer(0);
   const auto* ids = connectivity->GetPointer(0);
   const vtkIdType cells = offsets->GetNumberOfValues() - 1;
@@ -249,11 +250,9 @@ Part extract_polygons(vtkSmartPointer<vtkDataSet> surface, std::uint32_t locatio
   vtkCellArray* polys = vtkPolyData::SafeDownCast(part.surface)->GetPolys();
   const vtkIdType point_count = part.surface->GetNumberOfPoints();
   if (polys->IsStorage64Bit())
-    copy_polygons(polys->GetOffsetsArray64(), polys->GetConnectivityArray64(), point_count, part, file,
-                  location_name);
+    copy_polygons(polys->GetOffsetsArray64(), polys->GetConnectivityArray64(), point_count, part, file, location_name);
   else
-    copy_polygons(polys->GetOffsetsArray32(), polys->GetConnectivityArray32(), point_count, part, file,
-                  location_name);
+    copy_polygons(polys->GetOffsetsArray32(), polys->GetConnectivityArray32(), point_count, part, file, location_name);
   return part;
 }
 
@@ -299,14 +298,14 @@ Part extract_faces(vtkSmartPointer<vtkDataSet> surface, std::uint32_t location, 
       case VTK_VERTEX:
       case VTK_POLY_VERTEX:
       case VTK_LINE:
-      case VTK_POLY_LINE:
-        break;
+      case VTK_POLY_LINE: break;
       default: {
         const char* class_name = vtkCellTypes::GetClassNameFromTypeId(type);
-        throw InputError(SourceLocation{file},
-                         "block '" + location_name + "': cell " + std::to_string(cell) + " is a " +
-                             (class_name != nullptr ? std::string(class_name) : "cell of type " + std::to_string(type)) +
-                             "; expected triangles, quads, pixels, polygons or triangle strips on a surface");
+        throw InputError(
+            SourceLocation{file},
+            "block '" + location_name + "': cell " + std::to_string(cell) + " is a " +
+                (class_name != nullptr ? std::string(class_name) : "cell of type " + std::to_string(type)) +
+                "; expected triangles, quads, pixels, polygons or triangle strips on a surface");
       }
     }
   }
@@ -331,8 +330,8 @@ vtkDataSetAttributes* attributes_of(vtkDataSet* data, FieldAssociation associati
                                                 : static_cast<vtkDataSetAttributes*>(data->GetCellData());
 }
 
-void check_tuple_count(vtkDataArray* array, vtkIdType expected, const std::string& file,
-                       const std::string& location, const char* per) {
+void check_tuple_count(vtkDataArray* array, vtkIdType expected, const std::string& file, const std::string& location,
+                       const char* per) {
   if (array->GetNumberOfTuples() != expected)
     throw InputError(SourceLocation{file}, "block '" + location + "': array '" + array->GetName() + "' has " +
                                                std::to_string(array->GetNumberOfTuples()) + " tuples; expected " +
@@ -464,8 +463,7 @@ SurfaceMesh read_vtk_surface(const std::filesystem::path& file, const VtkSurface
   for (const auto& leaf : leaves) {
     if (leaf.data == nullptr || !selected(leaf)) continue;
     const auto location = static_cast<std::uint32_t>(
-        std::find(mesh.location_names.begin(), mesh.location_names.end(), leaf.location) -
-        mesh.location_names.begin());
+        std::find(mesh.location_names.begin(), mesh.location_names.end(), leaf.location) - mesh.location_names.begin());
     if (!leaf.patch && polygons_only(leaf.data)) {
       Part part = extract_polygons(leaf.data, location, file_name, leaf.location);
       if (part.face_count() > 0) parts.push_back(std::move(part));

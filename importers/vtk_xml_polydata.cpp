@@ -144,11 +144,16 @@ class XmlHeader {
       const auto end = raw.find(';', i);
       if (end == npos) return false;
       const std::string_view entity = raw.substr(i + 1, end - i - 1);
-      if (entity == "lt") out += '<';
-      else if (entity == "gt") out += '>';
-      else if (entity == "amp") out += '&';
-      else if (entity == "quot") out += '"';
-      else if (entity == "apos") out += '\'';
+      if (entity == "lt")
+        out += '<';
+      else if (entity == "gt")
+        out += '>';
+      else if (entity == "amp")
+        out += '&';
+      else if (entity == "quot")
+        out += '"';
+      else if (entity == "apos")
+        out += '\'';
       else if (entity.size() > 1 && entity[0] == '#') {
         const bool hex = entity[1] == 'x';
         const std::string_view digits = entity.substr(hex ? 2 : 1);
@@ -263,9 +268,9 @@ enum class WordType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, UInt64, 
 
 std::optional<WordType> parse_word_type(std::string_view name) {
   static constexpr std::pair<std::string_view, WordType> kTypes[] = {
-      {"Int8", WordType::Int8},     {"UInt8", WordType::UInt8},     {"Int16", WordType::Int16},
-      {"UInt16", WordType::UInt16}, {"Int32", WordType::Int32},     {"UInt32", WordType::UInt32},
-      {"Int64", WordType::Int64},   {"UInt64", WordType::UInt64},   {"Float32", WordType::Float32},
+      {"Int8", WordType::Int8},      {"UInt8", WordType::UInt8},   {"Int16", WordType::Int16},
+      {"UInt16", WordType::UInt16},  {"Int32", WordType::Int32},   {"UInt32", WordType::UInt32},
+      {"Int64", WordType::Int64},    {"UInt64", WordType::UInt64}, {"Float32", WordType::Float32},
       {"Float64", WordType::Float64}};
   for (const auto& [text, type] : kTypes)
     if (text == name) return type;
@@ -331,12 +336,12 @@ struct ArrayJob {
   bool base64 = false;
   std::optional<std::uint64_t> appended_offset;  ///< where it starts in the appended data, if there
   std::uint64_t extent = 0;                      ///< bytes (or base64 characters) of `source` it uses
-  std::size_t data_origin = 0;  ///< where the value (or block) stream starts in `source`
-  std::size_t header_bytes = 0;  ///< uncompressed: bytes of the count before the values in that stream
-  std::uint64_t block_size = 0, last_block_size = 0;     ///< uncompressed; 0 = the last block is whole
+  std::size_t data_origin = 0;                   ///< where the value (or block) stream starts in `source`
+  std::size_t header_bytes = 0;                  ///< uncompressed: bytes of the count before the values in that stream
+  std::uint64_t block_size = 0, last_block_size = 0;    ///< uncompressed; 0 = the last block is whole
   std::vector<std::uint64_t> block_start, block_bytes;  ///< compressed blocks in the block stream
-  std::uint64_t stored_words = 0;  ///< values the array holds
-  std::uint64_t words = 0;         ///< values to decode
+  std::uint64_t stored_words = 0;                       ///< values the array holds
+  std::uint64_t words = 0;                              ///< values to decode
   Target target = Target::Real;
   void* out = nullptr;
   std::uint64_t index_limit = 0;
@@ -383,8 +388,7 @@ struct FileFormat {
 std::size_t base64_chars(std::uint64_t bytes) { return static_cast<std::size_t>((bytes + 2) / 3 * 4); }
 
 /// Reads bytes [first, last) of the stream at `origin` of an array's source.
-bool read_stream(const ArrayJob& job, std::size_t origin, std::uint64_t first, std::uint64_t last,
-                 unsigned char* out) {
+bool read_stream(const ArrayJob& job, std::size_t origin, std::uint64_t first, std::uint64_t last, unsigned char* out) {
   if (origin > job.source.size()) return false;
   const std::string_view stream = job.source.substr(origin);
   if (!job.base64) {
@@ -521,8 +525,8 @@ bool plan_array_unchecked(const XmlElement& array, const FileFormat& format, std
   job.words = needed ? *needed : job.stored_words;
   if (job.words > job.stored_words) {
     if (!format.compressed && stated_bytes / job.word >= job.words) fail(format, cut_short);
-    fail(format, job.what + ": holds " + std::to_string(job.stored_words) + " values; expected " +
-                     std::to_string(job.words));
+    fail(format,
+         job.what + ": holds " + std::to_string(job.stored_words) + " values; expected " + std::to_string(job.words));
   }
   if (!format.compressed) {
     const std::uint64_t stream_bytes = h + job.words * job.word;
@@ -554,13 +558,17 @@ inline T load(const unsigned char* p) {
   if constexpr (sizeof(T) == 1) {
     return static_cast<T>(*p);
   } else {
-    using Bits = std::conditional_t<sizeof(T) == 2, std::uint16_t, std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>;
+    using Bits = std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                                    std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>;
     Bits bits;
     std::memcpy(&bits, p, sizeof(T));
     if constexpr (Swap) {
-      if constexpr (sizeof(T) == 2) bits = __builtin_bswap16(bits);
-      else if constexpr (sizeof(T) == 4) bits = __builtin_bswap32(bits);
-      else bits = __builtin_bswap64(bits);
+      if constexpr (sizeof(T) == 2)
+        bits = __builtin_bswap16(bits);
+      else if constexpr (sizeof(T) == 4)
+        bits = __builtin_bswap32(bits);
+      else
+        bits = __builtin_bswap64(bits);
     }
     T value;
     std::memcpy(&value, &bits, sizeof(T));
@@ -570,8 +578,10 @@ inline T load(const unsigned char* p) {
 
 template <typename T>
 std::string value_text(T value) {
-  if constexpr (std::is_floating_point_v<T>) return std::to_string(value);
-  else return std::to_string(+value);
+  if constexpr (std::is_floating_point_v<T>)
+    return std::to_string(value);
+  else
+    return std::to_string(+value);
 }
 
 /// Converts `count` values starting at value `first` of the array.
@@ -590,8 +600,10 @@ void convert_values(ArrayJob& job, const unsigned char* in, std::uint64_t first,
     for (std::uint64_t i = 0; i < count; ++i) {
       const T value = load<T, Swap>(in + i * sizeof(T));
       bool good;
-      if constexpr (std::is_signed_v<T>) good = value >= 0 && static_cast<std::uint64_t>(value) < limit;
-      else good = static_cast<std::uint64_t>(value) < limit;
+      if constexpr (std::is_signed_v<T>)
+        good = value >= 0 && static_cast<std::uint64_t>(value) < limit;
+      else
+        good = static_cast<std::uint64_t>(value) < limit;
       if (!good) {
         job.record_bad(first + i, value_text(value));
         out[i] = 0;
@@ -619,15 +631,17 @@ void convert_swapped(ArrayJob& job, const unsigned char* in, std::uint64_t first
 }
 
 void convert(ArrayJob& job, const unsigned char* in, std::uint64_t first, std::uint64_t count) {
-  if (job.swap) convert_swapped<true>(job, in, first, count);
-  else convert_swapped<false>(job, in, first, count);
+  if (job.swap)
+    convert_swapped<true>(job, in, first, count);
+  else
+    convert_swapped<false>(job, in, first, count);
 }
 
 /// Per-thread buffers and zlib state.
 struct Scratch {
   std::vector<unsigned char> encoded, decoded;
   std::unique_ptr<libdeflate_decompressor, void (*)(libdeflate_decompressor*)> inflater{nullptr,
-                                                                                         &libdeflate_free_decompressor};
+                                                                                        &libdeflate_free_decompressor};
   libdeflate_decompressor* zlib() {
     if (!inflater) inflater.reset(libdeflate_alloc_decompressor());
     if (!inflater) throw std::bad_alloc();
@@ -690,8 +704,8 @@ void run_task(const Task& task, const FileFormat& format, Scratch& scratch) {
   const auto expected = static_cast<std::size_t>(job.block_uncompressed_bytes(b));
   scratch.decoded.resize(expected);
   std::size_t actual = 0;
-  const libdeflate_result result =
-      libdeflate_zlib_decompress(scratch.zlib(), compressed, compressed_bytes, scratch.decoded.data(), expected, &actual);
+  const libdeflate_result result = libdeflate_zlib_decompress(scratch.zlib(), compressed, compressed_bytes,
+                                                              scratch.decoded.data(), expected, &actual);
   const std::string block = "zlib block " + std::to_string(b + 1) + " of " + std::to_string(job.block_bytes.size());
   if (result == LIBDEFLATE_INSUFFICIENT_SPACE)
     fail(format, job.what + ": " + block + " decompresses to more than the " + std::to_string(expected) +
@@ -837,8 +851,7 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
   const XmlElement* point_data = only_child(*piece, "PointData", several);
   const XmlElement* cell_data = only_child(*piece, "CellData", several);
   if (several) return std::nullopt;
-  if (*polygon_count == 0)
-    fail(format, "no faces (triangles, quads, polygons or triangle strips) in the file");
+  if (*polygon_count == 0) fail(format, "no faces (triangles, quads, polygons or triangle strips) in the file");
   if (points == nullptr || polys == nullptr || points->children.size() != 1 || points->children[0].name != "DataArray")
     return std::nullopt;
   const XmlElement& point_array = points->children[0];
@@ -893,8 +906,8 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
       field.association = association;
       field.components = static_cast<int>(*count_attribute(*array, "NumberOfComponents", 1));
       const std::uint64_t tuples = association == FieldAssociation::Point ? *point_count : *polygon_count;
-      const std::string what = std::string(association == FieldAssociation::Point ? "point" : "cell") +
-                               " data array " + in_quotes(field.name);
+      const std::string what = std::string(association == FieldAssociation::Point ? "point" : "cell") + " data array " +
+                               in_quotes(field.name);
       ArrayJob* job = plan(*array, what, tuples * static_cast<std::uint64_t>(field.components));
       if (job == nullptr) return std::nullopt;
       mesh.fields.push_back(std::move(field));
@@ -924,8 +937,8 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
   } catch (const std::bad_alloc&) {
     std::size_t total = 0;
     for (const auto& allocation : allocations) total += allocation.first;
-    fail(format, "the arrays the file declares need " + std::to_string(total >> 20) +
-                     " MiB, more memory than there is");
+    fail(format,
+         "the arrays the file declares need " + std::to_string(total >> 20) + " MiB, more memory than there is");
   }
 
   point_job->out = mesh.points_xyz.data();
@@ -938,7 +951,8 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
   for (const auto& plan_entry : field_plans) plan_entry.job->out = plan_entry.field->values.data();
   std::vector<Task> tasks;
   for (const auto& job : jobs) add_tasks(*job, format, tasks);
-  run_parallel(tasks.size(), [&tasks, &format](std::size_t i, Scratch& scratch) { run_task(tasks[i], format, scratch); });
+  run_parallel(tasks.size(),
+               [&tasks, &format](std::size_t i, Scratch& scratch) { run_task(tasks[i], format, scratch); });
 
   // Offsets: from 0, never back, at least 3 points a polygon, within the connectivity.
   const std::string block = "block " + in_quotes(location) + ": ";
@@ -961,9 +975,10 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
     fail(format, block + "the Polys connectivity array holds " + std::to_string(connectivity_job->words) +
                      " point indices; the offsets call for " + std::to_string(index_count));
   if (connectivity_job->bad_position < index_count) {
-    const auto cell = static_cast<std::size_t>(
-        std::upper_bound(offsets, offsets + polygons_n + 1, static_cast<std::uint32_t>(connectivity_job->bad_position)) -
-        offsets - 1);
+    const auto cell =
+        static_cast<std::size_t>(std::upper_bound(offsets, offsets + polygons_n + 1,
+                                                  static_cast<std::uint32_t>(connectivity_job->bad_position)) -
+                                 offsets - 1);
     fail(format, block + "cell " + std::to_string(cell) + " refers to point " + connectivity_job->bad_value +
                      (*point_count == 0 ? std::string("; the block has no points")
                                         : "; expected 0.." + std::to_string(*point_count - 1) + " (the block has " +

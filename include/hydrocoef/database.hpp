@@ -116,7 +116,7 @@ struct ImportOptions {
 /// What an import did with one input.
 struct ImportedFile {
   std::string path;
-  std::string format;  ///< table, monitor, cfdpost, vtk, openfoam-forces, force-history, openfoam-case
+  std::string format;             ///< table, monitor, cfdpost, vtk, openfoam-forces, force-history, openfoam-case
   std::size_t runs = 0;           ///< runs the input holds
   std::size_t runs_created = 0;   ///< new runs
   std::size_t runs_extended = 0;  ///< existing runs that gained components
@@ -157,10 +157,10 @@ struct FitOptions {
 
 /// One coefficient of a fitted law.
 struct FitCoefficient {
-  std::string term;                ///< e.g. "u|u|"
-  double value = 0.0;              ///< [unit]
-  double std_error = 0.0;          ///< one sigma [unit]; NaN when undefined (as many runs as terms)
-  std::string unit;                ///< e.g. "N/(m/s)^2"
+  std::string term;        ///< e.g. "u|u|"
+  double value = 0.0;      ///< [unit]
+  double std_error = 0.0;  ///< one sigma [unit]; NaN when undefined (as many runs as terms)
+  std::string unit;        ///< e.g. "N/(m/s)^2"
 };
 
 /// A fitted damping law: what `hydrocoef fit --json` prints, or a stored fit.
@@ -171,15 +171,15 @@ struct FitSummary {
   std::string variable;  ///< u..r
   std::string terms;     ///< canonical, e.g. "1,u,u|u|"
   std::string loss;
-  std::string where;     ///< the selection, canonical ("" all runs)
-  std::string mirror;    ///< planes of symmetry used ("" none)
+  std::string where;   ///< the selection, canonical ("" all runs)
+  std::string mirror;  ///< planes of symmetry used ("" none)
   /// "on-body" (force on the body) or "opposing" (a damping magnitude,
   /// positive opposes motion): the runs' own when they all agree.
   std::string sign_convention;
   std::vector<FitCoefficient> coefficients;
-  double rmse = 0.0;  ///< [N or N m]
-  double r2 = 0.0;    ///< NaN when the force does not vary over the runs
-  std::size_t n = 0;  ///< samples fitted (runs and mirror images)
+  double rmse = 0.0;                  ///< [N or N m]
+  double r2 = 0.0;                    ///< NaN when the force does not vary over the runs
+  std::size_t n = 0;                  ///< samples fitted (runs and mirror images)
   std::vector<std::int64_t> runs;     ///< the runs it was made from
   std::vector<std::string> warnings;  ///< physical checks, unconverged runs (fit only)
   std::int64_t id = 0;                ///< its id in the database; 0 when not stored

@@ -58,8 +58,9 @@ Database& database_of(py::handle self) {
   auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
   auto holder = instance->get_value_and_holder(py::detail::get_type_info(typeid(Database)), false);
   if (!holder || !holder.holder_constructed())
-    throw py::type_error("this hydrocoef.Database was made by __new__ without __init__; open one with "
-                         "hydrocoef.Database(path)");
+    throw py::type_error(
+        "this hydrocoef.Database was made by __new__ without __init__; open one with "
+        "hydrocoef.Database(path)");
   return *holder.value_ptr<Database>();
 }
 
@@ -68,12 +69,14 @@ Database& database_of(py::handle self) {
 /// methods on uninitialised memory).
 void made_by_the_module_only(py::handle cls, const char* how) {
   const std::string message = std::string(how);
-  cls.attr("__new__") = py::cpp_function(
-      [message](const py::args&, const py::kwargs&) -> py::object { throw py::type_error(message); },
-      py::name("__new__"));
+  cls.attr("__new__") =
+      py::cpp_function([message](const py::args&, const py::kwargs&) -> py::object { throw py::type_error(message); },
+                       py::name("__new__"));
 }
 
-std::string fspath(const py::handle& path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
+std::string fspath(const py::handle& path) {
+  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
+}
 
 /// A list of run ids (None: empty).
 std::vector<std::int64_t> run_ids(const py::object& value, const char* what) {
@@ -134,9 +137,7 @@ AxisValues axis_values(const std::string& axis, const py::handle& value) {
   if (kind != 'f' && kind != 'i' && kind != 'u')
     throw py::type_error("axis '" + axis + "': expected real numbers, got an array of dtype " +
                          py::str(array.dtype()).cast<std::string>());
-  const auto aligned = [&] {
-    return reinterpret_cast<std::uintptr_t>(array.data()) % alignof(double) == 0;
-  };
+  const auto aligned = [&] { return reinterpret_cast<std::uintptr_t>(array.data()) % alignof(double) == 0; };
   const bool in_place = array.dtype().equal(py::dtype::of<double>()) && aligned() &&
                         (array.ndim() == 0 || (array.ndim() == 1 && array.strides(0) % 8 == 0) ||
                          (array.flags() & py::array::c_style) != 0);
@@ -150,7 +151,9 @@ AxisValues axis_values(const std::string& axis, const py::handle& value) {
   out.scalar = array.ndim() == 0;
   for (py::ssize_t d = 0; d < array.ndim(); ++d) out.shape.push_back(array.shape(d));
   out.column.data = static_cast<const double*>(array.data());
-  out.column.stride = out.scalar ? 0 : array.ndim() == 1 ? array.strides(0) / static_cast<py::ssize_t>(sizeof(double)) : 1;
+  out.column.stride = out.scalar          ? 0
+                      : array.ndim() == 1 ? array.strides(0) / static_cast<py::ssize_t>(sizeof(double))
+                                          : 1;
   return out;
 }
 
@@ -161,7 +164,8 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
   long threads = 0;
   if (kwargs.contains("gradient")) gradient = py::cast<bool>(kwargs.attr("pop")("gradient"));
   if (kwargs.contains("threads")) threads = py::cast<long>(kwargs.attr("pop")("threads"));
-  if (threads < 0 || threads > 4096) throw py::value_error("threads=" + std::to_string(threads) + ": expected 0 (every core) to 4096");
+  if (threads < 0 || threads > 4096)
+    throw py::value_error("threads=" + std::to_string(threads) + ": expected 0 (every core) to 4096");
   const auto& axes = surface.axes();
   const std::string usage = "surface '" + surface.name() + "' takes one value or array per axis: " + joined(axes);
 
@@ -258,7 +262,8 @@ hydrocoef::OpenMode parse_mode(const std::string& mode) {
   if (mode == "r") return hydrocoef::OpenMode::ReadOnly;
   if (mode == "rw") return hydrocoef::OpenMode::ReadWrite;
   if (mode == "create") return hydrocoef::OpenMode::Create;
-  throw py::value_error("mode '" + mode + "': expected 'r' (read only), 'rw' (read and write an existing database) "
+  throw py::value_error("mode '" + mode +
+                        "': expected 'r' (read only), 'rw' (read and write an existing database) "
                         "or 'create' (read and write, made when missing)");
 }
 
@@ -272,11 +277,12 @@ py::dict runs_dict(hydrocoef::RunTable&& table) {
   for (std::size_t c = 0; c < 6; ++c) out[kVelocityNames[c]] = to_numpy(std::move(table.velocity[c]));
   for (auto& [name, column] : table.disturbances) {
     // A disturbance named like a fixed column (an identifier such as "id" or "X") is kept apart.
-    const std::string key = out.contains(name) || name == "source" || name == "history_flags" ||
-                                    std::find(std::begin(kForceNames), std::end(kForceNames), name) !=
-                                        std::end(kForceNames) || name.ends_with("_std_error")
-                                ? "disturbance." + name
-                                : name;
+    const std::string key =
+        out.contains(name) || name == "source" || name == "history_flags" ||
+                std::find(std::begin(kForceNames), std::end(kForceNames), name) != std::end(kForceNames) ||
+                name.ends_with("_std_error")
+            ? "disturbance." + name
+            : name;
     out[py::str(key)] = to_numpy(std::move(column));
   }
   for (std::size_t c = 0; c < 6; ++c) out[kForceNames[c]] = to_numpy(std::move(table.force[c]));
@@ -307,7 +313,7 @@ std::map<std::string, std::string> settings_texts(const py::object& settings) {
   for (const auto& item : settings.cast<py::dict>()) {
     const auto key = py::cast<std::string>(item.first);
     out[key] = py::isinstance<py::str>(item.second) ? item.second.cast<std::string>()
-                                                     : dumps(item.second, "allow_nan"_a = false).cast<std::string>();
+                                                    : dumps(item.second, "allow_nan"_a = false).cast<std::string>();
   }
   return out;
 }
@@ -328,10 +334,14 @@ std::string repr_fit(const hydrocoef::FitSummary& fit) {
   out << "<hydrocoef.Fit " << fit.name << ": " << fit.output << "(" << fit.variable << ") =";
   for (std::size_t k = 0; k < fit.coefficients.size(); ++k) {
     const auto& c = fit.coefficients[k];
-    out << " " << (c.value < 0 ? "-" : k ? "+" : "") << (c.value < 0 || k ? " " : "") << std::abs(c.value)
-        << (c.term == "1" ? "" : " " + c.term);
+    out << " "
+        << (c.value < 0 ? "-"
+            : k         ? "+"
+                        : "")
+        << (c.value < 0 || k ? " " : "") << std::abs(c.value) << (c.term == "1" ? "" : " " + c.term);
   }
-  out << ", n=" << fit.n << ", rmse=" << fit.rmse << " " << (std::string("XYZ").find(fit.output) != std::string::npos ? "N" : "N m") << ">";
+  out << ", n=" << fit.n << ", rmse=" << fit.rmse << " "
+      << (std::string("XYZ").find(fit.output) != std::string::npos ? "N" : "N m") << ">";
   return out.str();
 }
 
@@ -402,8 +412,9 @@ point). A Surface is immutable and stays valid after its Database is closed.)doc
   {
     py::options options;
     options.disable_function_signatures();
-    surface_class.def("__call__", &call_surface,
-           R"doc(__call__(self, values=None, /, *, gradient=False, threads=0, **axes) -> dict[str, numpy.ndarray]
+    surface_class.def(
+        "__call__", &call_surface,
+        R"doc(__call__(self, values=None, /, *, gradient=False, threads=0, **axes) -> dict[str, numpy.ndarray]
 
 Every output at every point. Give each axis a float or an array, by keyword
 (s(u=..., v=...)), or one mapping holding them (s({"u": ..., "v": ...}), or a
@@ -461,7 +472,8 @@ different shapes.)doc");
       .def_readonly("r2", &hydrocoef::FitSummary::r2, "R^2 (nan when the force does not vary).")
       .def_readonly("n", &hydrocoef::FitSummary::n, "Samples fitted.")
       .def_readonly("runs", &hydrocoef::FitSummary::runs, "Ids of the runs it was made from.")
-      .def_readonly("warnings", &hydrocoef::FitSummary::warnings, "Physical checks and unconverged runs ('kind: message').")
+      .def_readonly("warnings", &hydrocoef::FitSummary::warnings,
+                    "Physical checks and unconverged runs ('kind: message').")
       .def_readonly("id", &hydrocoef::FitSummary::id, "Id in the database (0 when not stored).")
       .def_readonly("stale", &hydrocoef::FitSummary::stale)
       .def_readonly("created_at", &hydrocoef::FitSummary::created_at)
@@ -505,13 +517,14 @@ different shapes.)doc");
       .def_readonly("runs_extended", &hydrocoef::ImportSummary::runs_extended)
       .def_readonly("already_imported", &hydrocoef::ImportSummary::already_imported)
       .def("__repr__", [](const hydrocoef::ImportSummary& s) {
-        return "<hydrocoef.ImportSummary " + std::to_string(s.files.size()) + " inputs: " +
-               std::to_string(s.runs_created) + " new runs, " + std::to_string(s.runs_extended) + " extended, " +
-               std::to_string(s.already_imported) + " already imported>";
+        return "<hydrocoef.ImportSummary " + std::to_string(s.files.size()) +
+               " inputs: " + std::to_string(s.runs_created) + " new runs, " + std::to_string(s.runs_extended) +
+               " extended, " + std::to_string(s.already_imported) + " already imported>";
       });
 
   // ---- Database ----
-  py::class_<Database>(m, "Database", R"doc(A hydrocoef run database (an SQLite file), as the command-line tool reads and writes it.
+  py::class_<Database>(m, "Database",
+                       R"doc(A hydrocoef run database (an SQLite file), as the command-line tool reads and writes it.
 
     db = hydrocoef.Database("asr-v.db")            # mode="create": made when missing
     db.import_files(["surge.csv"], body="asr-v", settings={"sign": "opposing", "rho": 998.2})
@@ -531,12 +544,14 @@ after that raises InputError "PATH: database is closed".)doc")
       .def_property_readonly("path", [](py::handle self) { return database_of(self).path(); })
       .def_property_readonly("closed", [](py::handle self) { return !database_of(self).is_open(); })
       .def_property_readonly("read_only", [](py::handle self) { return database_of(self).read_only(); })
-      .def("close", [](py::handle self) { database_of(self).close(); },
-           "Closes the file; surfaces already read stay valid.")
-      .def("__enter__", [](py::object self) {
-        database_of(self);
-        return self;
-      })
+      .def(
+          "close", [](py::handle self) { database_of(self).close(); },
+          "Closes the file; surfaces already read stay valid.")
+      .def("__enter__",
+           [](py::object self) {
+             database_of(self);
+             return self;
+           })
       .def("__exit__", [](py::handle self, const py::args&) { database_of(self).close(); })
       .def(
           "runs",
@@ -637,10 +652,18 @@ output: X Y Z K M N; terms: e.g. "1,u,u|u|" (1, x, x|x|, x^2, x^3, |x| of one ve
 where / exclude_runs: the run selection; mirror: planes of symmetry ("v"), mirror_odd: disturbances
 that change sign; loss: squared, huber:S, cauchy:S, soft-l1:S; name: default body:X(terms);
 replace: replace a stored fit of that name; store=False: fit only. Returns a Fit.)doc")
-      .def("fits", [](py::handle self, const py::object& body) { return database_of(self).fits(body.is_none() ? "" : body.cast<std::string>()); },
-           "body"_a = py::none(), "The stored fits (of one body), by name: a list of Fit.")
-      .def("surfaces", [](py::handle self, const py::object& body) { return database_of(self).surfaces(body.is_none() ? "" : body.cast<std::string>()); },
-           "body"_a = py::none(), "The stored surfaces (of one body), by name: a list of SurfaceInfo.")
+      .def(
+          "fits",
+          [](py::handle self, const py::object& body) {
+            return database_of(self).fits(body.is_none() ? "" : body.cast<std::string>());
+          },
+          "body"_a = py::none(), "The stored fits (of one body), by name: a list of Fit.")
+      .def(
+          "surfaces",
+          [](py::handle self, const py::object& body) {
+            return database_of(self).surfaces(body.is_none() ? "" : body.cast<std::string>());
+          },
+          "body"_a = py::none(), "The stored surfaces (of one body), by name: a list of SurfaceInfo.")
       .def(
           "build_surface",
           [](py::handle self, const std::string& name, const std::string& body, const py::object& axes,
@@ -676,11 +699,10 @@ replace: replace a stored fit of that name; store=False: fit only. Returns a Fit
             py::gil_scoped_release release;
             return d.build_surface(options);
           },
-          "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear",
-          "extrapolate"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(),
-          "mirror"_a = py::none(), "mirror_odd"_a = py::none(), "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1,
-          "rbf_smoothing"_a = 0.0, "resample"_a = py::none(), "resample_method"_a = "linear",
-          "far_threshold"_a = 0.25, "replace"_a = false,
+          "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear", "extrapolate"_a = py::none(),
+          "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(), "mirror_odd"_a = py::none(),
+          "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0, "resample"_a = py::none(),
+          "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false,
           R"doc(Builds a surface from the selected runs and stores it, as `hydrocoef surface build`.
 
 axes: velocity components (u..r) or disturbance names; outputs: X..N (forces on the body).
@@ -701,16 +723,19 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
           "name"_a = py::none(), py::kw_only(), "stale_only"_a = false,
           "Builds stored surfaces again from the current runs with the options each was built with: the one named, "
           "else every one (only stale ones with stale_only=True). Returns a list of SurfaceInfo.")
-      .def("surface", [](py::handle self, const std::string& name) { return database_of(self).surface(name); }, "name"_a,
-           "One stored surface, read whole (it stays valid after close()). InputError listing the names when absent.")
+      .def(
+          "surface", [](py::handle self, const std::string& name) { return database_of(self).surface(name); }, "name"_a,
+          "One stored surface, read whole (it stays valid after close()). InputError listing the names when absent.")
       .def("__repr__", [](py::handle self) {
         const Database& d = database_of(self);
-        return "<hydrocoef.Database '" + d.path() + "'" + (d.is_open() ? (d.read_only() ? ", read only" : "") : ", closed") + ">";
+        return "<hydrocoef.Database '" + d.path() + "'" +
+               (d.is_open() ? (d.read_only() ? ", read only" : "") : ", closed") + ">";
       });
 
   made_by_the_module_only(m.attr("Surface"), "hydrocoef.Surface objects come from Database.surface(name)");
   for (const char* name : {"Fit", "SurfaceInfo", "ImportedFile", "ImportSummary"})
-    made_by_the_module_only(m.attr(name), (std::string("hydrocoef.") + name + " objects come from Database calls").c_str());
+    made_by_the_module_only(m.attr(name),
+                            (std::string("hydrocoef.") + name + " objects come from Database calls").c_str());
 
   // The public classes say they are hydrocoef's (help(), repr of the type), not the extension's
   // (Database is: hydrocoef.Database is its Python subclass in __init__.py).
@@ -726,7 +751,8 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
           trajectory = hydrocoef::simulate(vehicle, scenario, database);
         }
         py::dict units;
-        for (std::size_t c = 0; c < trajectory.columns.size(); ++c) units[py::str(trajectory.columns[c])] = trajectory.units[c];
+        for (std::size_t c = 0; c < trajectory.columns.size(); ++c)
+          units[py::str(trajectory.columns[c])] = trajectory.units[c];
         auto notes = trajectory.notes;
         return py::make_tuple(trajectory_dict(std::move(trajectory)), units, notes);
       },

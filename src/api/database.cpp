@@ -2,8 +2,8 @@
 // read back: runs as columns, fits, surfaces. The import is src/api/import.cpp,
 // the fit src/api/fit.cpp.
 #include "src/api/internal.hpp"
-#include "src/core/text.hpp"
 #include "src/core/sign_convention.hpp"
+#include "src/core/text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,6 @@ api_internal::StoreDatabase::OpenMode store_mode(OpenMode mode) {
 std::optional<std::string> optional_body(const std::string& body) {
   return body.empty() ? std::nullopt : std::optional<std::string>(body);
 }
-
 
 }  // namespace
 
@@ -147,8 +146,9 @@ std::vector<FitSummary> Database::fits(const std::string& body) const {
 namespace {
 
 SurfaceInfo surface_info(const SurfaceRecord& record, const CoefficientSurface& surface) {
-  return {record.name,         record.body,  record.kind,           surface.method_name(), surface.axis_names(),
-          surface.output_names(), record.stale, record.run_ids.size(), record.created_at};
+  return {record.name,           record.body,           record.kind,
+          surface.method_name(), surface.axis_names(),  surface.output_names(),
+          record.stale,          record.run_ids.size(), record.created_at};
 }
 
 }  // namespace

@@ -14,7 +14,8 @@ std::vector<std::string> coefficient_units(const std::string& terms, const std::
   if (!dof || !component) return {};
   try {
     std::vector<std::string> units;
-    for (const DampingTerm term : parse_damping_terms(terms).terms) units.push_back(coefficient_unit(term, *dof, *component));
+    for (const DampingTerm term : parse_damping_terms(terms).terms)
+      units.push_back(coefficient_unit(term, *dof, *component));
     return units;
   } catch (const InputError&) {
     return {};

@@ -37,7 +37,8 @@ std::vector<double> Surface::evaluate(const std::vector<double>& point) const {
 
 Surface::ValueAndGradient Surface::evaluate_with_gradient(const std::vector<double>& point) const {
   const CoefficientSurface& s = impl_->surface;
-  ValueAndGradient result{std::vector<double>(s.output_count()), std::vector<double>(s.output_count() * s.axis_count())};
+  ValueAndGradient result{std::vector<double>(s.output_count()),
+                          std::vector<double>(s.output_count() * s.axis_count())};
   s.evaluate_with_gradient(point, result.values, result.gradient);
   return result;
 }

@@ -12,7 +12,7 @@ namespace hydrocoef {
 
 struct Base64Decoded {
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-  std::size_t bytes = 0;         ///< bytes written
+  std::size_t bytes = 0;          ///< bytes written
   std::size_t bad_offset = npos;  ///< offset in the text of the first character that is not base64, or npos
   bool ok() const { return bad_offset == npos; }
 };

@@ -35,9 +35,10 @@ bool BodyMirror::on_plane(const RunKey& key) const {
 }
 
 std::string BodyMirror::text() const {
-  static constexpr const char* kRules[3] = {"fore-aft: (u,v,w,p,q,r) -> (-u,v,w,p,-q,-r), (X,Y,Z,K,M,N) -> (-X,Y,Z,K,-M,-N)",
-                                            "port-starboard: (u,v,w,p,q,r) -> (u,-v,w,-p,q,-r), (X,Y,Z,K,M,N) -> (X,-Y,Z,-K,M,-N)",
-                                            "top-bottom: (u,v,w,p,q,r) -> (u,v,-w,-p,-q,r), (X,Y,Z,K,M,N) -> (X,Y,-Z,-K,-M,N)"};
+  static constexpr const char* kRules[3] = {
+      "fore-aft: (u,v,w,p,q,r) -> (-u,v,w,p,-q,-r), (X,Y,Z,K,M,N) -> (-X,Y,Z,K,-M,-N)",
+      "port-starboard: (u,v,w,p,q,r) -> (u,-v,w,-p,q,-r), (X,Y,Z,K,M,N) -> (X,-Y,Z,-K,M,-N)",
+      "top-bottom: (u,v,w,p,q,r) -> (u,v,-w,-p,-q,r), (X,Y,Z,K,M,N) -> (X,Y,-Z,-K,-M,N)"};
   std::string out = std::string(kVelocityNames[axis]) + " (" + kRules[axis];
   for (const auto& name : odd_disturbances) out += ", " + name + " -> -" + name;
   return out + ")";

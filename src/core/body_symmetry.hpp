@@ -30,7 +30,7 @@
 namespace hydrocoef {
 
 struct BodyMirror {
-  std::size_t axis = 1;               ///< 0, 1, 2: the plane's normal (u/x, v/y, w/z)
+  std::size_t axis = 1;                    ///< 0, 1, 2: the plane's normal (u/x, v/y, w/z)
   std::set<std::string> odd_disturbances;  ///< parameters that change sign in the mirror
 
   /// +1 or -1 for each of u..r (and of X..N: the same pattern).

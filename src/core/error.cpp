@@ -48,9 +48,9 @@ InputError::InputError(const std::string& message)
     : std::runtime_error(printable_text(message, kMaxMessageCharacters)) {}
 
 InputError::InputError(const SourceLocation& where, const std::string& message)
-    : std::runtime_error(printable_text(
-          where.file.empty() && where.line == 0 ? message : format_location(where) + ": " + message,
-          kMaxMessageCharacters)),
+    : std::runtime_error(
+          printable_text(where.file.empty() && where.line == 0 ? message : format_location(where) + ": " + message,
+                         kMaxMessageCharacters)),
       where_(where) {}
 
 }  // namespace hydrocoef

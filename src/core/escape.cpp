@@ -120,8 +120,8 @@ std::string c_string(std::string_view text) {
 
 std::string csv_field(std::string_view text) {
   const std::string line = one_line(text);
-  const bool quote = line.find_first_of(",\"") != std::string::npos ||
-                     (!line.empty() && (line.front() == ' ' || line.back() == ' '));
+  const bool quote =
+      line.find_first_of(",\"") != std::string::npos || (!line.empty() && (line.front() == ' ' || line.back() == ' '));
   if (!quote) return line;
   std::string out = "\"";
   for (const char c : line) {
@@ -144,9 +144,7 @@ std::string xml_text(std::string_view text, bool keep_newlines) {
       case '"': out += "&quot;"; return;
       case '\'': out += "&apos;"; return;
       case '\n':
-      case '\t':
-        out += keep_newlines ? bytes : kReplacement;
-        return;
+      case '\t': out += keep_newlines ? bytes : kReplacement; return;
       default: break;
     }
     // XML 1.0 cannot hold C0 controls (but tab, LF, CR), U+FFFE or U+FFFF;

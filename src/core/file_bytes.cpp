@@ -46,7 +46,8 @@ FileBytes::FileBytes(const std::filesystem::path& path) {
   const std::string name = path.string();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(SourceLocation{name}, "no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(SourceLocation{name}, "is a directory, expected a file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(SourceLocation{name}, "is a directory, expected a file");
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw InputError(SourceLocation{name}, std::string("cannot open: ") + std::strerror(errno));
   struct Closer {

@@ -65,8 +65,7 @@ std::optional<std::string> name_problem(NameKind kind, std::string_view name) {
     }
     i += decoded->length;
   }
-  if (characters > max_name_characters(kind))
-    return "is " + std::to_string(characters) + " characters long";
+  if (characters > max_name_characters(kind)) return "is " + std::to_string(characters) + " characters long";
   if (name.front() == ' ' || name.back() == ' ') return "begins or ends with a space";
   return std::nullopt;
 }

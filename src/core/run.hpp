@@ -34,7 +34,7 @@ std::optional<std::size_t> force_index(std::string_view name);
 /// of named disturbance parameters (for example current_v = 0.05 m/s).
 struct RunKey {
   std::string body;
-  std::array<double, 6> nu_b{};                 ///< u, v, w [m/s]; p, q, r [rad/s]
+  std::array<double, 6> nu_b{};                ///< u, v, w [m/s]; p, q, r [rad/s]
   std::map<std::string, double> disturbances;  ///< SI values, by name
 };
 
@@ -91,11 +91,11 @@ struct ComponentStatistics {
 
 /// How a run's forces were averaged from a force history.
 struct RunStatistics {
-  std::string abscissa;        ///< "time" [s] or "iteration"
-  std::string window_method;   ///< e.g. "MSER-5 (White 1997)", "range 601:1000", "last 100 samples"
-  double window_first = 0.0;   ///< abscissa of the first and last sample averaged
+  std::string abscissa;       ///< "time" [s] or "iteration"
+  std::string window_method;  ///< e.g. "MSER-5 (White 1997)", "range 601:1000", "last 100 samples"
+  double window_first = 0.0;  ///< abscissa of the first and last sample averaged
   double window_last = 0.0;
-  std::size_t samples = 0;     ///< samples averaged
+  std::size_t samples = 0;  ///< samples averaged
   /// Convergence flags of the run: "no-steady-window", "drifting",
   /// "too-few-effective-samples", "uneven-sampling"; empty when converged.
   std::vector<std::string> flags;
@@ -106,20 +106,20 @@ struct RunStatistics {
 struct ImportedRun {
   RunKey key;
   Fluid fluid;
-  std::array<double, 3> reference_point_b{};                ///< moment centre [m], body axes
-  std::array<std::optional<ForceComponent>, 6> tau_b;       ///< X..N; empty where the source has none
+  std::array<double, 3> reference_point_b{};           ///< moment centre [m], body axes
+  std::array<std::optional<ForceComponent>, 6> tau_b;  ///< X..N; empty where the source has none
   SignConvention sign = SignConvention::OnBody;
-  std::size_t source_line = 0;                              ///< 1-based line in the source, 0 if n/a
-  std::optional<SurfaceIntegrals> surface;                  ///< when the forces came from a surface
-  std::optional<RunStatistics> statistics;                  ///< when the forces are means over a history
+  std::size_t source_line = 0;              ///< 1-based line in the source, 0 if n/a
+  std::optional<SurfaceIntegrals> surface;  ///< when the forces came from a surface
+  std::optional<RunStatistics> statistics;  ///< when the forces are means over a history
 };
 
 /// Where a batch of runs came from.
 struct Provenance {
-  std::string path;              ///< as given by the user
-  std::string sha256;            ///< of the file's bytes, lower-case hex
+  std::string path;    ///< as given by the user
+  std::string sha256;  ///< of the file's bytes, lower-case hex
   std::uint64_t size_bytes = 0;
-  std::string importer;          ///< importer name, e.g. "force-table"
+  std::string importer;  ///< importer name, e.g. "force-table"
   std::string importer_version;
   /// The absolute path with symbolic links resolved ("" when not known).
   std::string resolved_path;

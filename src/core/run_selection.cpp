@@ -73,7 +73,8 @@ std::string RunSelection::text() const {
     out += c.name + std::string(op_text(c.op)) + shortest_number(c.value);
     if (c.op == SelectionClause::Op::Range) out += ":" + shortest_number(c.upper);
   }
-  for (const auto id : excluded_runs) out += (out.empty() ? "" : " ") + std::string("exclude-run ") + std::to_string(id);
+  for (const auto id : excluded_runs)
+    out += (out.empty() ? "" : " ") + std::string("exclude-run ") + std::to_string(id);
   return out;
 }
 
@@ -89,7 +90,8 @@ SelectionClause parse_selection_clause(std::string_view text) {
   clause.text = std::string(text);
   const auto op_at = text.find_first_of("!<>=");
   if (op_at == std::string_view::npos || op_at == 0)
-    refuse(text, "no comparison", "NAME=VALUE, NAME!=VALUE, NAME<VALUE, NAME<=VALUE, NAME>VALUE, NAME>=VALUE or NAME=LOW:HIGH");
+    refuse(text, "no comparison",
+           "NAME=VALUE, NAME!=VALUE, NAME<VALUE, NAME<=VALUE, NAME>VALUE, NAME>=VALUE or NAME=LOW:HIGH");
   std::string_view name = text.substr(0, op_at);
   while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
   while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
@@ -122,7 +124,8 @@ SelectionClause parse_selection_clause(std::string_view text) {
   while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
   const auto colon = rest.find(':');
   if (colon != std::string_view::npos) {
-    if (clause.op != Op::Equal) refuse(text, "a range after '" + std::string(op_text(clause.op)) + "'", "a range only as NAME=LOW:HIGH");
+    if (clause.op != Op::Equal)
+      refuse(text, "a range after '" + std::string(op_text(clause.op)) + "'", "a range only as NAME=LOW:HIGH");
     clause.op = Op::Range;
     clause.value = parse_value(rest.substr(0, colon), text);
     clause.upper = parse_value(rest.substr(colon + 1), text);
@@ -160,7 +163,8 @@ RunSelection parse_selection_text(std::string_view text) {
   }
   for (std::size_t i = 0; i < words.size(); ++i) {
     if (words[i] == "exclude-run") {
-      if (i + 1 == words.size()) throw InputError("selection '" + printable_text(text, 80) + "': 'exclude-run' without an id");
+      if (i + 1 == words.size())
+        throw InputError("selection '" + printable_text(text, 80) + "': 'exclude-run' without an id");
       std::int64_t id = 0;
       const auto word = words[++i];
       const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), id);

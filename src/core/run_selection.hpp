@@ -25,7 +25,7 @@ namespace hydrocoef {
 
 struct SelectionClause {
   enum class Op { Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual, Range };
-  std::string name;   ///< u..r or a disturbance parameter
+  std::string name;  ///< u..r or a disturbance parameter
   Op op = Op::Equal;
   double value = 0.0;  ///< SI; the lower end of a Range
   double upper = 0.0;  ///< the upper end of a Range

@@ -59,15 +59,15 @@ struct Prefix {
   double scale;
 };
 constexpr std::array<Prefix, 10> kPrefixes = {{{"G", 1e9},
-                                              {"M", 1e6},
-                                              {"k", 1e3},
-                                              {"h", 1e2},
-                                              {"c", 1e-2},
-                                              {"m", 1e-3},
-                                              {"u", 1e-6},
-                                              {"\xC2\xB5", 1e-6},  // micro sign
-                                              {"n", 1e-9},
-                                              {"d", 1e-1}}};
+                                               {"M", 1e6},
+                                               {"k", 1e3},
+                                               {"h", 1e2},
+                                               {"c", 1e-2},
+                                               {"m", 1e-3},
+                                               {"u", 1e-6},
+                                               {"\xC2\xB5", 1e-6},  // micro sign
+                                               {"n", 1e-9},
+                                               {"d", 1e-1}}};
 
 std::optional<Symbol> find_symbol(std::string_view name) {
   for (const auto& symbol : symbols())
@@ -168,7 +168,8 @@ Unit parse_unit(std::string_view text) {
     i = j;
   }
   for (const int e : unit.dimension.exponents)
-    if (e < -24 || e > 24) fail(body, "a base unit is raised to the power " + std::to_string(e) + "; expected a physical unit");
+    if (e < -24 || e > 24)
+      fail(body, "a base unit is raised to the power " + std::to_string(e) + "; expected a physical unit");
   if (!std::isfinite(unit.scale) || unit.scale == 0.0 || std::abs(std::log10(unit.scale)) > 60)
     fail(body, "its factor to SI is out of range; expected a physical unit");
   return unit;

@@ -13,8 +13,7 @@ std::string dof_context(std::size_t dof) { return "damping of " + std::string(kF
 
 // The source name bound to each axis of a surface: the explicit binding or
 // the axis's own name.
-std::vector<std::string> axis_bindings(const CoefficientSurface& surface, const DofDamping& damping,
-                                       std::size_t dof) {
+std::vector<std::string> axis_bindings(const CoefficientSurface& surface, const DofDamping& damping, std::size_t dof) {
   for (const auto& [axis, source] : damping.axis_sources) {
     const auto& names = surface.axis_names();
     if (std::find(names.begin(), names.end(), axis) == names.end()) {
@@ -83,9 +82,9 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
         const CoefficientSurface& surface = it->second;
         if (surface.axis_count() > kMaxAxes || surface.output_count() > kMaxOutputs)
           throw InputError(dof_context(dof) + ": surface '" + d.surface + "' has " +
-                           std::to_string(surface.axis_count()) + " axes and " + std::to_string(surface.output_count()) +
-                           " outputs; at most " + std::to_string(kMaxAxes) + " and " + std::to_string(kMaxOutputs) +
-                           " are supported for damping");
+                           std::to_string(surface.axis_count()) + " axes and " +
+                           std::to_string(surface.output_count()) + " outputs; at most " + std::to_string(kMaxAxes) +
+                           " and " + std::to_string(kMaxOutputs) + " are supported for damping");
         try {
           (void)surface.output_index(d.output);
         } catch (const InputError& e) {

@@ -103,7 +103,7 @@ class DampingModel {
     std::string key;  // surface name + bindings: DOFs with equal keys share the lookup
     std::size_t axis_count = 0;
     std::array<std::size_t, kMaxAxes> source{};  // 0..5: nu_r component; 6 + k: disturbance k
-    std::size_t used = 0;                          // outputs read
+    std::size_t used = 0;                        // outputs read
     std::array<std::size_t, 6> output{};
     std::array<std::size_t, 6> dof{};
     std::array<double, 6> sign{};

@@ -16,9 +16,9 @@
 namespace hydrocoef {
 
 struct EquilibriumInputs {
-  Vector6 tau_b = Vector6::Zero();      ///< constant force on the body [N, N m]
-  Vector3 current_n = Vector3::Zero();  ///< [m/s] NED
-  std::vector<double> disturbances;     ///< model's disturbance order; empty = all 0
+  Vector6 tau_b = Vector6::Zero();                     ///< constant force on the body [N, N m]
+  Vector3 current_n = Vector3::Zero();                 ///< [m/s] NED
+  std::vector<double> disturbances;                    ///< model's disturbance order; empty = all 0
   Quaternion4 q_nb = Quaternion4(1.0, 0.0, 0.0, 0.0);  ///< attitude held
   Vector6 initial_guess_b = Vector6::Zero();
   /// The solve counts as converged when every residual component is at most this [N, N m].

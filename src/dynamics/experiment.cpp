@@ -48,10 +48,10 @@ MeasuredTrajectory parse_measured_trajectory(std::string_view text, const std::s
   m.file = file;
   const auto lines = split_lines(text);
   std::size_t header_line = 0;
-  while (header_line < lines.size() &&
-         (lines[header_line].text.empty() || lines[header_line].text.front() == '#'))
+  while (header_line < lines.size() && (lines[header_line].text.empty() || lines[header_line].text.front() == '#'))
     ++header_line;
-  if (header_line == lines.size()) throw InputError(SourceLocation{file}, "found no header line, expected t and velocity columns");
+  if (header_line == lines.size())
+    throw InputError(SourceLocation{file}, "found no header line, expected t and velocity columns");
   const TextLine& header = lines[header_line];
   const char delimiter = detect_delimiter(header.text);
   const auto fields = split_fields(header, delimiter, file);
@@ -102,8 +102,9 @@ MeasuredTrajectory parse_measured_trajectory(std::string_view text, const std::s
     const auto row = split_fields(line, delimiter, file);
     auto field = [&](std::size_t c, std::string_view name) -> double {
       if (c >= row.size())
-        throw InputError(SourceLocation{file, line.number, 0},
-                         "found " + std::to_string(row.size()) + " fields, expected a value for '" + std::string(name) + "'");
+        throw InputError(
+            SourceLocation{file, line.number, 0},
+            "found " + std::to_string(row.size()) + " fields, expected a value for '" + std::string(name) + "'");
       return parse_number(row[c], file, line.number, name);
     };
     const double t = field(*time_column, "t") * time_scale;
@@ -114,7 +115,8 @@ MeasuredTrajectory parse_measured_trajectory(std::string_view text, const std::s
     for (std::size_t k = 0; k < 6; ++k)
       if (columns[k]) m.nu_b[k].push_back(field(*columns[k], kVelocityNames[k]) * scales[k]);
   }
-  if (m.t_s.size() < 2) throw InputError(SourceLocation{file}, "found " + std::to_string(m.t_s.size()) + " rows, expected at least 2");
+  if (m.t_s.size() < 2)
+    throw InputError(SourceLocation{file}, "found " + std::to_string(m.t_s.size()) + " rows, expected at least 2");
   return m;
 }
 

@@ -41,9 +41,9 @@ struct ComparisonOptions {
 
 /// Measured minus simulated, for one velocity component [m/s or rad/s].
 struct ComponentComparison {
-  std::string component;      ///< "u" .. "r"
-  std::size_t samples = 0;    ///< measured rows inside the simulated time span
-  double rms_error = 0.0;     ///< sqrt(mean((measured - simulated)^2)), simulation interpolated linearly
+  std::string component;    ///< "u" .. "r"
+  std::size_t samples = 0;  ///< measured rows inside the simulated time span
+  double rms_error = 0.0;   ///< sqrt(mean((measured - simulated)^2)), simulation interpolated linearly
   double steady_measured = 0.0;
   double steady_simulated = 0.0;
   double steady_error = 0.0;  ///< steady_measured - steady_simulated

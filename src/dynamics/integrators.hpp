@@ -44,9 +44,9 @@ struct AdaptiveOptions {
   /// A step is accepted when the estimated local error e_i satisfies
   /// sqrt(mean_i (e_i / (atol + rtol max(|x_i|, |x_new_i|)))^2) <= 1.
   double relative_tolerance = 1e-8;
-  double absolute_tolerance = 1e-10;  ///< in each state component's unit
+  double absolute_tolerance = 1e-10;                          ///< in each state component's unit
   double max_step = std::numeric_limits<double>::infinity();  ///< [time unit]
-  double min_step = 1e-12;            ///< below this the integration gives up (InputError)
+  double min_step = 1e-12;                                    ///< below this the integration gives up (InputError)
   std::size_t max_steps = 100'000'000;
 };
 

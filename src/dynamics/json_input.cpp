@@ -67,7 +67,8 @@ void fail(const std::string& file, const std::string& path, const std::string& m
 
 void expect_object(const Json& value, const std::string& file, const std::string& path,
                    std::initializer_list<std::string_view> allowed) {
-  if (!value.is_object()) fail(file, path.empty() ? "(top level)" : path, "found " + describe(value) + ", expected an object");
+  if (!value.is_object())
+    fail(file, path.empty() ? "(top level)" : path, "found " + describe(value) + ", expected an object");
   for (const auto& item : value.items()) {
     bool known = false;
     for (const auto& a : allowed) known = known || item.key() == a;
@@ -100,7 +101,8 @@ double number(const Json& value, const std::string& file, const std::string& pat
 double positive(const Json& value, const std::string& file, const std::string& path, bool allow_zero) {
   const double x = number(value, file, path);
   if (allow_zero ? x < 0.0 : x <= 0.0)
-    fail(file, path, "found " + value.dump() + ", expected a " + (allow_zero ? "non-negative" : "positive") + " number");
+    fail(file, path,
+         "found " + value.dump() + ", expected a " + (allow_zero ? "non-negative" : "positive") + " number");
   return x;
 }
 
@@ -119,7 +121,8 @@ std::vector<double> numbers(const Json& value, const std::string& file, const st
     fail(file, path,
          "found " + describe(value) + ", expected an array of " + (n ? std::to_string(n) + " numbers" : "numbers"));
   std::vector<double> out;
-  for (std::size_t i = 0; i < value.size(); ++i) out.push_back(number(value[i], file, path + "[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < value.size(); ++i)
+    out.push_back(number(value[i], file, path + "[" + std::to_string(i) + "]"));
   return out;
 }
 
@@ -131,7 +134,8 @@ Eigen::Vector3d vector3(const Json& value, const std::string& file, const std::s
 Eigen::MatrixXd matrix(const Json& value, const std::string& file, const std::string& path, Eigen::Index n) {
   const auto size = static_cast<std::size_t>(n);
   if (!value.is_array() || value.size() != size)
-    fail(file, path, "found " + describe(value) + ", expected " + std::to_string(n) + " rows of " + std::to_string(n) + " numbers");
+    fail(file, path,
+         "found " + describe(value) + ", expected " + std::to_string(n) + " rows of " + std::to_string(n) + " numbers");
   Eigen::MatrixXd m(n, n);
   for (std::size_t i = 0; i < size; ++i) {
     const auto row = numbers(value[i], file, path + "[" + std::to_string(i) + "]", size);

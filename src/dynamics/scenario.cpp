@@ -3,8 +3,8 @@
 #include <numbers>
 
 #include "src/core/error.hpp"
-#include "src/dynamics/json_input.hpp"
 #include "src/core/run.hpp"
+#include "src/dynamics/json_input.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -52,14 +52,18 @@ ScenarioSegment read_segment(const Json& value, const std::string& file, const s
       for (const auto& item : thrusters->items())
         s.thrust_by_name_N[item.key()] = ji::number(item.value(), file, ji::join(t_path, item.key()));
     } else {
-      ji::fail(file, t_path, "found " + ji::describe(*thrusters) + ", expected an array of thrusts [N] or an object by thruster name");
+      ji::fail(
+          file, t_path,
+          "found " + ji::describe(*thrusters) + ", expected an array of thrusts [N] or an object by thruster name");
     }
   }
-  if (const Json* current = ji::find(value, "current")) s.current_n = ji::vector3(*current, file, ji::join(path, "current"));
+  if (const Json* current = ji::find(value, "current"))
+    s.current_n = ji::vector3(*current, file, ji::join(path, "current"));
   if (const Json* d = ji::find(value, "disturbances")) {
     const std::string d_path = ji::join(path, "disturbances");
     if (!d->is_object()) ji::fail(file, d_path, "found " + ji::describe(*d) + ", expected an object {name: value}");
-    for (const auto& item : d->items()) s.disturbances[item.key()] = ji::number(item.value(), file, ji::join(d_path, item.key()));
+    for (const auto& item : d->items())
+      s.disturbances[item.key()] = ji::number(item.value(), file, ji::join(d_path, item.key()));
   }
   return s;
 }
@@ -79,7 +83,8 @@ Scenario parse_scenario(std::string_view json_text, const std::string& file) {
 
   if (const Json* initial = ji::find(doc, "initial")) {
     ji::expect_object(*initial, file, "initial", {"position", "euler_deg", "euler_rad", "velocity"});
-    if (const Json* p = ji::find(*initial, "position")) s.initial_position_n = ji::vector3(*p, file, "initial.position");
+    if (const Json* p = ji::find(*initial, "position"))
+      s.initial_position_n = ji::vector3(*p, file, "initial.position");
     const Json* deg = ji::find(*initial, "euler_deg");
     const Json* rad = ji::find(*initial, "euler_rad");
     if (deg && rad) ji::fail(file, "initial.euler_deg", "expected one of euler_deg and euler_rad, not both");
@@ -101,10 +106,12 @@ Scenario parse_scenario(std::string_view json_text, const std::string& file) {
     if (i == 0 && start != 0.0)
       ji::fail(file, path + ".start", "found " + std::to_string(start) + ", expected the first segment to start at 0");
     if (i > 0 && !(start > s.segments[i - 1].start_s))
-      ji::fail(file, path + ".start", "found " + std::to_string(start) + ", expected a start after the previous segment's");
+      ji::fail(file, path + ".start",
+               "found " + std::to_string(start) + ", expected a start after the previous segment's");
     if (start >= s.duration_s && i > 0)
-      ji::fail(file, path + ".start", "found " + std::to_string(start) + ", expected a start before the duration " +
-                                          std::to_string(s.duration_s) + " s");
+      ji::fail(file, path + ".start",
+               "found " + std::to_string(start) + ", expected a start before the duration " +
+                   std::to_string(s.duration_s) + " s");
   }
   return s;
 }

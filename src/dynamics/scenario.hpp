@@ -39,10 +39,10 @@ namespace hydrocoef {
 
 struct ScenarioSegment {
   double start_s = 0.0;
-  Vector6 tau_b = Vector6::Zero();  ///< commanded generalized force on the body [N, N m]
+  Vector6 tau_b = Vector6::Zero();                 ///< commanded generalized force on the body [N, N m]
   std::vector<double> thrust_N;                    ///< thrust per thruster in vehicle order [N] (an array)
   std::map<std::string, double> thrust_by_name_N;  ///< thrust by thruster name [N] (an object)
-  Vector3 current_n = Vector3::Zero();  ///< [m/s]
+  Vector3 current_n = Vector3::Zero();             ///< [m/s]
   std::map<std::string, double> disturbances;
 };
 

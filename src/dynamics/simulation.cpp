@@ -33,8 +33,10 @@ std::vector<Event> event_times(const Scenario& scenario) {
   const double rate = scenario.output_rate_Hz;
   const auto outputs = static_cast<std::size_t>(std::floor(duration * rate * (1.0 + 1e-12)));
   for (std::size_t k = 1; k <= outputs; ++k) events.push_back({static_cast<double>(k) / rate, true, 0});
-  if (events.empty() || events.back().t < duration * (1.0 - 1e-12)) events.push_back({duration, true, 0});
-  else events.back().t = std::min(events.back().t, duration);
+  if (events.empty() || events.back().t < duration * (1.0 - 1e-12))
+    events.push_back({duration, true, 0});
+  else
+    events.back().t = std::min(events.back().t, duration);
   for (std::size_t i = 1; i < scenario.segments.size(); ++i) {
     const double start = scenario.segments[i].start_s;
     auto it = std::lower_bound(events.begin(), events.end(), start, [](const Event& e, double t) { return e.t < t; });
@@ -114,7 +116,8 @@ void check_limits(const Scenario& scenario) {
   if (!(samples <= kMaxOutputSamples))
     fail(scenario, "output_rate",
          "duration " + std::to_string(scenario.duration_s) + " s at " + std::to_string(scenario.output_rate_Hz) +
-             " Hz is " + std::to_string(samples) + " output samples; expected at most 1e7 (a lower output_rate or "
+             " Hz is " + std::to_string(samples) +
+             " output samples; expected at most 1e7 (a lower output_rate or "
              "a shorter duration)");
   const IntegratorSettings& settings = scenario.integrator;
   if (settings.method == IntegratorSettings::Method::Rk4) {
@@ -143,7 +146,8 @@ std::optional<std::size_t> non_finite(const StateVector& x) {
 
 SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress) {
   if (scenario.segments.empty() || !(scenario.duration_s > 0.0) || !(scenario.output_rate_Hz > 0.0))
-    throw InputError(SourceLocation{scenario.file}, "a scenario needs a positive duration and output rate and a segment");
+    throw InputError(SourceLocation{scenario.file},
+                     "a scenario needs a positive duration and output rate and a segment");
   check_limits(scenario);
   SimulationResult result;
   // Every segment's inputs are checked before the first step.
@@ -151,8 +155,8 @@ SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, c
   for (std::size_t i = 0; i < scenario.segments.size(); ++i)
     segments.push_back(segment_inputs(model, scenario, i, &result.notes));
 
-  StateVector x = make_state(scenario.initial_position_n, quaternion_from_euler(scenario.initial_euler_rad),
-                             scenario.initial_nu_b);
+  StateVector x =
+      make_state(scenario.initial_position_n, quaternion_from_euler(scenario.initial_euler_rad), scenario.initial_nu_b);
   std::size_t active = 0;
   ModelInputs inputs;
   auto activate = [&](std::size_t segment) {
@@ -205,9 +209,11 @@ SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, c
     // stops the run where it happened, never a trajectory of NaN.
     if (const auto bad = non_finite(x))
       throw InputError(SourceLocation{scenario.file},
-                       "the state left the finite numbers (entry " + std::to_string(*bad) + " of position, attitude "
-                       "and velocity) between t = " + std::to_string(t) + " s and " + std::to_string(event.t) +
-                       " s; expected forces, velocities and currents the vehicle model can integrate");
+                       "the state left the finite numbers (entry " + std::to_string(*bad) +
+                           " of position, attitude "
+                           "and velocity) between t = " +
+                           std::to_string(t) + " s and " + std::to_string(event.t) +
+                           " s; expected forces, velocities and currents the vehicle model can integrate");
     t = event.t;
     if (event.segment != 0) {
       activate(event.segment);

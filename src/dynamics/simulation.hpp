@@ -49,7 +49,6 @@ using SimulationProgress = std::function<void(double t_s, double duration_s)>;
 /// Simulates the scenario. Throws InputError for inputs the vehicle cannot
 /// take (see segment_inputs), a surface queried outside its range under
 /// policy "error", or an adaptive step-size underflow.
-SimulationResult simulate(const VehicleModel& model, const Scenario& scenario,
-                          const SimulationProgress& progress = {});
+SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress = {});
 
 }  // namespace hydrocoef

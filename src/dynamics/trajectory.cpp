@@ -34,9 +34,10 @@ TrajectorySample make_sample(const VehicleModel& model, double t_s, const StateV
 }
 
 std::string trajectory_csv_header() {
-  std::string h = "t [s],x_n [m],y_n [m],z_n [m],phi [rad],theta [rad],psi [rad],q_eta,q_eps1,q_eps2,q_eps3,"
-                  "u [m s^-1],v [m s^-1],w [m s^-1],p [rad s^-1],q [rad s^-1],r [rad s^-1],"
-                  "u_r [m s^-1],v_r [m s^-1],w_r [m s^-1],p_r [rad s^-1],q_r [rad s^-1],r_r [rad s^-1]";
+  std::string h =
+      "t [s],x_n [m],y_n [m],z_n [m],phi [rad],theta [rad],psi [rad],q_eta,q_eps1,q_eps2,q_eps3,"
+      "u [m s^-1],v [m s^-1],w [m s^-1],p [rad s^-1],q [rad s^-1],r [rad s^-1],"
+      "u_r [m s^-1],v_r [m s^-1],w_r [m s^-1],p_r [rad s^-1],q_r [rad s^-1],r_r [rad s^-1]";
   for (const char* term : {"control", "damping", "hydrostatic", "coriolis"}) {
     for (const char* f : {"X", "Y", "Z"}) h += std::string(",") + f + "_" + term + " [N]";
     for (const char* m : {"K", "M", "N"}) h += std::string(",") + m + "_" + term + " [N m]";

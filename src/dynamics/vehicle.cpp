@@ -14,7 +14,8 @@ using ji::Json;
 
 std::string notes_text(const Json& value, const std::string& file) {
   if (value.is_string()) return value.get<std::string>();
-  if (!value.is_array()) ji::fail(file, "notes", "found " + ji::describe(value) + ", expected a string or an array of strings");
+  if (!value.is_array())
+    ji::fail(file, "notes", "found " + ji::describe(value) + ", expected a string or an array of strings");
   std::string out;
   for (std::size_t i = 0; i < value.size(); ++i)
     out += (out.empty() ? "" : "\n") + ji::string(value[i], file, "notes[" + std::to_string(i) + "]");
@@ -75,8 +76,9 @@ Thruster read_thruster(const Json& value, const std::string& file, std::size_t i
   t.min_thrust_N = ji::number(ji::require(value, file, path, "min_thrust"), file, ji::join(path, "min_thrust"));
   t.max_thrust_N = ji::number(ji::require(value, file, path, "max_thrust"), file, ji::join(path, "max_thrust"));
   if (t.min_thrust_N > t.max_thrust_N)
-    ji::fail(file, path, "found min_thrust " + std::to_string(t.min_thrust_N) + " > max_thrust " +
-                             std::to_string(t.max_thrust_N) + ", expected min_thrust <= max_thrust");
+    ji::fail(file, path,
+             "found min_thrust " + std::to_string(t.min_thrust_N) + " > max_thrust " + std::to_string(t.max_thrust_N) +
+                 ", expected min_thrust <= max_thrust");
   return t;
 }
 
@@ -92,14 +94,15 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
   d.sign = read_sign(value, file, path);
   const Json* law = ji::find(value, "law");
   const Json* surface = ji::find(value, "surface");
-  if ((law != nullptr) == (surface != nullptr))
-    ji::fail(file, path, "expected exactly one of \"law\" and \"surface\"");
+  if ((law != nullptr) == (surface != nullptr)) ji::fail(file, path, "expected exactly one of \"law\" and \"surface\"");
   if (law) {
     if (ji::find(value, "output") || ji::find(value, "axes"))
       ji::fail(file, path, "\"output\" and \"axes\" belong to a surface, not to a law");
     const std::string law_path = ji::join(path, "law");
     if (!law->is_object() || law->empty())
-      ji::fail(file, law_path, "found " + ji::describe(*law) + ", expected an object of terms and coefficients, e.g. {\"u\": -0.0155, \"u|u|\": -11.04}");
+      ji::fail(file, law_path,
+               "found " + ji::describe(*law) +
+                   ", expected an object of terms and coefficients, e.g. {\"u\": -0.0155, \"u|u|\": -11.04}");
     std::string terms;
     for (const auto& item : law->items()) terms += (terms.empty() ? "" : ",") + item.key();
     try {
@@ -108,7 +111,8 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
       ji::fail(file, law_path, e.what());
     }
     // parse_damping_terms keeps the order of the text, i.e. the object's key order.
-    for (const auto& item : law->items()) d.coefficients.push_back(ji::number(item.value(), file, ji::join(law_path, item.key())));
+    for (const auto& item : law->items())
+      d.coefficients.push_back(ji::number(item.value(), file, ji::join(law_path, item.key())));
     d.kind = DofDamping::Kind::Law;
     return d;
   }
@@ -116,7 +120,9 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
   d.surface = ji::string(*surface, file, ji::join(path, "surface"));
   d.output = ji::string(ji::require(value, file, path, "output"), file, ji::join(path, "output"));
   if (const Json* axes = ji::find(value, "axes")) {
-    if (!axes->is_object()) ji::fail(file, ji::join(path, "axes"), "found " + ji::describe(*axes) + ", expected an object {surface axis: source}");
+    if (!axes->is_object())
+      ji::fail(file, ji::join(path, "axes"),
+               "found " + ji::describe(*axes) + ", expected an object {surface axis: source}");
     for (const auto& item : axes->items())
       d.axis_sources[item.key()] = ji::string(item.value(), file, ji::join(ji::join(path, "axes"), item.key()));
   }
@@ -127,10 +133,10 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
 
 VehicleDescription parse_vehicle(std::string_view json_text, const std::string& file) {
   const Json doc = ji::parse(json_text, file);
-  ji::expect_object(doc, file, "",
-                    {"name", "notes", "sources", "gravity", "rho", "mass", "inertia", "center_of_gravity",
-                     "center_of_buoyancy", "buoyancy_force", "displaced_volume", "neutrally_buoyant", "added_mass",
-                     "thrusters", "damping"});
+  ji::expect_object(
+      doc, file, "",
+      {"name", "notes", "sources", "gravity", "rho", "mass", "inertia", "center_of_gravity", "center_of_buoyancy",
+       "buoyancy_force", "displaced_volume", "neutrally_buoyant", "added_mass", "thrusters", "damping"});
   VehicleDescription v;
   v.file = file;
   if (const Json* name = ji::find(doc, "name")) v.name = ji::string(*name, file, "name");
@@ -146,7 +152,8 @@ VehicleDescription parse_vehicle(std::string_view json_text, const std::string& 
   const Json* volume = ji::find(doc, "displaced_volume");
   const Json* neutral = ji::find(doc, "neutrally_buoyant");
   if ((force != nullptr) + (volume != nullptr) + (neutral != nullptr) != 1)
-    ji::fail(file, "buoyancy_force", "expected exactly one of buoyancy_force [N], displaced_volume [m^3], neutrally_buoyant");
+    ji::fail(file, "buoyancy_force",
+             "expected exactly one of buoyancy_force [N], displaced_volume [m^3], neutrally_buoyant");
   if (force) v.buoyancy_N = ji::positive(*force, file, "buoyancy_force", true);
   if (volume) v.buoyancy_N = v.rho_kg_m3 * v.gravity_m_s2 * ji::positive(*volume, file, "displaced_volume", true);
   if (neutral) {
@@ -163,12 +170,14 @@ VehicleDescription parse_vehicle(std::string_view json_text, const std::string& 
                  ", expected it symmetric positive definite");
 
   if (const Json* thrusters = ji::find(doc, "thrusters")) {
-    if (!thrusters->is_array()) ji::fail(file, "thrusters", "found " + ji::describe(*thrusters) + ", expected an array");
+    if (!thrusters->is_array())
+      ji::fail(file, "thrusters", "found " + ji::describe(*thrusters) + ", expected an array");
     for (std::size_t i = 0; i < thrusters->size(); ++i) {
       v.thrusters.push_back(read_thruster((*thrusters)[i], file, i));
       for (std::size_t j = 0; j < i; ++j)
         if (v.thrusters[j].name == v.thrusters[i].name)
-          ji::fail(file, "thrusters[" + std::to_string(i) + "].name", "found \"" + v.thrusters[i].name + "\" twice, expected unique names");
+          ji::fail(file, "thrusters[" + std::to_string(i) + "].name",
+                   "found \"" + v.thrusters[i].name + "\" twice, expected unique names");
     }
   }
 

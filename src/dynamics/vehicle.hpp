@@ -44,10 +44,10 @@ namespace hydrocoef {
 
 struct Thruster {
   std::string name;
-  Vector3 position_b = Vector3::Zero();     ///< point of action from CO [m]
-  Vector3 direction_b = Vector3::UnitX();   ///< unit vector of positive thrust
-  double min_thrust_N = 0.0;                ///< most negative thrust [N]
-  double max_thrust_N = 0.0;                ///< most positive thrust [N]
+  Vector3 position_b = Vector3::Zero();    ///< point of action from CO [m]
+  Vector3 direction_b = Vector3::UnitX();  ///< unit vector of positive thrust
+  double min_thrust_N = 0.0;               ///< most negative thrust [N]
+  double max_thrust_N = 0.0;               ///< most positive thrust [N]
 };
 
 struct VehicleDescription {

@@ -53,7 +53,8 @@ Vector6 VehicleModel::thrust_force(std::span<const double> thrust_N) const {
     throw InputError("found " + std::to_string(thrust_N.size()) + " thrust values, expected one per thruster (" +
                      std::to_string(description_.thrusters.size()) + ")");
   Vector6 tau = Vector6::Zero();
-  for (std::size_t i = 0; i < thrust_N.size(); ++i) tau += thrust_N[i] * thrust_allocation_.col(static_cast<Eigen::Index>(i));
+  for (std::size_t i = 0; i < thrust_N.size(); ++i)
+    tau += thrust_N[i] * thrust_allocation_.col(static_cast<Eigen::Index>(i));
   return tau;
 }
 

@@ -65,7 +65,8 @@ ExportMetadata metadata_from_record(const SurfaceRecord& record, const Coefficie
   return metadata;
 }
 
-std::vector<std::vector<double>> grid_node_coordinates(const GridTable& table, const std::vector<std::size_t>& indices) {
+std::vector<std::vector<double>> grid_node_coordinates(const GridTable& table,
+                                                       const std::vector<std::size_t>& indices) {
   std::vector<std::vector<double>> out;
   for (const std::size_t index : indices) {
     if (index >= table.node_count())
@@ -127,15 +128,9 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
   check_metadata(table, metadata);
   // Every format's text is made (and every refusal thrown) before a byte is written.
   switch (format) {
-    case ExportFormat::Csv:
-      write_file_atomically(path, csv_long_text(table, metadata));
-      return {path};
-    case ExportFormat::CsvWide:
-      write_file_atomically(path, csv_wide_text(table, metadata));
-      return {path};
-    case ExportFormat::Json:
-      write_file_atomically(path, json_text(table, metadata));
-      return {path};
+    case ExportFormat::Csv: write_file_atomically(path, csv_long_text(table, metadata)); return {path};
+    case ExportFormat::CsvWide: write_file_atomically(path, csv_wide_text(table, metadata)); return {path};
+    case ExportFormat::Json: write_file_atomically(path, json_text(table, metadata)); return {path};
     case ExportFormat::CHeader: {
       CHeaderOptions c_options;
       c_options.single_precision = options.single_precision;
@@ -143,21 +138,17 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
       write_file_atomically(path, c_header_text(table, metadata, c_options));
       return {path};
     }
-    case ExportFormat::Mat:
-      return write_mat(table, metadata, path);
-    case ExportFormat::Jsbsim:
-      write_file_atomically(path, jsbsim_text(table, metadata));
-      return {path};
-    case ExportFormat::Vtk:
-      write_vtk(table, metadata, path);
-      return {path};
+    case ExportFormat::Mat: return write_mat(table, metadata, path);
+    case ExportFormat::Jsbsim: write_file_atomically(path, jsbsim_text(table, metadata)); return {path};
+    case ExportFormat::Vtk: write_vtk(table, metadata, path); return {path};
   }
   return {};
 }
 
 std::string provenance_line(const ExportMetadata& metadata) {
   std::string runs;
-  for (std::size_t i = 0; i < metadata.run_ids.size(); ++i) runs += (i ? "," : "") + std::to_string(metadata.run_ids[i]);
+  for (std::size_t i = 0; i < metadata.run_ids.size(); ++i)
+    runs += (i ? "," : "") + std::to_string(metadata.run_ids[i]);
   return "surface '" + metadata.surface_name + "'" + (metadata.body.empty() ? "" : " of body '" + metadata.body + "'") +
          "; runs [" + runs + "]; content sha256 " + metadata.content_sha256 +
          (metadata.created_at.empty() ? "" : "; built " + metadata.created_at) +

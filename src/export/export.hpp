@@ -38,9 +38,9 @@ struct ExportMetadata {
   /// SHA-256 (lower-case hex) of the stored definition JSON followed by the
   /// data doubles' bytes; see content_sha256.
   std::string content_sha256;
-  std::string created_at;      ///< when the surface was built (UTC ISO 8601)
-  std::string quality_json;    ///< leave-one-out statistics as stored ("" if none)
-  bool stale = false;          ///< forces changed since the surface was built
+  std::string created_at;    ///< when the surface was built (UTC ISO 8601)
+  std::string quality_json;  ///< leave-one-out statistics as stored ("" if none)
+  bool stale = false;        ///< forces changed since the surface was built
   /// Grid nodes of a resampled RBF surface that are far from every run (the
   /// quality's far_from_data), as axis coordinates: extrapolation, not data.
   std::vector<std::vector<double>> far_from_data;

@@ -11,10 +11,10 @@
 
 #include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/core/version.hpp"
-#include "src/core/escape.hpp"
 #include "src/export/export.hpp"
 
 namespace hydrocoef {
@@ -116,8 +116,8 @@ std::string check_added_mass(const Matrix6& added_mass) {
       const double b = added_mass(j, i);
       if (std::abs(a - b) > 1e-9 * largest) {
         throw InputError("added-mass matrix is not symmetric: entry (" + std::to_string(i + 1) + "," +
-                         std::to_string(j + 1) + ") = " + shortest_number(a) + " but (" + std::to_string(j + 1) +
-                         "," + std::to_string(i + 1) + ") = " + shortest_number(b) + " " + added_mass_unit(i, j) +
+                         std::to_string(j + 1) + ") = " + shortest_number(a) + " but (" + std::to_string(j + 1) + "," +
+                         std::to_string(i + 1) + ") = " + shortest_number(b) + " " + added_mass_unit(i, j) +
                          "; expected a symmetric matrix (to 1e-9 relative)");
       }
     }
@@ -219,17 +219,20 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
                        std::string(kForceNames[dof]) + " in " + std::string(kVelocityNames[dof]) + " (" + names +
                        "); expected one: choose with --fit " + std::string(kForceNames[dof]) + "=NAME");
     }
-    if (candidates.size() == 1) chosen.emplace(std::pair{dof, dof}, candidates.front());
-    else out.missing_dofs.push_back(dof);
+    if (candidates.size() == 1)
+      chosen.emplace(std::pair{dof, dof}, candidates.front());
+    else
+      out.missing_dofs.push_back(dof);
   }
   if (!out.missing_dofs.empty() && !request.allow_missing) {
     std::string missing;
     for (std::size_t dof : out.missing_dofs)
-      missing += (missing.empty() ? "" : ", ") + std::string(kForceNames[dof]) + " in " +
-                 std::string(kVelocityNames[dof]);
+      missing +=
+          (missing.empty() ? "" : ", ") + std::string(kForceNames[dof]) + " in " + std::string(kVelocityNames[dof]);
     throw InputError("body '" + request.body + "' has no damping law of " + missing +
                      "; expected a fit of each force component in its own velocity (hydrocoef fit --body " +
-                     request.body + " --dof DOF --terms x,x|x|), --fit DOF=NAME, or --allow-missing to write 0 for "
+                     request.body +
+                     " --dof DOF --terms x,x|x|), --fit DOF=NAME, or --allow-missing to write 0 for "
                      "those");
   }
 
@@ -292,8 +295,9 @@ GazeboCoefficients gazebo_coefficients(const std::vector<FitRecord>& fits, const
                                "' is positive (linear " + shortest_number(linear) + ", quadratic " +
                                shortest_number(quadratic) + "): it pushes the body along its motion";
       if (!request.allow_unphysical)
-        throw InputError(what + "; expected damping that takes energy out of the motion (check the fit's sign "
-                                "convention or fit again; --allow-unphysical writes it anyway)");
+        throw InputError(what +
+                         "; expected damping that takes energy out of the motion (check the fit's sign "
+                         "convention or fit again; --allow-unphysical writes it anyway)");
       out.notes.push_back(what + " (written on request: allow-unphysical)");
     }
     out.sources.push_back(std::move(source));
@@ -341,8 +345,9 @@ std::vector<GazeboElement> gazebo_elements(const GazeboCoefficients& c, const Ga
     if (coupled_linear) {
       const std::array<double, 36> linear_b = row_major(c.linear_b);
       linear.values.assign(linear_b.begin(), linear_b.end());
-      linear.unit = "on-body, 6x6 row-major (cross-coupling laws present), rows X..N, columns u..r; N/(m/s), "
-                    "N/(rad/s), N m/(m/s), N m/(rad/s)";
+      linear.unit =
+          "on-body, 6x6 row-major (cross-coupling laws present), rows X..N, columns u..r; N/(m/s), "
+          "N/(rad/s), N m/(m/s), N m/(rad/s)";
     } else {
       for (std::size_t i = 0; i < 6; ++i) linear.values.push_back(c.linear_b(i, i));
       linear.unit = "on-body diagonal Xu Yv Zw Kp Mq Nr; N/(m/s) x3, N m/(rad/s) x3";
@@ -350,14 +355,16 @@ std::vector<GazeboElement> gazebo_elements(const GazeboCoefficients& c, const Ga
     out.push_back(std::move(linear));
     out.push_back({"linear_damping_forward_speed", std::vector<double>(6, 0.0),
                    "0: hydrocoef's laws are of one velocity component, so none is proportional to u nu_j"});
-    GazeboElement quadratic{"quadratic_damping", {}, "on-body diagonal Xu|u| Yv|v| Zw|w| Kp|p| Mq|q| Nr|r|; "
-                                                     "N/(m/s)^2 x3, N m/(rad/s)^2 x3"};
+    GazeboElement quadratic{"quadratic_damping",
+                            {},
+                            "on-body diagonal Xu|u| Yv|v| Zw|w| Kp|p| Mq|q| Nr|r|; "
+                            "N/(m/s)^2 x3, N m/(rad/s)^2 x3"};
     for (std::size_t i = 0; i < 6; ++i) quadratic.values.push_back(c.quadratic_b(i, i));
     out.push_back(std::move(quadratic));
     return out;
   }
-  const std::array<double, 6> t = options.link_axes == GazeboLinkAxes::Flu ? kFrdToFlu
-                                                                            : std::array<double, 6>{1, 1, 1, 1, 1, 1};
+  const std::array<double, 6> t =
+      options.link_axes == GazeboLinkAxes::Flu ? kFrdToFlu : std::array<double, 6>{1, 1, 1, 1, 1, 1};
   const auto name = [](std::size_t i, std::size_t j, const std::string& middle, bool abs) {
     std::string text{kGzForce[i]};
     text += middle;
@@ -398,13 +405,16 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
                   (uuv ? "uuv_simulator 'fossen' hydrodynamic model" : "gz-sim Hydrodynamics system parameters") +
                   " of body '" + c.body + "', from damping-law fits");
   if (uuv) {
-    text += comment("Paste the <hydrodynamic_model> element inside the <link name=...> element of the "
-                    "uuv_underwater_object plugin, beside <volume> and <center_of_buoyancy>.");
-    text += comment("Frame: body axes x forward, y starboard, z down (FRD, the NED convention); the plugin turns the "
-                    "link's FLU velocities into FRD itself, so nothing is converted here.");
-    text += comment("Sign convention: on-body (SNAME), damping is negative. The plugin's damping force is "
-                    "linear_damping nu + u linear_damping_forward_speed nu + diag(quadratic_damping) |nu| nu; "
-                    "added_mass is the positive Ma.");
+    text += comment(
+        "Paste the <hydrodynamic_model> element inside the <link name=...> element of the "
+        "uuv_underwater_object plugin, beside <volume> and <center_of_buoyancy>.");
+    text += comment(
+        "Frame: body axes x forward, y starboard, z down (FRD, the NED convention); the plugin turns the "
+        "link's FLU velocities into FRD itself, so nothing is converted here.");
+    text += comment(
+        "Sign convention: on-body (SNAME), damping is negative. The plugin's damping force is "
+        "linear_damping nu + u linear_damping_forward_speed nu + diag(quadratic_damping) |nu| nu; "
+        "added_mass is the positive Ma.");
   } else {
     text += comment("Frame: the parameters are in the link's axes, " +
                     std::string(flu ? "FLU (x forward, y left, z up): hydrocoef's FRD body-axis matrices M were "
@@ -412,10 +422,11 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
                                       "unchanged and couplings between (y, z, q, r) and (x, p) change sign."
                                     : "FRD (x forward, y starboard, z down), as hydrocoef's body axes: nothing "
                                       "converted."));
-    text += comment("Sign convention: SNAME derivatives on the body. xU, xUabsU...: force = xU u + xUabsU |u| u, "
-                    "negative for damping; xDotU... = -Ma (negative). Every diagonal term is written (older gz-sim "
-                    "defaults are not 0); couplings only where non-zero. gz-sim uses only Ma's diagonal in its "
-                    "Coriolis term.");
+    text += comment(
+        "Sign convention: SNAME derivatives on the body. xU, xUabsU...: force = xU u + xUabsU |u| u, "
+        "negative for damping; xDotU... = -Ma (negative). Every diagonal term is written (older gz-sim "
+        "defaults are not 0); couplings only where non-zero. gz-sim uses only Ma's diagonal in its "
+        "Coriolis term.");
   }
   text += comment("Units: SI; each element's unit is in the comment beside it.");
   for (const GazeboFitSource& s : c.sources) {
@@ -436,9 +447,10 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
   if (!uuv) {
     // Gazebo Ionic moved added mass into the link's inertial; offer the same numbers there.
     const std::array<double, 6> t = flu ? kFrdToFlu : std::array<double, 6>{1, 1, 1, 1, 1, 1};
-    std::string block = "Gazebo Ionic and later deprecate the *Dot* parameters in favour of the link's "
-                        "<inertial><fluid_added_mass> (positive Ma, link axes). The same matrix there: "
-                        "<fluid_added_mass>";
+    std::string block =
+        "Gazebo Ionic and later deprecate the *Dot* parameters in favour of the link's "
+        "<inertial><fluid_added_mass> (positive Ma, link axes). The same matrix there: "
+        "<fluid_added_mass>";
     static constexpr std::array<char, 6> kSdf{'x', 'y', 'z', 'p', 'q', 'r'};
     for (std::size_t i = 0; i < 6; ++i) {
       for (std::size_t j = i; j < 6; ++j) {

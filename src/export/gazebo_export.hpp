@@ -47,7 +47,7 @@ struct GazeboFitSource {
   std::size_t variable = 0;  ///< 0..5 = u..r
   std::string fit_name;
   std::int64_t fit_id = 0;
-  std::string terms;            ///< as stored, e.g. "1,u,u|u|"
+  std::string terms;                                    ///< as stored, e.g. "1,u,u|u|"
   SignConvention stored_sign = SignConvention::OnBody;  ///< opposing fits were negated
   std::vector<std::int64_t> run_ids;
   std::size_t n = 0;
@@ -69,11 +69,11 @@ struct GazeboCoefficients {
   Matrix6 linear_b = Matrix6::Zero();
   Matrix6 quadratic_b = Matrix6::Zero();
   Matrix6 added_mass_b = Matrix6::Zero();  ///< Ma, positive, symmetric positive definite
-  std::string added_mass_source;  ///< how Ma was given, for the file's comments
-  std::optional<double> linearized_at;  ///< U0 [m/s] when quadratic terms were linearised
-  std::vector<GazeboFitSource> sources;  ///< in DOF order
-  std::vector<std::size_t> missing_dofs;  ///< DOFs with no own-velocity law (written 0; allow_missing)
-  std::vector<std::string> notes;        ///< what a reader should know: drops, missing DOFs, odd signs
+  std::string added_mass_source;           ///< how Ma was given, for the file's comments
+  std::optional<double> linearized_at;     ///< U0 [m/s] when quadratic terms were linearised
+  std::vector<GazeboFitSource> sources;    ///< in DOF order
+  std::vector<std::size_t> missing_dofs;   ///< DOFs with no own-velocity law (written 0; allow_missing)
+  std::vector<std::string> notes;          ///< what a reader should know: drops, missing DOFs, odd signs
 };
 
 /// What to build: which fits, and what to do with what the plugins lack.
@@ -95,7 +95,7 @@ struct GazeboRequest {
   /// quadratic = 0. The force at the operating point itself is not carried.
   std::optional<double> linearize_at;
   Matrix6 added_mass = Matrix6::Zero();  ///< positive Ma in body axes (kg, kg m, kg m^2)
-  std::string added_mass_source;   ///< e.g. "--added-mass 1,2,3,4,5,6"
+  std::string added_mass_source;         ///< e.g. "--added-mass 1,2,3,4,5,6"
 };
 
 /// Builds the coefficients from the body's fits (fits of other bodies are
@@ -140,7 +140,7 @@ GazeboLinkAxes parse_gazebo_link_axes(std::string_view text);
 
 struct GazeboWriteOptions {
   GazeboFlavor flavor = GazeboFlavor::Gz;
-  std::string link_name = "base_link";            ///< gz: <link_name>
+  std::string link_name = "base_link";             ///< gz: <link_name>
   GazeboLinkAxes link_axes = GazeboLinkAxes::Flu;  ///< gz: frame of the parameters
 };
 

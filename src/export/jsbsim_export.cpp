@@ -41,7 +41,8 @@ std::string jsbsim_text(const GridTable& table, const ExportMetadata& metadata) 
   static const char* kLookup[] = {"row", "column", "table"};
   for (std::size_t k = 0; k < n_out; ++k) {
     const std::string& output = table.outputs()[k];
-    text += "  <function name=\"hydrocoef/" + escape::xml_text(metadata.surface_name) + "/" + escape::xml_text(output) + "\">\n";
+    text += "  <function name=\"hydrocoef/" + escape::xml_text(metadata.surface_name) + "/" + escape::xml_text(output) +
+            "\">\n";
     std::string description = output + " [" + metadata.output_units[k] + "], linear interpolation, end values held";
     for (std::size_t a = 0; a < n; ++a) {
       description += "; " + table.axes()[a].name + " [" + metadata.axis_units[a] + "] valid in [" +

@@ -112,9 +112,8 @@ std::string script_text(const GridTable& table, const ExportMetadata& metadata, 
   for (std::size_t a = 0; a < n; ++a) {
     const GridAxis& axis = table.axes()[a];
     s += "% Input " + std::to_string(a + 1) + ": " + comment(axis.name) + " [" + comment(metadata.axis_units[a]) +
-         "], valid in [" + shortest_number(axis.breakpoints.front()) + ", " +
-         shortest_number(axis.breakpoints.back()) + "], outside: " +
-         std::string(extrapolation_name(axis.extrapolation)) + "\n";
+         "], valid in [" + shortest_number(axis.breakpoints.front()) + ", " + shortest_number(axis.breakpoints.back()) +
+         "], outside: " + std::string(extrapolation_name(axis.extrapolation)) + "\n";
   }
   s += "data = load(fullfile(fileparts(mfilename('fullpath')), " + escape::matlab_string(mat_name) + "));\n";
   s += "names = {" + outputs + "};\n";
@@ -122,7 +121,8 @@ std::string script_text(const GridTable& table, const ExportMetadata& metadata, 
   for (std::size_t k = 0; k < table_names.size(); ++k) s += (k ? ", " : "") + escape::matlab_string(table_names[k]);
   s += "};\n";
   s += "index = find(strcmp(names, output));\n";
-  s += "if isempty(index)\n  error('" + function_name + ": unknown output ''%s''; expected one of: %s', output, "
+  s += "if isempty(index)\n  error('" + function_name +
+       ": unknown output ''%s''; expected one of: %s', output, "
        "strjoin(names, ', '));\nend\n";
   s += "set_param(block, 'NumberOfTableDimensions', '" + std::to_string(n) + "');\n";
   for (std::size_t a = 0; a < n; ++a) {
@@ -219,7 +219,8 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
   {
     MatFile mat(mat_file.temporary());
     if (!mat.ok()) {
-      throw InputError("cannot write '" + path.string() + "': libmatio could not create it (is the directory "
+      throw InputError("cannot write '" + path.string() +
+                       "': libmatio could not create it (is the directory "
                        "writable?)");
     }
     bool ok = true;
@@ -232,8 +233,7 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
     for (const GridAxis& axis : table.axes()) dims.push_back(axis.breakpoints.size());
     if (dims.size() == 1) dims.push_back(1);
     for (std::size_t k = 0; k < n_out && ok; ++k) {
-      for (std::size_t node = 0; node < table.node_count(); ++node)
-        columns[k][node] = table.values()[node * n_out + k];
+      for (std::size_t node = 0; node < table.node_count(); ++node) columns[k][node] = table.values()[node * n_out + k];
       ok = mat.write(table_names[k], MAT_C_DOUBLE, MAT_T_DOUBLE, dims, columns[k].data());
     }
     if (ok) ok = mat.write("info", MAT_C_CHAR, MAT_T_UINT8, {1, info_text.size()}, info_text.data());

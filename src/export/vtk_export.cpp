@@ -36,7 +36,8 @@ void write_vtk(const GridTable& table, const ExportMetadata& metadata, const std
     std::string names;
     for (std::size_t a = 0; a < n; ++a) names += (a ? ", " : "") + table.axes()[a].name;
     throw InputError("format vtk: surface '" + metadata.surface_name + "' has " + std::to_string(n) + " axes (" +
-                     names + "); a VTK grid has at most 3 dimensions; expected 1 to 3 axes (use --format csv, json "
+                     names +
+                     "); a VTK grid has at most 3 dimensions; expected 1 to 3 axes (use --format csv, json "
                      "or c for more)");
   }
   TemporaryFile file(path);

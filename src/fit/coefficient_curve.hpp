@@ -32,9 +32,9 @@ struct LevelFit {
 
 /// A level fit_per_level left out, and why.
 struct SkippedLevel {
-  double level = 0.0;   ///< disturbance value [its SI unit]
+  double level = 0.0;  ///< disturbance value [its SI unit]
   std::size_t runs = 0;
-  std::string reason;   ///< "1 run; the damping law 'u,u|u|' has 2 terms and needs ..."
+  std::string reason;  ///< "1 run; the damping law 'u,u|u|' has 2 terms and needs ..."
 };
 
 /// Fits the law separately at each distinct value of `disturbance`; the runs

@@ -63,8 +63,7 @@ class ObservationResidual final : public ceres::CostFunction {
     double predicted = 0.0;
     for (std::size_t j = 0; j < term_count_; ++j) predicted += parameters[0][j] * scaled_basis_[j];
     residuals[0] = predicted - observed_;
-    if (jacobians != nullptr && jacobians[0] != nullptr)
-      std::copy_n(scaled_basis_.begin(), term_count_, jacobians[0]);
+    if (jacobians != nullptr && jacobians[0] != nullptr) std::copy_n(scaled_basis_.begin(), term_count_, jacobians[0]);
     return true;
   }
 
@@ -308,8 +307,8 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
     };
     const double scaled = solution.coefficients(j);
     const double coefficient = to_law_units(scaled);
-    if (!std::isfinite(coefficient) || (coefficient == 0.0 && scaled / column_scale(j) != 0.0 &&
-                                        std::abs(scaled / column_scale(j)) > 1e-12))
+    if (!std::isfinite(coefficient) ||
+        (coefficient == 0.0 && scaled / column_scale(j) != 0.0 && std::abs(scaled / column_scale(j)) > 1e-12))
       throw InputError("the coefficient of " + term_name(term, spec.variable) + " is " +
                        shortest_number(scaled / column_scale(j)) + " x " + shortest_number(y_scale) + " / " +
                        shortest_number(x_scale) + "^" + std::to_string(term_power(term)) +

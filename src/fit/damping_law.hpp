@@ -77,7 +77,7 @@ struct DampingLawFit {
 /// terms, a value is not finite, the spec is invalid, or the terms are
 /// linearly dependent on this data (e.g. all x equal with terms 1,u; or
 /// u,|u| with no negative u), naming the terms concerned.
-DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x,
-                              std::span<const double> y, const FitOptions& options = {});
+DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
+                              const FitOptions& options = {});
 
 }  // namespace hydrocoef

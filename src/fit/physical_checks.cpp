@@ -108,8 +108,8 @@ std::vector<LawCheck> check_damping_law(const LawCheckInput& input) {
   }
 
   if (constant != 0.0 && std::isfinite(constant_error) && std::abs(constant) > constant_error) {
-    out.push_back({LawProblem::ForceAtRest, "the constant term " + number(constant) + " is larger than its standard error " +
-                                                number(constant_error) +
+    out.push_back({LawProblem::ForceAtRest, "the constant term " + number(constant) +
+                                                " is larger than its standard error " + number(constant_error) +
                                                 ": the law holds a force at rest (" + x_name + " = 0)"});
   }
 

@@ -43,8 +43,7 @@ void check_force_history(const ForceHistory& history) {
   const std::size_t n = history.size();
   const auto fail = [](const std::string& what) { throw std::invalid_argument("force history: " + what); };
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(history.abscissa_values[i]))
-      fail("abscissa value " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(history.abscissa_values[i])) fail("abscissa value " + std::to_string(i) + " is not finite");
     if (i > 0 && !(history.abscissa_values[i] > history.abscissa_values[i - 1]))
       fail("abscissa not strictly increasing at sample " + std::to_string(i));
   }
@@ -59,7 +58,8 @@ void check_force_history(const ForceHistory& history) {
              std::to_string(values.size()) + " values for " + std::to_string(n) + " samples");
       for (const double value : values)
         if (!std::isfinite(value))
-          fail(std::string(part_name(part)) + " " + std::string(component_name(component)) + " holds a value that is not finite");
+          fail(std::string(part_name(part)) + " " + std::string(component_name(component)) +
+               " holds a value that is not finite");
       (is_force(component) ? any_force : any_moment) = true;
     }
   const auto check_origins = [&](const std::vector<SampleOrigin>& origins, bool present, const char* what) {
@@ -67,7 +67,8 @@ void check_force_history(const ForceHistory& history) {
     if (!present) fail(std::string(what) + " origins without " + what + " values");
     if (origins.size() != n) fail(std::string(what) + " origins for " + std::to_string(origins.size()) + " samples");
     for (const SampleOrigin& origin : origins)
-      if (origin.file >= history.files.size()) fail(std::string(what) + " origin names file " + std::to_string(origin.file));
+      if (origin.file >= history.files.size())
+        fail(std::string(what) + " origin names file " + std::to_string(origin.file));
   };
   check_origins(history.force_origin, any_force, "force");
   check_origins(history.moment_origin, any_moment, "moment");
@@ -107,7 +108,8 @@ ForceHistory rotated_to_global_axes(const ForceHistory& history) {
           for (std::size_t i = 0; i < n; ++i) global[g][i] += weight * local[i];
         }
       }
-      for (std::size_t g = 0; g < 3; ++g) out.values(part, static_cast<HistoryComponent>(first + g)) = std::move(global[g]);
+      for (std::size_t g = 0; g < 3; ++g)
+        out.values(part, static_cast<HistoryComponent>(first + g)) = std::move(global[g]);
     }
   out.frame.axes_in_global.reset();
   out.frame.description = "global axes (turned from: " + history.frame.description + ")";

@@ -23,8 +23,9 @@ std::string abscissa_text(HistoryAbscissa abscissa, double value) {
 }
 
 std::string span_text(const ForceHistory& history) {
-  return std::to_string(history.size()) + " samples from " + abscissa_text(history.abscissa, history.abscissa_values.front()) +
-         " to " + abscissa_text(history.abscissa, history.abscissa_values.back());
+  return std::to_string(history.size()) + " samples from " +
+         abscissa_text(history.abscissa, history.abscissa_values.front()) + " to " +
+         abscissa_text(history.abscissa, history.abscissa_values.back());
 }
 
 }  // namespace
@@ -64,7 +65,8 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
   if (!any_total || n == 0)
     throw InputError("the force history has no total force or moment component; expected at least one");
   const auto deciding = [&](HistoryComponent c) {
-    return analysis.components[static_cast<std::size_t>(c)].present && options.deciding_components[static_cast<std::size_t>(c)];
+    return analysis.components[static_cast<std::size_t>(c)].present &&
+           options.deciding_components[static_cast<std::size_t>(c)];
   };
 
   // The window.
@@ -95,9 +97,8 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
       analysis.window_method = "range " + (std::isfinite(t0) ? number(t0) : std::string()) + ":" +
                                (std::isfinite(t1) ? number(t1) : std::string());
       if (count < 2)
-        throw InputError("the window " + analysis.window_method + " holds " + std::to_string(count) +
-                         " sample" + (count == 1 ? "" : "s") + " of the history (" + span_text(history) +
-                         "); expected at least 2");
+        throw InputError("the window " + analysis.window_method + " holds " + std::to_string(count) + " sample" +
+                         (count == 1 ? "" : "s") + " of the history (" + span_text(history) + "); expected at least 2");
       break;
     }
     case HistoryWindow::Kind::Last: {
@@ -154,8 +155,8 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
   const auto name = [&](HistoryComponent c) { return std::string(component_name(c, history.frame.naming)); };
   if (options.window.kind == HistoryWindow::Kind::Automatic) {
     if (analysis.window_set_by)
-      analysis.notes.push_back("the window starts at " + abscissa_text(history.abscissa, analysis.first_abscissa) + " (" +
-                               sample_location(history, first, *analysis.window_set_by) + "), where MSER-" +
+      analysis.notes.push_back("the window starts at " + abscissa_text(history.abscissa, analysis.first_abscissa) +
+                               " (" + sample_location(history, first, *analysis.window_set_by) + "), where MSER-" +
                                std::to_string(options.mser_batch_size) + " ends the start-up of " +
                                name(*analysis.window_set_by) + "; " + std::to_string(count) + " of " +
                                std::to_string(n) + " samples kept");
@@ -163,14 +164,16 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
       const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
       if (!component.present || !component.flags.no_steady_window) continue;
       if (!component.mser.applicable)
-        analysis.notes.push_back(name(c) + ": the record is too short to find a steady window (" +
-                                 std::to_string(n) + " samples; MSER-" + std::to_string(options.mser_batch_size) +
-                                 " needs at least " + std::to_string(kMserMinBatches * options.mser_batch_size) + ")");
+        analysis.notes.push_back(name(c) + ": the record is too short to find a steady window (" + std::to_string(n) +
+                                 " samples; MSER-" + std::to_string(options.mser_batch_size) + " needs at least " +
+                                 std::to_string(kMserMinBatches * options.mser_batch_size) + ")");
       else
-        analysis.notes.push_back(name(c) + ": no steady window: its start-up does not end in the first half of the record "
-                                 "(MSER-" + std::to_string(options.mser_batch_size) + " minimum at " +
-                                 abscissa_text(history.abscissa, history.abscissa_values[component.mser.unrestricted_truncation]) +
-                                 ")");
+        analysis.notes.push_back(
+            name(c) +
+            ": no steady window: its start-up does not end in the first half of the record "
+            "(MSER-" +
+            std::to_string(options.mser_batch_size) + " minimum at " +
+            abscissa_text(history.abscissa, history.abscissa_values[component.mser.unrestricted_truncation]) + ")");
     }
   } else {
     for (const HistoryComponent c : kAllHistoryComponents) {
@@ -179,7 +182,8 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
       if (first < component.mser.truncation)
         analysis.notes.push_back("the window starts before MSER-" + std::to_string(options.mser_batch_size) +
                                  " ends the start-up of " + name(c) + " (at " +
-                                 abscissa_text(history.abscissa, history.abscissa_values[component.mser.truncation]) + ")");
+                                 abscissa_text(history.abscissa, history.abscissa_values[component.mser.truncation]) +
+                                 ")");
     }
   }
   for (const HistoryComponent c : kAllHistoryComponents) {
@@ -199,8 +203,9 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
                                " (expected at least " + number(options.min_effective_samples) + ")");
   }
   if (uneven)
-    analysis.notes.push_back("the " + std::string(abscissa_name(history.abscissa)) +
-                             " steps in the window vary (adaptive time steps?): samples are averaged with equal weight");
+    analysis.notes.push_back(
+        "the " + std::string(abscissa_name(history.abscissa)) +
+        " steps in the window vary (adaptive time steps?): samples are averaged with equal weight");
   return analysis;
 }
 

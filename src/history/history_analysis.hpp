@@ -119,7 +119,7 @@ struct HistoryAnalysis {
   /// For a found window: the component whose truncation started it.
   std::optional<HistoryComponent> window_set_by;
   std::array<ComponentAnalysis, kHistoryComponents> components;
-  HistoryFlags flags;  ///< union over the present deciding components
+  HistoryFlags flags;        ///< union over the present deciding components
   std::string error_method;  ///< standard_error_method() of the options used
   /// Sentences for people: what set the window, what each flag means here.
   std::vector<std::string> notes;

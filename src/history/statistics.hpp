@@ -58,9 +58,9 @@ namespace hydrocoef {
 inline constexpr std::size_t kMinBlocksForAutocorrelation = 64;
 
 struct StatisticsOptions {
-  double window_factor = 5.0;       ///< Sokal's c
-  std::size_t max_blocks = 65536;   ///< coarse-grain longer series into at most this many blocks
-  std::size_t max_lag = 200;        ///< double the block size rather than sum more lags
+  double window_factor = 5.0;      ///< Sokal's c
+  std::size_t max_blocks = 65536;  ///< coarse-grain longer series into at most this many blocks
+  std::size_t max_lag = 200;       ///< double the block size rather than sum more lags
 };
 
 /// One line naming the estimator and its settings, for storing with a result.

@@ -60,13 +60,12 @@ std::string available_arrays(const SurfaceMesh& mesh) {
 const FieldArray& find_array(const SurfaceMesh& mesh, const std::string& name, int components, const char* role) {
   const FieldArray* field = mesh.find_field(name);
   if (!field)
-    throw InputError(std::string(role) + " array '" + name + "' is not in the file; arrays there: " +
-                     available_arrays(mesh));
+    throw InputError(std::string(role) + " array '" + name +
+                     "' is not in the file; arrays there: " + available_arrays(mesh));
   if (field->components != components)
     throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->components) +
                      " components, expected " + std::to_string(components));
-  const std::size_t expected =
-      field->association == FieldAssociation::Point ? mesh.point_count() : mesh.face_count();
+  const std::size_t expected = field->association == FieldAssociation::Point ? mesh.point_count() : mesh.face_count();
   if (field->size() != expected)
     throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->size()) +
                      " values, expected " + std::to_string(expected) + " (one per " +
@@ -191,9 +190,9 @@ inline std::uint64_t edge_residue(const std::uint32_t* indices, std::size_t k) {
 constexpr int kLanes = 8;
 
 struct TriangleLanes {
-  double y[3][3][kLanes];    ///< vertex, axis, lane: x - x_ref [m]
-  double p[3][kLanes];       ///< vertex, lane: p - p_ref [Pa]
-  double tau[3][3][kLanes];  ///< vertex, axis, lane [Pa]
+  double y[3][3][kLanes];        ///< vertex, axis, lane: x - x_ref [m]
+  double p[3][kLanes];           ///< vertex, lane: p - p_ref [Pa]
+  double tau[3][3][kLanes];      ///< vertex, axis, lane [Pa]
   std::uint64_t ids[3][kLanes];  ///< vertex, lane: point index
 };
 
@@ -273,26 +272,26 @@ template <bool Shear>
       s.force_v[1][j] += fv * Ty;
       s.force_v[2][j] += fv * Tz;
       const double mv = shear_sign * a / 12.0;
-      s.moment_v[0][j] += mv * ((y0y * t0z - y0z * t0y) + (y1y * t1z - y1z * t1y) + (y2y * t2z - y2z * t2y) +
-                                (Yy * Tz - Yz * Ty));
-      s.moment_v[1][j] += mv * ((y0z * t0x - y0x * t0z) + (y1z * t1x - y1x * t1z) + (y2z * t2x - y2x * t2z) +
-                                (Yz * Tx - Yx * Tz));
-      s.moment_v[2][j] += mv * ((y0x * t0y - y0y * t0x) + (y1x * t1y - y1y * t1x) + (y2x * t2y - y2y * t2x) +
-                                (Yx * Ty - Yy * Tx));
+      s.moment_v[0][j] +=
+          mv * ((y0y * t0z - y0z * t0y) + (y1y * t1z - y1z * t1y) + (y2y * t2z - y2z * t2y) + (Yy * Tz - Yz * Ty));
+      s.moment_v[1][j] +=
+          mv * ((y0z * t0x - y0x * t0z) + (y1z * t1x - y1x * t1z) + (y2z * t2x - y2x * t2z) + (Yz * Tx - Yx * Tz));
+      s.moment_v[2][j] +=
+          mv * ((y0x * t0y - y0y * t0x) + (y1x * t1y - y1y * t1x) + (y2x * t2y - y2y * t2x) + (Yx * Ty - Yy * Tx));
     }
   }
 }
 
 [[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_with_shear(const TriangleLanes& in,
-                                                                                    double shear_sign,
-                                                                                    double degenerate_area,
-                                                                                    LaneSums& s) {
+                                                                                   double shear_sign,
+                                                                                   double degenerate_area,
+                                                                                   LaneSums& s) {
   triangle_lanes<true>(in, shear_sign, degenerate_area, s);
 }
 
 [[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_pressure_only(const TriangleLanes& in,
-                                                                                       double degenerate_area,
-                                                                                       LaneSums& s) {
+                                                                                      double degenerate_area,
+                                                                                      LaneSums& s) {
   triangle_lanes<false>(in, 1.0, degenerate_area, s);
 }
 
@@ -314,7 +313,8 @@ struct Integrator {
 
   // Triangle with vertex values, exact for linear fields:
   //   ∫ f dA = |S| (f0+f1+f2)/3,  ∫ f y dA = |S|/12 (Σ f_i y_i + F Y).
-  [[gnu::always_inline]] void triangle_point_data(const Vec3 (&y)[3], const double (&p)[3], const Vec3* tau, Sums& s) const {
+  [[gnu::always_inline]] void triangle_point_data(const Vec3 (&y)[3], const double (&p)[3], const Vec3* tau,
+                                                  Sums& s) const {
     const Vec3 S = 0.5 * cross(y[1] - y[0], y[2] - y[0]);
     const double a = norm(S);
     const Vec3 Y = y[0] + y[1] + y[2];
@@ -326,8 +326,8 @@ struct Integrator {
     if (tau) {
       const Vec3 T = tau[0] + tau[1] + tau[2];
       s.force_v += (shear_sign * a / 3.0) * T;
-      s.moment_v += (shear_sign * a / 12.0) *
-                    (cross(y[0], tau[0]) + cross(y[1], tau[1]) + cross(y[2], tau[2]) + cross(Y, T));
+      s.moment_v +=
+          (shear_sign * a / 12.0) * (cross(y[0], tau[0]) + cross(y[1], tau[1]) + cross(y[2], tau[2]) + cross(Y, T));
     }
   }
 
@@ -445,9 +445,12 @@ struct Integrator {
       return;
     }
     s.edge_residue += edge_residue(mesh.face_indices.data() + begin, k);
-    if (k == 3) ++s.triangles;
-    else if (k == 4) ++s.quads;
-    else ++s.polygons;
+    if (k == 3)
+      ++s.triangles;
+    else if (k == 4)
+      ++s.quads;
+    else
+      ++s.polygons;
     const bool point_pressure = pressure.present() && pressure.per_point;
     if (!point_pressure) {
       // Face-constant pressure (or geometry only): finite-volume face rule;
@@ -529,8 +532,10 @@ struct Integrator {
           for (int c = 0; c < 3; ++c) in.tau[k][c][j] = shear.component[c][i * shear.stride];
       }
     }
-    if (with_shear) triangle_lanes_with_shear(in, shear_sign, degenerate_area, lanes);
-    else triangle_lanes_pressure_only(in, degenerate_area, lanes);
+    if (with_shear)
+      triangle_lanes_with_shear(in, shear_sign, degenerate_area, lanes);
+    else
+      triangle_lanes_pressure_only(in, degenerate_area, lanes);
     s.triangles += kLanes;
   }
 
@@ -564,8 +569,8 @@ struct Integrator {
       return;
     }
     std::size_t f = start;
-    const bool lanes_apply = triangles_only && pressure.present() && pressure.per_point &&
-                             (!shear.present() || shear.per_point);
+    const bool lanes_apply =
+        triangles_only && pressure.present() && pressure.per_point && (!shear.present() || shear.per_point);
     if (lanes_apply) {
       LaneSums lanes;
       for (; f + kLanes <= stop; f += kLanes) triangle_group(f, lanes, local);
@@ -624,8 +629,7 @@ Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
   auto meet = [&]() noexcept {
     scanned = parts[0];
     if (threads == 2) scanned.add(parts[1]);
-    const double diagonal =
-        mesh.point_count() > 0 && scanned.coordinates_finite ? norm(scanned.hi - scanned.lo) : 0.0;
+    const double diagonal = mesh.point_count() > 0 && scanned.coordinates_finite ? norm(scanned.hi - scanned.lo) : 0.0;
     integrator.degenerate_area = 1e-14 * diagonal * diagonal;
   };
   std::barrier<decltype(meet)> sync(static_cast<std::ptrdiff_t>(threads), meet);
@@ -766,9 +770,12 @@ EdgeCounts count_edges(const SurfaceMesh& mesh, std::uint32_t first, std::uint32
       unsigned walked_forward = 0;
       while (j < n && (list[j] >> 1) == (list[i] >> 1)) walked_forward += list[j++] & 1u;
       const std::size_t uses = j - i;
-      if (uses == 1) ++counts.boundary;
-      else if (uses > 2) ++counts.nonmanifold;
-      else if (walked_forward != 1) ++counts.inconsistent;
+      if (uses == 1)
+        ++counts.boundary;
+      else if (uses > 2)
+        ++counts.nonmanifold;
+      else if (walked_forward != 1)
+        ++counts.inconsistent;
       i = j;
     }
     begin = end;
@@ -799,8 +806,9 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
         if (array != nullptr &&
             !std::all_of(array->values.begin(), array->values.end(), [](double v) { return std::isfinite(v); }))
           throw_not_finite(*array, view->role);
-    throw InputError("the integrals overflow (coordinates or values near the largest double); expected a surface "
-                     "of finite area and forces");
+    throw InputError(
+        "the integrals overflow (coordinates or values near the largest double); expected a surface "
+        "of finite area and forces");
   }
   // Topology. A zero edge residue says that every edge is walked as often one
   // way as the other (only a mesh built to cancel the 64-bit hash sums could

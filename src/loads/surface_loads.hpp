@@ -65,18 +65,18 @@ struct SurfaceLoadOptions {
 struct SurfaceGeometry {
   std::size_t faces = 0;
   std::size_t triangles = 0, quads = 0, polygons = 0;
-  std::size_t degenerate_faces = 0;     ///< zero area (or fewer than 3 distinct points)
-  double area = 0.0;                    ///< m^2
-  double signed_volume = 0.0;           ///< m^3, (1/3)∮ x·n dA with the normals used; > 0 outward when closed
-  std::size_t boundary_edges = 0;       ///< edges used by one face: 0 for a closed surface
-  std::size_t nonmanifold_edges = 0;    ///< edges used by more than two faces (counted when the surface
-                                        ///< is not closed; a closed surface passes a quick whole-surface test)
-  std::size_t inconsistent_edges = 0;   ///< interior edges walked the same way by both faces
-  bool closed = false;                  ///< no boundary and no non-manifold edges
-  bool normals_flipped = false;         ///< the file's normals were reversed (see NormalPolicy)
-  Vec3 integral_n_dA{};                 ///< ∫ n dA [m^2] (zero for a closed surface)
-  Vec3 integral_x_cross_n_dA{};         ///< ∫ x × n dA about the origin [m^3]
-  std::vector<std::string> warnings;    ///< human-readable notes, e.g. "normals flipped"
+  std::size_t degenerate_faces = 0;    ///< zero area (or fewer than 3 distinct points)
+  double area = 0.0;                   ///< m^2
+  double signed_volume = 0.0;          ///< m^3, (1/3)∮ x·n dA with the normals used; > 0 outward when closed
+  std::size_t boundary_edges = 0;      ///< edges used by one face: 0 for a closed surface
+  std::size_t nonmanifold_edges = 0;   ///< edges used by more than two faces (counted when the surface
+                                       ///< is not closed; a closed surface passes a quick whole-surface test)
+  std::size_t inconsistent_edges = 0;  ///< interior edges walked the same way by both faces
+  bool closed = false;                 ///< no boundary and no non-manifold edges
+  bool normals_flipped = false;        ///< the file's normals were reversed (see NormalPolicy)
+  Vec3 integral_n_dA{};                ///< ∫ n dA [m^2] (zero for a closed surface)
+  Vec3 integral_x_cross_n_dA{};        ///< ∫ x × n dA about the origin [m^3]
+  std::vector<std::string> warnings;   ///< human-readable notes, e.g. "normals flipped"
 };
 
 /// Forces and moments with their pressure and viscous parts.

@@ -43,7 +43,8 @@ std::vector<SymmetryPlane> parse_symmetry(std::string_view text) {
   std::size_t start = 0;
   while (start <= text.size()) {
     const auto comma = text.find(',', start);
-    std::string_view part = text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    std::string_view part =
+        text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
     if (part.size() < 3 || part[1] != '=' || (part[0] != 'x' && part[0] != 'y' && part[0] != 'z'))
       refuse("'" + std::string(part) + "' is not AXIS=OFFSET");
     SymmetryPlane plane;

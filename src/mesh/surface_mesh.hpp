@@ -29,11 +29,11 @@ struct FieldArray {
 /// Polygonal surface in compressed-row form: the indices of face f are
 /// face_indices[face_offsets[f] .. face_offsets[f + 1]).
 struct SurfaceMesh {
-  std::vector<double> points_xyz;            ///< 3 per point [m]
+  std::vector<double> points_xyz;              ///< 3 per point [m]
   std::vector<std::uint32_t> face_offsets{0};  ///< faces + 1 entries, starts with 0
-  std::vector<std::uint32_t> face_indices;   ///< 0-based point indices
-  std::vector<std::string> location_names;   ///< patches, zones or blocks the faces came from
-  std::vector<std::uint32_t> face_location;  ///< per face, index into location_names
+  std::vector<std::uint32_t> face_indices;     ///< 0-based point indices
+  std::vector<std::string> location_names;     ///< patches, zones or blocks the faces came from
+  std::vector<std::uint32_t> face_location;    ///< per face, index into location_names
   std::vector<FieldArray> fields;
 
   std::size_t point_count() const { return points_xyz.size() / 3; }

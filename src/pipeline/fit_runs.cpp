@@ -8,8 +8,8 @@
 
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
-#include "src/core/text.hpp"
 #include "src/core/sign_convention.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -71,8 +71,9 @@ MirrorSpec make_mirror_spec(const std::vector<std::string>& planes, const std::v
 MirrorSpec parse_mirror_spec(std::string_view text) {
   if (text.empty()) return {};
   const auto slash = text.find('/');
-  return make_mirror_spec(comma_list(text.substr(0, slash)),
-                          slash == std::string_view::npos ? std::vector<std::string>{} : comma_list(text.substr(slash + 1)));
+  return make_mirror_spec(comma_list(text.substr(0, slash)), slash == std::string_view::npos
+                                                                 ? std::vector<std::string>{}
+                                                                 : comma_list(text.substr(slash + 1)));
 }
 
 std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection) {
@@ -112,7 +113,8 @@ std::vector<StoredRun> with_mirror_images(const std::vector<StoredRun>& runs, co
         if (force->statistics) force->statistics->values.drift = -force->statistics->values.drift;
       }
       // The moment reference point is mirrored with the body.
-      for (const auto& reflection : chain) image.reference_point_b[reflection.axis] = -image.reference_point_b[reflection.axis];
+      for (const auto& reflection : chain)
+        image.reference_point_b[reflection.axis] = -image.reference_point_b[reflection.axis];
       image.surface.reset();
       out.push_back(std::move(image));
     }
@@ -153,8 +155,9 @@ std::string unconverged_runs_warning(const std::vector<StoredRun>& runs, std::si
   for (const auto& run : runs) {
     const auto& force = run.tau_b[dof];
     if (!force || !force->statistics || force->statistics->flags.empty()) continue;
-    if (count++ < 10) list += (list.empty() ? "" : "; ") + std::string("run ") + std::to_string(run.id) + " (" +
-                              join(force->statistics->flags, ",") + ")";
+    if (count++ < 10)
+      list += (list.empty() ? "" : "; ") + std::string("run ") + std::to_string(run.id) + " (" +
+              join(force->statistics->flags, ",") + ")";
   }
   if (count == 0) return {};
   if (count > 10) list += "; and " + std::to_string(count - 10) + " more";
@@ -163,10 +166,9 @@ std::string unconverged_runs_warning(const std::vector<StoredRun>& runs, std::si
          "; 'hydrocoef runs show ID' gives the window, or leave them out with --exclude-run ID";
 }
 
-FitRecord make_fit_record(const std::string& name, const std::string& body, std::size_t dof,
-                          const DampingLawSpec& spec, const DampingLawFit& fit, const std::string& selection_text,
-                          const MirrorSpec& mirror, const FitSamples& samples,
-                          const std::vector<std::int64_t>& run_ids) {
+FitRecord make_fit_record(const std::string& name, const std::string& body, std::size_t dof, const DampingLawSpec& spec,
+                          const DampingLawFit& fit, const std::string& selection_text, const MirrorSpec& mirror,
+                          const FitSamples& samples, const std::vector<std::int64_t>& run_ids) {
   FitRecord record;
   record.name = name;
   record.body = body;

@@ -48,12 +48,12 @@ std::vector<StoredRun> with_mirror_images(const std::vector<StoredRun>& runs, co
 
 /// The samples a law is fitted to.
 struct FitSamples {
-  std::vector<StoredRun> runs;         ///< the selected (measured) runs
-  std::vector<RunKey> keys;            ///< per sample: the run's key, or its mirror image's
-  std::vector<double> x, y;            ///< the law's velocity component; the force in `sign`
-  std::vector<std::int64_t> run_ids;   ///< per sample: the run it is (or is the image of)
-  std::vector<bool> mirrored;          ///< per sample
-  std::size_t images_skipped = 0;      ///< images at the key of a measured run (the run is used)
+  std::vector<StoredRun> runs;        ///< the selected (measured) runs
+  std::vector<RunKey> keys;           ///< per sample: the run's key, or its mirror image's
+  std::vector<double> x, y;           ///< the law's velocity component; the force in `sign`
+  std::vector<std::int64_t> run_ids;  ///< per sample: the run it is (or is the image of)
+  std::vector<bool> mirrored;         ///< per sample
+  std::size_t images_skipped = 0;     ///< images at the key of a measured run (the run is used)
   SignConvention sign = SignConvention::OnBody;
 };
 
@@ -70,10 +70,9 @@ FitSamples gather_fit_samples(Database& database, const std::string& body, std::
 std::string unconverged_runs_warning(const std::vector<StoredRun>& runs, std::size_t dof);
 
 /// The record of a fit, as stored.
-FitRecord make_fit_record(const std::string& name, const std::string& body, std::size_t dof,
-                          const DampingLawSpec& spec, const DampingLawFit& fit, const std::string& selection_text,
-                          const MirrorSpec& mirror, const FitSamples& samples,
-                          const std::vector<std::int64_t>& run_ids);
+FitRecord make_fit_record(const std::string& name, const std::string& body, std::size_t dof, const DampingLawSpec& spec,
+                          const DampingLawFit& fit, const std::string& selection_text, const MirrorSpec& mirror,
+                          const FitSamples& samples, const std::vector<std::int64_t>& run_ids);
 
 /// The fit a stored record describes, made again from the runs its selection
 /// picks now (same name, law, loss, selection, mirror). InputError when its

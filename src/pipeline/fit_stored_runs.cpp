@@ -41,7 +41,8 @@ double condition_value(const RunKey& key, std::int64_t run_id, const std::string
   const auto it = key.disturbances.find(name);
   if (it == key.disturbances.end())
     throw InputError("--by " + name + ": run " + std::to_string(run_id) + " (" + describe(key) +
-                     ") has no disturbance '" + name + "'; expected a velocity component or a disturbance every run has");
+                     ") has no disturbance '" + name +
+                     "'; expected a velocity component or a disturbance every run has");
   return it->second;
 }
 
@@ -62,7 +63,8 @@ FitSetup prepare(Database& database, const FitRequest& request, FitOptions& opti
   const RunSelection selection = parse_selection(request.where, request.exclude_runs);
   setup.selection = selection.text();
   setup.samples = gather_fit_samples(database, request.body, setup.dof, setup.variable, selection, setup.mirror);
-  for (const auto term : setup.spec.terms) setup.coefficient_units.push_back(coefficient_unit(term, setup.dof, setup.variable));
+  for (const auto term : setup.spec.terms)
+    setup.coefficient_units.push_back(coefficient_unit(term, setup.dof, setup.variable));
   return setup;
 }
 
@@ -103,10 +105,10 @@ FitResult fit_stored_runs(Database& database, const FitRequest& request) {
     result.setup.warnings.push_back({std::string(law_problem_name(problem.problem)), problem.message});
   add_unconverged_warning(result.setup);
   if (request.store)
-    result.fit_id = database.save_fit(make_fit_record(result.name, request.body, result.setup.dof, spec, result.fit,
-                                                      result.setup.selection, result.setup.mirror, samples,
-                                                      samples.run_ids),
-                                      request.taken);
+    result.fit_id =
+        database.save_fit(make_fit_record(result.name, request.body, result.setup.dof, spec, result.fit,
+                                          result.setup.selection, result.setup.mirror, samples, samples.run_ids),
+                          request.taken);
   return result;
 }
 
@@ -117,7 +119,8 @@ LevelFitResult fit_stored_runs_by_level(Database& database, const LevelFitReques
   const FitSamples& samples = result.setup.samples;
   const DampingLawSpec& spec = result.setup.spec;
   if (request.by == spec.variable)
-    throw InputError("--by " + request.by + " is the law's own variable; expected another velocity component or a "
+    throw InputError("--by " + request.by +
+                     " is the law's own variable; expected another velocity component or a "
                      "disturbance");
   const auto [kind, degree] = parse_curve(request.curve);
   std::vector<double> levels;
@@ -125,7 +128,8 @@ LevelFitResult fit_stored_runs_by_level(Database& database, const LevelFitReques
     levels.push_back(condition_value(samples.keys[i], samples.run_ids[i], request.by));
   // A level with too few runs for the law is left out with a note (the
   // sweep's other levels are still fitted), or refuses the whole fit when strict.
-  result.levels = fit_per_level(spec, samples.x, samples.y, levels, options, request.strict ? nullptr : &result.skipped);
+  result.levels =
+      fit_per_level(spec, samples.x, samples.y, levels, options, request.strict ? nullptr : &result.skipped);
   result.curves = fit_coefficient_curves(result.levels, kind, degree);
   add_unconverged_warning(result.setup);
   result.base_name = request.fit.name.value_or(
@@ -169,8 +173,8 @@ std::vector<FitRecord> fits_made_from(Database& database, const std::string& bod
   if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) {
     std::string names;
     for (const auto& name : bodies) names += (names.empty() ? "" : ", ") + name;
-    throw InputError("no body '" + body + "' in " + database.path().string() + "; expected one of: " +
-                     (names.empty() ? "(none)" : names));
+    throw InputError("no body '" + body + "' in " + database.path().string() +
+                     "; expected one of: " + (names.empty() ? "(none)" : names));
   }
   auto fits = database.fits(body);
   if (selection.empty()) return fits;

@@ -30,13 +30,13 @@ namespace hydrocoef {
 /// What to fit (each text in the CLI's vocabulary, checked).
 struct FitRequest {
   std::string body;
-  std::string dof;                    ///< force component: "X".."N"
-  std::string terms;                  ///< e.g. "1,u,u|u|" (parse_damping_terms)
-  std::string loss = "squared";       ///< or "huber:S", "cauchy:S", "soft-l1:S" (parse_loss)
-  std::vector<std::string> where;     ///< selection clauses
+  std::string dof;                 ///< force component: "X".."N"
+  std::string terms;               ///< e.g. "1,u,u|u|" (parse_damping_terms)
+  std::string loss = "squared";    ///< or "huber:S", "cauchy:S", "soft-l1:S" (parse_loss)
+  std::vector<std::string> where;  ///< selection clauses
   std::vector<std::int64_t> exclude_runs;
   std::vector<std::string> mirror_planes, mirror_odd;
-  std::optional<std::string> name;    ///< default: default_fit_name (src/fit/fit_names.hpp)
+  std::optional<std::string> name;  ///< default: default_fit_name (src/fit/fit_names.hpp)
   bool store = true;
   Database::NameTaken taken = Database::NameTaken::Refuse;
 };
@@ -78,17 +78,17 @@ FitResult fit_stored_runs(Database& database, const FitRequest& request);
 /// The law at each level of `by`, then each coefficient as a curve of it.
 struct LevelFitRequest {
   FitRequest fit;
-  std::string by;                        ///< velocity component or disturbance
-  std::string curve = "polynomial:2";    ///< parse_curve
-  bool strict = false;                   ///< refuse when a level has too few runs (else skip it)
+  std::string by;                      ///< velocity component or disturbance
+  std::string curve = "polynomial:2";  ///< parse_curve
+  bool strict = false;                 ///< refuse when a level has too few runs (else skip it)
 };
 
 struct LevelFitResult {
   std::string base_name;
   FitSetup setup;
   std::vector<LevelFit> levels;
-  std::vector<std::string> names;                   ///< per level: BASE[by=LEVEL]
-  std::vector<std::optional<std::int64_t>> ids;     ///< per level, when stored
+  std::vector<std::string> names;                ///< per level: BASE[by=LEVEL]
+  std::vector<std::optional<std::int64_t>> ids;  ///< per level, when stored
   std::vector<SkippedLevel> skipped;
   std::vector<CoefficientCurve> curves;
 };

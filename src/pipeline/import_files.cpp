@@ -17,8 +17,8 @@
 #include "importers/force_table.hpp"
 #include "importers/openfoam_forces.hpp"
 #include "src/core/error.hpp"
-#include "src/core/parallel.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/parallel.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/version.hpp"
 #include "src/loads/symmetry.hpp"
@@ -29,7 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
@@ -97,8 +98,10 @@ void settings_not_applicable(const RunSettings& settings, const std::vector<std:
     const Setting* setting = settings.find(name);
     if (!setting) continue;
     const auto source = setting->origin.source;
-    const std::string where = setting->origin.where.empty() ? std::string(setting_source_name(source)) : setting->origin.where;
-    if (source == SettingSource::CommandLine || source == SettingSource::FileSidecar || source == SettingSource::Manifest)
+    const std::string where =
+        setting->origin.where.empty() ? std::string(setting_source_name(source)) : setting->origin.where;
+    if (source == SettingSource::CommandLine || source == SettingSource::FileSidecar ||
+        source == SettingSource::Manifest)
       throw InputError(where + ": setting '" + name + "' does not apply to " + what + "; expected it left out");
     notes.push_back("setting '" + name + "' from " + where + " does not apply to " + what + " and was not used");
   }
@@ -194,7 +197,9 @@ SurfaceRunOptions surface_options(const RunSettings& settings, const std::string
   if (const auto convention = choice("shear_convention", {"on-wall", "on-fluid"}))
     options.shear_convention = *convention == "on-wall" ? ShearConvention::OnWall : ShearConvention::OnFluid;
   if (const auto normals = choice("normals", {"auto", "as-given", "flip"}))
-    options.normals = *normals == "auto" ? NormalPolicy::Auto : *normals == "flip" ? NormalPolicy::Flip : NormalPolicy::AsGiven;
+    options.normals = *normals == "auto"   ? NormalPolicy::Auto
+                      : *normals == "flip" ? NormalPolicy::Flip
+                                           : NormalPolicy::AsGiven;
   options.density = settings.number("rho");
   options.kinematic_viscosity = settings.number("nu");
   options.reference_pressure = settings.number("p_ref").value_or(0.0);
@@ -268,7 +273,8 @@ fs::path case_forces_folder(const fs::path& case_folder) {
       if (!entry.is_directory()) continue;
       bool has_forces = false;
       for (const auto& file : fs::recursive_directory_iterator(entry.path(), ec))
-        if (file.is_regular_file() && (is_force_history_name(file.path()) || file.path().filename() == "forceCoeffs.dat")) {
+        if (file.is_regular_file() &&
+            (is_force_history_name(file.path()) || file.path().filename() == "forceCoeffs.dat")) {
           has_forces = true;
           break;
         }
@@ -302,7 +308,8 @@ ForceHistory history_in_body_axes(ForceHistory history, const RunSettings& setti
   if (history.frame.axes_in_global) history = rotated_to_global_axes(history);
   const std::size_t n = history.size();
   if (history.frame.naming == ComponentNaming::BodyAxes) {
-    settings_not_applicable(settings, {"axes", "origin", "cofr", "symmetry"}, "a history in body axes (columns X..N)", notes);
+    settings_not_applicable(settings, {"axes", "origin", "cofr", "symmetry"}, "a history in body axes (columns X..N)",
+                            notes);
     return history;
   }
   Vec3 centre{};
@@ -379,8 +386,8 @@ ImportedRun run_from_history(const ForceHistory& history, const HistoryAnalysis&
     if (const auto& p = component.parts[static_cast<std::size_t>(ForcePart::Pressure)]) force.pressure = p->mean;
     if (const auto& v = component.parts[static_cast<std::size_t>(ForcePart::Viscous)]) force.viscous = v->mean;
     run.tau_b[c] = force;
-    statistics.components[c] = ComponentStatistics{total.standard_error, total.std_dev, total.drift,
-                                                   total.effective_samples};
+    statistics.components[c] =
+        ComponentStatistics{total.standard_error, total.std_dev, total.drift, total.effective_samples};
   }
   (void)history;
   run.statistics = std::move(statistics);
@@ -419,8 +426,10 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   for (const auto& note : history.notes) out.notes.push_back(note);
   // The run's reference point: the one given, else the solver's moment centre.
   Vec3 reference_b{};
-  if (settings.find("ref_point") || settings.find("cofr")) reference_b = resolve_reference_point(settings, frame);
-  else if (history.frame.moment_centre) reference_b = frame.point_to_body(*history.frame.moment_centre);
+  if (settings.find("ref_point") || settings.find("cofr"))
+    reference_b = resolve_reference_point(settings, frame);
+  else if (history.frame.moment_centre)
+    reference_b = frame.point_to_body(*history.frame.moment_centre);
   const ForceHistory body = history_in_body_axes(std::move(history), settings, frame, reference_b, out.notes);
   HistoryAnalysisOptions analysis_options;
   analysis_options.window = window_of(settings);
@@ -497,10 +506,11 @@ ImportedInput read_input(const PlannedInput& input, const ImportRequest& request
     out.batch = out.surface->batch;
     for (const auto& w : out.surface->warnings) out.notes.push_back(w);
   } else if (format == "table") {
-    settings_not_applicable(settings,
-                            {"flow", "axes", "origin", "cofr", "symmetry", "window", "pressure", "shear", "pressure_kind",
-                             "shear_convention", "length_unit", "pressure_unit", "normals", "locations"},
-                            "a force table (its rows are in body axes)", out.notes);
+    settings_not_applicable(
+        settings,
+        {"flow", "axes", "origin", "cofr", "symmetry", "window", "pressure", "shear", "pressure_kind",
+         "shear_convention", "length_unit", "pressure_unit", "normals", "locations"},
+        "a force table (its rows are in body axes)", out.notes);
     ForceTableOptions options;
     options.body = key.body;
     options.velocity_b = key.nu_b;

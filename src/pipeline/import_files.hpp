@@ -47,12 +47,12 @@ namespace hydrocoef {
 
 /// Options of the table, monitor and history readers, by column.
 struct ColumnOptions {
-  std::map<std::string, std::string> columns;     ///< component -> header (tables, histories)
-  std::map<std::string, std::string> units;       ///< component -> unit for headers without one
-  std::vector<std::string> disturbance_columns;   ///< tables: headers holding a disturbance
-  std::vector<std::string> ignored_columns;       ///< tables: headers to skip
-  std::map<std::string, std::string> monitors;    ///< monitors: component -> monitor
-  std::size_t average_last = 1;                   ///< monitors: > 1 averages the last N iterations (window last:N)
+  std::map<std::string, std::string> columns;    ///< component -> header (tables, histories)
+  std::map<std::string, std::string> units;      ///< component -> unit for headers without one
+  std::vector<std::string> disturbance_columns;  ///< tables: headers holding a disturbance
+  std::vector<std::string> ignored_columns;      ///< tables: headers to skip
+  std::map<std::string, std::string> monitors;   ///< monitors: component -> monitor
+  std::size_t average_last = 1;                  ///< monitors: > 1 averages the last N iterations (window last:N)
 };
 
 struct ImportRequest {

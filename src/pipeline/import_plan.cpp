@@ -18,12 +18,13 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
 bool is_data_extension(const std::string& extension) {
-  static const std::set<std::string> known = {".csv", ".txt", ".tsv", ".dat", ".vtp", ".vtu",
+  static const std::set<std::string> known = {".csv", ".txt", ".tsv",  ".dat",   ".vtp", ".vtu",
                                               ".vtk", ".vtm", ".case", ".encas", ".cgns"};
   return known.count(extension) > 0;
 }
@@ -162,18 +163,18 @@ fs::path cfx_monitor_of(const fs::path& case_file) {
     throw InputError(SourceLocation{case_file.string()},
                      "a CFX case file, but no monitor file beside it (" + stem +
                          "*.csv with an 'Accumulated Timestep' header); expected the monitors exported with "
-                         "cfx5mondata -res " + stem + ".res -out " + stem + ".csv");
+                         "cfx5mondata -res " +
+                         stem + ".res -out " + stem + ".csv");
   std::string names;
   for (const auto& f : found) names += (names.empty() ? "" : ", ") + f.filename().string();
-  throw InputError(SourceLocation{case_file.string()},
-                   "a CFX case file with " + std::to_string(found.size()) + " monitor files beside it (" + names +
-                       "); expected one: name the monitor file to import instead");
+  throw InputError(SourceLocation{case_file.string()}, "a CFX case file with " + std::to_string(found.size()) +
+                                                           " monitor files beside it (" + names +
+                                                           "); expected one: name the monitor file to import instead");
 }
 
 bool filtered_in(const fs::path& relative, const ImportPlanOptions& options) {
-  if (!options.include.empty() &&
-      std::none_of(options.include.begin(), options.include.end(),
-                   [&](const std::string& p) { return glob_matches(p, relative); }))
+  if (!options.include.empty() && std::none_of(options.include.begin(), options.include.end(),
+                                               [&](const std::string& p) { return glob_matches(p, relative); }))
     return false;
   return std::none_of(options.exclude.begin(), options.exclude.end(),
                       [&](const std::string& p) { return glob_matches(p, relative); });
@@ -195,7 +196,8 @@ bool is_openfoam_case(const fs::path& folder) {
 }
 
 bool glob_matches(const std::string& pattern, const fs::path& relative) {
-  const std::string text = pattern.find('/') == std::string::npos ? relative.filename().string() : relative.generic_string();
+  const std::string text =
+      pattern.find('/') == std::string::npos ? relative.filename().string() : relative.generic_string();
   return fnmatch(pattern.c_str(), text.c_str(), 0) == 0;
 }
 
@@ -205,8 +207,9 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
   for (const auto& input : inputs) {
     std::error_code ec;
     if (!fs::exists(input, ec))
-      throw InputError(SourceLocation{input.string()}, "no such file or folder; expected a CFD result file, a folder of "
-                                                       "them or a case folder");
+      throw InputError(SourceLocation{input.string()},
+                       "no such file or folder; expected a CFD result file, a folder of "
+                       "them or a case folder");
     if (!fs::is_directory(input, ec)) {
       // A CFX case file named directly stands for its run: its monitors, with its settings.
       fs::path file = input;
@@ -262,7 +265,8 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
     for (const auto& file : files) {
       if (dropped.count(file)) continue;
       const std::string extension = lower(file.extension().string());
-      if (is_force_history_name(file)) kinds[file.parent_path()].first.push_back(file);
+      if (is_force_history_name(file))
+        kinds[file.parent_path()].first.push_back(file);
       else if (extension != ".csv" && extension != ".txt" && extension != ".tsv" && extension != ".dat")
         kinds[file.parent_path()].second.push_back(file);
     }
@@ -277,8 +281,9 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
         dropped.insert(f);
         left += (left.empty() ? "" : ", ") + f.filename().string();
       }
-      plan.notes.push_back(folder.string() + ": " + taken + (options.prefer_surfaces ? " (surfaces, as asked)" : " (force history)") +
-                           " imported; " + left + " left out: one run read two ways" +
+      plan.notes.push_back(folder.string() + ": " + taken +
+                           (options.prefer_surfaces ? " (surfaces, as asked)" : " (force history)") + " imported; " +
+                           left + " left out: one run read two ways" +
                            (options.prefer_surfaces ? "" : " (--prefer-surfaces takes the surfaces)"));
     }
     for (const auto& [key, twins] : by_stem) {

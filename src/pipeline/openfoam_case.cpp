@@ -15,7 +15,8 @@ namespace fs = std::filesystem;
 std::string where_of(const FoamValue& value) { return value.file + ":" + std::to_string(value.line); }
 
 std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
@@ -44,10 +45,14 @@ void read_velocity(const fs::path& file, OpenFoamCaseSettings& out) {
                              "' state different free streams; expected one (give the run's flow in a sidecar)");
       if (!slot) slot = stream;
     };
-    if (type == "freestreamVelocity" || type == "freestream") take(freestream, "freestreamValue");
-    else if (type == "inletOutlet" && lower(patch).find("inlet") != std::string::npos) take(inlet, "inletValue");
-    else if (type == "fixedValue" && lower(patch).find("inlet") != std::string::npos) take(inlet, "value");
-    else if (type == "symmetryPlane" || type == "symmetry") symmetry.push_back(patch);
+    if (type == "freestreamVelocity" || type == "freestream")
+      take(freestream, "freestreamValue");
+    else if (type == "inletOutlet" && lower(patch).find("inlet") != std::string::npos)
+      take(inlet, "inletValue");
+    else if (type == "fixedValue" && lower(patch).find("inlet") != std::string::npos)
+      take(inlet, "value");
+    else if (type == "symmetryPlane" || type == "symmetry")
+      symmetry.push_back(patch);
   }
   const auto& stream = freestream ? freestream : inlet;
   if (stream) out.layer.set("flow", std::vector<double>(stream->value.begin(), stream->value.end()), stream->where);
@@ -106,8 +111,10 @@ OpenFoamCaseSettings openfoam_case_settings(const fs::path& case_dir) {
   OpenFoamCaseSettings out;
   out.layer.origin = {SettingSource::CaseFiles, case_dir.string()};
   std::error_code ec;
-  if (fs::is_regular_file(case_dir / "0" / "U", ec)) read_velocity(case_dir / "0" / "U", out);
-  else if (fs::is_regular_file(case_dir / "0.orig" / "U", ec)) read_velocity(case_dir / "0.orig" / "U", out);
+  if (fs::is_regular_file(case_dir / "0" / "U", ec))
+    read_velocity(case_dir / "0" / "U", out);
+  else if (fs::is_regular_file(case_dir / "0.orig" / "U", ec))
+    read_velocity(case_dir / "0.orig" / "U", out);
   if (fs::is_regular_file(case_dir / "system" / "controlDict", ec))
     read_forces_function(case_dir / "system" / "controlDict", out);
   read_viscosity(case_dir, out);

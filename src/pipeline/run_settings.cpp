@@ -57,7 +57,8 @@ std::string value_text(const SettingValue& value) {
 
 double finite_number(const nlohmann::json& value, const SourceLocation& where, const std::string& key) {
   if (!value.is_number())
-    throw InputError(where, "key '" + key + "': expected a number, found " + printable_text(escape::json_text(value), 40));
+    throw InputError(where,
+                     "key '" + key + "': expected a number, found " + printable_text(escape::json_text(value), 40));
   const double x = value.get<double>();
   if (!std::isfinite(x)) throw InputError(where, "key '" + key + "': expected a finite number");
   return x;
@@ -65,7 +66,8 @@ double finite_number(const nlohmann::json& value, const SourceLocation& where, c
 
 std::string json_text(const nlohmann::json& value, const SourceLocation& where, const std::string& key) {
   if (!value.is_string())
-    throw InputError(where, "key '" + key + "': expected a string, found " + printable_text(escape::json_text(value), 40));
+    throw InputError(where,
+                     "key '" + key + "': expected a string, found " + printable_text(escape::json_text(value), 40));
   return value.get<std::string>();
 }
 
@@ -85,11 +87,33 @@ std::string_view setting_source_name(SettingSource source) {
 }
 
 const std::vector<std::string>& sidecar_keys() {
-  static const std::vector<std::string> keys = {
-      "body",      "u",     "v",        "w",      "p",        "q",             "r",
-      "flow",      "disturbances", "rho", "nu",   "p_ref",    "ref_point",     "cofr",
-      "axes",      "origin", "pressure", "shear", "pressure_kind", "shear_convention", "length_unit",
-      "pressure_unit", "normals", "locations", "window", "symmetry", "sign"};
+  static const std::vector<std::string> keys = {"body",
+                                                "u",
+                                                "v",
+                                                "w",
+                                                "p",
+                                                "q",
+                                                "r",
+                                                "flow",
+                                                "disturbances",
+                                                "rho",
+                                                "nu",
+                                                "p_ref",
+                                                "ref_point",
+                                                "cofr",
+                                                "axes",
+                                                "origin",
+                                                "pressure",
+                                                "shear",
+                                                "pressure_kind",
+                                                "shear_convention",
+                                                "length_unit",
+                                                "pressure_unit",
+                                                "normals",
+                                                "locations",
+                                                "window",
+                                                "symmetry",
+                                                "sign"};
   return keys;
 }
 
@@ -121,7 +145,8 @@ std::optional<std::string> RunSettings::text(std::string_view name) const {
 std::optional<Vec3> RunSettings::triple(std::string_view name) const {
   const Setting* s = find(name);
   if (!s) return std::nullopt;
-  if (const auto* x = std::get_if<std::vector<double>>(&s->value); x && x->size() == 3) return Vec3{(*x)[0], (*x)[1], (*x)[2]};
+  if (const auto* x = std::get_if<std::vector<double>>(&s->value); x && x->size() == 3)
+    return Vec3{(*x)[0], (*x)[1], (*x)[2]};
   wrong_type(*s, name, "three numbers x,y,z");
 }
 
@@ -201,8 +226,7 @@ RunKey resolve_key(const RunSettings& settings, const FrameTransform& frame, con
     for (std::size_t i = 0; i < 3; ++i)
       if (settings.find(kVelocityNames[i]))
         throw InputError(where_text(*settings.find("flow")) + ": settings 'flow' and '" +
-                         std::string(kVelocityNames[i]) +
-                         "' both state the body's velocity; expected one of them");
+                         std::string(kVelocityNames[i]) + "' both state the body's velocity; expected one of them");
     // The free stream past a fixed body is the body moving at its negative.
     const Vec3 flow_b = frame.vector_to_body(*flow);
     for (std::size_t i = 0; i < 3; ++i) key.nu_b[i] = flow_b[i] == 0.0 ? 0.0 : -flow_b[i];
@@ -233,8 +257,8 @@ SettingsLayer settings_from_json(const nlohmann::json& object, SettingOrigin ori
       for (const auto& [name, x] : value.items()) {
         check_name(NameKind::Parameter, name, where, "key 'disturbances'");
         if (velocity_index(name))
-          throw InputError(where, "key 'disturbances': '" + name + "' is a velocity component; give it as key '" +
-                                      name + "'");
+          throw InputError(where,
+                           "key 'disturbances': '" + name + "' is a velocity component; give it as key '" + name + "'");
         layer.set(std::string(kDisturbancePrefix) + name, finite_number(x, where, "disturbances." + name));
       }
       continue;

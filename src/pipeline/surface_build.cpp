@@ -48,8 +48,9 @@ SurfaceBuildResult build_and_store_surface(Database& database, const std::string
   definition["build_spec"] = build_spec_json(spec);
   record.definition = escape::json_text(definition);
   database.save_surface(record);
-  return SurfaceBuildResult{load_surface(database, name), measured.size(), runs.size() - measured.size(),
-                            images_skipped,         built.runs_skipped, mirror.text()};
+  return SurfaceBuildResult{
+      load_surface(database, name), measured.size(), runs.size() - measured.size(), images_skipped,
+      built.runs_skipped,           mirror.text()};
 }
 
 SurfaceBuildSpec stored_build_spec(const SurfaceRecord& record) {

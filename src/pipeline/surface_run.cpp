@@ -27,7 +27,8 @@ std::mutex& vtk_read_mutex() {
 }
 
 std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
@@ -60,8 +61,6 @@ FieldArray& field_named(SurfaceMesh& mesh, const std::string& name) {
 void scale_field(SurfaceMesh& mesh, const std::string& name, double factor) {
   for (auto& v : field_named(mesh, name).values) v *= factor;
 }
-
-
 
 /// Reads the mesh and the file's SHA-256 and size: text formats are read
 /// once, hashed and parsed from the same bytes; VTK-family files are read by
@@ -132,8 +131,8 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
     if (options.pressure) {
       pressure = mesh.find_field(*options.pressure);
       if (!pressure)
-        throw InputError("pressure array '" + *options.pressure + "' is not in the file; arrays there: " +
-                         array_list(mesh));
+        throw InputError("pressure array '" + *options.pressure +
+                         "' is not in the file; arrays there: " + array_list(mesh));
     } else {
       pressure = find_named(mesh, {"Pressure", "p", "pressure", "Static Pressure", "static_pressure"}, 1);
       if (!pressure)
@@ -146,14 +145,16 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
 
     std::vector<std::string> shear = options.shear;
     if (shear.empty()) {
-      if (const FieldArray* vector = find_named(mesh, {"wallShearStress", "Wall Shear", "Wall_Shear", "wall_shear_stress"}, 3)) {
+      if (const FieldArray* vector =
+              find_named(mesh, {"wallShearStress", "Wall Shear", "Wall_Shear", "wall_shear_stress"}, 3)) {
         shear = {vector->name};
       } else if (const FieldArray* x = find_named(mesh, {"Wall Shear X"}, 1)) {
         const std::string prefix = x->name.substr(0, x->name.size() - 1);
         shear = {x->name, prefix + "Y", prefix + "Z"};
       } else {
-        result.warnings.push_back("no wall shear array (looked for Wall Shear X/Y/Z, wallShearStress): only the "
-                                  "pressure force was integrated; name one with --shear");
+        result.warnings.push_back(
+            "no wall shear array (looked for Wall Shear X/Y/Z, wallShearStress): only the "
+            "pressure force was integrated; name one with --shear");
       }
     } else if (shear.size() == 1 && shear[0] == "none") {
       shear.clear();
@@ -194,7 +195,8 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
     if (options.length_unit) {
       const Unit unit = parse_unit(*options.length_unit);
       if (!dimension_matches(unit.dimension, kLength))
-        throw InputError("--length-unit '" + unit.text + "' is " + si_unit_name(unit.dimension) + ", expected a length");
+        throw InputError("--length-unit '" + unit.text + "' is " + si_unit_name(unit.dimension) +
+                         ", expected a length");
       if (result.format == "cfdpost")
         throw InputError("--length-unit: a CFD-Post export states its own length unit in its header");
       for (auto& x : mesh.points_xyz) x *= unit.scale;
@@ -224,8 +226,8 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
     if (!options.symmetry.empty()) {
       loads_cfd = mirror_loads(loads_cfd, options.symmetry);
       result.warnings.push_back("the whole body's loads from a model cut by the symmetry planes " +
-                                symmetry_text(options.symmetry) + " (CFD axes): " +
-                                vanishing_components(options.symmetry) + " vanish");
+                                symmetry_text(options.symmetry) +
+                                " (CFD axes): " + vanishing_components(options.symmetry) + " vanish");
     }
     result.loads_b = loads_to_body(loads_cfd, options.frame);
     for (const auto& w : result.loads_b.geometry.warnings) result.warnings.push_back(w);
@@ -235,7 +237,8 @@ SurfaceRun import_surface_run(const std::filesystem::path& file, const SurfaceRu
     const double open = std::sqrt(n_dA[0] * n_dA[0] + n_dA[1] * n_dA[1] + n_dA[2] * n_dA[2]);
     if (open > 1e-9 * std::max(result.loads_b.geometry.area, 1e-300)) {
       char text[256];
-      std::snprintf(text, sizeof text, "open surface: |∫n dA| = %.4g m^2, so each 1 Pa of reference pressure adds %.4g N "
+      std::snprintf(text, sizeof text,
+                    "open surface: |∫n dA| = %.4g m^2, so each 1 Pa of reference pressure adds %.4g N "
                     "to the force; the forces depend on --p-ref (%g Pa used)",
                     open, open, options.reference_pressure);
       result.warnings.push_back(text);

@@ -39,7 +39,8 @@ const Dimension& dimension_of(std::string_view name) {
 double si_scale(std::string_view name, std::string_view unit, const SourceLocation& where) {
   if (unit.empty()) return 1.0;
   const Unit parsed = parse_unit(unit);
-  const bool known = velocity_index(name) || name == "rho" || name == "nu" || name == "p_ref" || name.rfind("flow_", 0) == 0;
+  const bool known =
+      velocity_index(name) || name == "rho" || name == "nu" || name == "p_ref" || name.rfind("flow_", 0) == 0;
   if (known && !dimension_matches(parsed.dimension, dimension_of(name)))
     throw InputError(where, "unit '" + std::string(unit) + "' of '" + std::string(name) + "' is " +
                                 si_unit_name(parsed.dimension) + "; expected " + si_unit_name(dimension_of(name)));
@@ -73,7 +74,8 @@ Manifest Manifest::read(const fs::path& file) {
     const SourceLocation at{where, lines[first].number, field.column};
     const NameAndUnit parts = split_name_and_unit(field.text);
     const std::string name = parts.name;
-    if (name.empty()) throw InputError(at, "empty column name; expected path, body, u..r, rho, nu, ... or a disturbance");
+    if (name.empty())
+      throw InputError(at, "empty column name; expected path, body, u..r, rho, nu, ... or a disturbance");
     const bool known = is_text_column(name) || velocity_index(name) || name == "rho" || name == "nu" ||
                        name == "p_ref" || name == "flow_x" || name == "flow_y" || name == "flow_z";
     if (!known) check_name(NameKind::Parameter, name, at, "the manifest header");
@@ -84,7 +86,8 @@ Manifest Manifest::read(const fs::path& file) {
     columns.push_back({name, is_text_column(name) ? 1.0 : si_scale(name, parts.unit, at)});
   }
   if (!path_column) throw InputError(SourceLocation{where, lines[first].number}, "no 'path' column; expected one");
-  const auto flows = std::count_if(columns.begin(), columns.end(), [](const Column& c) { return c.name.rfind("flow_", 0) == 0; });
+  const auto flows =
+      std::count_if(columns.begin(), columns.end(), [](const Column& c) { return c.name.rfind("flow_", 0) == 0; });
   if (flows != 0 && flows != 3)
     throw InputError(SourceLocation{where, lines[first].number}, "flow needs all three columns flow_x, flow_y, flow_z");
 
@@ -126,8 +129,8 @@ Manifest Manifest::read(const fs::path& file) {
     const auto& path_field = fields[*path_column];
     if (path_field.text.empty())
       throw InputError(SourceLocation{where, line.number, path_field.column}, "empty path; expected a file or folder");
-    const fs::path target = normalized(fs::path(path_field.text).is_absolute() ? fs::path(path_field.text)
-                                                                               : base / path_field.text);
+    const fs::path target =
+        normalized(fs::path(path_field.text).is_absolute() ? fs::path(path_field.text) : base / path_field.text);
     if (!manifest.rows_.emplace(target, std::move(layer)).second)
       throw InputError(SourceLocation{where, line.number, path_field.column},
                        "path '" + printable_text(path_field.text, 80) + "' is listed twice");
@@ -196,7 +199,8 @@ std::optional<std::vector<double>> NamePattern::match_text(std::string_view text
       if (number.front() == '+') number.remove_prefix(1);
       double value = 0.0;
       const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-      if (number.empty() || ec != std::errc() || ptr != number.data() + number.size() || !std::isfinite(value)) continue;
+      if (number.empty() || ec != std::errc() || ptr != number.data() + number.size() || !std::isfinite(value))
+        continue;
       values[field] = value * fields_[field].scale;
       if (self(self, field + 1, end)) return true;
     }
@@ -221,9 +225,9 @@ std::optional<SettingsLayer> NamePattern::match(const fs::path& relative, bool n
     const auto values = match_text(text);
     if (!values) return;
     if (found && *found != *values)
-      throw InputError(SourceLocation{relative.string()}, "--key-from-name '" + pattern_ + "' matches both '" +
-                                                              found_in + "' and '" + text +
-                                                              "' with different values; expected one match on the path");
+      throw InputError(SourceLocation{relative.string()},
+                       "--key-from-name '" + pattern_ + "' matches both '" + found_in + "' and '" + text +
+                           "' with different values; expected one match on the path");
     found = values;
     found_in = text;
   };

@@ -174,8 +174,8 @@ std::string data_file_text(const Figure& figure) {
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       const Series& series = panel.series[s];
       if (index.series[p][s] < 0) continue;
-      out += "# block " + std::to_string(index.series[p][s]) + ": " + escape::gnuplot_comment(series.title) +
-             "\n# x y\n";
+      out +=
+          "# block " + std::to_string(index.series[p][s]) + ": " + escape::gnuplot_comment(series.title) + "\n# x y\n";
       for (std::size_t i = 0; i < series.x.size(); ++i)
         out += gnuplot_number(series.x[i]) + " " + gnuplot_number(series.y[i]) + "\n";
       out += "\n\n";
@@ -246,15 +246,9 @@ std::string script_text(const Figure& figure, const std::filesystem::path& data,
       const std::string colour = kPalette[series.colour % kPalette.size()];
       std::string clause = file + " index " + std::to_string(index.series[p][s]) + " using 1:2 with ";
       switch (series.style) {
-        case Series::Style::Points:
-          clause += "points pt 7 ps 0.8 lc rgb '" + colour + "'";
-          break;
-        case Series::Style::Line:
-          clause += "lines lw 2 lc rgb '" + colour + "'";
-          break;
-        case Series::Style::DashedLine:
-          clause += "lines lw 2 dt 2 lc rgb '" + colour + "'";
-          break;
+        case Series::Style::Points: clause += "points pt 7 ps 0.8 lc rgb '" + colour + "'"; break;
+        case Series::Style::Line: clause += "lines lw 2 lc rgb '" + colour + "'"; break;
+        case Series::Style::DashedLine: clause += "lines lw 2 dt 2 lc rgb '" + colour + "'"; break;
       }
       clause += series.title.empty() ? " notitle" : " title " + quoted(series.title);
       clauses.push_back(clause);

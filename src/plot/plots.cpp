@@ -10,11 +10,11 @@
 #include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
 #include "src/core/sign_convention.hpp"
+#include "src/core/text.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/surface/stored_surface.hpp"
-#include "src/core/text.hpp"
 
 namespace hydrocoef::plot {
 namespace {
@@ -40,7 +40,6 @@ std::vector<double> linspace(double from, double to, std::size_t count) {
   if (count > 1) out.back() = to;
   return out;
 }
-
 
 /// "X = 0.0155 u + 11 u|u|" from a stored fit.
 std::string law_text(const FitRecord& fit) {
@@ -78,7 +77,6 @@ std::vector<StoredRun> runs_by_id(Database& database, const std::string& body, c
 std::string axis_label(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : name + " [" + unit + "]";
 }
-
 
 }  // namespace
 

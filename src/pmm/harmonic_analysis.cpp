@@ -179,9 +179,7 @@ std::size_t mser_truncation(const std::vector<double>& x) {
 double HarmonicMotion::period() const { return kTwoPi / omega; }
 double HarmonicMotion::displacement(double t) const { return amplitude * std::sin(omega * t + phase); }
 double HarmonicMotion::velocity(double t) const { return amplitude * omega * std::cos(omega * t + phase); }
-double HarmonicMotion::acceleration(double t) const {
-  return -amplitude * omega * omega * std::sin(omega * t + phase);
-}
+double HarmonicMotion::acceleration(double t) const { return -amplitude * omega * omega * std::sin(omega * t + phase); }
 
 HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
                                             const std::array<std::span<const double>, 6>& forces,
@@ -216,11 +214,13 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
   const auto boundary = [&](double k) { return (kTwoPi * k - motion.phase) / motion.omega; };
   double k0 = std::ceil((motion.omega * t.front() + motion.phase) / kTwoPi - 1e-9);
   double k_end = std::floor((motion.omega * t.back() + motion.phase) / kTwoPi + 1e-9);
-  if (options.start_time) k0 = std::max(k0, std::ceil((motion.omega * *options.start_time + motion.phase) / kTwoPi - 1e-9));
+  if (options.start_time)
+    k0 = std::max(k0, std::ceil((motion.omega * *options.start_time + motion.phase) / kTwoPi - 1e-9));
   const double whole = k_end - k0;
   if (!(whole >= 3.0))
-    throw InputError("forced oscillation: the history holds " + std::to_string(static_cast<long>(std::max(0.0, whole))) +
-                     " whole period(s) of " + std::to_string(period) + " s after its start; expected at least 3");
+    throw InputError("forced oscillation: the history holds " +
+                     std::to_string(static_cast<long>(std::max(0.0, whole))) + " whole period(s) of " +
+                     std::to_string(period) + " s after its start; expected at least 3");
   const auto total_periods = static_cast<std::size_t>(whole);
 
   const Phases phases = phases_of(t, motion);
@@ -247,7 +247,8 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
   }
   const std::size_t kept = total_periods - dropped;
   if (kept < 3)
-    throw InputError("forced oscillation: " + std::to_string(kept) + " whole period(s) left after the start-up; expected at least 3");
+    throw InputError("forced oscillation: " + std::to_string(kept) +
+                     " whole period(s) left after the start-up; expected at least 3");
 
   HarmonicAnalysis out;
   out.motion = motion;

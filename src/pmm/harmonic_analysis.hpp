@@ -50,23 +50,23 @@ struct HarmonicMotion {
 };
 
 struct HarmonicFitOptions {
-  int harmonics = 1;                  ///< 1..10 fitted harmonics
-  std::optional<double> start_time;   ///< keep whole periods from here (s); none: detect the transient
+  int harmonics = 1;                 ///< 1..10 fitted harmonics
+  std::optional<double> start_time;  ///< keep whole periods from here (s); none: detect the transient
 };
 
 /// One force or moment component's fit.
 struct HarmonicComponent {
   bool present = false;
-  double mean = 0.0;              ///< F0
-  std::vector<double> in_phase;   ///< s_k, k = 1..harmonics (with sin)
-  std::vector<double> quadrature; ///< c_k (with cos)
-  double explained = 0.0;         ///< fraction of the variance about the mean the fit explains (R^2)
-  double added_mass = 0.0;        ///< M_A[i][j]
-  double damping = 0.0;           ///< D[i][j]
-  double added_mass_se = 0.0;     ///< standard errors from the period-to-period spread
+  double mean = 0.0;               ///< F0
+  std::vector<double> in_phase;    ///< s_k, k = 1..harmonics (with sin)
+  std::vector<double> quadrature;  ///< c_k (with cos)
+  double explained = 0.0;          ///< fraction of the variance about the mean the fit explains (R^2)
+  double added_mass = 0.0;         ///< M_A[i][j]
+  double damping = 0.0;            ///< D[i][j]
+  double added_mass_se = 0.0;      ///< standard errors from the period-to-period spread
   double damping_se = 0.0;
-  double in_phase_spread = 0.0;   ///< standard deviation of s_1 over the periods
-  double quadrature_spread = 0.0; ///< of c_1
+  double in_phase_spread = 0.0;    ///< standard deviation of s_1 over the periods
+  double quadrature_spread = 0.0;  ///< of c_1
 };
 
 struct HarmonicAnalysis {

@@ -94,8 +94,7 @@ std::string quality_html(const SurfaceRecord& surface) {
     const auto built = surface_from_record(surface);
     names = built.output_names();
     units = built.output_units();
-  } catch (const InputError&) {
-  }
+  } catch (const InputError&) {}
   std::ostringstream out;
   const std::string method = q.value("loo_method", "");
   out << "leave-one-out (" << (method == "rbf-exact" ? "exact, RBF" : "along grid lines") << ", "
@@ -206,9 +205,8 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
     std::erase_if(fits, [&](const FitRecord& fit) { return outside(fit.run_ids); });
     std::erase_if(surfaces, [&](const SurfaceRecord& surface) { return outside(surface.run_ids); });
     if (all_fits + all_surfaces > fits.size() + surfaces.size())
-      result.notes.push_back("runs where " + options.selection.text() + ": " +
-                             std::to_string(all_fits - fits.size()) + " fits and " +
-                             std::to_string(all_surfaces - surfaces.size()) +
+      result.notes.push_back("runs where " + options.selection.text() + ": " + std::to_string(all_fits - fits.size()) +
+                             " fits and " + std::to_string(all_surfaces - surfaces.size()) +
                              " surfaces built from other runs too are left out");
   }
 

@@ -13,8 +13,8 @@ void convert_surface_build_options(Connection& connection, const std::string& da
   std::vector<std::pair<std::int64_t, std::string>> updates;
   while (read.step()) {
     const std::int64_t id = read.get_int(0);
-    const std::string context = "surface '" + printable_text(read.get_text(1), 60) + "' (id " + std::to_string(id) +
-                                ") in " + database;
+    const std::string context =
+        "surface '" + printable_text(read.get_text(1), 60) + "' (id " + std::to_string(id) + ") in " + database;
     auto definition = nlohmann::json::parse(read.get_text(2), nullptr, false);
     if (definition.is_discarded() || !definition.is_object())
       throw InputError(context + ": its definition is not a JSON object; expected what hydrocoef stores");

@@ -20,8 +20,7 @@ std::string CheckedRow::found(int column) const {
     }
     case SQLITE_TEXT:
       return "the text '" + printable_text(statement_.get_text(column), 40) + "'" +
-             (statement_.column_bytes(column) > 40 ? " (" + std::to_string(statement_.column_bytes(column)) +
-                                                         " bytes)"
+             (statement_.column_bytes(column) > 40 ? " (" + std::to_string(statement_.column_bytes(column)) + " bytes)"
                                                    : std::string());
     default: return "a blob of " + std::to_string(statement_.column_bytes(column)) + " bytes";
   }
@@ -29,9 +28,9 @@ std::string CheckedRow::found(int column) const {
 
 void CheckedRow::fail(int column, std::string_view expected) const {
   const char* name = statement_.column_name(column);
-  throw InputError(SourceLocation{database_},
-                   "table '" + std::string(table_) + "', row " + std::to_string(row_) + ", column '" +
-                       (name ? name : "?") + "': found " + found(column) + "; expected " + std::string(expected));
+  throw InputError(SourceLocation{database_}, "table '" + std::string(table_) + "', row " + std::to_string(row_) +
+                                                  ", column '" + (name ? name : "?") + "': found " + found(column) +
+                                                  "; expected " + std::string(expected));
 }
 
 void CheckedRow::fail_row(std::string_view message) const {
@@ -103,14 +102,13 @@ std::string CheckedRow::name(int column, NameKind kind) const {
   const std::size_t most_bytes = 4 * max_name_characters(kind);
   const std::string value = text(column, most_bytes);
   if (const auto problem = name_problem(kind, value))
-    fail(column, "a " + std::string(name_kind_text(kind)) + " name that follows the name rule (this one " + *problem +
-                     ")");
+    fail(column,
+         "a " + std::string(name_kind_text(kind)) + " name that follows the name rule (this one " + *problem + ")");
   return value;
 }
 
 std::vector<double> CheckedRow::doubles(int column, std::size_t max_count) const {
-  if (statement_.column_type(column) != SQLITE_BLOB)
-    fail(column, "a blob of float64 values");
+  if (statement_.column_type(column) != SQLITE_BLOB) fail(column, "a blob of float64 values");
   const std::size_t bytes = statement_.column_bytes(column);
   if (bytes % sizeof(double) != 0 || bytes / sizeof(double) > max_count)
     fail(column, "a blob of at most " + std::to_string(max_count) + " float64 values (a multiple of 8 bytes)");

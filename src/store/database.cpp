@@ -16,8 +16,8 @@
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
 #include "src/core/version.hpp"
-#include "src/store/checked_row.hpp"
 #include "src/store/build_spec_migration.hpp"
+#include "src/store/checked_row.hpp"
 #include "src/store/migrations.hpp"
 #include "src/store/schema_check.hpp"
 
@@ -52,7 +52,9 @@ std::string settings_difference(const std::string& before, const std::string& af
   for (const auto& key : keys) {
     const auto a = old_json.contains(key) ? old_json.at(key) : nlohmann::json();
     const auto b = new_json.contains(key) ? new_json.at(key) : nlohmann::json();
-    const auto value_of = [](const nlohmann::json& s) { return s.is_object() ? s.value("value", nlohmann::json()) : nlohmann::json(); };
+    const auto value_of = [](const nlohmann::json& s) {
+      return s.is_object() ? s.value("value", nlohmann::json()) : nlohmann::json();
+    };
     if (value_of(a) == value_of(b)) continue;
     differences.push_back(printable_text(key, 40) + ": " + describe_setting(a) + " then " + describe_setting(b));
   }
@@ -129,7 +131,8 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
   // damaged file fails here with SQLite's "file is not a database".
   const std::string check = integrity_check();
   if (check != "ok")
-    throw InputError(SourceLocation{path.string()}, "database fails its integrity check: " + printable_text(check, 200));
+    throw InputError(SourceLocation{path.string()},
+                     "database fails its integrity check: " + printable_text(check, 200));
   const int version = checked_schema_version();
   if (read_only_ && version == 0) {
     check_schema(0);
@@ -143,13 +146,15 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
       try {
         connection_ = store::Connection(path_.string(), store::Access::ReadWrite);
         configure(connection_);
-      } catch (const InputError&) {
-      }
+      } catch (const InputError&) {}
       if (sqlite3_db_readonly(connection_.handle(), "main"))
-        throw InputError(SourceLocation{path_.string()},
-                         "database is at schema version " + std::to_string(version) + " and read-only here; this "
-                         "hydrocoef reads version " + std::to_string(latest_schema_version()) +
-                         ": upgrade it once with a writing command (hydrocoef import, fit) where it can be written");
+        throw InputError(
+            SourceLocation{path_.string()},
+            "database is at schema version " + std::to_string(version) +
+                " and read-only here; this "
+                "hydrocoef reads version " +
+                std::to_string(latest_schema_version()) +
+                ": upgrade it once with a writing command (hydrocoef import, fit) where it can be written");
       read_only_ = false;
     }
     migrate();
@@ -194,9 +199,9 @@ int Database::checked_schema_version() {
   const std::int64_t version = stored_schema_version(connection_);
   const int latest = latest_schema_version();
   if (version > latest)
-    throw InputError(SourceLocation{path_.string()},
-                     "database is at schema version " + std::to_string(version) + ", this hydrocoef knows up to " +
-                         std::to_string(latest) + "; use a newer hydrocoef");
+    throw InputError(SourceLocation{path_.string()}, "database is at schema version " + std::to_string(version) +
+                                                         ", this hydrocoef knows up to " + std::to_string(latest) +
+                                                         "; use a newer hydrocoef");
   if (version < 0)
     throw InputError(SourceLocation{path_.string()}, "database has schema version " + std::to_string(version) +
                                                          "; expected 0 to " + std::to_string(latest) +
@@ -300,9 +305,9 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
   auto insert_disturbance = connection_.prepare("INSERT INTO run_disturbance(run_id, name, value) VALUES (?, ?, ?)");
   auto run_details =
       connection_.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?");
-  auto update_fluid =
-      connection_.prepare("UPDATE run SET density = coalesce(density, ?), "
-                          "kinematic_viscosity = coalesce(kinematic_viscosity, ?) WHERE id = ?");
+  auto update_fluid = connection_.prepare(
+      "UPDATE run SET density = coalesce(density, ?), "
+      "kinematic_viscosity = coalesce(kinematic_viscosity, ?) WHERE id = ?");
   auto existing_force = connection_.prepare(
       "SELECT s.path, f.source_line, s.imported_at FROM run_force f JOIN source_file s ON s.id = f.source_id "
       "WHERE f.run_id = ? AND f.component = ?");
@@ -418,8 +423,8 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
         if ((density && run.fluid.density_kg_m3 && !same_value(*density, *run.fluid.density_kg_m3)) ||
             (viscosity && run.fluid.kinematic_viscosity_m2_s &&
              !same_value(*viscosity, *run.fluid.kinematic_viscosity_m2_s)))
-          throw InputError(where, "run " + describe(run.key) +
-                                      " already exists with other fluid properties (density or viscosity)");
+          throw InputError(
+              where, "run " + describe(run.key) + " already exists with other fluid properties (density or viscosity)");
         update_fluid.bind(1, run.fluid.density_kg_m3).bind(2, run.fluid.kinematic_viscosity_m2_s).bind(3, run_id);
         update_fluid.run();
       } else {
@@ -444,12 +449,12 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
         if (!run.tau_b[i]) continue;
         existing_force.bind(1, run_id).bind(2, force_name(i));
         if (existing_force.step()) {
-          const std::string previous = existing_force.get_text(0) + ":" + existing_force.get_text(1) +
-                                       " (imported " + existing_force.get_text(2) + ")";
+          const std::string previous = existing_force.get_text(0) + ":" + existing_force.get_text(1) + " (imported " +
+                                       existing_force.get_text(2) + ")";
           existing_force.reset();
           if (policy == ConflictPolicy::Error)
-            throw InputError(where, "run " + describe(run.key) + " already has " + force_name(i) + " from " +
-                                        previous + "; give --replace to supersede it");
+            throw InputError(where, "run " + describe(run.key) + " already has " + force_name(i) + " from " + previous +
+                                        "; give --replace to supersede it");
         } else {
           existing_force.reset();
         }
@@ -683,7 +688,8 @@ std::vector<SourceRecord> Database::sources() {
     record.id = select.get_int(0);
     record.provenance.path = row.text(1);
     record.provenance.sha256 = row.text(2, 64);
-    record.provenance.size_bytes = static_cast<std::uint64_t>(row.integer(3, 0, std::numeric_limits<std::int64_t>::max()));
+    record.provenance.size_bytes =
+        static_cast<std::uint64_t>(row.integer(3, 0, std::numeric_limits<std::int64_t>::max()));
     record.provenance.importer = row.text(4, 256);
     record.provenance.importer_version = row.text(5, 256);
     record.imported_at = row.text(6, 64);
@@ -704,7 +710,8 @@ std::vector<std::string> run_flags(const StoredRun& run) {
 std::vector<std::string> Database::bodies() {
   auto select = connection_.prepare("SELECT name, id FROM body ORDER BY name");
   std::vector<std::string> out;
-  while (select.step()) out.push_back(store::CheckedRow(select, path_.string(), "body", select.get_int(1)).name(0, NameKind::Body));
+  while (select.step())
+    out.push_back(store::CheckedRow(select, path_.string(), "body", select.get_int(1)).name(0, NameKind::Body));
   return out;
 }
 
@@ -817,18 +824,18 @@ std::int64_t Database::existing_body_id(const std::string& name) {
 
 void Database::link_runs(const char* table, const char* owner, std::int64_t id,
                          const std::vector<std::int64_t>& run_ids) {
-  auto insert =
-      connection_.prepare(std::string("INSERT INTO ") + table + "(" + owner + ", run_id) VALUES (?, ?)");
+  auto insert = connection_.prepare(std::string("INSERT INTO ") + table + "(" + owner + ", run_id) VALUES (?, ?)");
   for (const auto run_id : run_ids) insert.bind(1, id).bind(2, run_id).run();
 }
 
 std::vector<std::int64_t> Database::linked_runs(const char* table, const char* owner, std::int64_t id) {
-  auto select = connection_.prepare(std::string("SELECT run_id FROM ") + table + " WHERE " + owner +
-                                    " = ? ORDER BY run_id");
+  auto select =
+      connection_.prepare(std::string("SELECT run_id FROM ") + table + " WHERE " + owner + " = ? ORDER BY run_id");
   select.bind(1, id);
   std::vector<std::int64_t> out;
   while (select.step())
-    out.push_back(store::CheckedRow(select, path_.string(), table, id).integer(0, 1, std::numeric_limits<std::int64_t>::max()));
+    out.push_back(
+        store::CheckedRow(select, path_.string(), table, id).integer(0, 1, std::numeric_limits<std::int64_t>::max()));
   return out;
 }
 
@@ -898,14 +905,16 @@ void Database::remove_import_forces(std::int64_t import_id) {
   touched.bind(1, import_id);
   while (touched.step()) runs.push_back(touched.get_int(0));
   touched.reset();
-  connection_.prepare(
-                 "DELETE FROM run_surface WHERE source_id = (SELECT source_id FROM import WHERE id = ?1) AND run_id IN "
-                 "(SELECT run_id FROM run_force WHERE import_id = ?1)")
+  connection_
+      .prepare(
+          "DELETE FROM run_surface WHERE source_id = (SELECT source_id FROM import WHERE id = ?1) AND run_id IN "
+          "(SELECT run_id FROM run_force WHERE import_id = ?1)")
       .bind(1, import_id)
       .run();
-  connection_.prepare(
-                 "DELETE FROM run_force_statistics WHERE EXISTS (SELECT 1 FROM run_force f WHERE f.import_id = ? AND "
-                 "f.run_id = run_force_statistics.run_id AND f.component = run_force_statistics.component)")
+  connection_
+      .prepare(
+          "DELETE FROM run_force_statistics WHERE EXISTS (SELECT 1 FROM run_force f WHERE f.import_id = ? AND "
+          "f.run_id = run_force_statistics.run_id AND f.component = run_force_statistics.component)")
       .bind(1, import_id)
       .run();
   connection_.prepare("DELETE FROM run_force WHERE import_id = ?").bind(1, import_id).run();
@@ -944,7 +953,8 @@ DeleteOutcome Database::delete_runs(const std::vector<std::int64_t>& ids) {
     exists.step();
     const bool found = exists.get_int(0) != 0;
     exists.reset();
-    if (!found) throw InputError(SourceLocation{path_.string()}, "no run " + std::to_string(id) + "; nothing was deleted");
+    if (!found)
+      throw InputError(SourceLocation{path_.string()}, "no run " + std::to_string(id) + "; nothing was deleted");
     components.bind(1, id);
     components.step();
     outcome.components += static_cast<std::size_t>(components.get_int(0));
@@ -956,7 +966,8 @@ DeleteOutcome Database::delete_runs(const std::vector<std::int64_t>& ids) {
     ++outcome.runs;
   }
   // Imports and files that no longer give any run.
-  connection_.execute("DELETE FROM import WHERE id NOT IN (SELECT import_id FROM run_force WHERE import_id IS NOT NULL)");
+  connection_.execute(
+      "DELETE FROM import WHERE id NOT IN (SELECT import_id FROM run_force WHERE import_id IS NOT NULL)");
   connection_.execute(
       "DELETE FROM source_file WHERE id NOT IN (SELECT source_id FROM import) AND id NOT IN (SELECT source_id FROM "
       "run_force) AND id NOT IN (SELECT source_id FROM run_surface)");
@@ -1000,8 +1011,8 @@ SurfaceRecord Database::surface(const std::string& name) {
   auto select = connection_.prepare("SELECT name FROM surface ORDER BY name");
   std::string names;
   while (select.step()) names += (names.empty() ? "'" : ", '") + printable_text(select.get_text(0), 60) + "'";
-  throw InputError("no surface named '" + name + "' in " + path_.string() + "; surfaces there: " +
-                   (names.empty() ? "none" : names));
+  throw InputError("no surface named '" + name + "' in " + path_.string() +
+                   "; surfaces there: " + (names.empty() ? "none" : names));
 }
 
 }  // namespace hydrocoef

@@ -36,10 +36,9 @@ struct StoredForce {
   std::int64_t source_id = 0;
   std::string source_path;
   std::size_t source_line = 0;
-  std::int64_t import_id = 0;  ///< the import it came from (0: none recorded)
+  std::int64_t import_id = 0;                  ///< the import it came from (0: none recorded)
   std::optional<StoredStatistics> statistics;  ///< when the value is a mean over a force history
 };
-
 
 struct StoredRun {
   std::int64_t id = 0;
@@ -58,8 +57,8 @@ std::vector<std::string> run_flags(const StoredRun& run);
 /// Which runs to list. Values are compared with a tolerance of 1e-9 (SI).
 struct RunFilter {
   std::optional<std::string> body;
-  std::map<std::string, double> equal;       ///< velocity component or disturbance name -> value
-  std::optional<std::size_t> with_force;     ///< only runs that have this component (0..5 = X..N)
+  std::map<std::string, double> equal;    ///< velocity component or disturbance name -> value
+  std::optional<std::size_t> with_force;  ///< only runs that have this component (0..5 = X..N)
 };
 
 /// What to do when a file brings a force component that a run already has
@@ -84,11 +83,11 @@ struct ImportRecord {
   std::int64_t source_id = 0;
   std::string sha256;
   std::uint64_t size_bytes = 0;
-  std::string reading;            ///< "" or the --also name
-  std::string settings;           ///< JSON: every setting with value, source and place
-  std::string settings_key;       ///< canonical values: with the bytes, the import's identity
-  std::string path;               ///< as given
-  std::string resolved_path;      ///< absolute, links resolved ("" when not recorded)
+  std::string reading;        ///< "" or the --also name
+  std::string settings;       ///< JSON: every setting with value, source and place
+  std::string settings_key;   ///< canonical values: with the bytes, the import's identity
+  std::string path;           ///< as given
+  std::string resolved_path;  ///< absolute, links resolved ("" when not recorded)
   std::string importer;
   std::string importer_version;
   std::string hydrocoef_version;  ///< "" for imports older than migration 5
@@ -107,14 +106,14 @@ struct DeleteOutcome {
 struct ImportOutcome {
   std::string path;
   std::string sha256;
-  bool already_imported = false;      ///< the same bytes with the same settings were imported before: nothing added
-  bool replaced = false;              ///< an import of the same bytes with other settings was replaced (--replace)
+  bool already_imported = false;  ///< the same bytes with the same settings were imported before: nothing added
+  bool replaced = false;          ///< an import of the same bytes with other settings was replaced (--replace)
   std::int64_t import_id = 0;
-  std::string reading;                ///< "" or the --also name
-  std::string previously_imported_at; ///< when already_imported
-  std::string previous_path;          ///< when already_imported
+  std::string reading;                 ///< "" or the --also name
+  std::string previously_imported_at;  ///< when already_imported
+  std::string previous_path;           ///< when already_imported
   std::size_t runs_created = 0;
-  std::size_t runs_extended = 0;      ///< existing runs that gained components
+  std::size_t runs_extended = 0;  ///< existing runs that gained components
   std::size_t components_written = 0;
 };
 
@@ -162,15 +161,15 @@ struct SurfaceRecord {
   std::int64_t id = 0;
   std::string name;
   std::string body;
-  std::string kind;        ///< "grid" or "rbf"
-  std::string method;      ///< e.g. "pchip", or the RBF kernel
-  std::string definition;  ///< JSON: axes, breakpoints, outputs, units, options
+  std::string kind;          ///< "grid" or "rbf"
+  std::string method;        ///< e.g. "pchip", or the RBF kernel
+  std::string definition;    ///< JSON: axes, breakpoints, outputs, units, options
   std::vector<double> data;  ///< values in the layout the definition states
-  std::string quality;     ///< JSON: leave-one-out max and RMS per output
+  std::string quality;       ///< JSON: leave-one-out max and RMS per output
   std::string created_at;
-  bool stale = false;      ///< a force of the body changed since the surface was built
+  bool stale = false;  ///< a force of the body changed since the surface was built
   std::vector<std::int64_t> run_ids;
-  std::string database;    ///< the file it was read from, for messages ("" when not read from one)
+  std::string database;  ///< the file it was read from, for messages ("" when not read from one)
 };
 
 class Database {

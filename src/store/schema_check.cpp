@@ -25,8 +25,9 @@ std::vector<SchemaEntry> schema_of(Connection& connection) {
       "WHERE NOT (type = 'table' AND name LIKE 'sqlite\\_stat%' ESCAPE '\\')");
   std::vector<SchemaEntry> out;
   while (select.step()) out.push_back({select.get_text(0), select.get_text(1), select.get_text(2), select.get_text(3)});
-  std::sort(out.begin(), out.end(),
-            [](const SchemaEntry& a, const SchemaEntry& b) { return std::tie(a.type, a.name) < std::tie(b.type, b.name); });
+  std::sort(out.begin(), out.end(), [](const SchemaEntry& a, const SchemaEntry& b) {
+    return std::tie(a.type, a.name) < std::tie(b.type, b.name);
+  });
   return out;
 }
 
@@ -51,7 +52,8 @@ std::optional<std::string> schema_difference(const std::vector<SchemaEntry>& exp
     const auto it = wanted.find(key(entry));
     if (it == wanted.end()) return "has " + describe(entry) + " that hydrocoef does not create";
     if (it->second->sql != entry.sql || it->second->table != entry.table)
-      return "has " + describe(entry) + " that differs from the one hydrocoef creates (a column or clause was added, "
+      return "has " + describe(entry) +
+             " that differs from the one hydrocoef creates (a column or clause was added, "
              "dropped or changed)";
     wanted.erase(it);
   }

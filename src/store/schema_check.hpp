@@ -15,7 +15,7 @@ namespace hydrocoef::store {
 
 /// One sqlite_schema row.
 struct SchemaEntry {
-  std::string type;   ///< table, index, trigger, view
+  std::string type;  ///< table, index, trigger, view
   std::string name;
   std::string table;  ///< the table it belongs to
   std::string sql;    ///< as stored (NULL for automatic indexes: "")

@@ -89,8 +89,8 @@ void Connection::fail(int rc, std::string_view what) const {
   // What a user can cause (another process, the disk, the file) is said in
   // words and is exit 2; anything else is a bug in hydrocoef.
   if (primary == SQLITE_FULL || error == ENOSPC)
-    throw InputError(where, "database: disk full (no space left on device) while " + std::string(what) +
-                                "; nothing was changed");
+    throw InputError(
+        where, "database: disk full (no space left on device) while " + std::string(what) + "; nothing was changed");
   if (primary == SQLITE_BUSY || primary == SQLITE_LOCKED)
     throw InputError(where, "database is busy: another process has held it for " +
                                 std::to_string(busy_timeout_seconds()) +
@@ -99,8 +99,8 @@ void Connection::fail(int rc, std::string_view what) const {
   if (primary == SQLITE_READONLY)
     throw InputError(where, "database is read-only here (" + detail + "); expected a writable file and folder for " +
                                 std::string(what));
-  if (primary == SQLITE_NOTADB || primary == SQLITE_CORRUPT || primary == SQLITE_CANTOPEN ||
-      primary == SQLITE_IOERR || primary == SQLITE_NOMEM || primary == SQLITE_TOOBIG || primary == SQLITE_AUTH)
+  if (primary == SQLITE_NOTADB || primary == SQLITE_CORRUPT || primary == SQLITE_CANTOPEN || primary == SQLITE_IOERR ||
+      primary == SQLITE_NOMEM || primary == SQLITE_TOOBIG || primary == SQLITE_AUTH)
     throw InputError(where, "database: " + std::string(what) + ": " + detail);
   throw std::runtime_error(path_ + ": database: " + std::string(what) + ": " + detail);
 }
@@ -122,8 +122,8 @@ std::int64_t Connection::last_insert_id() const { return sqlite3_last_insert_row
 int Connection::changes() const { return sqlite3_changes(db_); }
 
 Statement::Statement(const Connection& connection, std::string_view sql) : connection_(&connection) {
-  const int rc = sqlite3_prepare_v2(connection.handle(), sql.data(), static_cast<int>(sql.size()), &statement_,
-                                    nullptr);
+  const int rc =
+      sqlite3_prepare_v2(connection.handle(), sql.data(), static_cast<int>(sql.size()), &statement_, nullptr);
   if (rc != SQLITE_OK) connection.fail(rc, "preparing '" + std::string(sql.substr(0, 60)) + "'");
 }
 
@@ -168,8 +168,7 @@ bool Statement::step() {
 }
 
 void Statement::run() {
-  while (step()) {
-  }
+  while (step()) {}
   reset();
 }
 
@@ -201,9 +200,7 @@ std::optional<double> Statement::get_optional_double(int column) const {
   return get_double(column);
 }
 
-Transaction::Transaction(Connection& connection) : connection_(connection) {
-  connection_.execute("BEGIN IMMEDIATE");
-}
+Transaction::Transaction(Connection& connection) : connection_(connection) { connection_.execute("BEGIN IMMEDIATE"); }
 
 Transaction::~Transaction() {
   if (open_) sqlite3_exec(connection_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);

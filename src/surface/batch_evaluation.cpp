@@ -152,7 +152,8 @@ inline bool grid_inside(const LocalAxes<N>& g, const double* data, const std::si
     std::size_t cell;
     if (g.even[a]) {
       // Through a signed integer: x86-64 converts a double to one in one instruction.
-      cell = std::min(static_cast<std::size_t>(static_cast<std::int64_t>((value - g.lo[a]) * g.inv_step[a])), last_cell);
+      cell =
+          std::min(static_cast<std::size_t>(static_cast<std::int64_t>((value - g.lo[a]) * g.inv_step[a])), last_cell);
       if (value < x[cell]) {
         --cell;
       } else if (cell < last_cell && value >= x[cell + 1]) {

@@ -17,7 +17,6 @@
 namespace hydrocoef {
 namespace {
 
-
 /// Reads a whole file or standard input ("-").
 std::string read_all(const std::string& path) {
   std::FILE* file = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
@@ -36,7 +35,6 @@ std::string read_all(const std::string& path) {
   if (failed) throw InputError(path + ": read error");
   return data;
 }
-
 
 /// Buffered output to a file or standard output; the file is written through
 /// an AtomicFile (a temporary renamed at the end), so a failed batch leaves
@@ -124,9 +122,10 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
       const auto [stop, ec] = std::from_chars(p, end, value);
       if (ec != std::errc{} || !std::isfinite(value)) {
         const auto cell_end = std::find(p, end, ',');
-        fail(p, "'" + printable_text(std::string_view(p, static_cast<std::size_t>(std::min<std::ptrdiff_t>(cell_end - p, 64))), 40) +
-                    "' in column '" + surface.axis_names()[column_axis[c]] +
-                    "'; expected a finite number");
+        fail(p, "'" +
+                    printable_text(
+                        std::string_view(p, static_cast<std::size_t>(std::min<std::ptrdiff_t>(cell_end - p, 64))), 40) +
+                    "' in column '" + surface.axis_names()[column_axis[c]] + "'; expected a finite number");
         return;
       }
       p = stop;
@@ -189,23 +188,25 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
   };
   // Header: one column per axis, in any order.
   std::string_view header;
-  while (!rest.empty() && (header = trim(next_line())).empty()) {
-  }
+  while (!rest.empty() && (header = trim(next_line())).empty()) {}
   if (header.empty())
     throw InputError(source + ": empty; expected a header naming the axes (" + join(surface.axis_names(), ", ") + ")");
   std::vector<std::size_t> column_axis;
   std::vector<bool> seen(n_axes, false);
   for (std::size_t start = 0; start <= header.size();) {
     const auto comma = header.find(',', start);
-    const std::string name(trim(header.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    const std::string name(
+        trim(header.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
     std::size_t a = n_axes;
     for (std::size_t i = 0; i < n_axes; ++i)
       if (surface.axis_names()[i] == name) a = i;
     if (a == n_axes)
       throw InputError(SourceLocation{source, line_number, start + 1},
-                       "column '" + printable_text(name, 40) + "' is not an axis of surface '" + request.surface_name + "'; expected the axes " +
-                           join(surface.axis_names(), ", "));
-    if (seen[a]) throw InputError(SourceLocation{source, line_number, start + 1}, "column '" + printable_text(name, 40) + "' repeats");
+                       "column '" + printable_text(name, 40) + "' is not an axis of surface '" + request.surface_name +
+                           "'; expected the axes " + join(surface.axis_names(), ", "));
+    if (seen[a])
+      throw InputError(SourceLocation{source, line_number, start + 1},
+                       "column '" + printable_text(name, 40) + "' repeats");
     seen[a] = true;
     column_axis.push_back(a);
     if (comma == std::string_view::npos) break;
@@ -213,9 +214,9 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
   }
   for (std::size_t a = 0; a < n_axes; ++a)
     if (!seen[a])
-      throw InputError(SourceLocation{source, line_number, 0},
-                       "no column for axis '" + surface.axis_names()[a] + "'; expected columns " +
-                           join(surface.axis_names(), ", "));
+      throw InputError(
+          SourceLocation{source, line_number, 0},
+          "no column for axis '" + surface.axis_names()[a] + "'; expected columns " + join(surface.axis_names(), ", "));
 
   Output out(request.output);
   for (std::size_t a = 0; a < n_axes; ++a) out.text((a ? "," : "") + surface.axis_names()[a]);

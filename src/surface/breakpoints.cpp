@@ -31,9 +31,12 @@ std::optional<Decimal> decimal_of(double value) {
   int fraction_digits = 0;
   bool after_point = false;
   for (std::size_t i = 0; i < e; ++i) {
-    if (s[i] == '-') negative = true;
-    else if (s[i] == '.') after_point = true;
-    else digits += s[i], fraction_digits += after_point ? 1 : 0;
+    if (s[i] == '-')
+      negative = true;
+    else if (s[i] == '.')
+      after_point = true;
+    else
+      digits += s[i], fraction_digits += after_point ? 1 : 0;
   }
   int places = fraction_digits - exponent;
   while (places < 0) digits += '0', ++places;
@@ -74,7 +77,8 @@ std::vector<double> evenly_spaced(double from, double to, std::size_t count) {
       if (!first || !last || __builtin_sub_overflow(*last, *first, &span)) break;
       if (span % steps != 0) continue;
       const std::int64_t step = span / steps;
-      for (std::size_t i = 0; i < count; ++i) out[i] = from_decimal(*first + step * static_cast<std::int64_t>(i), places);
+      for (std::size_t i = 0; i < count; ++i)
+        out[i] = from_decimal(*first + step * static_cast<std::int64_t>(i), places);
       return out;
     }
   }

@@ -9,7 +9,6 @@
 namespace hydrocoef {
 namespace {
 
-
 std::vector<std::string> units_or_default(std::vector<std::string> units, const std::vector<std::string>& names,
                                           const char* what) {
   if (units.empty()) {

@@ -24,7 +24,8 @@ std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vect
                                        const std::vector<double>& upper, std::size_t count, std::size_t candidates) {
   const std::size_t d = surface.dims();
   if (lower.size() != d || upper.size() != d)
-    throw InputError("suggest: " + std::to_string(lower.size()) + " bounds for a surface of " + std::to_string(d) + " axes");
+    throw InputError("suggest: " + std::to_string(lower.size()) + " bounds for a surface of " + std::to_string(d) +
+                     " axes");
   for (std::size_t a = 0; a < d; ++a)
     if (!std::isfinite(lower[a]) || !std::isfinite(upper[a]) || !(lower[a] < upper[a]))
       throw InputError("suggest: the bounds of axis " + std::to_string(a) + " must be finite with lower < upper");

@@ -4,8 +4,8 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 
@@ -15,8 +15,8 @@ namespace hydrocoef {
 namespace {
 
 constexpr double kSqrt5 = 2.23606797749978969641;
-constexpr double kJitter = 1e-10;         ///< relative to sigma^2, on the diagonal
-constexpr double kPriorSd = 3.0;          ///< of each log length scale (scaled axes)
+constexpr double kJitter = 1e-10;  ///< relative to sigma^2, on the diagonal
+constexpr double kPriorSd = 3.0;   ///< of each log length scale (scaled axes)
 constexpr std::size_t kMaxDims = 6;
 
 /// exp(x) for x <= 0, branch-free so that loops over it vectorize: x = k ln2
@@ -62,7 +62,7 @@ constexpr std::size_t kMaxDims = 6;
 /// g_i = sigma^2 dc (see correlation), from the squared distances in k.
 /// Vectorized (AVX2 where the processor has it).
 [[gnu::target_clones("arch=x86-64-v3", "default")]] void kernel_values(GpKernel kernel, double s2, double* k, double* g,
-                                                                   std::size_t n) {
+                                                                       std::size_t n) {
   if (kernel == GpKernel::SquaredExponential) {
     for (std::size_t i = 0; i < n; ++i) {
       const double c = exp_nonpositive(-0.5 * k[i]);
@@ -104,7 +104,8 @@ constexpr std::size_t kMaxDims = 6;
 }
 
 /// dot for callers that are not vectorized themselves.
-[[gnu::target_clones("arch=x86-64-v3", "default")]] double dot_product(const double* a, const double* b, std::size_t n) {
+[[gnu::target_clones("arch=x86-64-v3", "default")]] double dot_product(const double* a, const double* b,
+                                                                       std::size_t n) {
   return dot(a, b, n);
 }
 
@@ -114,8 +115,8 @@ constexpr std::size_t kMaxDims = 6;
 /// chains, so the solve is bound by the loads of L rather than by the
 /// latency of one long sum. Returns w^T w.
 [[gnu::target_clones("arch=x86-64-v3", "default")]] double forward_substitute(const double* __restrict L,
-                                                                          const double* __restrict k,
-                                                                          double* __restrict w, std::size_t n) {
+                                                                              const double* __restrict k,
+                                                                              double* __restrict w, std::size_t n) {
   typedef double v4 __attribute__((vector_size(32)));
   double ww = 0.0;
   for (std::size_t block = 0; block < n; block += 4) {
@@ -175,17 +176,17 @@ struct Scaled {
   GpKernel kernel;
   int degree;
   std::size_t n, d, m;
-  Eigen::MatrixXd z;  ///< n x d scaled axes
-  Eigen::VectorXd y;  ///< scaled values
+  Eigen::MatrixXd z;       ///< n x d scaled axes
+  Eigen::VectorXd y;       ///< scaled values
   Eigen::VectorXd noise2;  ///< scaled noise variances
-  Eigen::MatrixXd H;  ///< n x m mean basis
+  Eigen::MatrixXd H;       ///< n x m mean basis
 };
 
 /// Everything REML needs at one set of hyperparameters.
 struct Factorised {
   Eigen::LLT<Eigen::MatrixXd> K;
-  Eigen::MatrixXd correlation;  ///< C (sigma = 1)
-  Eigen::MatrixXd LinvH;        ///< L^-1 H
+  Eigen::MatrixXd correlation;    ///< C (sigma = 1)
+  Eigen::MatrixXd LinvH;          ///< L^-1 H
   Eigen::LLT<Eigen::MatrixXd> A;  ///< H^T K^-1 H
   Eigen::VectorXd beta, alpha;
   double objective = 0.0;  ///< REML negative log likelihood (without constants and prior)
@@ -199,7 +200,8 @@ bool factorise(const Scaled& p, double sigma, const std::vector<double>& lengths
       double r2 = 0.0;
       for (std::size_t a = 0; a < p.d; ++a) {
         const double delta = (p.z(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(a)) -
-                              p.z(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(a))) / lengths[a];
+                              p.z(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(a))) /
+                             lengths[a];
         r2 += delta * delta;
       }
       double c = 0.0, dc = 0.0;
@@ -252,14 +254,14 @@ class Reml final : public ceres::FirstOrderFunction {
     const Eigen::MatrixXd P = Kinv - KinvH * f.A.solve(KinvH.transpose());
     const double s2 = sigma * sigma;
     // log sigma: dK = 2 sigma^2 C (+ the jitter's share, negligible and left out).
-    gradient[0] = 0.5 * (P.cwiseProduct(2.0 * s2 * f.correlation)).sum() -
-                  0.5 * f.alpha.dot(2.0 * s2 * f.correlation * f.alpha);
+    gradient[0] =
+        0.5 * (P.cwiseProduct(2.0 * s2 * f.correlation)).sum() - 0.5 * f.alpha.dot(2.0 * s2 * f.correlation * f.alpha);
     for (std::size_t a = 0; a < p_.d; ++a) {
       double trace = 0.0, quadratic = 0.0;
       for (Eigen::Index i = 0; i < n; ++i) {
         for (Eigen::Index j = 0; j < n; ++j) {
-          const double delta = (p_.z(i, static_cast<Eigen::Index>(a)) - p_.z(j, static_cast<Eigen::Index>(a))) /
-                               lengths[a];
+          const double delta =
+              (p_.z(i, static_cast<Eigen::Index>(a)) - p_.z(j, static_cast<Eigen::Index>(a))) / lengths[a];
           if (delta == 0.0) continue;
           // dC/dlog l_a = c_r * delta^2 with c_r the kernel's factor.
           double dk = 0.0;
@@ -268,7 +270,8 @@ class Reml final : public ceres::FirstOrderFunction {
           } else {
             double r2 = 0.0;
             for (std::size_t b = 0; b < p_.d; ++b) {
-              const double e = (p_.z(i, static_cast<Eigen::Index>(b)) - p_.z(j, static_cast<Eigen::Index>(b))) / lengths[b];
+              const double e =
+                  (p_.z(i, static_cast<Eigen::Index>(b)) - p_.z(j, static_cast<Eigen::Index>(b))) / lengths[b];
               r2 += e * e;
             }
             const double r = std::sqrt(r2);
@@ -316,7 +319,8 @@ void check_state(const GpState& s) {
     bad("signal and value scales must be finite and positive");
   // L packed by rows: row i starts at i (i + 1) / 2, its diagonal i further on.
   for (std::size_t i = 0; i < n; ++i)
-    if (!(s.cholesky[i * (i + 1) / 2 + i] > 0.0)) bad("the Cholesky factor has a non-positive diagonal at " + std::to_string(i));
+    if (!(s.cholesky[i * (i + 1) / 2 + i] > 0.0))
+      bad("the Cholesky factor has a non-positive diagonal at " + std::to_string(i));
   for (std::size_t i = 0; i < m; ++i)
     if (!(s.mean_cholesky[i * (i + 1) / 2 + i] > 0.0)) bad("the mean's Cholesky factor has a non-positive diagonal");
 }
@@ -333,9 +337,12 @@ GpKernel parse_gp_kernel(std::string_view text) {
   throw InputError("GP kernel '" + std::string(text) + "': expected matern52 or squared-exponential");
 }
 
-std::size_t gp_mean_terms(int degree, std::size_t dims) { return 1 + (degree >= 1 ? dims : 0) + (degree >= 2 ? dims : 0); }
+std::size_t gp_mean_terms(int degree, std::size_t dims) {
+  return 1 + (degree >= 1 ? dims : 0) + (degree >= 2 ? dims : 0);
+}
 
-GpSurface::GpSurface(GpState state) : state_(std::move(state)), terms_(gp_mean_terms(state_.mean_degree, state_.dims)) {}
+GpSurface::GpSurface(GpState state)
+    : state_(std::move(state)), terms_(gp_mean_terms(state_.mean_degree, state_.dims)) {}
 
 GpSurface GpSurface::from_state(GpState state) {
   check_state(state);
@@ -354,13 +361,16 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
   if (n < m + 1)
     throw InputError("GP surface: " + std::to_string(n) + " runs; a mean of degree " +
                      std::to_string(options.mean_degree) + " needs at least " + std::to_string(m + 1));
-  if (n > 5000) throw InputError("GP surface: " + std::to_string(n) + " runs; at most 5000 are supported (dense O(n^3) solve)");
+  if (n > 5000)
+    throw InputError("GP surface: " + std::to_string(n) + " runs; at most 5000 are supported (dense O(n^3) solve)");
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(y[i])) throw InputError("GP surface: run " + std::to_string(i) + " has a value that is not finite");
+    if (!std::isfinite(y[i]))
+      throw InputError("GP surface: run " + std::to_string(i) + " has a value that is not finite");
     if (!noise_sd.empty() && (!std::isfinite(noise_sd[i]) || noise_sd[i] < 0.0))
       throw InputError("GP surface: run " + std::to_string(i) + " has an uncertainty that is not a finite number >= 0");
     for (std::size_t a = 0; a < dims; ++a)
-      if (!std::isfinite(x[i * dims + a])) throw InputError("GP surface: run " + std::to_string(i) + " has a coordinate that is not finite");
+      if (!std::isfinite(x[i * dims + a]))
+        throw InputError("GP surface: run " + std::to_string(i) + " has a coordinate that is not finite");
   }
 
   GpState state;
@@ -384,11 +394,12 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
   state.value_centre = mean;
   state.value_scale = spread > 0.0 ? spread : 1.0;
 
-  Scaled p{options.kernel, options.mean_degree, n, dims, m, Eigen::MatrixXd(n, dims), Eigen::VectorXd(n),
+  Scaled p{options.kernel,     options.mean_degree,  n, dims, m, Eigen::MatrixXd(n, dims), Eigen::VectorXd(n),
            Eigen::VectorXd(n), Eigen::MatrixXd(n, m)};
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t a = 0; a < dims; ++a)
-      p.z(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(a)) = (x[i * dims + a] - state.axis_centre[a]) / state.axis_scale[a];
+      p.z(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(a)) =
+          (x[i * dims + a] - state.axis_centre[a]) / state.axis_scale[a];
     p.y[static_cast<Eigen::Index>(i)] = (y[i] - state.value_centre) / state.value_scale;
     const double s = noise_sd.empty() ? 0.0 : noise_sd[i] / state.value_scale;
     p.noise2[static_cast<Eigen::Index>(i)] = s * s;
@@ -399,7 +410,8 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < i; ++j)
       if ((p.z.row(static_cast<Eigen::Index>(i)) - p.z.row(static_cast<Eigen::Index>(j))).squaredNorm() == 0.0)
-        throw InputError("GP surface: runs " + std::to_string(j) + " and " + std::to_string(i) + " are at the same point");
+        throw InputError("GP surface: runs " + std::to_string(j) + " and " + std::to_string(i) +
+                         " are at the same point");
 
   // Hyperparameters: fixed, or the best of several L-BFGS starts.
   double sigma = 1.0;
@@ -431,7 +443,9 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
       sigma = std::exp(theta[0]);
       for (std::size_t a = 0; a < dims; ++a) lengths[a] = std::exp(theta[1 + a]);
     }
-    if (!std::isfinite(best)) throw InputError("GP surface: the likelihood could not be evaluated at any start (the kernel matrix is singular)");
+    if (!std::isfinite(best))
+      throw InputError(
+          "GP surface: the likelihood could not be evaluated at any start (the kernel matrix is singular)");
   }
 
   // The final factorisation; more jitter only if the matrix is numerically singular.
@@ -439,7 +453,9 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
   double jitter = kJitter;
   while (!factorise(p, sigma, lengths, jitter, f)) {
     jitter *= 100.0;
-    if (jitter > 1e-4) throw InputError("GP surface: the kernel matrix cannot be factorised; the runs are too close for these length scales");
+    if (jitter > 1e-4)
+      throw InputError(
+          "GP surface: the kernel matrix cannot be factorised; the runs are too close for these length scales");
   }
   state.sigma = sigma;
   state.length_scales = lengths;
@@ -452,12 +468,15 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
   state.beta.assign(f.beta.data(), f.beta.data() + m);
   const Eigen::MatrixXd L = f.K.matrixL();
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j <= i; ++j) state.cholesky.push_back(L(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+    for (std::size_t j = 0; j <= i; ++j)
+      state.cholesky.push_back(L(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
   for (std::size_t t = 0; t < m; ++t)
-    for (std::size_t i = 0; i < n; ++i) state.basis_solve.push_back(f.LinvH(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(t)));
+    for (std::size_t i = 0; i < n; ++i)
+      state.basis_solve.push_back(f.LinvH(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(t)));
   const Eigen::MatrixXd R = f.A.matrixL();
   for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = 0; j <= i; ++j) state.mean_cholesky.push_back(R(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+    for (std::size_t j = 0; j <= i; ++j)
+      state.mean_cholesky.push_back(R(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
   return GpSurface(std::move(state));
 }
 
@@ -563,7 +582,8 @@ void GpSurface::add_pseudo_run(const double* x) {
   // H^T K^-1 H gains q q^T: refactorise the small matrix.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
   for (std::size_t i = 0, at = 0; i < m; ++i)
-    for (std::size_t j = 0; j <= i; ++j, ++at) A(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = state_.mean_cholesky[at];
+    for (std::size_t j = 0; j <= i; ++j, ++at)
+      A(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = state_.mean_cholesky[at];
   const Eigen::MatrixXd R = A.triangularView<Eigen::Lower>();
   Eigen::MatrixXd AtA = R * R.transpose();
   const Eigen::Map<const Eigen::VectorXd> qv(q.data(), static_cast<Eigen::Index>(m));
@@ -572,11 +592,13 @@ void GpSurface::add_pseudo_run(const double* x) {
   const Eigen::MatrixXd Rn = llt.matrixL();
   state_.mean_cholesky.clear();
   for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = 0; j <= i; ++j) state_.mean_cholesky.push_back(Rn(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+    for (std::size_t j = 0; j <= i; ++j)
+      state_.mean_cholesky.push_back(Rn(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
   // The pseudo-run sits at the posterior mean: alpha gains a 0 and beta stays.
   std::vector<double> points(d * (n + 1));
   for (std::size_t a = 0; a < d; ++a) {
-    std::copy(state_.points.begin() + static_cast<std::ptrdiff_t>(a * n), state_.points.begin() + static_cast<std::ptrdiff_t>((a + 1) * n),
+    std::copy(state_.points.begin() + static_cast<std::ptrdiff_t>(a * n),
+              state_.points.begin() + static_cast<std::ptrdiff_t>((a + 1) * n),
               points.begin() + static_cast<std::ptrdiff_t>(a * (n + 1)));
     points[a * (n + 1) + n] = z[a] / state_.length_scales[a];
   }

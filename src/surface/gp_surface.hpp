@@ -65,17 +65,17 @@ struct GpState {
   GpKernel kernel = GpKernel::Matern52;
   int mean_degree = 1;
   std::size_t dims = 0, samples = 0;
-  std::vector<double> axis_centre, axis_scale;  ///< per axis: z = (x - centre) / scale
+  std::vector<double> axis_centre, axis_scale;   ///< per axis: z = (x - centre) / scale
   double value_centre = 0.0, value_scale = 1.0;  ///< y_scaled = (y - centre) / scale
   double sigma = 1.0;                            ///< in scaled values
   std::vector<double> length_scales;             ///< in scaled axes
-  std::vector<double> points;   ///< dims x samples, axis-major, in scaled axes divided by the length scale
-  std::vector<double> alpha;    ///< samples
-  std::vector<double> beta;     ///< mean coefficients (scaled)
-  std::vector<double> cholesky;  ///< L, packed by rows: row i holds L_i0..L_ii
-  std::vector<double> basis_solve;  ///< (L^-1 H)^T: terms x samples, row-major
+  std::vector<double> points;         ///< dims x samples, axis-major, in scaled axes divided by the length scale
+  std::vector<double> alpha;          ///< samples
+  std::vector<double> beta;           ///< mean coefficients (scaled)
+  std::vector<double> cholesky;       ///< L, packed by rows: row i holds L_i0..L_ii
+  std::vector<double> basis_solve;    ///< (L^-1 H)^T: terms x samples, row-major
   std::vector<double> mean_cholesky;  ///< Cholesky factor of H^T K^-1 H, terms x terms, packed by rows
-  double log_likelihood = 0.0;  ///< the REML objective at the optimum (for reports)
+  double log_likelihood = 0.0;        ///< the REML objective at the optimum (for reports)
 };
 
 class GpSurface {

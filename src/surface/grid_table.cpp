@@ -22,7 +22,6 @@ std::string quoted(std::string_view name) { return "'" + std::string(name) + "'"
 
 // ---- 1-D slope rules: y at breakpoints x (n >= 3) -> slope d at every breakpoint.
 
-
 void pchip_slopes(std::span<const double> x, std::span<const double> y, std::span<double> d, std::span<double> h,
                   std::span<double> del) {
   const std::size_t n = x.size();
@@ -178,16 +177,11 @@ kernels_for(std::index_sequence<N...>) {
 
 std::string_view interpolation_name(Interpolation method) {
   switch (method) {
-    case Interpolation::Nearest:
-      return "nearest";
-    case Interpolation::Linear:
-      return "linear";
-    case Interpolation::Pchip:
-      return "pchip";
-    case Interpolation::Akima:
-      return "makima";
-    case Interpolation::NaturalSpline:
-      return "natural-spline";
+    case Interpolation::Nearest: return "nearest";
+    case Interpolation::Linear: return "linear";
+    case Interpolation::Pchip: return "pchip";
+    case Interpolation::Akima: return "makima";
+    case Interpolation::NaturalSpline: return "natural-spline";
   }
   return "?";
 }
@@ -203,14 +197,10 @@ Interpolation parse_interpolation(std::string_view text) {
 
 std::string_view extrapolation_name(Extrapolation policy) {
   switch (policy) {
-    case Extrapolation::Error:
-      return "error";
-    case Extrapolation::Clamp:
-      return "clamp";
-    case Extrapolation::Linear:
-      return "linear";
-    case Extrapolation::Method:
-      return "method";
+    case Extrapolation::Error: return "error";
+    case Extrapolation::Clamp: return "clamp";
+    case Extrapolation::Linear: return "linear";
+    case Extrapolation::Method: return "method";
   }
   return "?";
 }
@@ -359,15 +349,9 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
               ys[i] = hermite_[(first + i * stride) * node_block_ + from * n_out + k];
             }
             switch (method_) {
-              case Interpolation::Pchip:
-                pchip_slopes(x, ys, ds, scratch_a, scratch_b);
-                break;
-              case Interpolation::Akima:
-                makima_slopes(x, ys, ds, scratch_a);
-                break;
-              default:
-                natural_spline_slopes(x, ys, ds, scratch_a, scratch_b);
-                break;
+              case Interpolation::Pchip: pchip_slopes(x, ys, ds, scratch_a, scratch_b); break;
+              case Interpolation::Akima: makima_slopes(x, ys, ds, scratch_a); break;
+              default: natural_spline_slopes(x, ys, ds, scratch_a, scratch_b); break;
             }
             for (std::size_t i = 0; i < count; ++i) {
               hermite_[(first + i * stride) * node_block_ + subset * n_out + k] = ds[i];
@@ -529,15 +513,9 @@ void GridTable::locate(std::span<const double> point, Location& location) const 
 template <bool WithGradient>
 void GridTable::locate_any(std::span<const double> point, Location& location) const {
   switch (terms_per_axis_) {
-    case 1:
-      locate<1, WithGradient>(point, location);
-      break;
-    case 2:
-      locate<2, WithGradient>(point, location);
-      break;
-    default:
-      locate<4, WithGradient>(point, location);
-      break;
+    case 1: locate<1, WithGradient>(point, location); break;
+    case 2: locate<2, WithGradient>(point, location); break;
+    default: locate<4, WithGradient>(point, location); break;
   }
 }
 

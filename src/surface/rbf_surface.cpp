@@ -107,7 +107,6 @@ double squared_distance(const double* a, const double* b, std::size_t axes) {
   return r2;
 }
 
-
 // Exact duplicates, found by sorting the samples lexicographically and
 // comparing neighbours (n log n rather than all pairs).
 void check_distinct(std::span<const double> points, std::size_t axes, const std::vector<std::string>& labels) {
@@ -294,9 +293,7 @@ RbfSurface::RbfSurface(std::size_t axis_count, std::span<const double> points, s
   cross_validation_ = summarize_leave_one_out(solution.loo_errors, output_count_);
 }
 
-RbfSolution RbfSurface::solution() const {
-  return {kernel_weights_, polynomial_weights_, cross_validation_.errors};
-}
+RbfSolution RbfSurface::solution() const { return {kernel_weights_, polynomial_weights_, cross_validation_.errors}; }
 
 void RbfSurface::prepare(std::span<const double> points, std::span<const double> values, const RbfOptions& options) {
   const std::size_t d = axis_count_;
@@ -318,8 +315,9 @@ void RbfSurface::prepare(std::span<const double> points, std::span<const double>
   const std::size_t n = points.size() / d;
   sample_count_ = n;
   if (n > kMaxSamples)
-    throw InputError("RBF surface of " + std::to_string(n) + " samples; this hydrocoef builds RBF surfaces of at most " +
-                     std::to_string(kMaxSamples) + " samples (a dense solve: O(N^3) time and O(N^2) memory); expected "
+    throw InputError("RBF surface of " + std::to_string(n) +
+                     " samples; this hydrocoef builds RBF surfaces of at most " + std::to_string(kMaxSamples) +
+                     " samples (a dense solve: O(N^3) time and O(N^2) memory); expected "
                      "fewer samples (select runs with --where) or a gridded surface");
   if (values.size() != n * output_count)
     throw InputError("RBF surface got " + std::to_string(values.size()) + " values for " + std::to_string(n) +

@@ -41,7 +41,8 @@ json common_definition(const CoefficientSurface& surface) {
 template <typename T>
 T member(const json& object, const char* key, const std::string& where) {
   if (!object.is_object() || !object.contains(key))
-    throw InputError(where + ": the definition has no '" + key + "'; expected it (the database may be from a "
+    throw InputError(where + ": the definition has no '" + key +
+                     "'; expected it (the database may be from a "
                      "different hydrocoef or edited by hand)");
   try {
     return object.at(key).get<T>();
@@ -89,11 +90,13 @@ std::optional<std::string> quality_problem(const std::string& text) {
   const json quality = json::parse(text, nullptr, false);
   if (quality.is_discarded() || !quality.is_object()) return "its quality figures are not a JSON object";
   using TypeCheck = bool (json::*)() const noexcept;
-  const std::pair<const char*, TypeCheck> typed[] = {
-      {"loo_method", &json::is_string},        {"runs", &json::is_number_unsigned},
-      {"loo_defined", &json::is_number_unsigned}, {"grid_points", &json::is_number_unsigned},
-      {"far_threshold", &json::is_number},     {"far_from_data", &json::is_array},
-      {"loo_runs", &json::is_array}};
+  const std::pair<const char*, TypeCheck> typed[] = {{"loo_method", &json::is_string},
+                                                     {"runs", &json::is_number_unsigned},
+                                                     {"loo_defined", &json::is_number_unsigned},
+                                                     {"grid_points", &json::is_number_unsigned},
+                                                     {"far_threshold", &json::is_number},
+                                                     {"far_from_data", &json::is_array},
+                                                     {"loo_runs", &json::is_array}};
   for (const auto& [key, is_type] : typed)
     if (quality.contains(key) && !(quality.at(key).*is_type)())
       return std::string("its quality figure '") + key + "' is of the wrong type";
@@ -103,7 +106,8 @@ std::optional<std::string> quality_problem(const std::string& text) {
     const json& outputs = quality.at("outputs");
     if (!outputs.is_object()) return "its quality figure 'outputs' is of the wrong type";
     for (const auto& [name, entry] : outputs.items()) {
-      if (!entry.is_object()) return "its quality figures of output '" + printable_text(name, 20) + "' are not an object";
+      if (!entry.is_object())
+        return "its quality figures of output '" + printable_text(name, 20) + "' are not an object";
       for (const char* key : {"loo_max", "loo_rms"})
         if (entry.contains(key) && !entry.at(key).is_number() && !entry.at(key).is_null())
           return "its quality figure '" + std::string(key) + "' of output '" + printable_text(name, 20) +
@@ -201,13 +205,14 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
   const auto unit = [&](const json& object) {
     std::string text = member<std::string>(object, "unit", where);
     if (text.size() > 64 || escape::one_line(text) != text)
-      throw InputError(where + ": unit '" + printable_text(text, 40) + "'; expected printable text of at most 64 bytes");
+      throw InputError(where + ": unit '" + printable_text(text, 40) +
+                       "'; expected printable text of at most 64 bytes");
     return text;
   };
   std::vector<std::string> axis_names, axis_units, output_names, output_units;
   for (const auto& axis : axes_json) {
-    axis_names.push_back(std::string(check_name(NameKind::Parameter, member<std::string>(axis, "name", where),
-                                                {}, where + ", an axis")));
+    axis_names.push_back(std::string(
+        check_name(NameKind::Parameter, member<std::string>(axis, "name", where), {}, where + ", an axis")));
     axis_units.push_back(unit(axis));
   }
   for (const auto& output : outputs_json) {
@@ -221,10 +226,12 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
     if (record.kind == "grid") {
       std::vector<GridAxis> axes;
       for (const auto& axis : axes_json)
-        axes.push_back({member<std::string>(axis, "name", where), member<std::vector<double>>(axis, "breakpoints", where),
+        axes.push_back({member<std::string>(axis, "name", where),
+                        member<std::vector<double>>(axis, "breakpoints", where),
                         parse_extrapolation(member<std::string>(axis, "extrapolation", where))});
-      return CoefficientSurface(GridTable(std::move(axes), output_names, record.data, parse_interpolation(record.method)),
-                                axis_units, output_units);
+      return CoefficientSurface(
+          GridTable(std::move(axes), output_names, record.data, parse_interpolation(record.method)), axis_units,
+          output_units);
     }
     if (record.kind == "rbf") {
       const auto rbf_json = member<json>(definition, "rbf", where);
@@ -239,8 +246,10 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
       // Sizes from the file are checked before they are multiplied or used.
       const auto samples = count_member(rbf_json, "samples", where);
       if (samples > RbfSurface::kMaxSamples)
-        throw InputError(where + ": " + std::to_string(samples) + " samples; this hydrocoef loads RBF surfaces of at "
-                         "most " + std::to_string(RbfSurface::kMaxSamples) + " samples");
+        throw InputError(where + ": " + std::to_string(samples) +
+                         " samples; this hydrocoef loads RBF surfaces of at "
+                         "most " +
+                         std::to_string(RbfSurface::kMaxSamples) + " samples");
       const std::size_t d = axis_names.size(), k = output_names.size();
       const std::size_t n_points = samples * d;
       const std::size_t n_values = samples * k;
@@ -250,14 +259,16 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
       if (rbf_json.contains("solution")) {
         const auto stored = member<json>(rbf_json, "solution", where);
         const auto terms = count_member(stored, "polynomial_terms", where);
-        if (terms > 28) throw InputError(where + ": " + std::to_string(terms) + " polynomial terms; expected at most 28");
+        if (terms > 28)
+          throw InputError(where + ": " + std::to_string(terms) + " polynomial terms; expected at most 28");
         expected += (2 * samples + terms) * k;
         if (record.data.size() == expected) {
           json options_json = rbf_json;
           options_json.erase("solution");
           if (member<std::string>(stored, "samples_sha256", where) !=
               samples_hash(data.first(n_points), data.subspan(n_points, n_values), options_json))
-            throw InputError(where + ": its stored solution is not of its stored samples (the database was changed "
+            throw InputError(where +
+                             ": its stored solution is not of its stored samples (the database was changed "
                              "after the surface was built); expected them to match: rebuild it with hydrocoef surface "
                              "rebuild");
           std::size_t at = n_points + n_values;
@@ -276,9 +287,9 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
       if (record.data.size() != expected)
         throw InputError(where + ": its data holds " + std::to_string(record.data.size()) + " numbers; expected " +
                          std::to_string(expected) + " for " + std::to_string(samples) + " samples");
-      RbfSurface rbf = solution ? RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options,
-                                             *solution)
-                                : RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options);
+      RbfSurface rbf =
+          solution ? RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options, *solution)
+                   : RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options);
       return CoefficientSurface(std::move(rbf), axis_names, output_names, axis_units, output_units);
     }
   } catch (const InputError& error) {

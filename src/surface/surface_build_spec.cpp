@@ -34,8 +34,8 @@ double finite_number(const std::string& text, const std::string& option, const s
 }
 
 /// Member `key` of a stored specification, checked to be of the expected type.
-const json& member(const json& stored, const char* key, bool (json::*is_type)() const noexcept,
-                   const char* expected, const std::string& context) {
+const json& member(const json& stored, const char* key, bool (json::*is_type)() const noexcept, const char* expected,
+                   const std::string& context) {
   if (!stored.contains(key) || !(stored.at(key).*is_type)())
     throw InputError(context + ": its stored build specification has no '" + key + "' " + expected +
                      "; expected what hydrocoef surface build stores (build the surface again)");
@@ -82,7 +82,8 @@ std::pair<std::string, std::vector<double>> parse_resample_entry(const std::stri
   if (spec.find(':') != std::string::npos) {
     const auto parts = split(spec, ':');
     if (parts.size() != 3) throw InputError(option + " '" + text + "': expected AXIS=FROM:TO:COUNT or AXIS=X1,X2,...");
-    const double from = finite_number(std::string(parts[0]), option, text), to = finite_number(std::string(parts[1]), option, text);
+    const double from = finite_number(std::string(parts[0]), option, text),
+                 to = finite_number(std::string(parts[1]), option, text);
     const double count = finite_number(std::string(parts[2]), option, text);
     if (!(to > from) || count < 2 || count != std::floor(count) || count > static_cast<double>(kMaxResampleCount))
       throw InputError(option + " '" + text + "': expected FROM < TO and a whole COUNT from 2 to 100000");
@@ -131,8 +132,9 @@ json build_spec_json(const SurfaceBuildSpec& spec) {
 
 SurfaceBuildSpec parse_build_spec(const json& stored, const std::string& context) {
   if (!stored.is_object())
-    throw InputError(context + ": its stored build specification is not a JSON object; expected what hydrocoef "
-                               "surface build stores");
+    throw InputError(context +
+                     ": its stored build specification is not a JSON object; expected what hydrocoef "
+                     "surface build stores");
   const auto& version = member(stored, "version", &json::is_number_integer, "whole number", context);
   if (version.get<std::int64_t>() != kBuildSpecVersion)
     throw InputError(context + ": stored build specification version " + version.dump() + "; expected " +

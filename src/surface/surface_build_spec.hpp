@@ -29,11 +29,11 @@
 namespace hydrocoef {
 
 struct SurfaceBuildSpec {
-  SurfaceSpec surface;                      ///< axes, outputs, method, policies, RBF and resampling
-  std::vector<std::string> where;           ///< selection clauses (src/core/run_selection.hpp)
-  std::vector<std::int64_t> exclude_runs;   ///< run ids left out
-  std::vector<std::string> mirror_planes;   ///< "u", "v", "w" (src/pipeline/fit_runs.hpp MirrorSpec)
-  std::vector<std::string> mirror_odd;      ///< disturbances odd in the mirror
+  SurfaceSpec surface;                     ///< axes, outputs, method, policies, RBF and resampling
+  std::vector<std::string> where;          ///< selection clauses (src/core/run_selection.hpp)
+  std::vector<std::int64_t> exclude_runs;  ///< run ids left out
+  std::vector<std::string> mirror_planes;  ///< "u", "v", "w" (src/pipeline/fit_runs.hpp MirrorSpec)
+  std::vector<std::string> mirror_odd;     ///< disturbances odd in the mirror
 };
 
 inline constexpr int kBuildSpecVersion = 1;

@@ -38,7 +38,8 @@ void check_names(const SurfaceSpec& spec) {
   }
   seen.clear();
   for (const auto& output : spec.outputs) {
-    if (!force_index(output)) throw InputError("output '" + output + "' is not a force component; expected X, Y, Z, K, M or N");
+    if (!force_index(output))
+      throw InputError("output '" + output + "' is not a force component; expected X, Y, Z, K, M or N");
     if (!seen.insert(output).second) throw InputError("output '" + output + "' is given twice");
   }
   if (!spec.out_of_range.empty() && spec.out_of_range.size() != 1 && spec.out_of_range.size() != spec.axes.size())
@@ -168,7 +169,8 @@ std::vector<double> grid_line_loo(const std::vector<GridAxis>& axes, const std::
         for (std::size_t i = 0; i < n; ++i) {
           if (i == index) continue;
           line.breakpoints.push_back(x[i]);
-          for (std::size_t k = 0; k < n_outputs; ++k) line_values.push_back(values[(first + i * stride) * n_outputs + k]);
+          for (std::size_t k = 0; k < n_outputs; ++k)
+            line_values.push_back(values[(first + i * stride) * n_outputs + k]);
         }
         const bool cubic = method != Interpolation::Nearest && method != Interpolation::Linear;
         const Interpolation line_method = cubic && line.breakpoints.size() < 3 ? Interpolation::Linear : method;
@@ -230,11 +232,12 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
       ++listed;
     }
     throw InputError("the " + std::to_string(n_runs) + " runs do not fill a grid: the axes' values make " +
-                     std::to_string(nodes) + " grid points and " + std::to_string(nodes - n_runs) +
-                     " have no run (" + missing + (nodes - n_runs > listed ? "; ..." : "") +
-                     "); expected a full grid for method '" + spec.method + "', or use --method rbf for scattered runs");
+                     std::to_string(nodes) + " grid points and " + std::to_string(nodes - n_runs) + " have no run (" +
+                     missing + (nodes - n_runs > listed ? "; ..." : "") + "); expected a full grid for method '" +
+                     spec.method + "', or use --method rbf for scattered runs");
   }
-  BuiltSurface built{CoefficientSurface(GridTable(axes, spec.outputs, values, method)), {}, {}, samples.skipped, {}, {}};
+  BuiltSurface built{
+      CoefficientSurface(GridTable(axes, spec.outputs, values, method)), {}, {}, samples.skipped, {}, {}};
   built.quality.method = "grid-lines";
   built.quality.runs = n_runs;
   summarize(built.quality, grid_line_loo(axes, values, n_outputs, method), n_outputs, node_run);
@@ -248,9 +251,12 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
   options.out_of_range.clear();
   for (std::size_t a = 0; a < n_axes; ++a) {
     const std::string policy = policy_of(spec, a);
-    if (policy == "error") options.out_of_range.push_back(RbfOutOfRange::Error);
-    else if (policy == "clamp") options.out_of_range.push_back(RbfOutOfRange::Clamp);
-    else if (policy == "extrapolate") options.out_of_range.push_back(RbfOutOfRange::Extrapolate);
+    if (policy == "error")
+      options.out_of_range.push_back(RbfOutOfRange::Error);
+    else if (policy == "clamp")
+      options.out_of_range.push_back(RbfOutOfRange::Clamp);
+    else if (policy == "extrapolate")
+      options.out_of_range.push_back(RbfOutOfRange::Extrapolate);
     else
       throw InputError("out-of-range policy '" + policy + "' for axis '" + spec.axes[a] +
                        "' of an RBF surface; expected error, clamp or extrapolate");
@@ -264,8 +270,12 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
   summarize(quality, rbf.cross_validation().errors, n_outputs, sample_runs);
 
   if (!spec.resample) {
-    BuiltSurface built{CoefficientSurface(std::move(rbf), spec.axes, spec.outputs), quality, {}, samples.skipped,
-                       samples.points, samples.values};
+    BuiltSurface built{CoefficientSurface(std::move(rbf), spec.axes, spec.outputs),
+                       quality,
+                       {},
+                       samples.skipped,
+                       samples.points,
+                       samples.values};
     return built;
   }
   if (spec.resample->size() != n_axes)
@@ -281,8 +291,13 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
     if (policy == "extrapolate") policy = "method";
     axes.push_back({spec.axes[a], grid.breakpoints[a], parse_extrapolation(policy)});
   }
-  BuiltSurface built{CoefficientSurface(GridTable(axes, spec.outputs, grid.values, parse_interpolation(spec.resample_method))),
-                     quality, {}, samples.skipped, {}, {}};
+  BuiltSurface built{
+      CoefficientSurface(GridTable(axes, spec.outputs, grid.values, parse_interpolation(spec.resample_method))),
+      quality,
+      {},
+      samples.skipped,
+      {},
+      {}};
   return built;
 }
 
@@ -314,7 +329,8 @@ std::string SurfaceQuality::to_json(const std::vector<std::string>& outputs) con
 }
 
 SurfaceRecord BuiltSurface::record(const std::string& name, const std::string& body) const {
-  SurfaceRecord out = surface.rbf() ? record_from_surface(surface, rbf_points, rbf_values) : record_from_surface(surface);
+  SurfaceRecord out =
+      surface.rbf() ? record_from_surface(surface, rbf_points, rbf_values) : record_from_surface(surface);
   out.name = name;
   out.body = body;
   out.quality = quality.to_json(surface.output_names());

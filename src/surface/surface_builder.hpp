@@ -58,15 +58,15 @@ struct SurfaceSpec {
 
 /// Leave-one-out figures per output, in the output's unit.
 struct SurfaceQuality {
-  std::string method;             ///< "rbf-exact" or "grid-lines" (see the file comment)
-  std::vector<double> loo_max;    ///< max |error| over runs where it is defined
-  std::vector<double> loo_rms;    ///< RMS over the same runs
-  std::size_t loo_defined = 0;    ///< runs with a LOO error
+  std::string method;           ///< "rbf-exact" or "grid-lines" (see the file comment)
+  std::vector<double> loo_max;  ///< max |error| over runs where it is defined
+  std::vector<double> loo_rms;  ///< RMS over the same runs
+  std::size_t loo_defined = 0;  ///< runs with a LOO error
   /// Per run: its id and its leave-one-out error per output (run-major;
   /// NaN where undefined), so that the worst run can be named.
   std::vector<std::int64_t> loo_runs;
   std::vector<double> loo_errors;
-  std::size_t runs = 0;           ///< runs the surface was built from
+  std::size_t runs = 0;  ///< runs the surface was built from
   /// Resampled grids: grid points (axis 0 fastest) far from every run, and the threshold used.
   std::vector<std::size_t> far_from_data;
   double far_threshold = 0.0;

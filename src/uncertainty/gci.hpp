@@ -39,9 +39,9 @@ std::string_view grid_convergence_name(GridConvergence kind);
 struct GciResult {
   GridConvergence convergence = GridConvergence::NotFound;
   double r21 = 0.0, r32 = 0.0;
-  double apparent_order = 0.0;  ///< p
-  double extrapolated = 0.0;    ///< phi_ext21
-  double extrapolated32 = 0.0;  ///< phi_ext32
+  double apparent_order = 0.0;               ///< p
+  double extrapolated = 0.0;                 ///< phi_ext21
+  double extrapolated32 = 0.0;               ///< phi_ext32
   double relative_error = 0.0;               ///< e_a21 (a fraction, not %)
   double extrapolated_relative_error = 0.0;  ///< e_ext21
   double gci_fine = 0.0;                     ///< GCI_fine21 (a fraction)

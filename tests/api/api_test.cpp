@@ -93,15 +93,15 @@ class ApiTest : public ::testing::Test {
     db.import_files({write_grid_table(dir_)}, grid);
     db.close();
     // Surfaces are built by the CLI (the library's build entry point is the CLI's for now).
-    for (const auto& args : std::vector<std::vector<std::string>>{
-             {"surface", "build", "asr-v-yaw", "--body", "asr-v", "--outputs", "N", "--axes", "r", "--method", "pchip",
-              "--extrapolate", "linear"},
-             {"surface", "build", "asr-v-surge", "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method",
-              "pchip", "--extrapolate", "linear"},
-             {"surface", "build", "grid-linear", "--body", "grid", "--outputs", "X,Y", "--axes", "u,v", "--method",
-              "linear"},
-             {"surface", "build", "grid-pchip", "--body", "grid", "--outputs", "X,Y", "--axes", "u,v", "--method",
-              "pchip"}}) {
+    for (const auto& args :
+         std::vector<std::vector<std::string>>{{"surface", "build", "asr-v-yaw", "--body", "asr-v", "--outputs", "N",
+                                                "--axes", "r", "--method", "pchip", "--extrapolate", "linear"},
+                                               {"surface", "build", "asr-v-surge", "--body", "asr-v", "--outputs", "X",
+                                                "--axes", "u", "--method", "pchip", "--extrapolate", "linear"},
+                                               {"surface", "build", "grid-linear", "--body", "grid", "--outputs", "X,Y",
+                                                "--axes", "u,v", "--method", "linear"},
+                                               {"surface", "build", "grid-pchip", "--body", "grid", "--outputs", "X,Y",
+                                                "--axes", "u,v", "--method", "pchip"}}) {
       auto with_db = args;
       with_db.insert(with_db.begin(), {"--db", path_});
       const auto result = run_cli(with_db, dir_.path());
@@ -287,8 +287,9 @@ TEST_F(ApiTest, BatchReportsTheFirstBadPointWithTheSurfacesMessage) {
   const double expected = s.evaluate({0.25, 0.0})[0];
   for (std::size_t i = 0; i < 20'001; ++i) ASSERT_EQ(x[i], expected) << i;
   v[20'001] = 0.0;
-  EXPECT_EQ(error_of([&] { s.evaluate_batch(n, {{u.data(), 1}, {v.data(), 1}}, {{x.data(), 1}, {y.data(), 1}}, {}); })
-                .rfind("point 31000: ", 0),
+  EXPECT_EQ(error_of([&] {
+              s.evaluate_batch(n, {{u.data(), 1}, {v.data(), 1}}, {{x.data(), 1}, {y.data(), 1}}, {});
+            }).rfind("point 31000: ", 0),
             0u);
 }
 
@@ -312,8 +313,9 @@ TEST_F(ApiTest, ClosedAndReadOnlyDatabasesRefuseWithAMessage) {
   // A bad setting names itself.
   auto writable = Database::open(path_, OpenMode::ReadWrite);
   options.settings = {{"density", "1000"}};
-  EXPECT_NE(error_of([&] { writable.import_files({kAsrV + "asr-v-surge-damping.csv"}, options); })
-                .find("unknown key 'density'"),
+  EXPECT_NE(error_of([&] {
+              writable.import_files({kAsrV + "asr-v-surge-damping.csv"}, options);
+            }).find("unknown key 'density'"),
             std::string::npos);
 }
 

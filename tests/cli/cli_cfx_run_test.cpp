@@ -71,24 +71,24 @@ TEST(CliCfxRun, TheSolverOutputAndItsMonitorsGiveOneRunInBodyAxes) {
   EXPECT_NEAR(run.at("forces").at("Y").at("total").get<double>(), mean_over(fy, first, last), 1e-12);
   EXPECT_NEAR(run.at("forces").at("Z").at("total").get<double>(), -mean_over(fz, first, last), 1e-12);
   // The provenance says where each setting came from: the .out's line.
-  const auto shown = nlohmann::json::parse(run_cli({"runs", "show", std::to_string(run.at("id").get<int>()), "--json"},
-                                                   dir.path())
-                                               .out);
+  const auto shown = nlohmann::json::parse(
+      run_cli({"runs", "show", std::to_string(run.at("id").get<int>()), "--json"}, dir.path()).out);
   const auto settings = shown.at("imports")[0].at("settings");
   EXPECT_EQ(settings.at("flow").at("source"), "case files") << settings.dump();
   EXPECT_NE(settings.at("flow").at("where").get<std::string>().find("tow_u1.5_001.out:72"), std::string::npos)
       << settings.dump();
   EXPECT_EQ(settings.at("axes").at("source"), "command line");
 
-  // The same run from a folder walk: the monitor CSV takes the .out beside it (same bytes, same settings: nothing added).
+  // The same run from a folder walk: the monitor CSV takes the .out beside it (same bytes, same settings: nothing
+  // added).
   const auto again = run_cli({"import", "sweep", "--body", "hull", "--axes=-x,y,-z"}, dir.path());
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out).size(), 1u);
 
   // --average-last N: the last N iterations, a second reading of the same file.
-  const auto averaged = run_cli({"--db", "last.db", "import", "sweep/tow_u1.5_001.out", "--body", "hull", "--axes=-x,y,-z",
-                             "--average-last", "10"},
-                            dir.path());
+  const auto averaged = run_cli({"--db", "last.db", "import", "sweep/tow_u1.5_001.out", "--body", "hull",
+                                 "--axes=-x,y,-z", "--average-last", "10"},
+                                dir.path());
   ASSERT_EQ(averaged.exit_code, 0) << averaged.err;
   const auto tail = nlohmann::json::parse(run_cli({"--db", "last.db", "runs", "--json"}, dir.path()).out);
   EXPECT_NEAR(tail[0].at("forces").at("X").at("total").get<double>(), -mean_over(fx, 291, 300), 1e-12);
@@ -122,7 +122,8 @@ TEST(CliCfxRun, ANormalSpeedWithoutADirectionIsRefusedAndTakesAGivenOne) {
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("normal speed, 1.5 m/s"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("--flow"), std::string::npos) << refused.err;
-  const auto given = run_cli({"import", "run.out", "--body", "hull", "--axes=-x,y,-z", "--flow", "1.5,0,0"}, dir.path());
+  const auto given =
+      run_cli({"import", "run.out", "--body", "hull", "--axes=-x,y,-z", "--flow", "1.5,0,0"}, dir.path());
   ASSERT_EQ(given.exit_code, 0) << given.err;
   const auto runs = nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out);
   ASSERT_EQ(runs.size(), 1u);

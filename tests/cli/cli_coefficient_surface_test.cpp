@@ -21,7 +21,9 @@ using test::dump_database;
 using test::run_cli;
 using test::TempDir;
 
-void write(const std::filesystem::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
 // Forces on the body, multilinear in (u, v): a linear surface reproduces them.
 double force_x(double u, double v) { return -0.3 - 11.0 * u + 2.0 * v + 4.0 * u * v; }
@@ -54,10 +56,10 @@ class SurfaceCli : public ::testing::Test {
 
 TEST_F(SurfaceCli, EveryCommandHasHelpWithJson) {
   for (const std::vector<std::string>& command : {std::vector<std::string>{"surface", "build", "--help"},
-                                                 {"surface", "list", "--help"},
-                                                 {"surface", "show", "--help"},
-                                                 {"surface", "rebuild", "--help"},
-                                                 {"query", "--help"}}) {
+                                                  {"surface", "list", "--help"},
+                                                  {"surface", "show", "--help"},
+                                                  {"surface", "rebuild", "--help"},
+                                                  {"query", "--help"}}) {
     const auto result = run_cli(command, dir_.path());
     EXPECT_EQ(result.exit_code, 0) << command[0];
     EXPECT_NE(result.out.find("--json"), std::string::npos) << command[0];
@@ -158,10 +160,10 @@ TEST_F(SurfaceCli, BadBatchInputIsLocatedAndWritesNoFile) {
 }
 
 TEST_F(SurfaceCli, PointQueriesNameWhatIsMissingOrOutOfRange) {
-  ASSERT_EQ(cli({"surface", "build", "xn", "--body", "boat", "--outputs", "X", "--axes", "u,v", "--extrapolate",
-                 "v=clamp"})
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      cli({"surface", "build", "xn", "--body", "boat", "--outputs", "X", "--axes", "u,v", "--extrapolate", "v=clamp"})
+          .exit_code,
+      0);
   auto result = cli({"query", "xn", "u=0.1"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("no value for axis 'v'"), std::string::npos) << result.err;
@@ -240,8 +242,10 @@ TEST_F(SurfaceCli, ScatteredRunsNeedRbfAndResamplingReportsPointsFarFromRuns) {
   auto result = cli({"surface", "build", "s", "--body", "blob", "--outputs", "X", "--axes", "u,v"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("--method rbf"), std::string::npos) << result.err;
-  result = cli({"surface", "build", "s", "--body", "blob", "--outputs", "X", "--axes", "u,v", "--method", "rbf",
-                "--extrapolate", "extrapolate", "--resample", "u=0:0.9:4", "--resample", "v=-0.1,0.1", "--far-threshold", "0.7", "--json"});
+  result = cli({"surface",     "build",      "s",         "--body",     "blob",       "--outputs",
+                "X",           "--axes",     "u,v",       "--method",   "rbf",        "--extrapolate",
+                "extrapolate", "--resample", "u=0:0.9:4", "--resample", "v=-0.1,0.1", "--far-threshold",
+                "0.7",         "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const json built = json::parse(result.out);
   EXPECT_EQ(built["kind"], "grid");

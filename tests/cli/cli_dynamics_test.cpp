@@ -39,7 +39,9 @@ double root(const Law& law, double tau) {
   return (-law.a - std::sqrt(law.a * law.a - 4.0 * law.b * (law.c + tau))) / (2.0 * law.b);
 }
 
-std::size_t line_count(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+std::size_t line_count(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
 
 TEST(CliDynamics, HelpExitsZero) {
   TempDir dir;
@@ -122,7 +124,8 @@ TEST(CliDynamics, BadInputExitsTwoWithOneLocatedLine) {
   TempDir dir;
   std::ofstream(dir / "bad-vehicle.json") << R"({"mass": -6.7, "inertia": [1, 1, 1], "center_of_gravity": [0, 0, 0],
                                                "neutrally_buoyant": true})";
-  auto result = run_cli({"equilibrium", "--vehicle", (dir / "bad-vehicle.json").string(), "--tau", "N=0.1"}, dir.path());
+  auto result =
+      run_cli({"equilibrium", "--vehicle", (dir / "bad-vehicle.json").string(), "--tau", "N=0.1"}, dir.path());
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(line_count(result.err), 1u) << result.err;
   EXPECT_NE(result.err.find("bad-vehicle.json"), std::string::npos) << result.err;

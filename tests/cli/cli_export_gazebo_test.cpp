@@ -49,7 +49,7 @@ Fits make_database(const TempDir& dir) {
   return fits;
 }
 
-const std::vector<std::string> kSphere = {"--sphere-radius", "0.15", "--rho", "998.2", "--added-mass-rotation",
+const std::vector<std::string> kSphere = {"--sphere-radius",  "0.15", "--rho", "998.2", "--added-mass-rotation",
                                           "0.001,0.002,0.003"};
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
@@ -66,23 +66,23 @@ const double kSphereMass = 2.0 / 3.0 * std::numbers::pi * 998.2 * 0.15 * 0.15 * 
 TEST(CliExportGazebo, GzFileHoldsTheAsrVFitsOnBodyAndTheSphereAddedMass) {
   TempDir dir;
   const Fits fits = make_database(dir);
-  const auto result = run_cli(with({"export-gazebo", "asr-v", "--flavor", "gz", "-o", "asr-v.sdf", "--drop-constant",
-                                    "--allow-missing"},
-                                   kSphere),
-                              dir.path());
+  const auto result = run_cli(
+      with({"export-gazebo", "asr-v", "--flavor", "gz", "-o", "asr-v.sdf", "--drop-constant", "--allow-missing"},
+           kSphere),
+      dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  for (const char* piece : {"wrote asr-v.sdf", "xU = ", "negated to on-body", "dropped", "link axes FLU",
-                            "no damping law; written as 0"})
+  for (const char* piece :
+       {"wrote asr-v.sdf", "xU = ", "negated to on-body", "dropped", "link axes FLU", "no damping law; written as 0"})
     EXPECT_NE(result.out.find(piece), std::string::npos) << "output lacks '" << piece << "'\n" << result.out;
 
   const auto root = read_xml(dir / "asr-v.sdf");
   ASSERT_NE(root, nullptr) << test::read_text(dir / "asr-v.sdf");
   const auto& x = fits.surge.at("coefficients");
   const auto& n = fits.yaw.at("coefficients");
-  EXPECT_EQ(number_of(root, "xU"), -x.at("u").get<double>());        // opposing -> on-body
+  EXPECT_EQ(number_of(root, "xU"), -x.at("u").get<double>());  // opposing -> on-body
   EXPECT_EQ(number_of(root, "xUabsU"), -x.at("u|u|").get<double>());
   EXPECT_LT(number_of(root, "xUabsU"), 0.0);
-  EXPECT_EQ(number_of(root, "nR"), n.at("r").get<double>());         // already on-body
+  EXPECT_EQ(number_of(root, "nR"), n.at("r").get<double>());  // already on-body
   EXPECT_EQ(number_of(root, "nRabsR"), n.at("r|r|").get<double>());
   EXPECT_EQ(number_of(root, "yV"), 0.0);  // no sway law: --allow-missing
   EXPECT_NEAR(number_of(root, "xDotU"), -kSphereMass, 1e-12 * kSphereMass);
@@ -154,15 +154,15 @@ TEST(CliExportGazebo, RefusalsExitTwoWithOneLineAndWriteNothing) {
   TempDir dir;
   make_database(dir);
   // A cubic X law and a second X law in u for the ambiguity case.
-  ASSERT_EQ(run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u^3", "--name", "cubic"}, dir.path())
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u^3", "--name", "cubic"}, dir.path()).exit_code,
+      0);
   const std::vector<std::string> base = {"export-gazebo", "asr-v", "-o", "out.sdf"};
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {with(with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--allow-missing"}), kSphere),
        "constant term '1'"},
-      {with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--drop-constant", "--allow-missing",
-                   "--added-mass", "7,7,7,0.001,0.001,-1"}),
+      {with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--drop-constant", "--allow-missing", "--added-mass",
+                   "7,7,7,0.001,0.001,-1"}),
        "smallest eigenvalue -1"},
       {with(with(base, {"--flavor", "gz", "--fit", "X=asr-v:X(u,u|u|)", "--drop-constant"}), kSphere),
        "no damping law of Y in v, Z in w, K in p, M in q"},
@@ -213,19 +213,19 @@ TEST(CliExportGazebo, ASphereNeedsNoInventedRotationalAddedMassAndWhereChoosesTh
   TempDir dir;
   const Fits fits = make_database(dir);
   // Fits of the surge runs at u >= 0.1 only, beside the fit of all runs.
-  ASSERT_EQ(run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|", "--where", "u>=0.1", "--json"},
-                    dir.path())
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|", "--where", "u>=0.1", "--json"}, dir.path())
+          .exit_code,
+      0);
   const auto fast = nlohmann::json::parse(run_cli({"fits", "--json"}, dir.path()).out);
   double fast_u = 0.0;
   for (const auto& fit : fast)
     if (fit.at("where") == "u>=0.1") fast_u = fit.at("coefficients").at("u").get<double>();
   ASSERT_NE(fast_u, 0.0);
   // Without --where the two X laws are ambiguous; --where picks the one made from those runs.
-  const std::vector<std::string> base = {"export-gazebo", "asr-v", "--flavor", "gz", "-o", "s.sdf",
-                                         "--drop-constant", "--allow-missing", "--sphere-radius", "0.15",
-                                         "--rho", "998.2"};
+  const std::vector<std::string> base = {
+      "export-gazebo",   "asr-v",           "--flavor",        "gz",   "-o",    "s.sdf",
+      "--drop-constant", "--allow-missing", "--sphere-radius", "0.15", "--rho", "998.2"};
   const auto ambiguous = run_cli(base, dir.path());
   EXPECT_EQ(ambiguous.exit_code, 2);
   EXPECT_NE(ambiguous.err.find("2 fits of X in u"), std::string::npos) << ambiguous.err;

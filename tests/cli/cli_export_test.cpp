@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -44,16 +44,18 @@ double query(const TempDir& dir, double u) {
 TEST(CliExport, CHeaderCompiledEvaluatesWhatQueryAnswers) {
   TempDir dir;
   make_database(dir);
-  const auto exported = run_cli({"export", "surge", "--format", "c", "-o", "surge.h", "--identifier", "surge"}, dir.path());
+  const auto exported =
+      run_cli({"export", "surge", "--format", "c", "-o", "surge.h", "--identifier", "surge"}, dir.path());
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   EXPECT_NE(exported.out.find("wrote surge.h"), std::string::npos) << exported.out;
   if (!std::filesystem::exists(HYDROCOEF_C_COMPILER)) GTEST_SKIP() << "no C compiler at " << HYDROCOEF_C_COMPILER;
   const std::vector<double> points = {-0.05, 0.0, 0.013, 0.1, 0.123, 0.25, 0.38, 0.45};
   std::string driver = "#include <stdio.h>\n#include \"surge.h\"\nint main(void)\n{\n  static const double u[] = {";
   for (double u : points) driver += std::to_string(u) + ",";
-  driver += "};\n  unsigned i;\n  for (i = 0; i < sizeof u / sizeof u[0]; ++i) {\n    double x[1];\n    double out[1];\n"
-            "    x[0] = u[i];\n    if (surge_eval(x, out) != 0) return 1;\n    printf(\"%a\\n\", out[0]);\n  }\n"
-            "  return 0;\n}\n";
+  driver +=
+      "};\n  unsigned i;\n  for (i = 0; i < sizeof u / sizeof u[0]; ++i) {\n    double x[1];\n    double out[1];\n"
+      "    x[0] = u[i];\n    if (surge_eval(x, out) != 0) return 1;\n    printf(\"%a\\n\", out[0]);\n  }\n"
+      "  return 0;\n}\n";
   {
     std::FILE* file = std::fopen((dir / "main.c").c_str(), "w");
     ASSERT_NE(file, nullptr);
@@ -61,9 +63,8 @@ TEST(CliExport, CHeaderCompiledEvaluatesWhatQueryAnswers) {
     std::fclose(file);
   }
   const std::string compile = shell_quote(HYDROCOEF_C_COMPILER) + " -std=c99 -Wall -Wextra -Werror -pedantic -I" +
-                              shell_quote(dir.path().string()) + " " + shell_quote((dir / "main.c").string()) +
-                              " -o " + shell_quote((dir / "main").string()) + " 2>" +
-                              shell_quote((dir / "cc.log").string());
+                              shell_quote(dir.path().string()) + " " + shell_quote((dir / "main.c").string()) + " -o " +
+                              shell_quote((dir / "main").string()) + " 2>" + shell_quote((dir / "cc.log").string());
   ASSERT_EQ(std::system(compile.c_str()), 0) << test::read_text(dir / "cc.log");
   const std::string run = shell_quote((dir / "main").string()) + " >" + shell_quote((dir / "main.out").string());
   ASSERT_EQ(std::system(run.c_str()), 0);
@@ -115,9 +116,8 @@ TEST(CliExport, ATableThatRefusesZeroVelocitySaysSoAtExport) {
   ASSERT_EQ(fast.exit_code, 0) << fast.err;
   EXPECT_NE(fast.out.find("note: axis u covers ["), std::string::npos) << fast.out;
   EXPECT_NE(fast.out.find("a query at u = 0 (at rest) fails"), std::string::npos) << fast.out;
-  const auto json = nlohmann::json::parse(run_cli({"export", "fast", "--format", "csv", "-o", "f.csv", "--json"},
-                                                  dir.path())
-                                              .out);
+  const auto json =
+      nlohmann::json::parse(run_cli({"export", "fast", "--format", "csv", "-o", "f.csv", "--json"}, dir.path()).out);
   EXPECT_EQ(json.at("notes").size(), 1u);
   // A table whose range holds zero, or that continues past its ends, has no such note.
   const auto whole = run_cli({"export", "surge", "--format", "csv", "-o", "s.csv"}, dir.path());

@@ -95,9 +95,9 @@ TEST_F(FitCuration, AStaleFitIsMadeAgainWithRefit) {
   EXPECT_EQ(after.at("name"), first.at("name"));
   EXPECT_EQ(after.at("where"), "u>=0.1");
   // The same as fitting the remaining runs by hand.
-  const auto by_hand = run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|", "--where", "u>=0.1",
-                                "--no-store", "--json"},
-                               dir_.path());
+  const auto by_hand = run_cli(
+      {"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|", "--where", "u>=0.1", "--no-store", "--json"},
+      dir_.path());
   const auto expected = nlohmann::json::parse(by_hand.out);
   for (const char* term : {"u", "u|u|"}) {
     EXPECT_NEAR(after.at("coefficients").at(term).get<double>(), expected.at("coefficients").at(term).get<double>(),
@@ -151,7 +151,8 @@ TEST(FitCurationMirror, AMirroredFitOverHalfThePlaneIsTheFitOverTheWholePlane) {
   const auto again = run_cli({"--db", "half.db", "fit", "--refit", "--name", "b:Y(1,v,v|v|)", "--json"}, dir.path());
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_NEAR(nlohmann::json::parse(again.out)[0].at("coefficients").at("v").get<double>(),
-              b.at("coefficients").at("v").get<double>(), 1e-9 * (1.0 + std::abs(b.at("coefficients").at("v").get<double>())));
+              b.at("coefficients").at("v").get<double>(),
+              1e-9 * (1.0 + std::abs(b.at("coefficients").at("v").get<double>())));
 
   // A surface over v from half the plane covers the whole plane.
   const auto surface = run_cli({"--db", "half.db", "surface", "build", "side", "--body", "b", "--outputs", "Y",
@@ -195,8 +196,7 @@ TEST(FitCurationHistories, RunsShowTheirHistoryStatisticsAndFitsWarnOfUnconverge
   ASSERT_EQ(fit.exit_code, 0) << fit.err;
   bool warned = false;
   const auto fitted = nlohmann::json::parse(fit.out);
-  for (const auto& warning : fitted.at("warnings"))
-    warned = warned || warning.at("kind") == "unconverged-runs";
+  for (const auto& warning : fitted.at("warnings")) warned = warned || warning.at("kind") == "unconverged-runs";
   EXPECT_EQ(warned, flagged > 0);
   // A table's runs have no history: no column, no warning.
   TempDir other;

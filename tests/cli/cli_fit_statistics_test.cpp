@@ -53,9 +53,9 @@ TEST_F(FitStatistics, AConstantForceFitsWithRSquaredNotAvailable) {
 
 TEST_F(FitStatistics, PerLevelFitsSkipASparseLevelOrRefuseWithStrict) {
   const auto before = test::dump_database(dir_ / "hydrocoef.db");
-  const auto strict = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "vc", "--curve",
-                               "polynomial:1", "--strict"},
-                              dir_.path());
+  const auto strict = run_cli(
+      {"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "vc", "--curve", "polynomial:1", "--strict"},
+      dir_.path());
   EXPECT_EQ(strict.exit_code, 2);
   EXPECT_NE(strict.err.find("disturbance level 0.2 has 1 run"), std::string::npos) << strict.err;
   EXPECT_EQ(test::dump_database(dir_ / "hydrocoef.db"), before);
@@ -79,21 +79,21 @@ TEST_F(FitStatistics, PerLevelFitsSkipASparseLevelOrRefuseWithStrict) {
     }
   }
 
-  const auto text = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "vc", "--curve",
-                             "polynomial:1", "--no-store"},
-                            dir_.path());
+  const auto text = run_cli(
+      {"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "vc", "--curve", "polynomial:1", "--no-store"},
+      dir_.path());
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("note: level vc=0.2 skipped: 1 run"), std::string::npos) << text.out;
 }
 
 TEST_F(FitStatistics, NamesThatBreakTheRuleAreRefused) {
   const auto before = test::dump_database(dir_ / "hydrocoef.db");
-  const auto fit = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u", "--name", "a\nsystem(\"x\")"},
-                           dir_.path());
+  const auto fit =
+      run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u", "--name", "a\nsystem(\"x\")"}, dir_.path());
   EXPECT_EQ(fit.exit_code, 2);
   EXPECT_NE(fit.err.find("fit name from --name"), std::string::npos) << fit.err;
-  const auto surface = run_cli({"surface", "build", "s\x01", "--body", "b", "--outputs", "X", "--axes", "u"},
-                               dir_.path());
+  const auto surface =
+      run_cli({"surface", "build", "s\x01", "--body", "b", "--outputs", "X", "--axes", "u"}, dir_.path());
   EXPECT_EQ(surface.exit_code, 2);
   EXPECT_NE(surface.err.find("surface name"), std::string::npos) << surface.err;
   EXPECT_EQ(test::dump_database(dir_ / "hydrocoef.db"), before);
@@ -112,17 +112,15 @@ TEST(PhysicalChecks, AnEnergyProducingLawIsAWarningOnFitAndARefusalOnExport) {
   const auto fit = run_cli({"fit", "--body", "b", "--dof", "Y", "--terms", "v"}, dir.path());
   ASSERT_EQ(fit.exit_code, 0) << fit.err;
   EXPECT_NE(fit.out.find("warning (energy-producing)"), std::string::npos) << fit.out;
-  const auto refused =
-      run_cli({"export-gazebo", "b", "--flavor", "uuv", "-o", "b.xml", "--allow-missing", "--added-mass",
-               "1,1,1,0.1,0.1,0.1"},
-              dir.path());
+  const auto refused = run_cli(
+      {"export-gazebo", "b", "--flavor", "uuv", "-o", "b.xml", "--allow-missing", "--added-mass", "1,1,1,0.1,0.1,0.1"},
+      dir.path());
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("pushes the body along its motion"), std::string::npos) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "b.xml"));
-  const auto allowed = run_cli(
-      {"export-gazebo", "b", "--flavor", "uuv", "-o", "b.xml", "--allow-missing", "--added-mass", "1,1,1,0.1,0.1,0.1",
-       "--allow-unphysical"},
-      dir.path());
+  const auto allowed = run_cli({"export-gazebo", "b", "--flavor", "uuv", "-o", "b.xml", "--allow-missing",
+                                "--added-mass", "1,1,1,0.1,0.1,0.1", "--allow-unphysical"},
+                               dir.path());
   EXPECT_EQ(allowed.exit_code, 0) << allowed.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "b.xml"));
 }

@@ -75,8 +75,8 @@ TEST_F(Selection, LeaveOneOutByHandIsOneBuildAndOneQuery) {
     if (std::abs(u - 0.22) < 1e-12) above = x;
   }
   ASSERT_NE(left_out, 0);
-  const auto built = run_cli({"surface", "build", "loo", "--body", "asr-v", "--outputs", "X", "--axes", "u",
-                              "--method", "linear", "--exclude-run", std::to_string(left_out)},
+  const auto built = run_cli({"surface", "build", "loo", "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method",
+                              "linear", "--exclude-run", std::to_string(left_out)},
                              dir_.path());
   ASSERT_EQ(built.exit_code, 0) << built.err;
   const auto query = run_cli({"query", "loo", "u=0.2", "--json"}, dir_.path());
@@ -90,8 +90,8 @@ TEST_F(Selection, LeaveOneOutByHandIsOneBuildAndOneQuery) {
   const auto shown = nlohmann::json::parse(run_cli({"surface", "show", "loo", "--json"}, dir_.path()).out);
   EXPECT_EQ(shown.at("runs").size(), all_.size() - 1);
   // The name is taken: building it again needs --replace.
-  const std::vector<std::string> again = {"surface", "build", "loo", "--body", "asr-v", "--outputs", "X", "--axes", "u",
-                                          "--method", "linear"};
+  const std::vector<std::string> again = {"surface", "build",  "loo", "--body",   "asr-v", "--outputs",
+                                          "X",       "--axes", "u",   "--method", "linear"};
   const auto refused = run_cli(again, dir_.path());
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("a surface named 'loo' exists"), std::string::npos) << refused.err;

@@ -31,7 +31,8 @@ TEST(CliSurface, IntegrateReproducesOpenFoamForcesInItsOwnAxes) {
   const auto info = case_info("full/u0.10_v0.05");
   for (std::size_t c = 0; c < 3; ++c) {
     EXPECT_NEAR(out["force"][c].get<double>(), info["openfoam_final_force_N"]["total"][c].get<double>(), 2e-6);
-    EXPECT_NEAR(out["force_viscous"][c].get<double>(), info["openfoam_final_force_N"]["viscous"][c].get<double>(), 2e-6);
+    EXPECT_NEAR(out["force_viscous"][c].get<double>(), info["openfoam_final_force_N"]["viscous"][c].get<double>(),
+                2e-6);
     EXPECT_NEAR(out["moment"][c].get<double>(), info["openfoam_final_moment_Nm"]["total"][c].get<double>(), 2e-7);
   }
   EXPECT_EQ(out["faces"], 4024);
@@ -71,23 +72,27 @@ TEST(CliSurface, BodyAxesAndTheRunKeyFollowTheFlow) {
   EXPECT_NEAR(run["forces"]["Y"]["total"].get<double>(), force[1].get<double>(), 2e-6);
   EXPECT_NEAR(run["forces"]["Z"]["total"].get<double>(), -force[2].get<double>(), 2e-6);
   EXPECT_NEAR(run["forces"]["N"]["total"].get<double>(), -moment[2].get<double>(), 2e-7);
-  EXPECT_NEAR(run["forces"]["X"]["viscous"].get<double>(),
-              -info["openfoam_final_force_N"]["viscous"][0].get<double>(), 2e-6);
+  EXPECT_NEAR(run["forces"]["X"]["viscous"].get<double>(), -info["openfoam_final_force_N"]["viscous"][0].get<double>(),
+              2e-6);
   EXPECT_EQ(run["forces"]["X"]["sign_convention"], "on-body");
   EXPECT_DOUBLE_EQ(run["density"].get<double>(), 998.2);
 }
 
 TEST(CliSurface, AFolderWithSidecarsImportsInParallelInOneTransaction) {
   TempDir dir;
-  const std::vector<std::pair<std::string, std::array<double, 2>>> cases = {
-      {"u0.10_v0.00", {0.1, 0.0}}, {"u0.10_v0.05", {0.1, 0.05}}, {"u0.20_v0.10", {0.2, 0.1}}, {"u0.30_v0.00", {0.3, 0.0}}};
+  const std::vector<std::pair<std::string, std::array<double, 2>>> cases = {{"u0.10_v0.00", {0.1, 0.0}},
+                                                                            {"u0.10_v0.05", {0.1, 0.05}},
+                                                                            {"u0.20_v0.10", {0.2, 0.1}},
+                                                                            {"u0.30_v0.00", {0.3, 0.0}}};
   for (const auto& [name, flow] : cases) {
     const auto folder = dir / "sweep" / name;
     std::filesystem::create_directories(folder);
     std::filesystem::copy_file(kSphere + "full/" + name + "/" + name + "_sphere_t1000.vtp", folder / "sphere.vtp");
-    std::ofstream(folder / "hydrocoef-run.json")
-        << nlohmann::json{{"body", "sphere"}, {"axes", "-x,y,-z"}, {"flow", {flow[0], flow[1], 0.0}}, {"rho", 998.2}}
-               .dump();
+    std::ofstream(folder / "hydrocoef-run.json") << nlohmann::json{
+        {"body", "sphere"},
+        {"axes", "-x,y,-z"},
+        {"flow", {flow[0], flow[1], 0.0}},
+        {"rho", 998.2}}.dump();
   }
   const auto result = run_cli({"import", (dir / "sweep").string(), "--jobs", "2", "--json"}, dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -98,7 +103,8 @@ TEST(CliSurface, AFolderWithSidecarsImportsInParallelInOneTransaction) {
   for (const auto& [name, flow] : cases) {
     bool found = false;
     for (const auto& run : runs)
-      found = found || (run["u"].get<double>() == flow[0] && run["v"].get<double>() == (flow[1] == 0.0 ? 0.0 : -flow[1]));
+      found =
+          found || (run["u"].get<double>() == flow[0] && run["v"].get<double>() == (flow[1] == 0.0 ? 0.0 : -flow[1]));
     EXPECT_TRUE(found) << name;
   }
   // Drag grows with speed: X at u = 0.3 is more negative than at u = 0.1.

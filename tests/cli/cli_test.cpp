@@ -23,9 +23,13 @@ const std::string kExamples = HYDROCOEF_SOURCE_DIR "/examples/asr-v/";
 const std::string kSurge = kExamples + "asr-v-surge-damping.csv";
 const std::string kYaw = kExamples + "asr-v-yaw-damping.csv";
 
-void write(const std::filesystem::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
-std::size_t line_count(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+std::size_t line_count(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
 
 TEST(Cli, VersionAndHelpExitZero) {
   TempDir dir;
@@ -197,11 +201,12 @@ TEST(Cli, FitByLevelRecoversCoefficientsThatVaryWithTheDisturbance) {
   table << "u [m s^-1],current_v [m s^-1],X [N]\n";
   const std::vector<double> levels{0.0, 0.05, 0.1, 0.2};
   for (double c : levels)
-    for (double u : {-0.2, 0.05, 0.1, 0.2, 0.3}) table << u << "," << c << "," << (0.1 + 2 * c * c) * u + (11 + 5 * c) * u * std::abs(u) << "\n";
+    for (double u : {-0.2, 0.05, 0.1, 0.2, 0.3})
+      table << u << "," << c << "," << (0.1 + 2 * c * c) * u + (11 + 5 * c) * u * std::abs(u) << "\n";
   write(dir / "sweep.csv", table.str());
   ASSERT_EQ(run_cli({"import", "sweep.csv", "--body", "b", "--disturbance", "current_v"}, dir.path()).exit_code, 0);
-  const auto result = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v",
-                               "--curve", "polynomial:2", "--json"},
+  const auto result = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v", "--curve",
+                               "polynomial:2", "--json"},
                               dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto out = nlohmann::json::parse(result.out);
@@ -234,17 +239,16 @@ TEST(Cli, FitByLevelRecoversCoefficientsThatVaryWithTheDisturbance) {
     }
   EXPECT_TRUE(found) << fits.dump();
 
-  const auto text = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v", "--curve",
-                             "pchip", "--no-store"},
-                            dir.path());
+  const auto text = run_cli(
+      {"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v", "--curve", "pchip", "--no-store"},
+      dir.path());
   EXPECT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("PCHIP"), std::string::npos);
   const auto bad = run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_w"}, dir.path());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("no disturbance 'current_w'"), std::string::npos) << bad.err;
-  const auto bad_curve =
-      run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v", "--curve", "spline"},
-              dir.path());
+  const auto bad_curve = run_cli(
+      {"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v", "--curve", "spline"}, dir.path());
   EXPECT_EQ(bad_curve.exit_code, 2);
   EXPECT_NE(bad_curve.err.find("polynomial:D"), std::string::npos) << bad_curve.err;
 }

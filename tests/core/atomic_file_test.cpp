@@ -46,8 +46,7 @@ TEST(AtomicFile, AbandonedFileLeavesTheOldOneAndNoTemporary) {
     AtomicFile file(dir / "out.txt");
     file.write("new, half");
     throw std::runtime_error("producer failed");
-  } catch (const std::runtime_error&) {
-  }
+  } catch (const std::runtime_error&) {}
   EXPECT_EQ(read_all(dir / "out.txt"), "old");
   EXPECT_EQ(entries(dir.path()), 1u);
 }

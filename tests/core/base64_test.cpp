@@ -23,8 +23,8 @@ std::string decode(std::string_view text) {
 
 std::string vtk_encode(const std::vector<unsigned char>& bytes) {
   std::string out(4 * (bytes.size() + 2) / 3 + 4, '\0');
-  const unsigned long length = vtkBase64Utilities::Encode(bytes.data(), bytes.size(),
-                                                          reinterpret_cast<unsigned char*>(out.data()), 0);
+  const unsigned long length =
+      vtkBase64Utilities::Encode(bytes.data(), bytes.size(), reinterpret_cast<unsigned char*>(out.data()), 0);
   out.resize(length);
   return out;
 }
@@ -65,8 +65,8 @@ TEST(Base64, DecodesEveryByteRangeOnItsOwn) {
       for (std::size_t last = first; last <= size; ++last) {
         std::vector<unsigned char> out(last - first + 1, 0xee);
         ASSERT_TRUE(decode_base64_range(text, first, last, out.data())) << size << " [" << first << ", " << last << ")";
-        EXPECT_TRUE(std::equal(bytes.begin() + static_cast<long>(first), bytes.begin() + static_cast<long>(last),
-                               out.begin()))
+        EXPECT_TRUE(
+            std::equal(bytes.begin() + static_cast<long>(first), bytes.begin() + static_cast<long>(last), out.begin()))
             << size << " [" << first << ", " << last << ")";
         EXPECT_EQ(out[last - first], 0xee) << "wrote past the range";
       }

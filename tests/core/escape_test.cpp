@@ -27,7 +27,6 @@ bool clean_line(const std::string& text) {
   return true;
 }
 
-
 TEST(Escape, CorpusHasEveryKindOfHostileName) {
   const auto names = test::hostile_names();
   EXPECT_GE(names.size(), 40u);
@@ -36,8 +35,9 @@ TEST(Escape, CorpusHasEveryKindOfHostileName) {
       if (name.find(piece) != std::string::npos) return true;
     return false;
   };
-  const std::vector<std::string_view> pieces = {"`",  "$(", "\n", "\r", std::string_view("\0", 1), "\x01", "*/", "/*",
-                                                "]]>", "<script>", "'", "\"", "%", ";", "\xE2\x80\xAE", "\xff"};
+  const std::vector<std::string_view> pieces = {
+      "`", "$(", "\n",           "\r",  std::string_view("\0", 1), "\x01", "*/", "/*", "]]>", "<script>", "'", "\"",
+      "%", ";",  "\xE2\x80\xAE", "\xff"};
   for (const std::string_view piece : pieces)
     EXPECT_TRUE(has(piece)) << "no name holds " << testing::PrintToString(std::string(piece));
 }
@@ -48,7 +48,9 @@ TEST(Escape, OneLineIsCleanAndKeepsPlainText) {
     EXPECT_TRUE(clean_line(out)) << testing::PrintToString(name);
   }
   EXPECT_EQ(escape::one_line("caf\xC3\xA9 u|u| [m/s]"), "caf\xC3\xA9 u|u| [m/s]");
-  EXPECT_EQ(escape::one_line("a\nb"), "a\xEF\xBF\xBD" "b");
+  EXPECT_EQ(escape::one_line("a\nb"),
+            "a\xEF\xBF\xBD"
+            "b");
   EXPECT_EQ(escape::one_line("a\xff"), "a\xEF\xBF\xBD");
 }
 

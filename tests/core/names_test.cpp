@@ -21,12 +21,17 @@ TEST(Names, PrintableNamesPass) {
 
 TEST(Names, ControlAndFormattingCharactersAreRefused) {
   const std::string refused[] = {
-      std::string("a\nb"), std::string("a\rb"), std::string("a\0b", 3), std::string("a\x01"), std::string("tab\t"),
-      std::string("del\x7f"), std::string("c1 \xc2\x85"),                // U+0085 NEXT LINE
-      std::string("rtl \xe2\x80\xae"),                                    // U+202E RIGHT-TO-LEFT OVERRIDE
-      std::string("isolate \xe2\x81\xa6"),                                // U+2066
-      std::string("ls \xe2\x80\xa8"),                                     // U+2028 LINE SEPARATOR
-      std::string("bom \xef\xbb\xbf"),                                    // U+FEFF
+      std::string("a\nb"),
+      std::string("a\rb"),
+      std::string("a\0b", 3),
+      std::string("a\x01"),
+      std::string("tab\t"),
+      std::string("del\x7f"),
+      std::string("c1 \xc2\x85"),           // U+0085 NEXT LINE
+      std::string("rtl \xe2\x80\xae"),      // U+202E RIGHT-TO-LEFT OVERRIDE
+      std::string("isolate \xe2\x81\xa6"),  // U+2066
+      std::string("ls \xe2\x80\xa8"),       // U+2028 LINE SEPARATOR
+      std::string("bom \xef\xbb\xbf"),      // U+FEFF
   };
   for (const auto& name : refused) {
     const auto problem = name_problem(NameKind::Surface, name);
@@ -36,8 +41,8 @@ TEST(Names, ControlAndFormattingCharactersAreRefused) {
 }
 
 TEST(Names, InvalidUtf8IsRefused) {
-  for (const std::string& name : {std::string("a\xff"), std::string("\xc0\xaf"), std::string("\xed\xa0\x80"),
-                                 std::string("cut \xe2\x82")}) {
+  for (const std::string& name :
+       {std::string("a\xff"), std::string("\xc0\xaf"), std::string("\xed\xa0\x80"), std::string("cut \xe2\x82")}) {
     const auto problem = name_problem(NameKind::Body, name);
     ASSERT_TRUE(problem.has_value()) << printable_text(name);
     EXPECT_NE(problem->find("not valid UTF-8"), std::string::npos) << *problem;
@@ -62,7 +67,8 @@ TEST(Names, EmptyAndPaddedNamesAreRefused) {
 }
 
 TEST(Names, ParametersAreIdentifiers) {
-  for (const char* name : {"current_v", "_x", "a1", "U"}) EXPECT_EQ(name_problem(NameKind::Parameter, name), std::nullopt);
+  for (const char* name : {"current_v", "_x", "a1", "U"})
+    EXPECT_EQ(name_problem(NameKind::Parameter, name), std::nullopt);
   for (const char* name : {"a=1;b", "a;b", "a=b", "1a", "a b", "a-b", "a.b", "µ", ""})
     EXPECT_TRUE(name_problem(NameKind::Parameter, name).has_value()) << name;
   EXPECT_TRUE(name_problem(NameKind::Parameter, std::string(65, 'p')).has_value());
@@ -83,7 +89,9 @@ TEST(Names, CheckNameThrowsOneLineNamingTheOrigin) {
 }
 
 TEST(PrintableText, EscapesBidirectionalControls) {
-  EXPECT_EQ(printable_text("a\xe2\x80\xae" "b"), "a\\xe2\\x80\\xaeb");
+  EXPECT_EQ(printable_text("a\xe2\x80\xae"
+                           "b"),
+            "a\\xe2\\x80\\xaeb");
   EXPECT_EQ(printable_text("\xc2\xb5N"), "\xc2\xb5N");
 }
 

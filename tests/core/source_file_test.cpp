@@ -35,8 +35,7 @@ TEST(Sha256Hex, Fips180_2MultiBlockMessage) {
 
 TEST(Sha256Hex, Fips180_2LongMessage) {
   // Appendix B.3: one million repetitions of 'a'.
-  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')),
-            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 TEST(Sha256Hex, HashesEmbeddedNulBytes) {
@@ -158,8 +157,7 @@ TEST(DigestFile, StreamsTheSameHashAsTheWholeBytesAcrossManyBlocks) {
   EXPECT_EQ(digest.sha256, load_source_file(path).sha256);
   // An empty file hashes to SHA-256 of nothing.
   std::ofstream(dir / "empty.bin", std::ios::binary).close();
-  EXPECT_EQ(digest_file(dir / "empty.bin").sha256,
-            "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(digest_file(dir / "empty.bin").sha256, "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
   try {
     digest_file(dir / "missing.bin");
     FAIL() << "expected InputError";

@@ -45,54 +45,53 @@ TEST_P(ParseUnitTest, ScaleAndDimension) {
   const UnitCase& c = GetParam();
   const Unit unit = parse_unit(c.text);
   EXPECT_DOUBLE_EQ(unit.scale, c.scale) << "unit '" << c.text << "'";
-  EXPECT_EQ(unit.dimension, c.dimension)
-      << "unit '" << c.text << "' gave " << si_unit_name(unit.dimension) << ", expected "
-      << si_unit_name(c.dimension);
+  EXPECT_EQ(unit.dimension, c.dimension) << "unit '" << c.text << "' gave " << si_unit_name(unit.dimension)
+                                         << ", expected " << si_unit_name(c.dimension);
 }
 
 constexpr Dimension kInverseTime{{0, 0, -1, 0}};
 
 INSTANTIATE_TEST_SUITE_P(
     Units, ParseUnitTest,
-    ::testing::Values(UnitCase{"m s^-1", 1.0, kVelocity},              //
-                      UnitCase{"[ m s^-1 ]", 1.0, kVelocity},          // CFX style, brackets and spaces
-                      UnitCase{"[m s^-1]", 1.0, kVelocity},            // monitor style, no inner spaces
-                      UnitCase{"  m s^-1  ", 1.0, kVelocity},          //
-                      UnitCase{"mm s^-1", 1e-3, kVelocity},            // milli-metre per second
-                      UnitCase{"m/s", 1.0, kVelocity},                 //
+    ::testing::Values(UnitCase{"m s^-1", 1.0, kVelocity},               //
+                      UnitCase{"[ m s^-1 ]", 1.0, kVelocity},           // CFX style, brackets and spaces
+                      UnitCase{"[m s^-1]", 1.0, kVelocity},             // monitor style, no inner spaces
+                      UnitCase{"  m s^-1  ", 1.0, kVelocity},           //
+                      UnitCase{"mm s^-1", 1e-3, kVelocity},             // milli-metre per second
+                      UnitCase{"m/s", 1.0, kVelocity},                  //
                       UnitCase{"km h^-1", 1000.0 / 3600.0, kVelocity},  // 1 km/h = 1/3.6 m/s
-                      UnitCase{"km/h", 1000.0 / 3600.0, kVelocity},    //
-                      UnitCase{"N", 1.0, kForce},                      //
-                      UnitCase{"kN", 1e3, kForce},                     //
-                      UnitCase{"N m", 1.0, kMoment},                   //
-                      UnitCase{"N.m", 1.0, kMoment},                   // '.' as a product
-                      UnitCase{"N*m", 1.0, kMoment},                   //
-                      UnitCase{"kN m", 1e3, kMoment},                  //
-                      UnitCase{"J", 1.0, kMoment},                     // CFX labels torque [J]
-                      UnitCase{"Pa", 1.0, kPressure},                  //
-                      UnitCase{"kPa", 1e3, kPressure},                 //
-                      UnitCase{"hPa", 1e2, kPressure},                 //
-                      UnitCase{"bar", 1e5, kPressure},                 //
-                      UnitCase{"mbar", 1e2, kPressure},                //
+                      UnitCase{"km/h", 1000.0 / 3600.0, kVelocity},     //
+                      UnitCase{"N", 1.0, kForce},                       //
+                      UnitCase{"kN", 1e3, kForce},                      //
+                      UnitCase{"N m", 1.0, kMoment},                    //
+                      UnitCase{"N.m", 1.0, kMoment},                    // '.' as a product
+                      UnitCase{"N*m", 1.0, kMoment},                    //
+                      UnitCase{"kN m", 1e3, kMoment},                   //
+                      UnitCase{"J", 1.0, kMoment},                      // CFX labels torque [J]
+                      UnitCase{"Pa", 1.0, kPressure},                   //
+                      UnitCase{"kPa", 1e3, kPressure},                  //
+                      UnitCase{"hPa", 1e2, kPressure},                  //
+                      UnitCase{"bar", 1e5, kPressure},                  //
+                      UnitCase{"mbar", 1e2, kPressure},                 //
                       UnitCase{"deg s^-1", kPi / 180.0, kAngularVelocity},
                       UnitCase{"degree s^-1", kPi / 180.0, kAngularVelocity},
                       UnitCase{"rad s^-1", 1.0, kAngularVelocity},     //
                       UnitCase{"radian s^-1", 1.0, kAngularVelocity},  //
                       UnitCase{"rev min^-1", 2.0 * kPi / 60.0, kAngularVelocity},
-                      UnitCase{"s^-1", 1.0, kInverseTime},             //
-                      UnitCase{"1/s", 1.0, kInverseTime},              //
-                      UnitCase{"kg m^-3", 1.0, kDensity},              // k * g = 1e3 * 1e-3
-                      UnitCase{"g cm^-3", 1e3, kDensity},              // 1e-3 kg / 1e-6 m^3
-                      UnitCase{"kg/m^3", 1.0, kDensity},               //
-                      UnitCase{"m^2 s^-1", 1.0, kKinematicViscosity},  //
-                      UnitCase{"m2 s-1", 1.0, kKinematicViscosity},    // exponents without '^'
+                      UnitCase{"s^-1", 1.0, kInverseTime},               //
+                      UnitCase{"1/s", 1.0, kInverseTime},                //
+                      UnitCase{"kg m^-3", 1.0, kDensity},                // k * g = 1e3 * 1e-3
+                      UnitCase{"g cm^-3", 1e3, kDensity},                // 1e-3 kg / 1e-6 m^3
+                      UnitCase{"kg/m^3", 1.0, kDensity},                 //
+                      UnitCase{"m^2 s^-1", 1.0, kKinematicViscosity},    //
+                      UnitCase{"m2 s-1", 1.0, kKinematicViscosity},      // exponents without '^'
                       UnitCase{"mm^2 s^-1", 1e-6, kKinematicViscosity},  // (1e-3)^2
-                      UnitCase{"km^2", 1e6, Dimension{{0, 2, 0, 0}}},  // prefix is raised with the symbol
-                      UnitCase{"min", 60.0, Dimension{{0, 0, 1, 0}}},  // minute, not milli-inch
-                      UnitCase{"ms", 1e-3, Dimension{{0, 0, 1, 0}}},   // millisecond
-                      UnitCase{"L", 1e-3, Dimension{{0, 3, 0, 0}}},    //
-                      UnitCase{"", 1.0, kDimensionless},               //
-                      UnitCase{"1", 1.0, kDimensionless},              //
+                      UnitCase{"km^2", 1e6, Dimension{{0, 2, 0, 0}}},    // prefix is raised with the symbol
+                      UnitCase{"min", 60.0, Dimension{{0, 0, 1, 0}}},    // minute, not milli-inch
+                      UnitCase{"ms", 1e-3, Dimension{{0, 0, 1, 0}}},     // millisecond
+                      UnitCase{"L", 1e-3, Dimension{{0, 3, 0, 0}}},      //
+                      UnitCase{"", 1.0, kDimensionless},                 //
+                      UnitCase{"1", 1.0, kDimensionless},                //
                       UnitCase{"[ ]", 1.0, kDimensionless}),
     [](const ::testing::TestParamInfo<UnitCase>& param) { return "case" + std::to_string(param.index); });
 

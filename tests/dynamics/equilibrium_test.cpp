@@ -16,8 +16,10 @@ namespace {
 double bisect(const std::function<double(double)>& f, double lo, double hi) {
   for (int i = 0; i < 200; ++i) {
     const double mid = 0.5 * (lo + hi);
-    if ((f(lo) < 0.0) == (f(mid) < 0.0)) lo = mid;
-    else hi = mid;
+    if ((f(lo) < 0.0) == (f(mid) < 0.0))
+      lo = mid;
+    else
+      hi = mid;
   }
   return 0.5 * (lo + hi);
 }

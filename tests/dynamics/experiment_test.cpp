@@ -34,7 +34,8 @@ TEST(MeasuredTrajectory, ReadsUnitsAndIgnoresOtherColumns) {
 
 TEST(MeasuredTrajectory, BadFilesAreLocated) {
   expect_input_error([] { parse_measured_trajectory("x,r\n0,1\n1,2\n", "a.csv"); }, {"a.csv:1:", "no time column"});
-  expect_input_error([] { parse_measured_trajectory("t,psi\n0,1\n1,2\n", "a.csv"); }, {"a.csv:1:", "no velocity column"});
+  expect_input_error([] { parse_measured_trajectory("t,psi\n0,1\n1,2\n", "a.csv"); },
+                     {"a.csv:1:", "no velocity column"});
   expect_input_error([] { parse_measured_trajectory("t [s],r [m s^-1]\n0,1\n1,2\n", "a.csv"); },
                      {"a.csv:1:", "'r'", "m s^-1"});
   expect_input_error([] { parse_measured_trajectory("t,r\n0,1\n0,2\n", "a.csv"); }, {"a.csv:3:", "increase"});

@@ -49,8 +49,7 @@ TEST(Scenario, ParsesEveryPart) {
 
 TEST(Scenario, AsrVExamplesLoad) {
   for (const char* tau : {"0.0027", "0.0045"}) {
-    const Scenario s =
-        load_scenario(std::string(HYDROCOEF_SOURCE_DIR "/examples/asr-v/scenario-yaw-") + tau + ".json");
+    const Scenario s = load_scenario(std::string(HYDROCOEF_SOURCE_DIR "/examples/asr-v/scenario-yaw-") + tau + ".json");
     ASSERT_EQ(s.segments.size(), 1u);
     EXPECT_EQ(s.segments[0].tau_b[5], std::stod(tau));
     EXPECT_EQ(s.integrator.method, IntegratorSettings::Method::Rk4);
@@ -68,14 +67,18 @@ TEST(Scenario, BadFilesNameFileAndKey) {
   auto parse = [](const std::string& text) { return [text] { parse_scenario(text, "bad.json"); }; };
   expect_input_error(parse(replaced("\"duration\": 20,", "")), {"bad.json", "'duration'", "missing"});
   expect_input_error(parse(replaced("\"duration\": 20", "\"duration\": -20")), {"bad.json", "'duration'", "positive"});
-  expect_input_error(parse(replaced("\"output_rate\": 50", "\"output_rate\": [50]")), {"bad.json", "'output_rate'", "array"});
+  expect_input_error(parse(replaced("\"output_rate\": 50", "\"output_rate\": [50]")),
+                     {"bad.json", "'output_rate'", "array"});
   expect_input_error(parse(replaced("\"dopri5\"", "\"euler\"")), {"bad.json", "'integrator.method'", "rk4"});
-  expect_input_error(parse(replaced("\"start\": 0,", "\"start\": 1,")), {"bad.json", "segments[0].start", "start at 0"});
+  expect_input_error(parse(replaced("\"start\": 0,", "\"start\": 1,")),
+                     {"bad.json", "segments[0].start", "start at 0"});
   expect_input_error(parse(replaced("\"start\": 10.5", "\"start\": 4")), {"bad.json", "segments[2].start", "after"});
-  expect_input_error(parse(replaced("\"N\": 0.0027", "\"Q\": 0.0027")), {"bad.json", "segments[0].tau.Q", "unknown key"});
+  expect_input_error(parse(replaced("\"N\": 0.0027", "\"Q\": 0.0027")),
+                     {"bad.json", "segments[0].tau.Q", "unknown key"});
   expect_input_error(parse(replaced("[0.05, 0, 0]", "[0.05, 0]")), {"bad.json", "segments[1].current", "3 numbers"});
-  expect_input_error(parse(replaced("\"euler_deg\": [0, 90, 180]", "\"euler_deg\": [0, 90, 180], \"euler_rad\": [0, 0, 0]")),
-                     {"bad.json", "initial.euler_deg", "not both"});
+  expect_input_error(
+      parse(replaced("\"euler_deg\": [0, 90, 180]", "\"euler_deg\": [0, 90, 180], \"euler_rad\": [0, 0, 0]")),
+      {"bad.json", "initial.euler_deg", "not both"});
 }
 
 }  // namespace

@@ -166,7 +166,8 @@ TEST(VehicleModel, DampedRollReturnsUpright) {
 
 TEST(VehicleModel, HThrustersMakeAPureYawMoment) {
   VehicleDescription d = bottom_heavy(0.02, 0.06);
-  for (const auto& [name, x, y] : {std::tuple{"pf", 0.06, -0.12}, {"pa", -0.06, -0.12}, {"sf", 0.06, 0.12}, {"sa", -0.06, 0.12}})
+  for (const auto& [name, x, y] :
+       {std::tuple{"pf", 0.06, -0.12}, {"pa", -0.06, -0.12}, {"sf", 0.06, 0.12}, {"sa", -0.06, 0.12}})
     d.thrusters.push_back({name, Vector3(x, y, 0.05), Vector3::UnitX(), -1.0, 1.0});
   const VehicleModel model(d);
   // Port forward, starboard backward: N = -sum y_i f_i = 2 * 0.12 * 0.5 * 2.

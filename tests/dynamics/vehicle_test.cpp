@@ -52,7 +52,7 @@ TEST(Vehicle, ParsesEveryPart) {
   for (std::size_t k = 0; k < x.law.terms.size(); ++k) {
     const double expected = x.law.terms[k] == DampingTerm::Constant ? 0.01
                             : x.law.terms[k] == DampingTerm::Linear ? -1.5
-                                                                      : -20.0;
+                                                                    : -20.0;
     EXPECT_EQ(x.coefficients[k], expected);
   }
   const DofDamping& n = v.damping[5];
@@ -85,7 +85,8 @@ std::string replaced(const std::string& from, const std::string& to) {
 TEST(Vehicle, BadFilesNameFileAndKey) {
   auto parse = [](const std::string& text) { return [text] { parse_vehicle(text, "bad.json"); }; };
   expect_input_error(parse(replaced("\"mass\": 10.0,", "")), {"bad.json", "'mass'", "missing"});
-  expect_input_error(parse(replaced("\"mass\": 10.0", "\"mass\": \"10\"")), {"bad.json", "'mass'", "string", "expected a number"});
+  expect_input_error(parse(replaced("\"mass\": 10.0", "\"mass\": \"10\"")),
+                     {"bad.json", "'mass'", "string", "expected a number"});
   expect_input_error(parse(replaced("\"mass\": 10.0", "\"mass\": -1")), {"bad.json", "'mass'", "-1", "positive"});
   expect_input_error(parse(replaced("[0.1, 2.0, 0.0]", "[0.2, 2.0, 0.0]")), {"bad.json", "'inertia'", "symmetric"});
   expect_input_error(parse(replaced("[1, 2, 3, 0.1, 0.2, 0.3]", "[1, 2, 3, -5, 0.2, 0.3]")),
@@ -94,10 +95,12 @@ TEST(Vehicle, BadFilesNameFileAndKey) {
   expect_input_error(parse(replaced("\"u|u|\": -20.0", "\"r|r|\": -20.0")), {"bad.json", "'damping.X.law'", "r|r|"});
   expect_input_error(parse(replaced("\"sign\": \"on-body\"", "\"sign\": \"positive\"")),
                      {"bad.json", "'damping.X.sign'", "on-body"});
-  expect_input_error(parse(replaced("\"min_thrust\": -2", "\"min_thrust\": 5")), {"bad.json", "thrusters[0]", "min_thrust"});
+  expect_input_error(parse(replaced("\"min_thrust\": -2", "\"min_thrust\": 5")),
+                     {"bad.json", "thrusters[0]", "min_thrust"});
   expect_input_error(parse(replaced("[0, 2, 0]", "[0, 0, 0]")), {"bad.json", "thrusters[0].direction", "zero"});
-  expect_input_error(parse(replaced("\"displaced_volume\": 0.011", "\"neutrally_buoyant\": true, \"buoyancy_force\": 9")),
-                     {"bad.json", "exactly one"});
+  expect_input_error(
+      parse(replaced("\"displaced_volume\": 0.011", "\"neutrally_buoyant\": true, \"buoyancy_force\": 9")),
+      {"bad.json", "exactly one"});
   expect_input_error(parse(replaced("\"mass\": 10.0,", "\"mass\": 10.0")), {"bad.json:6:", "JSON"});
   expect_input_error([] { load_vehicle("/nonexistent/vehicle.json"); }, {"/nonexistent/vehicle.json", "cannot read"});
 }

@@ -166,7 +166,8 @@ std::vector<CResult> run_driver(const std::filesystem::path& exe, const std::fil
     }
     write_file_atomically(in, text);
   }
-  const std::string command = shell_quote(exe.string()) + " " + shell_quote(in.string()) + " " + shell_quote(out.string());
+  const std::string command =
+      shell_quote(exe.string()) + " " + shell_quote(in.string()) + " " + shell_quote(out.string());
   EXPECT_EQ(std::system(command.c_str()), 0);
   std::vector<CResult> results;
   std::istringstream lines(test::read_text(out));
@@ -283,8 +284,8 @@ INSTANTIATE_TEST_SUITE_P(AllMethods, CHeaderMethods,
 
 TEST(CHeader, OneAxisAndFourAxesAgreeToo) {
   if (!compilers_present()) GTEST_SKIP() << "no C or C++ compiler at " << HYDROCOEF_C_COMPILER;
-  const GridTable one({{"w", {-1.0, -0.3, 0.0, 0.4, 1.0}, Extrapolation::Linear}}, {"Z"},
-                      {30.0, 4.0, 0.0, -5.0, -31.0}, Interpolation::Pchip);
+  const GridTable one({{"w", {-1.0, -0.3, 0.0, 0.4, 1.0}, Extrapolation::Linear}}, {"Z"}, {30.0, 4.0, 0.0, -5.0, -31.0},
+                      Interpolation::Pchip);
   check_header(one, "pchip_1d", true, false);
 
   std::vector<GridAxis> axes = {{"u", {0.0, 0.5, 1.0, 2.0}, Extrapolation::Method},
@@ -301,16 +302,17 @@ TEST(CHeader, OneAxisAndFourAxesAgreeToo) {
 }
 
 TEST(CHeader, DocumentsUnitsRangesPoliciesLayoutAndProvenance) {
-  const GridTable table = make_table(Interpolation::Pchip, {Extrapolation::Clamp, Extrapolation::Error,
-                                                            Extrapolation::Linear});
+  const GridTable table =
+      make_table(Interpolation::Pchip, {Extrapolation::Clamp, Extrapolation::Error, Extrapolation::Linear});
   ExportMetadata metadata = metadata_for_table(table, "asr-v:uvr");
   metadata.body = "asr-v";
   metadata.run_ids = {3, 4, 9};
   const std::string header = c_header_text(table, metadata);
-  for (const std::string& piece : std::vector<std::string>{"x[0] u [m/s]: 8 breakpoints in [-1.5, 2.4], outside: clamp", "x[1] v [m/s]", "outside: error",
-        "out[1] N [N m]", "on-body", "runs [3,4,9]", metadata.content_sha256, "surface 'asr-v:uvr' of body 'asr-v'",
-        "node * 2^n + S", "static inline int hc_asr_v_uvr_eval(", "#define hc_asr_v_uvr_OUT_X 0",
-        "#define hc_asr_v_uvr_AXIS_R 2", "x forward, y starboard, z down"}) {
+  for (const std::string& piece : std::vector<std::string>{
+           "x[0] u [m/s]: 8 breakpoints in [-1.5, 2.4], outside: clamp", "x[1] v [m/s]", "outside: error",
+           "out[1] N [N m]", "on-body", "runs [3,4,9]", metadata.content_sha256, "surface 'asr-v:uvr' of body 'asr-v'",
+           "node * 2^n + S", "static inline int hc_asr_v_uvr_eval(", "#define hc_asr_v_uvr_OUT_X 0",
+           "#define hc_asr_v_uvr_AXIS_R 2", "x forward, y starboard, z down"}) {
     EXPECT_NE(header.find(piece), std::string::npos) << "header lacks '" << piece << "'";
   }
 }
@@ -330,10 +332,14 @@ TEST(CHeader, RefusesABadIdentifierAndValuesTooLargeForFloat) {
 
 TEST(CHeader, HostileNamesStayInsideComments) {
   const GridTable table({{"u", {0.0, 1.0}, Extrapolation::Clamp}}, {"X"}, {1.0, 2.0}, Interpolation::Linear);
-  const ExportMetadata metadata = metadata_for_table(table, "evil */ int x; /* ?" "?/");
+  const ExportMetadata metadata = metadata_for_table(table,
+                                                     "evil */ int x; /* ?"
+                                                     "?/");
   const std::string header = c_header_text(table, metadata);
   EXPECT_EQ(header.find("evil */"), std::string::npos);
-  EXPECT_EQ(header.find("?" "?/"), std::string::npos);
+  EXPECT_EQ(header.find("?"
+                        "?/"),
+            std::string::npos);
   if (!compilers_present()) return;
   check_header(table, "hostile", false, false);  // and it compiles and agrees
 }

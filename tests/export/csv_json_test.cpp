@@ -24,7 +24,7 @@ GridTable table_2d(Interpolation method) {
   for (double r : axes[1].breakpoints)
     for (double u : axes[0].breakpoints) {
       values.push_back(-12.5 * u * std::abs(u) + 0.1 * r + 1.0 / 3.0);  // X
-      values.push_back(-0.7 * r * std::abs(r) + 0.01 * u);               // N
+      values.push_back(-0.7 * r * std::abs(r) + 0.01 * u);              // N
     }
   return GridTable(std::move(axes), {"X", "N"}, std::move(values), method);
 }
@@ -92,8 +92,8 @@ TEST(CsvExport, WideFormIsOneRowPerFirstAxisBreakpointPerOutput) {
 }
 
 TEST(CsvExport, WideFormRefusesAnythingButTwoAxes) {
-  const GridTable table({{"u", {0.0, 1.0}}, {"v", {0.0, 1.0}}, {"w", {0.0, 1.0}}}, {"X"},
-                        std::vector<double>(8, 1.0), Interpolation::Linear);
+  const GridTable table({{"u", {0.0, 1.0}}, {"v", {0.0, 1.0}}, {"w", {0.0, 1.0}}}, {"X"}, std::vector<double>(8, 1.0),
+                        Interpolation::Linear);
   test::expect_input_error([&] { csv_wide_text(table, metadata_for_table(table, "s3")); },
                            {"csv-wide", "3 axes (u, v, w)", "expected a 2-D table"});
 }
@@ -112,7 +112,8 @@ GridTable table_from_json(const nlohmann::json& document) {
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const auto column = document.at("values").at(outputs[k]).get<std::vector<double>>();
     EXPECT_EQ(column.size(), nodes);
-    for (std::size_t node = 0; node < nodes && node < column.size(); ++node) values[node * outputs.size() + k] = column[node];
+    for (std::size_t node = 0; node < nodes && node < column.size(); ++node)
+      values[node * outputs.size() + k] = column[node];
   }
   return GridTable(std::move(axes), std::move(outputs), std::move(values),
                    parse_interpolation(document.at("method").get<std::string>()));

@@ -38,8 +38,7 @@ FitRecord make_fit(std::string name, std::string dof, std::string variable,
   fit.body = "auv";
   fit.dof = std::move(dof);
   fit.variable = std::move(variable);
-  for (std::size_t k = 0; k < coefficients.size(); ++k)
-    fit.terms += (k ? "," : "") + coefficients[k].first;
+  for (std::size_t k = 0; k < coefficients.size(); ++k) fit.terms += (k ? "," : "") + coefficients[k].first;
   for (const auto& [term, value] : coefficients) fit.coefficients.push_back({term, value, std::nullopt});
   fit.sign = sign;
   fit.n = 5;
@@ -107,8 +106,7 @@ TEST(GazeboExport, GzFileNegatesAnOpposingFitAndAddedMass) {
   TempDir dir;
   auto fits = diagonal_fits();
   // The ASR-V surge law as its table prints it: positive opposes motion.
-  fits[0] = make_fit("auv:X-opposing", "X", "u", {{"u", 0.0155077}, {"u|u|", 11.0364}},
-                     SignConvention::OpposingMotion);
+  fits[0] = make_fit("auv:X-opposing", "X", "u", {{"u", 0.0155077}, {"u|u|", 11.0364}}, SignConvention::OpposingMotion);
   fits[0].body = "auv";
   const GazeboCoefficients coefficients = gazebo_coefficients(fits, request_with_mass());
   const auto path = dir / "auv-gz.sdf";
@@ -160,12 +158,12 @@ TEST(GazeboExport, GzCouplingsChangeSignFromFrdToFlu) {
   write_gazebo(coefficients, options, dir / "flu.sdf");
   const auto flu = read_xml(dir / "flu.sdf");
   ASSERT_NE(flu, nullptr);
-  EXPECT_EQ(number_of(flu, "zU"), -0.75);      // z flips, u does not
-  EXPECT_EQ(number_of(flu, "nV"), -0.125);     // r and v both flip
+  EXPECT_EQ(number_of(flu, "zU"), -0.75);   // z flips, u does not
+  EXPECT_EQ(number_of(flu, "nV"), -0.125);  // r and v both flip
   EXPECT_EQ(number_of(flu, "nVabsV"), -0.5);
-  EXPECT_EQ(number_of(flu, "xDotQ"), 0.3);     // -(T Ma T)(x,q) = -(-0.3)
+  EXPECT_EQ(number_of(flu, "xDotQ"), 0.3);  // -(T Ma T)(x,q) = -(-0.3)
   EXPECT_EQ(number_of(flu, "mDotU"), 0.3);
-  EXPECT_EQ(number_of(flu, "yDotR"), -0.2);    // y and r both flip
+  EXPECT_EQ(number_of(flu, "yDotR"), -0.2);  // y and r both flip
   EXPECT_EQ(number_of(flu, "zW"), -4.5);
 
   options.link_axes = GazeboLinkAxes::Frd;

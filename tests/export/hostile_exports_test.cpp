@@ -65,7 +65,6 @@ std::vector<std::string> lines_of(const std::filesystem::path& path) {
   return lines;
 }
 
-
 std::set<std::string> files_in(const std::filesystem::path& dir) {
   std::set<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
@@ -201,8 +200,7 @@ TEST(HostileNames, CHeadersCompileAndDefineOnlyTheirOwnNames) {
     const std::string symbol = line.substr(line.rfind(' ') + 1);
     const char type = line.size() > 17 ? line[17] : 'U';
     if (type == 'U') continue;  // printf
-    EXPECT_TRUE(symbol == "main" || (symbol[0] == 't' && symbol.find('_') != std::string::npos) ||
-                symbol[0] == '.')
+    EXPECT_TRUE(symbol == "main" || (symbol[0] == 't' && symbol.find('_') != std::string::npos) || symbol[0] == '.')
         << line;
   }
 }
@@ -270,8 +268,7 @@ TEST(HostileNames, SimulinkScriptHasOnlyTheExpectedStatements) {
     EXPECT_EQ(skeleton, expected);
     for (const auto& line : lines) EXPECT_EQ(line.find('\r'), std::string::npos);
   }
-  EXPECT_EQ(files_in(dir.path()),
-            (std::set<std::string>{"plain", "table.mat", "table_simulink.m"}));
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"plain", "table.mat", "table_simulink.m"}));
 }
 
 }  // namespace

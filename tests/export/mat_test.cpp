@@ -16,9 +16,8 @@ namespace hydrocoef {
 namespace {
 
 GridTable table_3d(Interpolation method, Extrapolation policy) {
-  std::vector<GridAxis> axes = {{"u", {-1.0, 0.0, 0.5, 2.0}, policy},
-                                {"v", {-0.4, 0.0, 0.4}, policy},
-                                {"r", {-0.2, 0.2}, policy}};
+  std::vector<GridAxis> axes = {
+      {"u", {-1.0, 0.0, 0.5, 2.0}, policy}, {"v", {-0.4, 0.0, 0.4}, policy}, {"r", {-0.2, 0.2}, policy}};
   std::vector<double> values;
   for (std::size_t l = 0; l < 2; ++l)
     for (std::size_t j = 0; j < 3; ++j)
@@ -73,9 +72,9 @@ TEST(MatExport, ReadsBackWithMatioInSimulinkLayout) {
     for (std::size_t l = 0; l < 2; ++l)
       for (std::size_t j = 0; j < 3; ++j)
         for (std::size_t i = 0; i < 4; ++i) {
-          const double expected = k == 0 ? 100.0 * static_cast<double>(l) + 10.0 * static_cast<double>(j) +
-                                               static_cast<double>(i)
-                                         : -0.5 * static_cast<double>(i * j) + 0.25;
+          const double expected =
+              k == 0 ? 100.0 * static_cast<double>(l) + 10.0 * static_cast<double>(j) + static_cast<double>(i)
+                     : -0.5 * static_cast<double>(i * j) + 0.25;
           EXPECT_EQ(v[i + 4 * j + 12 * l], expected);
         }
     Mat_VarFree(t);
@@ -94,9 +93,9 @@ TEST(MatExport, ReadsBackWithMatioInSimulinkLayout) {
 
   const std::string script = test::read_text(files[1]);
   EXPECT_EQ(script.rfind("function rov_uvr_simulink(block, output)", 0), 0u);
-  for (const std::string piece : {"'NumberOfTableDimensions', '3'", "BreakpointsForDimension3', mat2str(data.bp3, 17)",
-                                  "'Linear point-slope'", "'ExtrapMethod', 'Clip'",
-                                  "'DiagnosticForOutOfRangeInput', 'None'", "load(fullfile(", "rov-uvr.mat"})
+  for (const std::string piece :
+       {"'NumberOfTableDimensions', '3'", "BreakpointsForDimension3', mat2str(data.bp3, 17)", "'Linear point-slope'",
+        "'ExtrapMethod', 'Clip'", "'DiagnosticForOutOfRangeInput', 'None'", "load(fullfile(", "rov-uvr.mat"})
     EXPECT_NE(script.find(piece), std::string::npos) << piece;
 }
 
@@ -123,8 +122,7 @@ TEST(MatExport, OneDimensionalTablesAreColumnsAndPoliciesMapToTheBlock) {
 
 TEST(MatExport, RefusesWhatTheBlockCannotReproduceAndWritesNothing) {
   test::TempDir dir;
-  const GridTable cubic({{"u", {0.0, 1.0, 2.0}, Extrapolation::Clamp}}, {"X"}, {0.0, -1.0, -4.0},
-                        Interpolation::Pchip);
+  const GridTable cubic({{"u", {0.0, 1.0, 2.0}, Extrapolation::Clamp}}, {"X"}, {0.0, -1.0, -4.0}, Interpolation::Pchip);
   test::expect_input_error(
       [&] { export_table(cubic, metadata_for_table(cubic, "c"), ExportFormat::Mat, dir / "c.mat"); },
       {"format mat", "pchip", "expected a nearest or linear surface"});

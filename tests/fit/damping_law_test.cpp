@@ -277,8 +277,7 @@ TEST(DampingLawFit, RejectsDataThatCannotSeparateTheTerms) {
                      {"terms u, |u| are linearly dependent"});
 
   const std::vector<double> at_rest = {0.0, 0.0, 0.0, 0.0};
-  expect_input_error([&] { fit_damping_law(parse_damping_terms("1,u|u|"), at_rest, forces); },
-                     {"'u|u|' is zero"});
+  expect_input_error([&] { fit_damping_law(parse_damping_terms("1,u|u|"), at_rest, forces); }, {"'u|u|' is zero"});
 }
 
 TEST(DampingLawFit, RejectsBadSpecsAndOptions) {
@@ -286,11 +285,16 @@ TEST(DampingLawFit, RejectsBadSpecsAndOptions) {
   const std::vector<double> y = {1.0, 2.0, 3.0};
   expect_input_error([&] { fit_damping_law(DampingLawSpec{"x", {DampingTerm::Linear}}, x, y); }, {"'x'"});
   expect_input_error(
-      [&] { fit_damping_law(DampingLawSpec{"u", {DampingTerm::Linear, DampingTerm::Linear}}, x, y); },
+      [&] {
+        fit_damping_law(DampingLawSpec{"u", {DampingTerm::Linear, DampingTerm::Linear}}, x, y);
+      },
       {"'u'", "twice"});
   expect_input_error([&] { fit_damping_law(DampingLawSpec{"u", {}}, x, y); }, {"no terms"});
-  expect_input_error([&] { fit_damping_law(parse_damping_terms("u"), x, y, FitOptions{LossKind::Huber, 0.0}); },
-                     {"scale", "> 0"});
+  expect_input_error(
+      [&] {
+        fit_damping_law(parse_damping_terms("u"), x, y, FitOptions{LossKind::Huber, 0.0});
+      },
+      {"scale", "> 0"});
 }
 
 }  // namespace

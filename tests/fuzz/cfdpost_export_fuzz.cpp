@@ -8,14 +8,13 @@
 #include "importers/cfdpost_export.hpp"
 #include "tests/fuzz/fuzz_check.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data,
-                                      std::size_t size) {
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hydrocoef;
-  const std::string_view text(reinterpret_cast<const char *>(data), size);
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
   (void)looks_like_cfdpost_export(text);
   try {
     fuzz::check_mesh(parse_cfdpost_export(text, "fuzz.csv"));
-  } catch (const InputError &error) {
+  } catch (const InputError& error) {
     fuzz::check_error(error);
   }
   try {
@@ -27,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data,
       options.locations = {locations.back()};
       fuzz::check_mesh(parse_cfdpost_export(text, "fuzz.csv", options));
     }
-  } catch (const InputError &error) {
+  } catch (const InputError& error) {
     fuzz::check_error(error);
   }
   return 0;

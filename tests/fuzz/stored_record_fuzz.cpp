@@ -27,9 +27,9 @@ std::string_view next_line(std::string_view& rest) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hydrocoef;
-  std::string_view rest(reinterpret_cast<const char *>(data), size);
+  std::string_view rest(reinterpret_cast<const char*>(data), size);
   SurfaceRecord record;
   record.id = 1;
   record.name = "fuzz";
@@ -50,16 +50,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
       }
       try {
         surface.evaluate(point, out);
-      } catch (const InputError &error) {
+      } catch (const InputError& error) {
         fuzz::check_error(error);
       }
     }
-  } catch (const InputError &error) {
+  } catch (const InputError& error) {
     fuzz::check_error(error);
   }
   try {
     (void)parse_damping_terms(record.method);
-  } catch (const InputError &error) {
+  } catch (const InputError& error) {
     fuzz::check_error(error);
   }
   return 0;

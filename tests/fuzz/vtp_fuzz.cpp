@@ -10,21 +10,17 @@
 #include "importers/vtk_xml_polydata.hpp"
 #include "tests/fuzz/fuzz_check.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data,
-                                      std::size_t size) {
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hydrocoef;
-  const std::string_view bytes(reinterpret_cast<const char *>(data), size);
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   try {
     const auto mesh = parse_vtp_surface(bytes, "fuzz.vtp", "fuzz");
-    if (!mesh)
-      return 0;
+    if (!mesh) return 0;
     fuzz::check_mesh(*mesh);
-    if (mesh->face_count() == 0)
-      fuzz::finding("a mesh without faces");
-    if (mesh->location_names.size() != 1 ||
-        mesh->face_location.size() != mesh->face_count())
+    if (mesh->face_count() == 0) fuzz::finding("a mesh without faces");
+    if (mesh->location_names.size() != 1 || mesh->face_location.size() != mesh->face_count())
       fuzz::finding("not one location for every face");
-  } catch (const InputError &error) {
+  } catch (const InputError& error) {
     fuzz::check_error(error);
   }
   return 0;

@@ -53,12 +53,12 @@ TEST(HistoryAnalysis, TrueMeanInsideTheStatedIntervalAndErrorWithinTwentyPerCent
   int needed_cut = 0;
   for (int k = 0; k < cases; ++k) {
     SyntheticSeries spec;
-    spec.phi = 0.3 + 0.6 * (k % 20) / 19.0;          // tau_int from 1.9 to 19
-    spec.sigma = 0.01 * (1 + k % 7);                 // N
-    spec.mean = 0.5 - 0.01 * k;                      // N
+    spec.phi = 0.3 + 0.6 * (k % 20) / 19.0;                                  // tau_int from 1.9 to 19
+    spec.sigma = 0.01 * (1 + k % 7);                                         // N
+    spec.mean = 0.5 - 0.01 * k;                                              // N
     const double sigma_x = spec.sigma / std::sqrt(1 - spec.phi * spec.phi);  // N
     spec.startup = (k % 2 == 0 ? 1 : -1) * (5 + k % 11) * sigma_x;
-    spec.startup_decay = 50.0 + 25.0 * (k % 9);      // samples
+    spec.startup_decay = 50.0 + 25.0 * (k % 9);  // samples
     const auto x = make_series(spec, n, 20240 + k);
     const HistoryAnalysis a = analyze_force_history(history_of(x));
     const SeriesStatistics& s = fx_total(a);
@@ -74,7 +74,8 @@ TEST(HistoryAnalysis, TrueMeanInsideTheStatedIntervalAndErrorWithinTwentyPerCent
     const double bias_in_errors = std::abs(kept) / double(a.sample_count) / truth;
     EXPECT_LT(bias_in_errors, 1.0) << "case " << k << ": window starts at " << a.first_sample;
     worst_bias = std::max(worst_bias, bias_in_errors);
-    const double uncut = std::abs(spec.startup) / (1.0 - decay) / double(n) / ar1_standard_error(spec.phi, spec.sigma, n);
+    const double uncut =
+        std::abs(spec.startup) / (1.0 - decay) / double(n) / ar1_standard_error(spec.phi, spec.sigma, n);
     if (uncut > 2.0) ++needed_cut;
     EXPECT_GT(a.first_sample, 0u) << "case " << k;
     EXPECT_FALSE(a.flags.no_steady_window) << "case " << k;
@@ -109,7 +110,8 @@ TEST(HistoryAnalysis, TrueMeanInsideTheStatedIntervalAndErrorWithinTwentyPerCent
 TEST(HistoryAnalysis, ADriftingHistoryIsFlagged) {
   // Settled start-up, then a slow linear drift of 3 % of the mean over the
   // record, buried in noise a sample at a time.
-  SyntheticSeries spec{.mean = 1.0, .startup = 0.5, .startup_decay = 100.0, .phi = 0.5, .sigma = 0.01, .slope = -1.5e-6};
+  SyntheticSeries spec{
+      .mean = 1.0, .startup = 0.5, .startup_decay = 100.0, .phi = 0.5, .sigma = 0.01, .slope = -1.5e-6};
   const auto x = make_series(spec, 20000, 77);
   const HistoryAnalysis automatic = analyze_force_history(history_of(x));
   EXPECT_TRUE(automatic.flags.drifting || automatic.flags.no_steady_window);
@@ -193,9 +195,9 @@ TEST(HistoryAnalysis, GivenWindowsThatDoNotFitAreRefused) {
   const auto h = history_of(std::vector<double>(100, 1.0));
   HistoryAnalysisOptions options;
   options.window = HistoryWindow::range(200, 300);
-  test::expect_input_error([&] { analyze_force_history(h, options); },
-                           {"range 200:300", "holds 0 samples", "100 samples from iteration 1 to iteration 100",
-                            "expected at least 2"});
+  test::expect_input_error(
+      [&] { analyze_force_history(h, options); },
+      {"range 200:300", "holds 0 samples", "100 samples from iteration 1 to iteration 100", "expected at least 2"});
   options.window = HistoryWindow::range(50, 50);
   test::expect_input_error([&] { analyze_force_history(h, options); }, {"holds 1 sample "});
   options.window = HistoryWindow::last_samples(101);
@@ -210,12 +212,14 @@ TEST(HistoryAnalysis, GivenWindowsThatDoNotFitAreRefused) {
 }
 
 TEST(HistoryAnalysis, AGivenWindowBeforeTheStartUpEndsIsNoted) {
-  const auto x = make_series({.mean = 0.0, .startup = 50.0, .startup_decay = 200.0, .phi = 0.0, .sigma = 1.0}, 10000, 9);
+  const auto x =
+      make_series({.mean = 0.0, .startup = 50.0, .startup_decay = 200.0, .phi = 0.0, .sigma = 1.0}, 10000, 9);
   HistoryAnalysisOptions options;
   options.window = HistoryWindow::last_samples(9990);
   const HistoryAnalysis a = analyze_force_history(history_of(x), options);
   bool noted = false;
-  for (const auto& note : a.notes) noted = noted || note.find("starts before MSER-5 ends the start-up of Fx") != std::string::npos;
+  for (const auto& note : a.notes)
+    noted = noted || note.find("starts before MSER-5 ends the start-up of Fx") != std::string::npos;
   EXPECT_TRUE(noted);
 }
 
@@ -239,9 +243,11 @@ TEST(HistoryAnalysis, UnevenTimeStepsAreFlagged) {
 
 TEST(HistoryAnalysis, DecidingComponentsSetTheWindowAndTheRunFlags) {
   const std::size_t n = 5000;
-  ForceHistory h = history_of(make_series({.mean = 1.0, .startup = 0.1, .startup_decay = 100.0, .phi = 0.0, .sigma = 0.01}, n, 1));
+  ForceHistory h =
+      history_of(make_series({.mean = 1.0, .startup = 0.1, .startup_decay = 100.0, .phi = 0.0, .sigma = 0.01}, n, 1));
   // Mz never settles (a trend); Fx settles early.
-  h.values(ForcePart::Total, HistoryComponent::Mz) = make_series({.mean = 0.0, .phi = 0.0, .sigma = 1e-4, .slope = 1e-5}, n, 2);
+  h.values(ForcePart::Total, HistoryComponent::Mz) =
+      make_series({.mean = 0.0, .phi = 0.0, .sigma = 1e-4, .slope = 1e-5}, n, 2);
   const HistoryAnalysis all = analyze_force_history(h);
   EXPECT_TRUE(all.flags.no_steady_window);
   EXPECT_TRUE(all.components[5].flags.no_steady_window);

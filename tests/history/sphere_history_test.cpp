@@ -34,9 +34,9 @@ struct Case {
 };
 
 const std::vector<Case> kCases{
-    {"cases/u0.10_v0.00", "full/u0.10_v0.00/case.json"},         {"cases/u0.10_v0.05", "full/u0.10_v0.05/case.json"},
-    {"cases/u0.20_v0.10", "full/u0.20_v0.10/case.json"},         {"cases/u0.30_v0.00", "full/u0.30_v0.00/case.json"},
-    {"quarter-cases/U0.1000", "quarter/U0.1000/case.json"},      {"quarter-cases/U0.3000", "quarter/U0.3000/case.json"},
+    {"cases/u0.10_v0.00", "full/u0.10_v0.00/case.json"},    {"cases/u0.10_v0.05", "full/u0.10_v0.05/case.json"},
+    {"cases/u0.20_v0.10", "full/u0.20_v0.10/case.json"},    {"cases/u0.30_v0.00", "full/u0.30_v0.00/case.json"},
+    {"quarter-cases/U0.1000", "quarter/U0.1000/case.json"}, {"quarter-cases/U0.3000", "quarter/U0.3000/case.json"},
 };
 
 nlohmann::json case_json(const Case& c) { return nlohmann::json::parse(test::read_bytes(kSphere / c.json)); }
@@ -122,19 +122,21 @@ TEST(SphereHistory, OtherLayoutsGiveTheSameWindowMeans) {
 
   std::string foundation = "# Forces\n# CofR : (0 0 0)\n# Time forces(pressure viscous) moments(pressure viscous)\n";
   const double rho = 998.2, u = 0.1118, area = 0.0706858, l = 0.3, q = 0.5 * rho * u * u;
-  std::string coefficients = "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
-                             "# magUInf : 0.1118\n# lRef : 0.3\n# Aref : 0.0706858\n# CofR : (0 0 0)\n"
-                             "# Time Cd Cs Cl CmRoll CmPitch CmYaw\n";
+  std::string coefficients =
+      "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
+      "# magUInf : 0.1118\n# lRef : 0.3\n# Aref : 0.0706858\n# CofR : (0 0 0)\n"
+      "# Time Cd Cs Cl CmRoll CmPitch CmYaw\n";
   for (std::size_t i = 0; i < esi.size(); ++i) {
     const auto v = [&](ForcePart part, std::size_t k) { return format17(esi.values(part, HistoryComponent(k))[i]); };
-    foundation += format17(esi.abscissa_values[i]) + "\t((" + v(ForcePart::Pressure, 0) + " " + v(ForcePart::Pressure, 1) +
-                  " " + v(ForcePart::Pressure, 2) + ") (" + v(ForcePart::Viscous, 0) + " " + v(ForcePart::Viscous, 1) +
-                  " " + v(ForcePart::Viscous, 2) + ")) ((" + v(ForcePart::Pressure, 3) + " " +
-                  v(ForcePart::Pressure, 4) + " " + v(ForcePart::Pressure, 5) + ") (" + v(ForcePart::Viscous, 3) +
+    foundation += format17(esi.abscissa_values[i]) + "\t((" + v(ForcePart::Pressure, 0) + " " +
+                  v(ForcePart::Pressure, 1) + " " + v(ForcePart::Pressure, 2) + ") (" + v(ForcePart::Viscous, 0) + " " +
+                  v(ForcePart::Viscous, 1) + " " + v(ForcePart::Viscous, 2) + ")) ((" + v(ForcePart::Pressure, 3) +
+                  " " + v(ForcePart::Pressure, 4) + " " + v(ForcePart::Pressure, 5) + ") (" + v(ForcePart::Viscous, 3) +
                   " " + v(ForcePart::Viscous, 4) + " " + v(ForcePart::Viscous, 5) + "))\n";
     coefficients += format17(esi.abscissa_values[i]);
     for (std::size_t k = 0; k < 6; ++k)
-      coefficients += " " + format17(esi.values(ForcePart::Total, HistoryComponent(k))[i] / (k < 3 ? q * area : q * area * l));
+      coefficients +=
+          " " + format17(esi.values(ForcePart::Total, HistoryComponent(k))[i] / (k < 3 ? q * area : q * area * l));
     coefficients += "\n";
   }
   test::TempDir dir;

@@ -35,7 +35,8 @@ TEST(MserTruncation, CutsAStepInTheMeanAtTheStep) {
 TEST(MserTruncation, CutsAnExponentialStartUpWhereItSinksIntoTheNoise) {
   // Start-up 20 sigma, time constant 100: below 0.1 sigma after ~530 samples.
   const double sigma = 1.0;
-  const auto x = make_series({.mean = 0.0, .startup = 20.0, .startup_decay = 100.0, .phi = 0.0, .sigma = sigma}, 10000, 2);
+  const auto x =
+      make_series({.mean = 0.0, .startup = 20.0, .startup_decay = 100.0, .phi = 0.0, .sigma = sigma}, 10000, 2);
   const MserResult r = mser_truncation(x);
   EXPECT_TRUE(r.settled);
   EXPECT_GE(r.truncation, 250u);  // 20 exp(-t/100) is still 1.6 sigma at 250
@@ -65,7 +66,8 @@ TEST(MserTruncation, ConstantSeriesKeepsEverything) {
 
 TEST(MserTruncation, AStartUpLastingTheWholeRecordIsUnsettled) {
   // Time constant 2000 on 3000 samples: still moving at the end.
-  const auto x = make_series({.mean = 0.0, .startup = 10.0, .startup_decay = 2000.0, .phi = 0.3, .sigma = 0.01}, 3000, 3);
+  const auto x =
+      make_series({.mean = 0.0, .startup = 10.0, .startup_decay = 2000.0, .phi = 0.3, .sigma = 0.01}, 3000, 3);
   const MserResult r = mser_truncation(x);
   EXPECT_TRUE(r.applicable);
   EXPECT_FALSE(r.settled);

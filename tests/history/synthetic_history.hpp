@@ -14,12 +14,12 @@
 namespace hydrocoef::test {
 
 struct SyntheticSeries {
-  double mean = 0.0;          ///< the value the series settles on
-  double startup = 0.0;       ///< amplitude of the exponential start-up at sample 0
-  double startup_decay = 1.0; ///< its time constant, in samples
-  double phi = 0.0;           ///< AR(1) coefficient
-  double sigma = 1.0;         ///< innovation standard deviation
-  double slope = 0.0;         ///< a linear drift per sample, added to everything
+  double mean = 0.0;           ///< the value the series settles on
+  double startup = 0.0;        ///< amplitude of the exponential start-up at sample 0
+  double startup_decay = 1.0;  ///< its time constant, in samples
+  double phi = 0.0;            ///< AR(1) coefficient
+  double sigma = 1.0;          ///< innovation standard deviation
+  double slope = 0.0;          ///< a linear drift per sample, added to everything
 };
 
 inline std::vector<double> make_series(const SyntheticSeries& spec, std::size_t n, std::uint64_t seed) {
@@ -43,7 +43,8 @@ inline std::vector<double> make_series(const SyntheticSeries& spec, std::size_t 
 inline double ar1_standard_error(double phi, double sigma, std::size_t n) {
   const double nd = static_cast<double>(n);
   const double variance_x = sigma * sigma / (1.0 - phi * phi);
-  const double factor = (1.0 + phi) / (1.0 - phi) - 2.0 * phi * (1.0 - std::pow(phi, nd)) / (nd * (1.0 - phi) * (1.0 - phi));
+  const double factor =
+      (1.0 + phi) / (1.0 - phi) - 2.0 * phi * (1.0 - std::pow(phi, nd)) / (nd * (1.0 - phi) * (1.0 - phi));
   return std::sqrt(variance_x / nd * factor);
 }
 

@@ -765,7 +765,8 @@ TEST(CfxMonitorHistory, GapsAndTimestepsThatGoBackAreRefusedWithTheirLine) {
     FAIL() << "a gap was accepted";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("gap.csv:3:"), std::string::npos) << error.what();
-    EXPECT_NE(std::string(error.what()).find("empty cell at accumulated timestep 2"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("empty cell at accumulated timestep 2"), std::string::npos)
+        << error.what();
   }
   try {
     (void)parse_cfx_monitor_history(header + "1, 0.5, 0.1\n3, 0.5, 0.1\n2, 0.5, 0.1\n", "back.csv", {});

@@ -64,9 +64,9 @@ TEST(ForceHistoryCsv, CommaTableWithUnits) {
 
 TEST(ForceHistoryCsv, TabSemicolonAndBlankSeparatedTablesAndCrlf) {
   for (const std::string& text : {std::string("Iteration\tForce X\tMoment Y\n1\t1\t2\n2\t3\t4\n"),
-                                   std::string("Iteration;Force X;Moment Y\r\n1;1;2\r\n2;3;4\r\n"),
-                                   std::string("Iteration   Force_X   Moment-Y\n  1  1  2\n  2  3  4"),
-                                   std::string("# exported\n# Iteration Fx My\n1 1 2\n# a comment\n\n2 3 4\n")}) {
+                                  std::string("Iteration;Force X;Moment Y\r\n1;1;2\r\n2;3;4\r\n"),
+                                  std::string("Iteration   Force_X   Moment-Y\n  1  1  2\n  2  3  4"),
+                                  std::string("# exported\n# Iteration Fx My\n1 1 2\n# a comment\n\n2 3 4\n")}) {
     SCOPED_TRACE(text);
     const ForceHistory h = parse(text);
     EXPECT_EQ(h.abscissa, HistoryAbscissa::Iteration);
@@ -166,8 +166,8 @@ TEST(ForceHistoryCsv, AnOpenFoamHistoryAsACsvGivesTheSameNumbers) {
   for (std::size_t i = 0; i < foam.size(); ++i) {
     std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g\n", foam.abscissa_values[i],
                   foam.values(ForcePart::Pressure, HistoryComponent::Fx)[i],
-                  foam.values(ForcePart::Viscous, HistoryComponent::Fx)[i], foam.values(kTotal, HistoryComponent::Fx)[i],
-                  foam.values(kTotal, HistoryComponent::Mz)[i]);
+                  foam.values(ForcePart::Viscous, HistoryComponent::Fx)[i],
+                  foam.values(kTotal, HistoryComponent::Fx)[i], foam.values(kTotal, HistoryComponent::Mz)[i]);
     text += line;
   }
   test::TempDir dir;
@@ -176,7 +176,8 @@ TEST(ForceHistoryCsv, AnOpenFoamHistoryAsACsvGivesTheSameNumbers) {
   EXPECT_EQ(h.abscissa_values, foam.abscissa_values);
   EXPECT_EQ(h.abscissa, HistoryAbscissa::Iteration);
   EXPECT_EQ(h.values(kTotal, HistoryComponent::Fx), foam.values(kTotal, HistoryComponent::Fx));
-  EXPECT_EQ(h.values(ForcePart::Pressure, HistoryComponent::Fx), foam.values(ForcePart::Pressure, HistoryComponent::Fx));
+  EXPECT_EQ(h.values(ForcePart::Pressure, HistoryComponent::Fx),
+            foam.values(ForcePart::Pressure, HistoryComponent::Fx));
   EXPECT_EQ(h.values(kTotal, HistoryComponent::Mz), foam.values(kTotal, HistoryComponent::Mz));
   EXPECT_EQ(h.files[0].sha256, sha256_hex(text));
   EXPECT_EQ(h.files[0].size_bytes, text.size());
@@ -204,8 +205,7 @@ namespace {
 TEST(ForceHistoryCsv, DamagedTablesAreReadOrRefusedInOneLine) {
   const std::vector<std::string> seeds{
       "Time [s], Fx [kN], Fy [N], Mz [N m], Note\n0.0, 1.5, 2, 3, start\n0.5, 1.25, -2, 4e-1, \"a, b\"\n",
-      "# Iteration Fx My\n1 1 2\n2 3 4\n",
-      "Iteration;Force X;Moment Y\r\n1;1;2\r\n2;3;4\r\n",
+      "# Iteration Fx My\n1 1 2\n2 3 4\n", "Iteration;Force X;Moment Y\r\n1;1;2\r\n2;3;4\r\n",
       "t\tX\tY pressure\tN\n0\t1\t2\t3\n1\t1\t2\t3\n"};
   const std::string alphabet = "0123456789.eE+-[] \t\n#,;\"\rFxyzMNTtime";
   std::mt19937_64 random(7);
@@ -215,14 +215,9 @@ TEST(ForceHistoryCsv, DamagedTablesAreReadOrRefusedInOneLine) {
     for (int edits = 1 + static_cast<int>(random() % 3); edits > 0 && !text.empty(); --edits) {
       const std::size_t at = random() % text.size();
       switch (random() % 3) {
-        case 0:
-          text[at] = alphabet[random() % alphabet.size()];
-          break;
-        case 1:
-          text.erase(at, 1 + random() % 4);
-          break;
-        default:
-          text.insert(at, 1, alphabet[random() % alphabet.size()]);
+        case 0: text[at] = alphabet[random() % alphabet.size()]; break;
+        case 1: text.erase(at, 1 + random() % 4); break;
+        default: text.insert(at, 1, alphabet[random() % alphabet.size()]);
       }
     }
     ForceHistoryCsvOptions options;

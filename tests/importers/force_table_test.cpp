@@ -28,9 +28,8 @@ namespace fs = std::filesystem;
 constexpr std::size_t kU = 0, kR = 5;
 constexpr std::size_t kX = 0, kY = 1, kN = 5;
 
-#define EXPECT_CONTAINS(haystack, needle)                                                       \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "expected '" << (needle) \
-                                                                   << "' in: " << (haystack)
+#define EXPECT_CONTAINS(haystack, needle) \
+  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "expected '" << (needle) << "' in: " << (haystack)
 #define EXPECT_STARTS_WITH(text, prefix) \
   EXPECT_EQ(std::string(text).rfind(prefix, 0), 0u) << "expected it to start with '" << (prefix) << "': " << (text)
 
@@ -86,9 +85,8 @@ const std::vector<double> kSurgeU = {0.00, 0.02, 0.04, 0.06, 0.08, 0.10, 0.12, 0
 const std::vector<double> kSurgeX = {-0.00020, 0.00544, 0.01928, 0.04186, 0.07293, 0.11278, 0.16119,
                                      0.21879,  0.28528, 0.36097, 0.44516, 0.53802, 0.63986, 0.75051,
                                      0.87046,  0.99881, 1.13579, 1.28167, 1.43652, 1.60013};
-const std::vector<double> kYawR = {0.0000, 0.0116, 0.0232, 0.0349, 0.0465, 0.0582, 0.0698,
-                                   0.0814, 0.0932, 0.1047, 0.1163, 0.1400, 0.1570, 0.1745,
-                                   0.1919, 0.2094, 0.2268, 0.2443, 0.2617, 0.2792};
+const std::vector<double> kYawR = {0.0000, 0.0116, 0.0232, 0.0349, 0.0465, 0.0582, 0.0698, 0.0814, 0.0932, 0.1047,
+                                   0.1163, 0.1400, 0.1570, 0.1745, 0.1919, 0.2094, 0.2268, 0.2443, 0.2617, 0.2792};
 const std::vector<double> kYawN = {-0.00006, -0.00015, -0.00016, -0.00023, -0.00036, -0.00053, -0.00067,
                                    -0.00102, -0.00127, -0.00132, -0.00180, -0.00240, -0.00287, -0.00343,
                                    -0.00402, -0.00467, -0.00532, -0.00607, -0.00682, -0.00766};
@@ -150,18 +148,18 @@ TEST(ForceTable, NoFinalNewline) {
 
 TEST(ForceTable, CommentsAndBlankLinesAnywhere) {
   const std::string text =
-      "\n"                     // 1
-      "# leading comment\n"    // 2
-      "   \n"                  // 3
-      "u [m s^-1],X [N]\n"     // 4: header
-      "# between\n"            // 5
-      "0.1,1.0\n"              // 6
-      "\n"                     // 7
-      "   # indented, 9,9\n"   // 8
-      "\t\n"                   // 9
-      "0.2,4.0\n"              // 10
-      "# trailing\n"           // 11
-      "\n";                    // 12
+      "\n"                    // 1
+      "# leading comment\n"   // 2
+      "   \n"                 // 3
+      "u [m s^-1],X [N]\n"    // 4: header
+      "# between\n"           // 5
+      "0.1,1.0\n"             // 6
+      "\n"                    // 7
+      "   # indented, 9,9\n"  // 8
+      "\t\n"                  // 9
+      "0.2,4.0\n"             // 10
+      "# trailing\n"          // 11
+      "\n";                   // 12
   const auto runs = parse_force_table(text, "t.csv", {});
   ASSERT_EQ(runs.size(), 2u);
   EXPECT_EQ(runs[0].source_line, 6u);
@@ -177,8 +175,8 @@ TEST(ForceTable, CommentsAndBlankLinesAnywhere) {
 // --- headers and units -----------------------------------------------------
 
 TEST(ForceTable, CfxBracketsWithSpacesAndCommaSpaceSeparator) {
-  const auto runs = parse_force_table("u [ m s^-1 ], X [ N ], N [ N m ]\n 1.00000000e-01, 2.5e+00, -3.0e-01\n",
-                                      "t.csv", {});
+  const auto runs =
+      parse_force_table("u [ m s^-1 ], X [ N ], N [ N m ]\n 1.00000000e-01, 2.5e+00, -3.0e-01\n", "t.csv", {});
   ASSERT_EQ(runs.size(), 1u);
   EXPECT_EQ(runs[0].key.nu_b[kU], 0.1);
   EXPECT_EQ(runs[0].tau_b[kX]->total, 2.5);
@@ -330,8 +328,7 @@ TEST(ForceTable, SetDisturbancesCombineWithDisturbanceColumns) {
   options.disturbances = {{"wave_h", 0.1}};
   options.disturbance_columns = {"current_v"};
   const auto runs = parse_force_table("u [m s^-1],current_v [m s^-1],X [N]\n0.1,0.05,1\n", "t.csv", options);
-  EXPECT_EQ(runs.at(0).key.disturbances,
-            (std::map<std::string, double>{{"current_v", 0.05}, {"wave_h", 0.1}}));
+  EXPECT_EQ(runs.at(0).key.disturbances, (std::map<std::string, double>{{"current_v", 0.05}, {"wave_h", 0.1}}));
 }
 
 TEST(ForceTable, IgnoredColumnsAreNotParsed) {

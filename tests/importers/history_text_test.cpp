@@ -43,9 +43,26 @@ TEST(HistoryText, NumbersAreReadAsFromCharsReadsThem) {
     ASSERT_EQ(std::memcmp(&got, &expected, sizeof got), 0) << text << ": " << got << " vs " << expected;
     ++checked;
   }
-  for (const char* text : {"0", "-0", "0.0", "1.", ".5", "-.5", "00012.5000", "123456789012345678901234",
-                           "9007199254740993", "1e22", "1e23", "1.7976931348623157e308", "4.9e-324", "1e-400",
-                           "12345678901234567890e-10", "0.000000000000000000000001", "1e+5", "1E5", "+3.5", "1e"}) {
+  for (const char* text : {"0",
+                           "-0",
+                           "0.0",
+                           "1.",
+                           ".5",
+                           "-.5",
+                           "00012.5000",
+                           "123456789012345678901234",
+                           "9007199254740993",
+                           "1e22",
+                           "1e23",
+                           "1.7976931348623157e308",
+                           "4.9e-324",
+                           "1e-400",
+                           "12345678901234567890e-10",
+                           "0.000000000000000000000001",
+                           "1e+5",
+                           "1E5",
+                           "+3.5",
+                           "1e"}) {
     double got = 0.0, expected = 0.0;
     const char* end = text + std::strlen(text);
     const char* stop = read_finite_number(text, end, got);
@@ -187,14 +204,16 @@ TEST(HistoryText, StreamedFilesGiveTheSameRowsLinesAndDigest) {
   const std::size_t bad_line = 2 + 4321 + 2 * 5;  // comment and blank lines before rows 0, 1000, ..., 4000
   test::expect_input_error([&] { parse_file_rows(dir / "bad.dat", layout_of(t), small); },
                            {"bad.dat:" + std::to_string(bad_line) + ":", "found 'x.y"});
-  test::expect_input_error([&] { parse_file_rows(dir / "cut.dat", layout_of(t), small); }, {"cut.dat:", "stopped while writing"});
+  test::expect_input_error([&] { parse_file_rows(dir / "cut.dat", layout_of(t), small); },
+                           {"cut.dat:", "stopped while writing"});
   small.drop_incomplete_last_row = true;
   const StreamedRows dropped = parse_file_rows(dir / "cut.dat", layout_of(t), small);
   EXPECT_TRUE(dropped.rows.dropped_last_row);
   EXPECT_EQ(dropped.rows.rows, 4999u);
   EXPECT_TRUE(dropped.sha256.empty());
 
-  test::expect_input_error([&] { parse_file_rows(dir / "none.dat", layout_of(t), small); }, {"none.dat", "no such file"});
+  test::expect_input_error([&] { parse_file_rows(dir / "none.dat", layout_of(t), small); },
+                           {"none.dat", "no such file"});
   test::expect_input_error([&] { parse_file_rows(dir.path(), layout_of(t), small); }, {"is a directory"});
   RowOptions tiny;
   tiny.block_bytes = 5;  // smaller than the header

@@ -57,7 +57,8 @@ TEST(OpenFoamDictionary, FollowsIncludesRelativeToTheIncludingFile) {
   test::TempDir dir;
   fs::create_directories(dir / "system");
   std::ofstream(dir.path() / "system" / "forces") << "forces { type forces; rhoInf 1025; CofR (1 2 3); }\n";
-  std::ofstream(dir.path() / "system" / "controlDict") << "application simpleFoam;\nfunctions\n{\n  #include \"forces\"\n}\n";
+  std::ofstream(dir.path() / "system" / "controlDict")
+      << "application simpleFoam;\nfunctions\n{\n  #include \"forces\"\n}\n";
   const auto d = FoamDictionary::read(dir.path() / "system" / "controlDict");
   const FoamDictionary* forces = d.dictionary("functions")->dictionary("forces");
   ASSERT_TRUE(forces);

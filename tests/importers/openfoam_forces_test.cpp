@@ -38,11 +38,10 @@ using test::TempDir;
 using test::write_bytes;
 
 const fs::path kSphere = fs::path(HYDROCOEF_DATA_DIR) / "openfoam-sphere";
-const std::vector<std::string> kCases{"cases/u0.10_v0.00", "cases/u0.10_v0.05", "cases/u0.20_v0.10",
+const std::vector<std::string> kCases{"cases/u0.10_v0.00", "cases/u0.10_v0.05",     "cases/u0.20_v0.10",
                                       "cases/u0.30_v0.00", "quarter-cases/U0.1000", "quarter-cases/U0.3000"};
 
 fs::path forces_folder(const std::string& c) { return kSphere / c / "postProcessing" / "forces"; }
-
 
 constexpr auto kTotal = ForcePart::Total;
 constexpr auto kPressure = ForcePart::Pressure;
@@ -83,8 +82,8 @@ TEST(OpenFoamForces, RealCasesGiveTheSolversFinalForcesWithTheirParts) {
   for (const std::string& c : kCases) {
     SCOPED_TRACE(c);
     const ForceHistory h = read_openfoam_forces(forces_folder(c));
-    const auto json = nlohmann::json::parse(read_bytes(kSphere / (c.starts_with("cases") ? "full" : "quarter") /
-                                                       fs::path(c).filename() / "case.json"));
+    const auto json = nlohmann::json::parse(
+        read_bytes(kSphere / (c.starts_with("cases") ? "full" : "quarter") / fs::path(c).filename() / "case.json"));
     const std::size_t n = json["iterations_run"].get<std::size_t>();
     ASSERT_EQ(h.size(), n);
     EXPECT_EQ(h.abscissa, HistoryAbscissa::Iteration);
@@ -194,7 +193,8 @@ TEST(OpenFoamForces, ColumnsAreFoundByNameInAnyOrderWithPorous) {
   // Header and rows in another order, with a porous part: read by name.
   const std::string text =
       "# Force\n# CofR : (1 2 3)\n#\n"
-      "# Time\tviscous_x viscous_y viscous_z\tporous_x porous_y porous_z\tpressure_x pressure_y pressure_z\ttotal_x total_y total_z\n"
+      "# Time\tviscous_x viscous_y viscous_z\tporous_x porous_y porous_z\tpressure_x pressure_y pressure_z\ttotal_x "
+      "total_y total_z\n"
       "0.5\t1 2 3\t10 20 30\t100 200 300\t111 222 333\n"
       "1.5\t4 5 6\t40 50 60\t400 500 600\t444 555 666\n";
   const ForceHistory h = parse_openfoam_force_file(text, "force.dat");
@@ -248,7 +248,8 @@ TEST(OpenFoamForces, FoundationForcesDatGivesTheSameForces) {
       SCOPED_TRACE(std::string("porous ") + (porous ? "yes" : "no") + ", CofR column " + (cofr ? "yes" : "no"));
       TempDir dir;
       fs::create_directories(dir / "forces" / "0");
-      write_bytes(dir / "forces/0/forces.dat", foundation_forces(esi, porous, cofr, false, porous ? "moment" : "moments"));
+      write_bytes(dir / "forces/0/forces.dat",
+                  foundation_forces(esi, porous, cofr, false, porous ? "moment" : "moments"));
       const ForceHistory h = read_openfoam_forces(dir / "forces");
       ASSERT_EQ(h.files.size(), 1u);
       EXPECT_EQ(h.files[0].format, "openfoam-forces");
@@ -257,7 +258,8 @@ TEST(OpenFoamForces, FoundationForcesDatGivesTheSameForces) {
       expect_same_series(esi, h, {kPressure, kViscous});
       for (const HistoryComponent c : kAllHistoryComponents)
         for (std::size_t i = 0; i < h.size(); ++i) {
-          ASSERT_EQ(h.values(kTotal, c)[i], esi.values(kPressure, c)[i] + esi.values(kViscous, c)[i] + (porous ? 0.0 : 0.0));
+          ASSERT_EQ(h.values(kTotal, c)[i],
+                    esi.values(kPressure, c)[i] + esi.values(kViscous, c)[i] + (porous ? 0.0 : 0.0));
           ASSERT_NEAR(h.values(kTotal, c)[i], esi.values(kTotal, c)[i],
                       2e-10 * std::max({std::abs(esi.values(kTotal, c)[i]), std::abs(esi.values(kPressure, c)[i]),
                                         std::abs(esi.values(kViscous, c)[i])}) +
@@ -294,8 +296,9 @@ std::string esi_coefficients(const ForceHistory& h, const Axes& axes, double rho
           "\n# pitchAxis           : " + vec(axes.side) + "\n# yawAxis             : " + vec(axes.lift) + "\n";
   text += "# magUInf             : " + format17(u) + "\n# lRef                : " + format17(l) +
           "\n# Aref                : " + format17(area) + "\n# CofR                : (0 0 0)\n#\n";
-  text += alphabetical ? "# Time          \tCd\tCd(f)\tCd(r)\tCl\tCl(f)\tCl(r)\tCmPitch\tCmRoll\tCmYaw\tCs\tCs(f)\tCs(r)\n"
-                       : "# Time          \tCd\tCs\tCl\tCmRoll\tCmPitch\tCmYaw\tCd(f)\tCd(r)\tCs(f)\tCs(r)\tCl(f)\tCl(r)\n";
+  text += alphabetical
+              ? "# Time          \tCd\tCd(f)\tCd(r)\tCl\tCl(f)\tCl(r)\tCmPitch\tCmRoll\tCmYaw\tCs\tCs(f)\tCs(r)\n"
+              : "# Time          \tCd\tCs\tCl\tCmRoll\tCmPitch\tCmYaw\tCd(f)\tCd(r)\tCs(f)\tCs(r)\tCl(f)\tCl(r)\n";
   const double q = 0.5 * rho * u * u;
   for (std::size_t i = 0; i < h.size(); ++i) {
     std::array<double, 6> c{};
@@ -312,8 +315,9 @@ std::string esi_coefficients(const ForceHistory& h, const Axes& axes, double rho
     const double cdf = 0.5 * c[0] + c[3], cdr = 0.5 * c[0] - c[3];
     const double csf = 0.5 * c[1] + c[5], csr = 0.5 * c[1] - c[5];
     const double clf = 0.5 * c[2] + c[4], clr = 0.5 * c[2] - c[4];
-    std::vector<double> row = alphabetical ? std::vector<double>{c[0], cdf, cdr, c[2], clf, clr, c[4], c[3], c[5], c[1], csf, csr}
-                                           : std::vector<double>{c[0], c[1], c[2], c[3], c[4], c[5], cdf, cdr, csf, csr, clf, clr};
+    std::vector<double> row =
+        alphabetical ? std::vector<double>{c[0], cdf, cdr, c[2], clf, clr, c[4], c[3], c[5], c[1], csf, csr}
+                     : std::vector<double>{c[0], c[1], c[2], c[3], c[4], c[5], cdf, cdr, csf, csr, clf, clr};
     text += format17(h.abscissa_values[i]);
     for (const double v : row) text += "\t" + format17(v);
     text += "\n";
@@ -340,7 +344,8 @@ TEST(OpenFoamForces, CoefficientFilesGiveTheSameForces) {
       ASSERT_EQ(h.values(kTotal, c).size(), esi.size());
       EXPECT_TRUE(h.values(kPressure, c).empty());
       for (std::size_t i = 0; i < h.size(); ++i)
-        ASSERT_NEAR(h.values(kTotal, c)[i], esi.values(kTotal, c)[i], 1e-13 * std::abs(esi.values(kTotal, c)[i]) + 1e-20)
+        ASSERT_NEAR(h.values(kTotal, c)[i], esi.values(kTotal, c)[i],
+                    1e-13 * std::abs(esi.values(kTotal, c)[i]) + 1e-20)
             << component_name(c) << " " << i;
     }
   }
@@ -363,7 +368,8 @@ TEST(OpenFoamForces, RotatedCoefficientAxesAreRecordedAndTurnBack) {
   EXPECT_FALSE(global.frame.axes_in_global);
   for (const HistoryComponent c : kAllHistoryComponents)
     for (std::size_t i = 0; i < h.size(); i += 97)
-      EXPECT_NEAR(global.values(kTotal, c)[i], esi.values(kTotal, c)[i], 1e-13 * std::abs(esi.values(kTotal, c)[i]) + 1e-20);
+      EXPECT_NEAR(global.values(kTotal, c)[i], esi.values(kTotal, c)[i],
+                  1e-13 * std::abs(esi.values(kTotal, c)[i]) + 1e-20);
 }
 
 TEST(OpenFoamForces, FoundationForceCoeffsDatGivesDragLiftAndPitch) {
@@ -372,7 +378,8 @@ TEST(OpenFoamForces, FoundationForceCoeffsDatGivesDragLiftAndPitch) {
   std::string text =
       "# Force coefficients\n# liftDir             : (0 0 1)\n# dragDir             : (1 0 0)\n"
       "# pitchAxis           : (0 1 0)\n# magUInf             : 0.3\n# lRef                : 0.3\n"
-      "# Aref                : 0.0706858\n# CofR                : (0 0 0)\n# Time                \tCm\tCd\tCl\tCl(f)\tCl(r)\n";
+      "# Aref                : 0.0706858\n# CofR                : (0 0 0)\n# Time                "
+      "\tCm\tCd\tCl\tCl(f)\tCl(r)\n";
   for (std::size_t i = 0; i < esi.size(); ++i) {
     const double cm = esi.values(kTotal, HistoryComponent::My)[i] / (q * area * l);
     const double cd = esi.values(kTotal, HistoryComponent::Fx)[i] / (q * area);
@@ -418,11 +425,13 @@ TEST(OpenFoamForces, CoefficientReferenceValues) {
   expect_input_error([&] { parse_openfoam_force_file(no_area, "coefficient.dat", options); },
                      {"coefficient.dat", "no Aref", "(Aref)"});
   options.a_ref = 0.25;  // fills in for the header
-  EXPECT_DOUBLE_EQ(parse_openfoam_force_file(no_area, "coefficient.dat", options).values(kTotal, HistoryComponent::Fx)[0],
-                   0.1 * q * 0.25);
+  EXPECT_DOUBLE_EQ(
+      parse_openfoam_force_file(no_area, "coefficient.dat", options).values(kTotal, HistoryComponent::Fx)[0],
+      0.1 * q * 0.25);
   options.a_ref.reset();
-  const std::string skew = "# Force coefficients\n# dragDir : (1 0 0)\n# liftDir : (0.6 0.8 0)\n# magUInf : 2\n"
-                           "# Aref : 1\n# Time Cd\n1 0.1\n";
+  const std::string skew =
+      "# Force coefficients\n# dragDir : (1 0 0)\n# liftDir : (0.6 0.8 0)\n# magUInf : 2\n"
+      "# Aref : 1\n# Time Cd\n1 0.1\n";
   expect_input_error([&] { parse_openfoam_force_file(skew, "coefficient.dat", options); },
                      {"coefficient.dat:2", "not a right-handed orthonormal set"});
   const std::string long_dir =
@@ -553,8 +562,9 @@ TEST(OpenFoamForces, TransientTimesAreTimeAndTheCallerCanSay) {
 // Threads and large files
 
 std::string big_force_file(std::size_t rows) {
-  std::string text = "# Force\n# CofR : (0 0 0)\n#\n# Time (total_x total_y total_z) (pressure_x pressure_y pressure_z) "
-                     "(viscous_x viscous_y viscous_z)\n";
+  std::string text =
+      "# Force\n# CofR : (0 0 0)\n#\n# Time (total_x total_y total_z) (pressure_x pressure_y pressure_z) "
+      "(viscous_x viscous_y viscous_z)\n";
   char line[256];
   for (std::size_t i = 1; i <= rows; ++i) {
     const double t = 1e-4 * double(i);
@@ -592,7 +602,8 @@ TEST(OpenFoamForces, ThreadsGiveTheSameHistoryAndTheSameErrorLines) {
 // ---------------------------------------------------------------------------
 // Refusals
 
-const std::string kHead = "# Force\n# CofR : (0 0 0)\n#\n# Time\t(total_x total_y total_z)\t(pressure_x pressure_y pressure_z)\n";
+const std::string kHead =
+    "# Force\n# CofR : (0 0 0)\n#\n# Time\t(total_x total_y total_z)\t(pressure_x pressure_y pressure_z)\n";
 
 TEST(OpenFoamForces, RefusesBadRowsWithTheirPlace) {
   expect_input_error([&] { parse_openfoam_force_file(kHead + "1\t(1 2 3)\t(1 2 abc)\n", "force.dat"); },
@@ -609,8 +620,9 @@ TEST(OpenFoamForces, RefusesBadRowsWithTheirPlace) {
                      {"force.dat:5:6:", "column 3 'total_y'", "found 'nan'", "expected a finite number"});
   expect_input_error([&] { parse_openfoam_force_file(kHead + "1\t(1 1e999 3)\t(1 2 3)\n", "force.dat"); },
                      {"force.dat:5:6:", "found '1e999'", "finite"});
-  expect_input_error([&] { parse_openfoam_force_file(kHead + "1\t(1 2 3)\t(1 2 3)\n1\t(1 2 3)\t(1 2 3)\n", "force.dat"); },
-                     {"force.dat:6", "time 1 is not after 1 on line 5", "increasing"});
+  expect_input_error(
+      [&] { parse_openfoam_force_file(kHead + "1\t(1 2 3)\t(1 2 3)\n1\t(1 2 3)\t(1 2 3)\n", "force.dat"); },
+      {"force.dat:6", "time 1 is not after 1 on line 5", "increasing"});
 }
 
 TEST(OpenFoamForces, ALastRowCutShortIsRefusedOrDropped) {
@@ -636,7 +648,8 @@ TEST(OpenFoamForces, ForceAndMomentFilesMustHoldTheSameTimes) {
                      {"moment.dat:4", "time 2.5 differs from 2 on line 4 of", "force.dat", "same times"});
   // A force row whose moment row was never written.
   write_bytes(dir / "f/0/moment.dat", "# Moment\n# Time total_x total_y total_z\n1 1 2 3\n2 1 2 3\n");
-  expect_input_error([&] { read_openfoam_forces(dir / "f"); }, {"force.dat:5", "no partner in", "3 force rows, 2 moment rows"});
+  expect_input_error([&] { read_openfoam_forces(dir / "f"); },
+                     {"force.dat:5", "no partner in", "3 force rows, 2 moment rows"});
   OpenFoamForcesOptions options;
   options.drop_incomplete_last_row = true;
   const ForceHistory h = read_openfoam_forces(dir / "f", options);
@@ -656,7 +669,9 @@ TEST(OpenFoamForces, RefusesHeadersItDoesNotKnow) {
   expect_input_error([&] { parse_openfoam_force_file("# Force\n# Time total_x total_x\n1 1 2\n", "force.dat"); },
                      {"force.dat:2:", "'total_x' appears twice"});
   expect_input_error(
-      [&] { parse_openfoam_force_file("# Forces\n# Time forces(pressure viscous) moment(pressure wet)\n", "forces.dat"); },
+      [&] {
+        parse_openfoam_force_file("# Forces\n# Time forces(pressure viscous) moment(pressure wet)\n", "forces.dat");
+      },
       {"forces.dat:2:", "unknown part 'wet'"});
   expect_input_error([&] { parse_openfoam_force_file("# Forces\n# Time forces(pressure viscous)\n", "forces.dat"); },
                      {"forces.dat:2", "forces but no moments"});
@@ -678,7 +693,8 @@ TEST(OpenFoamForces, RefusesPathsWithoutForceFiles) {
 }
 
 TEST(OpenFoamForces, RecognisesItsFiles) {
-  EXPECT_TRUE(looks_like_openfoam_forces(read_bytes(forces_folder("cases/u0.10_v0.05") / "0" / "moment.dat").substr(0, 400)));
+  EXPECT_TRUE(
+      looks_like_openfoam_forces(read_bytes(forces_folder("cases/u0.10_v0.05") / "0" / "moment.dat").substr(0, 400)));
   EXPECT_TRUE(looks_like_openfoam_forces("# Forces\n# Time forces(pressure viscous) moment(pressure viscous)\n"));
   EXPECT_TRUE(looks_like_openfoam_forces("# Force coefficients\n# Time\tCd\tCs\tCl\n"));
   EXPECT_FALSE(looks_like_openfoam_forces("Time,Fx,Fy\n1,2,3\n"));
@@ -697,16 +713,20 @@ namespace {
 TEST(OpenFoamForces, DamagedFilesAreReadOrRefusedInOneLine) {
   const std::vector<std::pair<std::string, std::string>> seeds{
       {"force.dat", kHead + "1\t(1 2 3)\t(4 5 6)\n2\t(1.5e-3 -2 3)\t(4 5 6)\n3\t(1 2 3)\t(4 5 6)\n"},
-      {"moment.dat", "# Moment\n# CofR : (0 0 1)\n#\n# Time total_x total_y total_z viscous_x viscous_y viscous_z\n"
-                     "0.1 1 2 3 4 5 6\n0.2 1 2 3 4 5 6\n"},
-      {"forces.dat", "# Forces\n# CofR : (0 0 0)\n# Time CofR forces(pressure viscous porous) moment(pressure viscous "
-                     "porous) localForces(pressure,viscous,porous)\n1 (0 0 0) ((1 2 3) (4 5 6) (7 8 9)) ((1 2 3) (4 5 "
-                     "6) (7 8 9))\n1 (0 0 0) ((1 2 3) (4 5 6) (7 8 9)) ((1 2 3) (4 5 6) (7 8 9))\n"},
-      {"coefficient.dat", "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
-                          "# magUInf : 2\n# lRef : 1\n# Aref : 0.5\n# Time Cd Cs Cl CmRoll CmPitch CmYaw Cd(f)\n"
-                          "1 0.1 0.2 0.3 0.4 0.5 0.6 0.7\n2 0.1 0.2 0.3 0.4 0.5 0.6 0.7\n"},
-      {"forceCoeffs.dat", "# Force coefficients\n# liftDir : (0 0 1)\n# dragDir : (1 0 0)\n# pitchAxis : (0 1 0)\n"
-                          "# magUInf : 2\n# lRef : 1\n# Aref : 0.5\n# Time Cm Cd Cl Cl(f) Cl(r)\n1 0.1 0.2 0.3 0.4 0.5\n"}};
+      {"moment.dat",
+       "# Moment\n# CofR : (0 0 1)\n#\n# Time total_x total_y total_z viscous_x viscous_y viscous_z\n"
+       "0.1 1 2 3 4 5 6\n0.2 1 2 3 4 5 6\n"},
+      {"forces.dat",
+       "# Forces\n# CofR : (0 0 0)\n# Time CofR forces(pressure viscous porous) moment(pressure viscous "
+       "porous) localForces(pressure,viscous,porous)\n1 (0 0 0) ((1 2 3) (4 5 6) (7 8 9)) ((1 2 3) (4 5 "
+       "6) (7 8 9))\n1 (0 0 0) ((1 2 3) (4 5 6) (7 8 9)) ((1 2 3) (4 5 6) (7 8 9))\n"},
+      {"coefficient.dat",
+       "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
+       "# magUInf : 2\n# lRef : 1\n# Aref : 0.5\n# Time Cd Cs Cl CmRoll CmPitch CmYaw Cd(f)\n"
+       "1 0.1 0.2 0.3 0.4 0.5 0.6 0.7\n2 0.1 0.2 0.3 0.4 0.5 0.6 0.7\n"},
+      {"forceCoeffs.dat",
+       "# Force coefficients\n# liftDir : (0 0 1)\n# dragDir : (1 0 0)\n# pitchAxis : (0 1 0)\n"
+       "# magUInf : 2\n# lRef : 1\n# Aref : 0.5\n# Time Cm Cd Cl Cl(f) Cl(r)\n1 0.1 0.2 0.3 0.4 0.5\n"}};
   const std::string alphabet = "0123456789.eE+-() \t\n#:_xyzCdslmtoa,\r";
   std::mt19937_64 random(2024);
   OpenFoamForcesOptions options;
@@ -719,14 +739,9 @@ TEST(OpenFoamForces, DamagedFilesAreReadOrRefusedInOneLine) {
     for (int edits = 1 + static_cast<int>(random() % 3); edits > 0 && !text.empty(); --edits) {
       const std::size_t at = random() % text.size();
       switch (random() % 3) {
-        case 0:
-          text[at] = alphabet[random() % alphabet.size()];
-          break;
-        case 1:
-          text.erase(at, 1 + random() % 4);
-          break;
-        default:
-          text.insert(at, 1, alphabet[random() % alphabet.size()]);
+        case 0: text[at] = alphabet[random() % alphabet.size()]; break;
+        case 1: text.erase(at, 1 + random() % 4); break;
+        default: text.insert(at, 1, alphabet[random() % alphabet.size()]);
       }
     }
     options.drop_incomplete_last_row = i % 2 == 0;

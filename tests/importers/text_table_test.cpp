@@ -209,8 +209,8 @@ std::string number_error(const std::string& text) {
 }
 
 TEST(ParseNumber, ErrorsNameLocationColumnAndText) {
-  for (const std::string text : {"abc", "1.5x", "nan", "NaN", "inf", "-inf", "Infinity", "1e999", "null", "1,5",
-                                 "0x10", "1.5 2", "--1", "+"}) {
+  for (const std::string text :
+       {"abc", "1.5x", "nan", "NaN", "inf", "-inf", "Infinity", "1e999", "null", "1,5", "0x10", "1.5 2", "--1", "+"}) {
     const std::string message = number_error(text);
     EXPECT_EQ(message.rfind("t.csv:12:9: ", 0), 0u) << text << ": " << message;
     EXPECT_NE(message.find("'X [N]'"), std::string::npos) << text << ": " << message;

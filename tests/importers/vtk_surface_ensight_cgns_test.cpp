@@ -154,7 +154,9 @@ SurfaceMesh expected_ensight_box(const Box& box, const std::string& location, bo
     for (int c = 0; c < 3; ++c) wss.values.push_back(as_float(box.wss[3 * f + c]));
   }
   mesh.location_names = {location};
-  mesh.fields = {tau, wss, {"p", FieldAssociation::Point, 1, as_float(box.p), ""},
+  mesh.fields = {tau,
+                 wss,
+                 {"p", FieldAssociation::Point, 1, as_float(box.p), ""},
                  {"U", FieldAssociation::Point, 3, as_float(box.U), ""}};
   if (!cell_vector) mesh.fields.erase(mesh.fields.begin() + 1);
   return mesh;
@@ -243,8 +245,8 @@ TEST(VtkSurfaceEnSight, VtkEnSightWriterOutputReadsBackAsWritten) {
   EXPECT_EQ(list_vtk_locations(case_file), std::vector<std::string>{"VTK Part"});
   const SurfaceMesh mesh = read_vtk_surface(case_file);
   expect_same_mesh(mesh, expected_ensight_box(box, "VTK Part", false));
-  EXPECT_EQ(mesh.find_field("BlockId"), nullptr);  // written, but not named by the case file
-  EXPECT_NE(mesh.points_xyz[0], box.points[0][0]);   // float32 is not double
+  EXPECT_EQ(mesh.find_field("BlockId"), nullptr);   // written, but not named by the case file
+  EXPECT_NE(mesh.points_xyz[0], box.points[0][0]);  // float32 is not double
 }
 
 /// Face f of `mesh` rotated to start at its smallest point index (orientation
@@ -335,7 +337,8 @@ class EnSightBinary {
  private:
   std::string word(std::uint32_t value) const {
     std::string out(4, '\0');
-    for (int i = 0; i < 4; ++i) out[static_cast<std::size_t>(big_endian_ ? 3 - i : i)] = static_cast<char>((value >> (8 * i)) & 0xff);
+    for (int i = 0; i < 4; ++i)
+      out[static_cast<std::size_t>(big_endian_ ? 3 - i : i)] = static_cast<char>((value >> (8 * i)) & 0xff);
     return out;
   }
   EnSightBinary& record(const std::string& payload) {
@@ -360,7 +363,8 @@ std::vector<double> component(const std::vector<Vec3>& points, int c) {
 std::vector<double> pick(const std::vector<double>& values, const std::vector<std::size_t>& faces, int stride,
                          int first) {
   std::vector<double> out;
-  for (const std::size_t f : faces) out.push_back(values[f * static_cast<std::size_t>(stride) + static_cast<std::size_t>(first)]);
+  for (const std::size_t f : faces)
+    out.push_back(values[f * static_cast<std::size_t>(stride) + static_cast<std::size_t>(first)]);
   return out;
 }
 
@@ -388,7 +392,10 @@ fs::path write_box_binary(const Box& box, const fs::path& dir, bool fortran, boo
   geo.text("part").ints({1}).text("box").text("coordinates").ints({8});
   geo.ints({101, 102, 103, 104, 105, 106, 107, 108});
   for (int c = 0; c < 3; ++c) geo.floats(component(box.points, c));
-  geo.text("tria3").ints({static_cast<std::int32_t>(triangles.size())}).ints(element_ids(triangles)).ints(connectivity(triangles));
+  geo.text("tria3")
+      .ints({static_cast<std::int32_t>(triangles.size())})
+      .ints(element_ids(triangles))
+      .ints(connectivity(triangles));
   geo.text("quad4").ints({static_cast<std::int32_t>(quads.size())}).ints(element_ids(quads)).ints(connectivity(quads));
   write_bytes(dir / "box.geo", geo.bytes());
 
@@ -466,8 +473,8 @@ TEST(VtkSurfaceEnSight, TruncatedVtkWriterGeometryIsAnInputError) {
   const fs::path case_file = write_box_with_vtk(make_box(), dir.path());
   const fs::path geo = dir / "box.0.00000.geo";
   const std::string whole = read_bytes(geo);
-  for (const std::size_t size : {std::size_t{0}, std::size_t{80}, std::size_t{300}, std::size_t{400},
-                                 whole.size() / 2, std::size_t{800}, whole.size() - 1}) {
+  for (const std::size_t size : {std::size_t{0}, std::size_t{80}, std::size_t{300}, std::size_t{400}, whole.size() / 2,
+                                 std::size_t{800}, whole.size() - 1}) {
     write_bytes(geo, whole.substr(0, size));
     expect_input_error(case_file, geo.filename().string());
   }
@@ -503,15 +510,14 @@ const std::string kBodyGeo =
     "written by hand\n"
     "node id given\n"
     "element id off\n"
-    "part\n" + ints({1}) + "hull\ncoordinates\n" + ints({6}) +
-    ints({101}) + ints({102}) + ints({103}) + ints({104}) + ints({105}) + ints({106}) +
-    reals({0, 1, 2, 0, 1, 2}) + reals({0, 0, 0, 1, 1, 1}) + reals({-0.25, -0.25, -0.25, -0.25, -0.25, -0.25}) +
-    "quad4\n" + ints({2}) + ints({1, 2, 5, 4}) + ints({2, 3, 6, 5}) +
-    "part\n" + ints({2}) + "fin\ncoordinates\n" + ints({6}) +
-    ints({201}) + ints({202}) + ints({203}) + ints({204}) + ints({205}) + ints({206}) +
-    reals({0, 1, 0, 2, 2, 1}) + reals({0, 0, 1, 0, 1, 1}) + reals({1.5, 1.5, 1.5, 1.5, 1.5, 1.5}) +
-    "tria3\n" + ints({1}) + ints({1, 2, 3}) +
-    "nsided\n" + ints({1}) + ints({5}) + ints({2, 4, 5, 6, 3});
+    "part\n" +
+    ints({1}) + "hull\ncoordinates\n" + ints({6}) + ints({101}) + ints({102}) + ints({103}) + ints({104}) +
+    ints({105}) + ints({106}) + reals({0, 1, 2, 0, 1, 2}) + reals({0, 0, 0, 1, 1, 1}) +
+    reals({-0.25, -0.25, -0.25, -0.25, -0.25, -0.25}) + "quad4\n" + ints({2}) + ints({1, 2, 5, 4}) +
+    ints({2, 3, 6, 5}) + "part\n" + ints({2}) + "fin\ncoordinates\n" + ints({6}) + ints({201}) + ints({202}) +
+    ints({203}) + ints({204}) + ints({205}) + ints({206}) + reals({0, 1, 0, 2, 2, 1}) + reals({0, 0, 1, 0, 1, 1}) +
+    reals({1.5, 1.5, 1.5, 1.5, 1.5, 1.5}) + "tria3\n" + ints({1}) + ints({1, 2, 3}) + "nsided\n" + ints({1}) +
+    ints({5}) + ints({2, 4, 5, 6, 3});
 
 const std::vector<double> kHullPressure = {1.5, 2.5, 3.5, 4.5, 5.5, 6.5};
 const std::vector<double> kFinPressure = {10.25, 11.25, 12.25, 13.25, 14.25, 15.25};
@@ -526,8 +532,8 @@ std::string pressure_file(double offset) {
 }
 
 const std::string kBodyVelocity = "velocity\npart\n" + ints({1}) + "coordinates\n" + reals({1, 1, 1, 1, 1, 1}) +
-                                  reals({0, 0, 0, 0, 0, 0}) + reals({-0.5, -0.5, -0.5, -0.5, -0.5, -0.5}) +
-                                  "part\n" + ints({2}) + "coordinates\n" + reals({2, 2, 2, 2, 2, 2}) +
+                                  reals({0, 0, 0, 0, 0, 0}) + reals({-0.5, -0.5, -0.5, -0.5, -0.5, -0.5}) + "part\n" +
+                                  ints({2}) + "coordinates\n" + reals({2, 2, 2, 2, 2, 2}) +
                                   reals({0.125, 0.125, 0.125, 0.125, 0.125, 0.125}) + reals({0, 0, 0, 0, 0, 0});
 const std::string kBodyCp = "cp\npart\n" + ints({1}) + "quad4\n" + reals({-0.75, 0.25}) + "part\n" + ints({2}) +
                             "tria3\n" + reals({0.5}) + "nsided\n" + reals({0.625});
@@ -564,9 +570,9 @@ TEST(VtkSurfaceEnSight, ReadsAndSelectsThePartsOfAnAsciiCase) {
 
   const SurfaceMesh all = read_vtk_surface(case_file);
   EXPECT_EQ(all.location_names, (std::vector<std::string>{"hull", "fin"}));
-  EXPECT_EQ(all.points_xyz, (std::vector<double>{0, 0, -0.25, 1, 0, -0.25, 2, 0, -0.25, 0, 1, -0.25, 1, 1, -0.25,
-                                                 2, 1, -0.25, 0, 0, 1.5, 1, 0, 1.5, 0, 1, 1.5, 2, 0, 1.5,
-                                                 2, 1, 1.5, 1, 1, 1.5}));
+  EXPECT_EQ(all.points_xyz,
+            (std::vector<double>{0, 0, -0.25, 1, 0, -0.25, 2, 0, -0.25, 0, 1, -0.25, 1, 1, -0.25, 2, 1, -0.25,
+                                 0, 0, 1.5,   1, 0, 1.5,   0, 1, 1.5,   2, 0, 1.5,   2, 1, 1.5,   1, 1, 1.5}));
   EXPECT_EQ(all.face_offsets, (std::vector<std::uint32_t>{0, 4, 8, 11, 16}));
   EXPECT_EQ(all.face_indices, (std::vector<std::uint32_t>{0, 1, 4, 3, 1, 2, 5, 4, 6, 7, 8, 7, 9, 10, 11, 8}));
   EXPECT_EQ(all.face_location, (std::vector<std::uint32_t>{0, 0, 1, 1}));
@@ -623,8 +629,7 @@ TEST(VtkSurfaceEnSight, ReadsTheLastTimeStepOfEveryTimeSet) {
   pressure.insert(pressure.end(), kFinPressure.begin(), kFinPressure.end());
   for (auto& value : pressure) value += 200.0;
   EXPECT_EQ(field(mesh, "pressure").values, pressure);
-  EXPECT_EQ(field(mesh, "wss").values,
-            (std::vector<double>{2000.5, 2, 4, 2001.5, 3, 5, 2006, 7, 8, 2009, 10, 11}));
+  EXPECT_EQ(field(mesh, "wss").values, (std::vector<double>{2000.5, 2, 4, 2001.5, 3, 5, 2006, 7, 8, 2009, 10, 11}));
 
   fs::remove(dir / "body02.wss");
   expect_input_error(dir / "transient.case", "body02.wss");
@@ -643,7 +648,8 @@ TEST(VtkSurfaceEnSight, EveryTruncationOfAnAsciiFileIsAnInputErrorNamingIt) {
   ::testing::internal::CaptureStderr();
   for (const std::string name : {"body.geo", "body.pressure", "body.velocity", "body.cp", "body.wss"}) {
     const std::string whole = read_bytes(dir / name);
-    const std::size_t second_part = name == "body.geo" ? std::string::npos : whole.find("part\n", whole.find("part\n") + 1);
+    const std::size_t second_part =
+        name == "body.geo" ? std::string::npos : whole.find("part\n", whole.find("part\n") + 1);
     for (std::size_t size = 0; size < whole.size(); ++size) {
       write_bytes(dir / name, whole.substr(0, size));
       if (size == second_part) {
@@ -706,8 +712,8 @@ TEST(VtkSurfaceEnSight, MissingAndInconsistentFilesAreInputErrorsNamingTheFile) 
   write_bytes(dir / "garbage.case", std::string(300, 'x'));
   expect_input_error(dir / "garbage.case", "garbage.case");
 
-  write_bytes(dir / "block.geo", "structured\nbody\nnode id off\nelement id off\npart\n" + ints({1}) +
-                                     "box\nblock\n" + ints({2, 2, 2}));
+  write_bytes(dir / "block.geo",
+              "structured\nbody\nnode id off\nelement id off\npart\n" + ints({1}) + "box\nblock\n" + ints({2, 2, 2}));
   write_bytes(dir / "block.case", "FORMAT\ntype: ensight gold\nGEOMETRY\nmodel: block.geo\n");
   expect_input_error(dir / "block.case", "block.geo");
 }
@@ -799,7 +805,7 @@ class CgnsWriter {
   int file_ = 0;
 };
 
-const std::vector<Vec3> kHullPoints = {{0, 0, 0.1}, {1, 0, 0.1}, {2, 0, 0.1}, {0, 1, 0.1},
+const std::vector<Vec3> kHullPoints = {{0, 0, 0.1}, {1, 0, 0.1}, {2, 0, 0.1},  {0, 1, 0.1},
                                        {1, 1, 0.1}, {2, 1, 0.1}, {3, 0.5, 0.1}};
 const std::vector<Vec3> kFinPoints = {{0, 0, 2.3}, {1, 0, 2.3}, {0, 1, 2.3}};
 
@@ -862,8 +868,7 @@ TEST(VtkSurfaceCgns, ReadsAndSelectsSurfaceZones) {
   ASSERT_EQ(velocity.values.size(), 30u);
   EXPECT_EQ((std::vector<double>(velocity.values.begin() + 3, velocity.values.begin() + 6)),
             (std::vector<double>{1, 0.1, -1}));
-  EXPECT_EQ((std::vector<double>(velocity.values.end() - 3, velocity.values.end())),
-            (std::vector<double>{2, 0, 0.7}));
+  EXPECT_EQ((std::vector<double>(velocity.values.end() - 3, velocity.values.end())), (std::vector<double>{2, 0, 0.7}));
 
   const SurfaceMesh fin = read_vtk_surface(file, {.locations = {"fin"}});
   EXPECT_EQ(fin.location_names, std::vector<std::string>{"fin"});
@@ -986,8 +991,7 @@ TEST(VtkSurfaceCgns, ReadsTheLastTimeStep) {
     cg(cg_ziter_write(out.file(), base, zone, "ZoneIterativeData"), "cg_ziter_write");
     cg(cg_goto(out.file(), base, "Zone_t", zone, "ZoneIterativeData_t", 1, "end"), "cg_goto");
     cgsize_t dimensions[2] = {32, 3};
-    cg(cg_array_write("FlowSolutionPointers", CGNS_ENUMV(Character), 2, dimensions, pointers.data()),
-       "cg_array_write");
+    cg(cg_array_write("FlowSolutionPointers", CGNS_ENUMV(Character), 2, dimensions, pointers.data()), "cg_array_write");
     cg(cg_simulation_type_write(out.file(), base, CGNS_ENUMV(TimeAccurate)), "cg_simulation_type_write");
   }
   EXPECT_EQ(field(read_vtk_surface(file), "Pressure").values, (std::vector<double>{30, 31, 32, 33}));

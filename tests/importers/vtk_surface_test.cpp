@@ -208,8 +208,8 @@ TEST(VtkSurface, FullSphereHasItsFacesPointsAndArrays) {
   }
   EXPECT_NEAR(smallest, 0.1498293, 1e-7);
 
-  for (const auto& [name, components] : {std::pair<std::string, int>{"p", 1}, {"pMean", 1},
-                                         {"wallShearStress", 3}, {"wallShearStressMean", 3}}) {
+  for (const auto& [name, components] :
+       {std::pair<std::string, int>{"p", 1}, {"pMean", 1}, {"wallShearStress", 3}, {"wallShearStressMean", 3}}) {
     const FieldArray* field = mesh.find_field(name);
     ASSERT_NE(field, nullptr) << name;
     EXPECT_EQ(field->association, FieldAssociation::Face) << name;
@@ -457,8 +457,7 @@ TEST(VtkSurface, ReadsAndSelectsTheBlocksOfAMultiblockFile) {
   EXPECT_EQ(all.face_offsets, (std::vector<std::uint32_t>{0, 4, 8, 11, 14, 18}));
   // The fin's points follow the hull's 6; the strip's second triangle is
   // flipped to keep the strip's orientation; the pixel goes round its corners.
-  EXPECT_EQ(all.face_indices,
-            (std::vector<std::uint32_t>{0, 1, 4, 3, 1, 2, 5, 4, 6, 7, 8, 8, 7, 9, 10, 11, 13, 12}));
+  EXPECT_EQ(all.face_indices, (std::vector<std::uint32_t>{0, 1, 4, 3, 1, 2, 5, 4, 6, 7, 8, 8, 7, 9, 10, 11, 13, 12}));
   EXPECT_EQ(all.face_location, (std::vector<std::uint32_t>{0, 0, 1, 1, 1}));
   ASSERT_NE(all.find_field("p"), nullptr);
   EXPECT_EQ(all.find_field("p")->values, (std::vector<double>{1.5, 2.5, 7.0, 7.0, 8.0}));

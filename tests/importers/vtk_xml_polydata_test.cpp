@@ -32,8 +32,8 @@
 #include "importers/vtk_surface.hpp"
 #include "src/core/error.hpp"
 #include "tests/support/expect_input_error.hpp"
-#include "tests/support/meshes.hpp"
 #include "tests/support/file_bytes.hpp"
+#include "tests/support/meshes.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/vtk_polydata.hpp"
 
@@ -98,7 +98,8 @@ vtkSmartPointer<vtkPolyData> varied_surface(bool float_points) {
     ids->InsertNextValue(static_cast<int>(i) - 40);
     two->InsertNextTuple2(static_cast<double>(i), -static_cast<double>(i));
   }
-  for (vtkDataArray* array : {static_cast<vtkDataArray*>(k), static_cast<vtkDataArray*>(ids), static_cast<vtkDataArray*>(two)})
+  for (vtkDataArray* array :
+       {static_cast<vtkDataArray*>(k), static_cast<vtkDataArray*>(ids), static_cast<vtkDataArray*>(two)})
     poly->GetPointData()->AddArray(array);
   vtkNew<vtkFloatArray> cp;
   cp->SetName("p");  // the same name as a point array: both are read, cell values first
@@ -127,8 +128,8 @@ vtkSmartPointer<vtkPolyData> varied_surface(bool float_points) {
 }
 
 struct Encoding {
-  int mode;             // 1 binary, 2 appended raw, 3 appended base64
-  int compression;      // 0 none, 1 zlib in 64-byte blocks, 2 zlib in VTK's default blocks
+  int mode;         // 1 binary, 2 appended raw, 3 appended base64
+  int compression;  // 0 none, 1 zlib in 64-byte blocks, 2 zlib in VTK's default blocks
   bool header64, big_endian, ids64;
   std::string label() const {
     static const char* modes[] = {"", "binary", "appended-raw", "appended-base64"};
@@ -154,12 +155,18 @@ fs::path write_vtp(vtkPolyData* poly, const Encoding& e, const fs::path& file) {
     writer->SetCompressorTypeToZLib();
     if (e.compression == 1) writer->SetBlockSize(64);
   }
-  if (e.header64) writer->SetHeaderTypeToUInt64();
-  else writer->SetHeaderTypeToUInt32();
-  if (e.big_endian) writer->SetByteOrderToBigEndian();
-  else writer->SetByteOrderToLittleEndian();
-  if (e.ids64) writer->SetIdTypeToInt64();
-  else writer->SetIdTypeToInt32();
+  if (e.header64)
+    writer->SetHeaderTypeToUInt64();
+  else
+    writer->SetHeaderTypeToUInt32();
+  if (e.big_endian)
+    writer->SetByteOrderToBigEndian();
+  else
+    writer->SetByteOrderToLittleEndian();
+  if (e.ids64)
+    writer->SetIdTypeToInt64();
+  else
+    writer->SetIdTypeToInt32();
   EXPECT_EQ(writer->Write(), 1) << e.label();
   return file;
 }
@@ -306,8 +313,8 @@ TEST(VtkXmlPolyData, LeavesBrokenXmlToVtksParser) {
 
 std::string base64(const std::string& bytes) {
   std::string out(4 * (bytes.size() + 2) / 3 + 4, '\0');
-  const unsigned long n = vtkBase64Utilities::Encode(reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                     bytes.size(), reinterpret_cast<unsigned char*>(out.data()), 0);
+  const unsigned long n = vtkBase64Utilities::Encode(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(),
+                                                     reinterpret_cast<unsigned char*>(out.data()), 0);
   out.resize(n);
   return out;
 }

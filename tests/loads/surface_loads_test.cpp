@@ -40,8 +40,7 @@ Vec3 cross3(const Vec3& a, const Vec3& b) {
 }
 
 void expect_near(const Vec3& actual, const Vec3& expected, double tolerance, const std::string& what) {
-  for (std::size_t i = 0; i < 3; ++i)
-    EXPECT_NEAR(actual[i], expected[i], tolerance) << what << " component " << i;
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << what << " component " << i;
 }
 
 SurfaceLoadOptions pressure_only(const std::string& name = "p") {
@@ -53,8 +52,14 @@ SurfaceLoadOptions pressure_only(const std::string& name = "p") {
 // A hexahedron whose corners are pushed about, so that its faces are warped.
 std::array<P3, 8> warped_corners() {
   auto corners = test::box_corners(2.0, 1.0, 0.5, {0.3, -0.2, 0.1});
-  const std::array<P3, 8> push = {{{0.05, -0.02, 0.03}, {-0.04, 0.03, -0.05}, {0.06, 0.01, 0.04}, {-0.03, -0.05, 0.02},
-                                   {0.02, 0.04, -0.06}, {-0.05, -0.01, 0.05}, {0.03, -0.04, -0.02}, {0.01, 0.06, 0.03}}};
+  const std::array<P3, 8> push = {{{0.05, -0.02, 0.03},
+                                   {-0.04, 0.03, -0.05},
+                                   {0.06, 0.01, 0.04},
+                                   {-0.03, -0.05, 0.02},
+                                   {0.02, 0.04, -0.06},
+                                   {-0.05, -0.01, 0.05},
+                                   {0.03, -0.04, -0.02},
+                                   {0.01, 0.06, 0.03}}};
   for (std::size_t i = 0; i < 8; ++i)
     for (std::size_t c = 0; c < 3; ++c) corners[i][c] += push[i][c];
   return corners;
@@ -252,7 +257,8 @@ TEST(SurfaceLoads, LinearShearIsExactOnAPlanarParallelogram) {
   options.shear_fields = {"tau"};
   options.normals = NormalPolicy::AsGiven;
   const auto loads = integrate_surface_loads(mesh, options);
-  const auto expected = reference_quad(quad, [](const P3&) { return 0.0; }, tau);
+  const auto expected = reference_quad(
+      quad, [](const P3&) { return 0.0; }, tau);
   expect_near(loads.force_viscous, expected.force_v, 1e-12, "viscous force");
   expect_near(loads.moment_viscous, expected.moment_v, 1e-12, "viscous moment");
 }
@@ -322,7 +328,9 @@ TEST(SurfaceLoads, InwardNormalsAreFlippedOnClosedAndOpenSurfaces) {
     bool upper = true;
     for (std::size_t i = outward.face_offsets[f]; i < outward.face_offsets[f + 1]; ++i)
       upper = upper && outward.points_xyz[3 * outward.face_indices[i] + 2] > -1e-12;
-    if (upper) test::add_face(half, {outward.face_indices[3 * f], outward.face_indices[3 * f + 1], outward.face_indices[3 * f + 2]});
+    if (upper)
+      test::add_face(half,
+                     {outward.face_indices[3 * f], outward.face_indices[3 * f + 1], outward.face_indices[3 * f + 2]});
   }
   SurfaceMesh half_inward = half;
   test::reverse_faces(half_inward);
@@ -438,15 +446,18 @@ TEST(SurfaceLoads, TheTriangleKernelAgreesWithTheFaceByFaceRules) {
   SurfaceMesh triangles = test::make_icosphere(0.4, 5, {0.3, -0.1, 0.2});  // 20,480 faces: 5 blocks, both threads
   std::mt19937 random(3);
   std::uniform_real_distribution<double> noise(-30.0, 30.0);
-  test::add_point_scalar(triangles, "p", [&](const P3& x) { return 500.0 * x[0] - 90.0 * x[1] * x[2] + noise(random); });
+  test::add_point_scalar(triangles, "p",
+                         [&](const P3& x) { return 500.0 * x[0] - 90.0 * x[1] * x[2] + noise(random); });
   test::add_point_vector(triangles, "tau", [&](const P3& x) { return P3{0.2 + x[2], noise(random) * 1e-3, -x[0]}; });
   SurfaceMesh mixed = triangles;
   mixed.face_indices.clear();
   mixed.face_offsets = {0};
   for (std::size_t f = 0; f < triangles.face_count(); ++f) {
     const std::uint32_t* v = &triangles.face_indices[3 * f];
-    if (f % 4096 == 1000) test::add_face(mixed, {v[0], v[1], v[2], v[2]});
-    else test::add_face(mixed, {v[0], v[1], v[2]});
+    if (f % 4096 == 1000)
+      test::add_face(mixed, {v[0], v[1], v[2], v[2]});
+    else
+      test::add_face(mixed, {v[0], v[1], v[2]});
   }
   for (const bool with_shear : {false, true}) {
     auto options = pressure_only();
@@ -477,9 +488,9 @@ TEST(SurfaceLoads, DegenerateTrianglesAreCountedOnBothPaths) {
   test::add_point_scalar(mesh, "p", [](const P3& x) { return 1e3 * x[2]; });
   const auto clean = integrate_surface_loads(mesh, pressure_only());
   const std::uint32_t a = 0, b = 1;
-  const std::uint32_t middle = test::add_point(mesh, {0.5 * (mesh.points_xyz[0] + mesh.points_xyz[3]),
-                                                      0.5 * (mesh.points_xyz[1] + mesh.points_xyz[4]),
-                                                      0.5 * (mesh.points_xyz[2] + mesh.points_xyz[5])});
+  const std::uint32_t middle = test::add_point(
+      mesh, {0.5 * (mesh.points_xyz[0] + mesh.points_xyz[3]), 0.5 * (mesh.points_xyz[1] + mesh.points_xyz[4]),
+             0.5 * (mesh.points_xyz[2] + mesh.points_xyz[5])});
   mesh.fields[0].values.push_back(0.0);
   for (int i = 0; i < 5; ++i) test::add_face(mesh, {a, b, b});
   for (int i = 0; i < 4; ++i) test::add_face(mesh, {a, middle, b});
@@ -633,8 +644,10 @@ TEST_P(OpenFoamForces, ReproduceTheSolversOwnIntegratedForces) {
   // The patch's faces point into the sphere; they are flipped to outward.
   EXPECT_TRUE(loads.geometry.normals_flipped);
 
-  const auto& force = info.contains("openfoam_final_force_N") ? info["openfoam_final_force_N"] : info["openfoam_final_force_N_quarter"];
-  const auto& moment = info.contains("openfoam_final_moment_Nm") ? info["openfoam_final_moment_Nm"] : info["openfoam_final_moment_Nm_quarter"];
+  const auto& force =
+      info.contains("openfoam_final_force_N") ? info["openfoam_final_force_N"] : info["openfoam_final_force_N_quarter"];
+  const auto& moment = info.contains("openfoam_final_moment_Nm") ? info["openfoam_final_moment_Nm"]
+                                                                 : info["openfoam_final_moment_Nm_quarter"];
   for (std::size_t c = 0; c < 3; ++c) {
     EXPECT_NEAR(loads.force_pressure[c], force["pressure"][c].get<double>(), 2e-6) << "pressure force " << c;
     EXPECT_NEAR(loads.force_viscous[c], force["viscous"][c].get<double>(), 2e-6) << "viscous force " << c;
@@ -717,7 +730,8 @@ TEST(SurfaceLoadsTopology, EveryFaceListedTwiceIsNotClosed) {
   EXPECT_EQ(twice.geometry.nonmanifold_edges, 3 * faces / 2);
   EXPECT_EQ(twice.geometry.boundary_edges, 0u);
   bool warned = false;
-  for (const auto& warning : twice.geometry.warnings) warned = warned || warning.find("listed twice") != std::string::npos;
+  for (const auto& warning : twice.geometry.warnings)
+    warned = warned || warning.find("listed twice") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 

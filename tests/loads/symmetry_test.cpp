@@ -24,7 +24,8 @@ SurfaceMesh box(P3 lo, P3 hi, const std::vector<std::string>& open = {}) {
   out.points_xyz = mesh.points_xyz;
   for (std::size_t f = 0; f < 6; ++f) {
     if (std::find(open.begin(), open.end(), names[f]) != open.end()) continue;
-    for (auto k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k) out.face_indices.push_back(mesh.face_indices[k]);
+    for (auto k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
+      out.face_indices.push_back(mesh.face_indices[k]);
     out.face_offsets.push_back(static_cast<std::uint32_t>(out.face_indices.size()));
   }
   // Fields symmetric under y -> -y and z -> -z: a scalar even in y and z, a

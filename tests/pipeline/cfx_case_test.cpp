@@ -296,9 +296,8 @@ TEST(CfxCase, RefusesInletsThatDisagreeAndAPressureDrivenOpening) {
     return n.find("opening 'far field'") != std::string::npos && n.find("pressure opening") != std::string::npos;
   }));
   opening.inlet = "          Option = Mass Flow Rate\n          Mass Flow Rate = 1 [kg s^-1]\n";
-  test::expect_input_error([&] { settings_of(opening); },
-                           {at(opening, "Opening Pressure and Direction") + ":", "opening 'far field'",
-                            "no inlet states a velocity"});
+  test::expect_input_error([&] { settings_of(opening); }, {at(opening, "Opening Pressure and Direction") + ":",
+                                                           "opening 'far field'", "no inlet states a velocity"});
 }
 
 TEST(CfxCase, RefusesAVelocityThatIsNotAConstantVelocity) {

@@ -90,9 +90,9 @@ TEST(FitRuns, MirrorImagesMapKeysAndForcesAndLeaveMeasuredRunsAlone) {
   const StoredRun& image = fore_aft[1];
   const StoredRun& run = fore_aft[0];
   EXPECT_EQ(image.id, run.id);
-  EXPECT_EQ(image.key.nu_b[0], -run.key.nu_b[0]);  // u -> -u
-  EXPECT_EQ(image.key.nu_b[1], run.key.nu_b[1]);   // v kept
-  EXPECT_EQ(image.key.nu_b[5], -run.key.nu_b[5]);  // r -> -r
+  EXPECT_EQ(image.key.nu_b[0], -run.key.nu_b[0]);                      // u -> -u
+  EXPECT_EQ(image.key.nu_b[1], run.key.nu_b[1]);                       // v kept
+  EXPECT_EQ(image.key.nu_b[5], -run.key.nu_b[5]);                      // r -> -r
   EXPECT_EQ(image.tau_b[0]->value.total, -run.tau_b[0]->value.total);  // X -> -X
   EXPECT_EQ(image.tau_b[1]->value.total, run.tau_b[1]->value.total);   // Y kept
   EXPECT_EQ(image.tau_b[3]->value.total, run.tau_b[3]->value.total);   // K kept

@@ -94,30 +94,31 @@ std::string format17(double v) {
 // forceCoeffs coefficient.dat (totals as coefficients, with its reference values).
 void copy_case_with_layout(const fs::path& from, const fs::path& to, const std::string& layout) {
   fs::create_directories(to);
-  for (const char* part : {"0", "constant", "system"})
-    fs::copy(from / part, to / part, fs::copy_options::recursive);
+  for (const char* part : {"0", "constant", "system"}) fs::copy(from / part, to / part, fs::copy_options::recursive);
   const ForceHistory esi = read_openfoam_forces(from / "postProcessing" / "forces");
   if (layout == "foundation") {
     std::string text = "# Forces\n# CofR : (0 0 0)\n# Time forces(pressure viscous) moments(pressure viscous)\n";
     for (std::size_t i = 0; i < esi.size(); ++i) {
       const auto v = [&](ForcePart part, std::size_t k) { return format17(esi.values(part, HistoryComponent(k))[i]); };
       text += format17(esi.abscissa_values[i]) + "\t((" + v(ForcePart::Pressure, 0) + " " + v(ForcePart::Pressure, 1) +
-              " " + v(ForcePart::Pressure, 2) + ") (" + v(ForcePart::Viscous, 0) + " " + v(ForcePart::Viscous, 1) + " " +
-              v(ForcePart::Viscous, 2) + ")) ((" + v(ForcePart::Pressure, 3) + " " + v(ForcePart::Pressure, 4) + " " +
-              v(ForcePart::Pressure, 5) + ") (" + v(ForcePart::Viscous, 3) + " " + v(ForcePart::Viscous, 4) + " " +
-              v(ForcePart::Viscous, 5) + "))\n";
+              " " + v(ForcePart::Pressure, 2) + ") (" + v(ForcePart::Viscous, 0) + " " + v(ForcePart::Viscous, 1) +
+              " " + v(ForcePart::Viscous, 2) + ")) ((" + v(ForcePart::Pressure, 3) + " " + v(ForcePart::Pressure, 4) +
+              " " + v(ForcePart::Pressure, 5) + ") (" + v(ForcePart::Viscous, 3) + " " + v(ForcePart::Viscous, 4) +
+              " " + v(ForcePart::Viscous, 5) + "))\n";
     }
     fs::create_directories(to / "postProcessing/forces/0");
     std::ofstream(to / "postProcessing/forces/0/forces.dat") << text;
   } else {
     const double rho = 998.2, u = 0.2, area = 0.0706858, l = 0.3, q = 0.5 * rho * u * u;
-    std::string text = "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
-                       "# magUInf : 0.2\n# lRef : 0.3\n# Aref : 0.0706858\n# CofR : (0 0 0)\n"
-                       "# Time Cd Cs Cl CmRoll CmPitch CmYaw\n";
+    std::string text =
+        "# Force coefficients\n# dragDir : (1 0 0)\n# sideDir : (0 1 0)\n# liftDir : (0 0 1)\n"
+        "# magUInf : 0.2\n# lRef : 0.3\n# Aref : 0.0706858\n# CofR : (0 0 0)\n"
+        "# Time Cd Cs Cl CmRoll CmPitch CmYaw\n";
     for (std::size_t i = 0; i < esi.size(); ++i) {
       text += format17(esi.abscissa_values[i]);
       for (std::size_t k = 0; k < 6; ++k)
-        text += " " + format17(esi.values(ForcePart::Total, HistoryComponent(k))[i] / (k < 3 ? q * area : q * area * l));
+        text +=
+            " " + format17(esi.values(ForcePart::Total, HistoryComponent(k))[i] / (k < 3 ? q * area : q * area * l));
       text += "\n";
     }
     fs::create_directories(to / "postProcessing/forceCoeffs/0");
@@ -134,7 +135,8 @@ TEST(ImportFiles, FoundationAndCoefficientCaseFoldersGiveTheSameRuns) {
   for (const std::string layout : {"foundation", "coefficients"}) {
     SCOPED_TRACE(layout);
     test::TempDir dir;
-    for (const auto& input : esi) copy_case_with_layout(input.input.path, dir / "sweep" / input.input.path.filename(), layout);
+    for (const auto& input : esi)
+      copy_case_with_layout(input.input.path, dir / "sweep" / input.input.path.filename(), layout);
     const auto other = import({dir / "sweep"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}});
     ASSERT_EQ(other.size(), 4u);
     for (std::size_t i = 0; i < 4; ++i) {
@@ -193,7 +195,8 @@ TEST(ImportFiles, OpenFoamCaseFoldersNeedOnlySweepWideSettings) {
 
 TEST(ImportFiles, AQuarterModelWithItsSymmetryPlanesGivesTheWholeBody) {
   const NamePattern pattern("U{u}");
-  const auto quarter = import({kSphere / "quarter-cases" / "U0.1000"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}}, &pattern);
+  const auto quarter =
+      import({kSphere / "quarter-cases" / "U0.1000"}, {{"body", "sphere"}, {"axes", "-x,y,-z"}}, &pattern);
   const auto whole = import({kSphere / "quarter-cases" / "U0.1000"},
                             {{"body", "sphere"}, {"axes", "-x,y,-z"}, {"symmetry", "y=0,z=0"}}, &pattern);
   const auto& q = quarter.front().batch.runs.front();
@@ -235,8 +238,9 @@ TEST(ImportFiles, OneFrameForTheKeyAndTheForcesWhateverTheirSource) {
 TEST(ImportFiles, MonitorsTakeTheFlowAndTheAxes) {
   // A monitor used to ignore --flow and --axes (u = v = 0, forces unrotated).
   test::TempDir dir;
-  std::ofstream(dir / "monitor.csv") << "\"ACCUMULATED TIMESTEP\",\"USER POINT,Fx\",\"USER POINT,Fy\",\"USER POINT,Fz\"\n"
-                                        "1,0.30,0.01,0.02\n2,0.34,0.02,0.03\n";
+  std::ofstream(dir / "monitor.csv")
+      << "\"ACCUMULATED TIMESTEP\",\"USER POINT,Fx\",\"USER POINT,Fy\",\"USER POINT,Fz\"\n"
+         "1,0.30,0.01,0.02\n2,0.34,0.02,0.03\n";
   const auto inputs = import({dir / "monitor.csv"}, {{"axes", "-x,y,-z"}, {"flow", {0.2, 0, 0}}, {"body", "hull"}});
   ASSERT_EQ(inputs.front().format, "monitor");
   const auto& run = inputs.front().batch.runs.front();
@@ -254,10 +258,11 @@ TEST(ImportFiles, SettingsAnImporterCannotApplyAreRefusedOrNoted) {
   test::TempDir dir;
   std::ofstream(dir / "table.csv") << "u [m s^-1],X [N]\n0.1,-0.2\n0.2,-0.7\n";
   try {
-    import({dir / "table.csv"}, {{"axes", "-x,y,-z"}});
+    import({dir / "table.csv"}, {{ "axes", "-x,y,-z" }});
     FAIL() << "a table accepted --axes";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("setting 'axes' does not apply to a force table"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("setting 'axes' does not apply to a force table"), std::string::npos)
+        << e.what();
   }
   // From a folder sidecar shared with surface exports it is a note.
   std::ofstream(dir / "hydrocoef-run.json") << R"({"axes": "-x,y,-z", "rho": 998.2})";

@@ -50,11 +50,13 @@ TEST(ImportPlan, HistoriesAreTakenOverTheirSurfacesAndTwinsOnce) {
   EXPECT_NE(plan.notes[0].find("--prefer-surfaces"), std::string::npos) << plan.notes[0];
 
   const ImportPlan surfaces = plan_import({kSphere / "full"}, {.prefer_surfaces = true});
-  EXPECT_EQ(names(surfaces), (std::vector<std::string>{
-                                 "u0.10_v0.00/u0.10_v0.00_sphere_t1000.vtp", "u0.10_v0.05/u0.10_v0.05_sphere_t1000.vtp",
-                                 "u0.20_v0.10/u0.20_v0.10_sphere_t1000.vtp", "u0.30_v0.00/u0.30_v0.00_sphere_t1000.vtp"}));
+  EXPECT_EQ(names(surfaces),
+            (std::vector<std::string>{
+                "u0.10_v0.00/u0.10_v0.00_sphere_t1000.vtp", "u0.10_v0.05/u0.10_v0.05_sphere_t1000.vtp",
+                "u0.20_v0.10/u0.20_v0.10_sphere_t1000.vtp", "u0.30_v0.00/u0.30_v0.00_sphere_t1000.vtp"}));
   bool twin_note = false;
-  for (const auto& note : surfaces.notes) twin_note |= note.find("its twin u0.10_v0.00_sphere_t1000.vtk") != std::string::npos;
+  for (const auto& note : surfaces.notes)
+    twin_note |= note.find("its twin u0.10_v0.00_sphere_t1000.vtk") != std::string::npos;
   EXPECT_TRUE(twin_note);
 }
 

@@ -89,8 +89,7 @@ TEST(LibraryPipeline, ImportFitSurfaceRebuildAndBatchWithoutTheCli) {
     double m[3][3];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m[i][j] = j == k ? b[i] : s[i][j];
-    EXPECT_NEAR(fit.fit.coefficients[static_cast<std::size_t>(k)], det(m) / d,
-                1e-8 * (1.0 + std::abs(det(m) / d)))
+    EXPECT_NEAR(fit.fit.coefficients[static_cast<std::size_t>(k)], det(m) / d, 1e-8 * (1.0 + std::abs(det(m) / d)))
         << k;
   }
   EXPECT_EQ(fit.setup.coefficient_units[2], "N/(m/s)^2");
@@ -126,7 +125,9 @@ TEST(LibraryPipeline, ImportFitSurfaceRebuildAndBatchWithoutTheCli) {
   std::ofstream(points) << "u\n" << rows.back().first + 1.0 << "\n";
   fs::remove(answers);
   expect_input_error(
-      [&] { query_csv_batch(built.stored.surface, CsvBatchRequest{"surge", points.string(), answers.string(), false}); },
+      [&] {
+        query_csv_batch(built.stored.surface, CsvBatchRequest{"surge", points.string(), answers.string(), false});
+      },
       {"points.csv:2", "outside"});
   EXPECT_FALSE(fs::exists(answers));
 

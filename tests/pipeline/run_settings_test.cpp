@@ -58,12 +58,9 @@ TEST(RunSettings, EveryPlaceOfFlowAxesAndBodyGivesTheSameRun) {
   // line turned the velocity with the sidecar's (absent) axes and the forces
   // with the command line's, storing u = -0.2 with the drag along the motion.
   const std::vector<std::pair<SettingSource, std::string>> places = {
-      {SettingSource::CommandLine, "command line"},
-      {SettingSource::FileSidecar, "a.vtp.json"},
-      {SettingSource::Manifest, "sweep.csv:2"},
-      {SettingSource::FolderSidecar, "hydrocoef-run.json"},
-      {SettingSource::CaseFiles, "case/0/U"},
-      {SettingSource::NamePattern, "u{u}"}};
+      {SettingSource::CommandLine, "command line"}, {SettingSource::FileSidecar, "a.vtp.json"},
+      {SettingSource::Manifest, "sweep.csv:2"},     {SettingSource::FolderSidecar, "hydrocoef-run.json"},
+      {SettingSource::CaseFiles, "case/0/U"},       {SettingSource::NamePattern, "u{u}"}};
   for (const auto& flow_at : places) {
     for (const auto& axes_at : places) {
       for (const auto& body_at : places) {
@@ -98,8 +95,8 @@ TEST(RunSettings, FlowAndUFromOneSourceAreRefused) {
 }
 
 TEST(RunSettings, ReferencePointFromTheSolversCentre) {
-  const auto merged = merge_settings({layer(SettingSource::CaseFiles, "case/system/controlDict",
-                                            {{"cofr", {1.0, 2.0, 3.0}}, {"axes", "-x,y,-z"}})});
+  const auto merged = merge_settings(
+      {layer(SettingSource::CaseFiles, "case/system/controlDict", {{"cofr", {1.0, 2.0, 3.0}}, {"axes", "-x,y,-z"}})});
   const Vec3 point = resolve_reference_point(merged, resolve_frame(merged));
   EXPECT_EQ(point, (Vec3{-1.0, 2.0, -3.0}));
   const auto given = merge_settings({layer(SettingSource::CommandLine, "command line", {{"ref_point", {0, 0, 0.1}}}),
@@ -110,7 +107,8 @@ TEST(RunSettings, ReferencePointFromTheSolversCentre) {
 TEST(RunSettings, DisturbancesAndEffectiveText) {
   const auto merged = merge_settings({
       layer(SettingSource::CommandLine, "command line", {{"disturbances", {{"current_v", 0.05}}}}),
-      layer(SettingSource::FolderSidecar, "f.json", {{"disturbances", {{"current_v", 0.1}, {"wave_h", 0.2}}}, {"rho", 998.2}}),
+      layer(SettingSource::FolderSidecar, "f.json",
+            {{"disturbances", {{"current_v", 0.1}, {"wave_h", 0.2}}}, {"rho", 998.2}}),
   });
   EXPECT_EQ(merged.disturbances(), (std::map<std::string, double>{{"current_v", 0.05}, {"wave_h", 0.2}}));
   EXPECT_EQ(merged.effective_text(), R"({"disturbance.current_v":0.05,"disturbance.wave_h":0.2,"rho":998.2})");

@@ -150,13 +150,20 @@ TEST(SurfaceBuildMigration, CommandLineOptionsBecomeTheBuildSpecification) {
     spec.surface.out_of_range = {"clamp", "clamp"};
     build_and_store_surface(database, "rbf", "boat", spec);
   }
-  const json legacy = {{"outputs", {"X"}},        {"axes", {"u", "v"}},
-                       {"method", "rbf"},         {"extrapolate", {"extrapolate", "v=clamp"}},
-                       {"where", {"u>=0.1"}},     {"exclude_runs", {4}},
-                       {"kernel", "linear"},      {"degree", 0},
-                       {"smoothing", 0.5},        {"resample", {"v=-0.1,0.1", "u=0:0.3:4"}},
-                       {"resample_method", "pchip"}, {"far_threshold", 0.3},
-                       {"mirror", {"v"}},         {"mirror_odd", json::array()}};
+  const json legacy = {{"outputs", {"X"}},
+                       {"axes", {"u", "v"}},
+                       {"method", "rbf"},
+                       {"extrapolate", {"extrapolate", "v=clamp"}},
+                       {"where", {"u>=0.1"}},
+                       {"exclude_runs", {4}},
+                       {"kernel", "linear"},
+                       {"degree", 0},
+                       {"smoothing", 0.5},
+                       {"resample", {"v=-0.1,0.1", "u=0:0.3:4"}},
+                       {"resample_method", "pchip"},
+                       {"far_threshold", 0.3},
+                       {"mirror", {"v"}},
+                       {"mirror_odd", json::array()}};
   {
     store::Connection connection(path.string(), store::Access::ReadWrite);
     auto read = connection.prepare("SELECT definition FROM surface WHERE name = 'rbf'");

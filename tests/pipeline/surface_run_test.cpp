@@ -7,9 +7,9 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkEnSightWriter.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkEnSightWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -22,8 +22,8 @@
 #include "src/core/error.hpp"
 #include "tests/support/cfdpost_writer.hpp"
 #include "tests/support/meshes.hpp"
-#include "tests/support/vtk_polydata.hpp"
 #include "tests/support/sqlite_dump.hpp"
+#include "tests/support/vtk_polydata.hpp"
 
 namespace hydrocoef {
 namespace {

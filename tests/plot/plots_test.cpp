@@ -15,17 +15,16 @@
 
 #include "src/core/error.hpp"
 #include "src/dynamics/vehicle.hpp"
-#include "tests/support/run_cli.hpp"
 #include "tests/support/plot_data.hpp"
+#include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef::plot {
 namespace {
 
-using test::run_cli;
 using test::PlotBlocks;
+using test::run_cli;
 using test::TempDir;
-
 
 PlotBlocks read_blocks(const std::filesystem::path& path) { return test::read_plot_blocks(path); }
 

@@ -41,7 +41,8 @@ History sample(double duration, double dt, const F& force_of_time, std::size_t c
 TEST(HarmonicAnalysis, PotentialFlowSphereGivesHalfTheDisplacedMass) {
   const double rho = 998.2, R = 0.15, V = 4.0 / 3.0 * kPi * R * R * R;
   const HarmonicMotion motion{0, 0.03, 2.0 * kPi / 2.0, 0.3};
-  const History h = sample(20.0, 0.002, [&](double t) { return -0.5 * rho * V * motion.acceleration(t); }, 0);
+  const History h = sample(
+      20.0, 0.002, [&](double t) { return -0.5 * rho * V * motion.acceleration(t); }, 0);
   const auto result = analyse_forced_oscillation(h.t, h.spans(), motion);
   const auto& x = result.components[0];
   EXPECT_NEAR(x.added_mass, 0.5 * rho * V, 1e-9 * 0.5 * rho * V);  // 7.056 kg
@@ -123,10 +124,13 @@ TEST(HarmonicAnalysis, QuadraticDampingFromThreeAmplitudes) {
   std::vector<double> amplitudes{0.02, 0.05, 0.1}, equivalent;
   for (const double A : amplitudes) {
     const HarmonicMotion motion{0, A, omega, 0.0};
-    const History h = sample(30.0, 0.0005, [&](double t) {
-      const double v = motion.velocity(t);
-      return -m * motion.acceleration(t) - b * v - c * v * std::abs(v);
-    }, 0);
+    const History h = sample(
+        30.0, 0.0005,
+        [&](double t) {
+          const double v = motion.velocity(t);
+          return -m * motion.acceleration(t) - b * v - c * v * std::abs(v);
+        },
+        0);
     const auto result = analyse_forced_oscillation(h.t, h.spans(), motion, {.harmonics = 3, .start_time = 0.0});
     EXPECT_NEAR(result.components[0].added_mass, m, 1e-6 * m);
     // The third harmonic of x'|x'| is there and fitted.
@@ -141,14 +145,16 @@ TEST(HarmonicAnalysis, QuadraticDampingFromThreeAmplitudes) {
 
 TEST(HarmonicAnalysis, RefusesWhatCannotBeAnalysed) {
   const HarmonicMotion motion{0, 0.05, 2.0 * kPi, 0.0};
-  const History short_history = sample(2.5, 0.01, [](double) { return 1.0; }, 0);
+  const History short_history = sample(
+      2.5, 0.01, [](double) { return 1.0; }, 0);
   try {
     analyse_forced_oscillation(short_history.t, short_history.spans(), motion);
     FAIL() << "accepted 2 periods";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("expected at least 3"), std::string::npos) << e.what();
   }
-  History h = sample(10.0, 0.01, [](double) { return 1.0; }, 0);
+  History h = sample(
+      10.0, 0.01, [](double) { return 1.0; }, 0);
   h.t[5] = h.t[4];
   EXPECT_THROW(analyse_forced_oscillation(h.t, h.spans(), motion), InputError);
   EXPECT_THROW(analyse_forced_oscillation(h.t, h.spans(), HarmonicMotion{0, 0.0, 1.0, 0.0}), InputError);

@@ -53,8 +53,8 @@ TEST(ConcurrentDatabase, SixProcessesOnANewDatabaseLoseNothing) {
     const std::string db = shell_quote((work / "hydrocoef.db").string());
     std::vector<std::string> commands;
     for (int k = 0; k < 4; ++k)
-      commands.push_back(cli + " --db " + db + " import " + shell_quote(table(k).string()) +
-                         " --body " + (k < 2 ? "a" : "b") + " --sign on-body --quiet");
+      commands.push_back(cli + " --db " + db + " import " + shell_quote(table(k).string()) + " --body " +
+                         (k < 2 ? "a" : "b") + " --sign on-body --quiet");
     commands.push_back(cli + " --db " + db + " fit --body a --dof X --terms " + shell_quote("u,u|u|") + " --no-store");
     commands.push_back(cli + " --db " + db + " runs");
     // Start all six, then wait for each.
@@ -119,11 +119,11 @@ TEST(ConcurrentDatabase, SixProcessesOnANewDatabaseLoseNothing) {
   chmod((shelf / "share" / "hydrocoef.db").c_str(), 0444);
   chmod((shelf / "share").c_str(), 0555);
   const std::string db = (shelf / "share" / "hydrocoef.db").string();
-  for (const auto& args : std::vector<std::vector<std::string>>{
-           {"--db", db, "runs"},
-           {"--db", db, "query", "s", "u=0.2"},
-           {"--db", db, "export", "s", "--format", "csv", "-o", "s.csv"},
-           {"--db", db, "report", "-o", "report"}}) {
+  for (const auto& args :
+       std::vector<std::vector<std::string>>{{"--db", db, "runs"},
+                                             {"--db", db, "query", "s", "u=0.2"},
+                                             {"--db", db, "export", "s", "--format", "csv", "-o", "s.csv"},
+                                             {"--db", db, "report", "-o", "report"}}) {
     const auto result = test::run_cli(args, shelf);
     EXPECT_EQ(result.exit_code, 0) << args[2] << ": " << result.err;
   }

@@ -24,8 +24,7 @@ namespace fs = std::filesystem;
 const fs::path kSource(HYDROCOEF_SOURCE_DIR);
 
 fs::path fuzz_dir() {
-  if (const char *dir = std::getenv("HYDROCOEF_FUZZ_DIR"))
-    return dir;
+  if (const char* dir = std::getenv("HYDROCOEF_FUZZ_DIR")) return dir;
   return kSource / "build" / "fuzz" / "tests" / "fuzz";
 }
 
@@ -34,9 +33,8 @@ struct Run {
   std::string log;
 };
 
-Run run(const std::string &command, const fs::path &log) {
-  const int status = std::system(
-      (command + " >" + shell_quote(log.string()) + " 2>&1").c_str());
+Run run(const std::string& command, const fs::path& log) {
+  const int status = std::system((command + " >" + shell_quote(log.string()) + " 2>&1").c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log)};
 }
 
@@ -49,30 +47,22 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
                  << " is not built (it needs Clang): run scripts/fuzz.sh "
                     "--build-only, which scripts/test.sh runs before ctest";
   TempDir dir;
-  const fs::path regressions =
-      kSource / "tests" / "data" / "bad" / "fuzz-regressions" / GetParam();
+  const fs::path regressions = kSource / "tests" / "data" / "bad" / "fuzz-regressions" / GetParam();
   if (fs::is_directory(regressions) && !fs::is_empty(regressions)) {
-    const auto replay = run(shell_quote(exe.string()) + " -runs=0 " +
-                                shell_quote(regressions.string()),
-                            dir / "replay.log");
+    const auto replay =
+        run(shell_quote(exe.string()) + " -runs=0 " + shell_quote(regressions.string()), dir / "replay.log");
     EXPECT_EQ(replay.exit_code, 0) << replay.log;
   }
   fs::create_directory(dir / "corpus");
-  for (const char *folder : {"bad", "vtp-encodings", "fuzz-seeds"})
-    for (const auto &entry :
-         fs::directory_iterator(kSource / "tests" / "data" / folder))
-      if (entry.is_regular_file() && (entry.path().extension() == ".csv" ||
-                                      entry.path().extension() == ".vtp" ||
+  for (const char* folder : {"bad", "vtp-encodings", "fuzz-seeds"})
+    for (const auto& entry : fs::directory_iterator(kSource / "tests" / "data" / folder))
+      if (entry.is_regular_file() && (entry.path().extension() == ".csv" || entry.path().extension() == ".vtp" ||
                                       entry.path().extension() == ".bin"))
-        fs::copy_file(entry.path(), dir / "corpus" / entry.path().filename(),
-                      fs::copy_options::skip_existing);
-  const auto fuzz =
-      run(shell_quote(exe.string()) +
-              " -seed=1 -max_total_time=3 -max_len=4096 -timeout=10 " +
-              "-print_final_stats=1 -artifact_prefix=" +
-              shell_quote((dir / "").string()) + " " +
-              shell_quote((dir / "corpus").string()),
-          dir / "fuzz.log");
+        fs::copy_file(entry.path(), dir / "corpus" / entry.path().filename(), fs::copy_options::skip_existing);
+  const auto fuzz = run(shell_quote(exe.string()) + " -seed=1 -max_total_time=3 -max_len=4096 -timeout=10 " +
+                            "-print_final_stats=1 -artifact_prefix=" + shell_quote((dir / "").string()) + " " +
+                            shell_quote((dir / "corpus").string()),
+                        dir / "fuzz.log");
   EXPECT_EQ(fuzz.exit_code, 0) << fuzz.log;
   const std::string key = "stat::number_of_executed_units:";
   const auto at = fuzz.log.find(key);
@@ -84,15 +74,14 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
 
 const std::vector<std::string> kTargets = {
     "cfdpost_export_fuzz", "cfx_monitor_fuzz", "force_table_fuzz", "units_fuzz",
-    "vehicle_fuzz",        "scenario_fuzz",    "vtp_fuzz", "stored_record_fuzz"};
+    "vehicle_fuzz",        "scenario_fuzz",    "vtp_fuzz",         "stored_record_fuzz"};
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke, ::testing::ValuesIn(kTargets));
 
 // A target built but not listed above would never run in the smoke test.
 TEST(FuzzSmokeTargets, EveryBuiltTargetIsListed) {
-  if (!fs::is_directory(fuzz_dir()))
-    GTEST_SKIP() << fuzz_dir() << " does not exist: run scripts/fuzz.sh --build-only";
-  for (const auto &entry : fs::directory_iterator(fuzz_dir())) {
+  if (!fs::is_directory(fuzz_dir())) GTEST_SKIP() << fuzz_dir() << " does not exist: run scripts/fuzz.sh --build-only";
+  for (const auto& entry : fs::directory_iterator(fuzz_dir())) {
     const std::string name = entry.path().filename().string();
     if (entry.is_regular_file() && name.size() > 5 && name.ends_with("_fuzz")) {
       EXPECT_NE(std::find(kTargets.begin(), kTargets.end(), name), kTargets.end())
@@ -101,5 +90,5 @@ TEST(FuzzSmokeTargets, EveryBuiltTargetIsListed) {
   }
 }
 
-} // namespace
-} // namespace hydrocoef::test
+}  // namespace
+}  // namespace hydrocoef::test

@@ -94,10 +94,13 @@ TEST(TamperedDatabases, EveryCommandRefusesCleanlyAndChangesNothing) {
   make_good_database(dir / "good");
   const auto good = dir / "good" / "hydrocoef.db";
   // Fold the WAL into the file, as make-tampered.sh expects.
-  ASSERT_EQ(std::system(("sqlite3 " + shell_quote(good.string()) + " 'PRAGMA journal_mode = DELETE' > /dev/null").c_str()), 0);
+  ASSERT_EQ(
+      std::system(("sqlite3 " + shell_quote(good.string()) + " 'PRAGMA journal_mode = DELETE' > /dev/null").c_str()),
+      0);
 
   const auto tampered = dir / "tampered";
-  const std::string make = "bash " + shell_quote(std::string(HYDROCOEF_SOURCE_DIR) + "/tests/data/tampered/make-tampered.sh") +
+  const std::string make = "bash " +
+                           shell_quote(std::string(HYDROCOEF_SOURCE_DIR) + "/tests/data/tampered/make-tampered.sh") +
                            " " + shell_quote(good.string()) + " " + shell_quote(tampered.string()) + " > " +
                            shell_quote((dir / "count.txt").string());
   ASSERT_EQ(std::system(make.c_str()), 0);
@@ -122,8 +125,8 @@ TEST(TamperedDatabases, EveryCommandRefusesCleanlyAndChangesNothing) {
     for (const auto& command : commands) {
       const auto result = run_cli(command, work, "/dev/null", limit);
       const std::string what = name + ": hydrocoef " + command[0] + " " + (command.size() > 1 ? command[1] : "");
-      EXPECT_TRUE(result.exit_code == 0 || result.exit_code == 2) << what << " exit " << result.exit_code << ": "
-                                                                    << result.err;
+      EXPECT_TRUE(result.exit_code == 0 || result.exit_code == 2)
+          << what << " exit " << result.exit_code << ": " << result.err;
       EXPECT_EQ(result.err.find("internal error"), std::string::npos) << what << ": " << result.err;
       if (result.exit_code == 2) {
         any_refused = true;

@@ -146,8 +146,7 @@ TEST(Database, TwoFilesMayGiveDifferentComponentsOfOneRun) {
   TempDir dir;
   Database db(dir / "runs.db");
   db.import({make_batch("surge.csv", 'd', {make_run({}, kX, -0.0002, 2)})}, ConflictPolicy::Error);
-  const auto outcomes =
-      db.import({make_batch("yaw.csv", 'e', {make_run({}, kN, -0.00006, 2)})}, ConflictPolicy::Error);
+  const auto outcomes = db.import({make_batch("yaw.csv", 'e', {make_run({}, kN, -0.00006, 2)})}, ConflictPolicy::Error);
   EXPECT_EQ(outcomes[0].runs_created, 0u);
   EXPECT_EQ(outcomes[0].runs_extended, 1u);
   const auto runs = db.runs();
@@ -164,8 +163,8 @@ TEST(Database, ConflictingComponentFailsAndLeavesEverythingAsItWas) {
   // The batch list holds a good new file first and a conflicting one second:
   // neither may land.
   const auto good = make_batch("good.csv", '2', {make_run({0.2, 0, 0, 0, 0, 0}, kX, 4.0, 2)});
-  const auto clash = make_batch("second.csv", '3',
-                                {make_run({0.3, 0, 0, 0, 0, 0}, kX, 9.0, 2), make_run({0.1, 0, 0, 0, 0, 0}, kX, 1.1, 3)});
+  const auto clash = make_batch(
+      "second.csv", '3', {make_run({0.3, 0, 0, 0, 0, 0}, kX, 9.0, 2), make_run({0.1, 0, 0, 0, 0, 0}, kX, 1.1, 3)});
   try {
     db.import({good, clash}, ConflictPolicy::Error);
     FAIL() << "expected a conflict";
@@ -235,8 +234,9 @@ TEST(Database, FiltersByBodyComponentValueAndDisturbance) {
 TEST(Database, FitsAreStoredWithTheirRunsAndReplacedByName) {
   TempDir dir;
   Database db(dir / "runs.db");
-  db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
-            ConflictPolicy::Error);
+  db.import(
+      {make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
+      ConflictPolicy::Error);
   const auto runs = db.runs();
   FitRecord fit;
   fit.name = "sphere:X";
@@ -298,9 +298,7 @@ TEST(Database, RefusesFilesThatAreNotItsDatabases) {
   EXPECT_EQ(dump_database(dir / "foreign.db"), foreign_before);
 
   // A database from a newer hydrocoef.
-  {
-    Database db(dir / "newer.db");
-  }
+  { Database db(dir / "newer.db"); }
   sqlite3* newer = nullptr;
   ASSERT_EQ(sqlite3_open((dir / "newer.db").c_str(), &newer), SQLITE_OK);
   sqlite3_exec(newer, "PRAGMA user_version = 999", nullptr, nullptr, nullptr);
@@ -318,7 +316,8 @@ TEST(Database, DetectsACorruptedPage) {
   {
     Database db(dir / "runs.db");
     std::vector<ImportedRun> runs;
-    for (int i = 0; i < 400; ++i) runs.push_back(make_run({0.001 * i, 0, 0, 0, 0, 0}, kX, i, 2 + static_cast<std::size_t>(i)));
+    for (int i = 0; i < 400; ++i)
+      runs.push_back(make_run({0.001 * i, 0, 0, 0, 0, 0}, kX, i, 2 + static_cast<std::size_t>(i)));
     db.import({make_batch("many.csv", 'a', runs)}, ConflictPolicy::Error);
   }
   // Overwrite the middle of the file (past the header page) with garbage.
@@ -354,8 +353,9 @@ SurfaceRecord make_surface(const std::string& name, const std::string& body, std
 TEST(DatabaseSurfaces, RoundTripBitForBitWithTheirRuns) {
   TempDir dir;
   Database db(dir / "runs.db");
-  db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
-            ConflictPolicy::Error);
+  db.import(
+      {make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
+      ConflictPolicy::Error);
   const auto runs = db.runs();
   db.save_surface(make_surface("sphere-X", "sphere", {runs[0].id, runs[1].id}));
   const SurfaceRecord back = db.surface("sphere-X");

@@ -89,8 +89,7 @@ std::filesystem::path good_database(const TempDir& dir) {
 
 // Opens `path` (read-only and for writing): both must refuse with an
 // InputError containing every piece, and leave the file's bytes unchanged.
-void expect_refused(const std::filesystem::path& path, const std::vector<std::string>& pieces,
-                    bool on_read = false) {
+void expect_refused(const std::filesystem::path& path, const std::vector<std::string>& pieces, bool on_read = false) {
   const std::string before = file_bytes_hash(path);
   for (const auto mode : {Database::OpenMode::ReadOnly, Database::OpenMode::MustExist}) {
     bool opened = false;
@@ -197,7 +196,9 @@ TEST(ReceivedDatabase, AVersion3DatabaseMigratesKeepingItsFitsAndR2BecomesOption
   }
   const char* rows =
       "INSERT INTO body(id, name) VALUES (1, 'sphere');"
-      "INSERT INTO source_file VALUES (1, 'a.csv', '" "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa" "', 1, 't', '1', 'now');"
+      "INSERT INTO source_file VALUES (1, 'a.csv', '"
+      "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa"
+      "', 1, 't', '1', 'now');"
       "INSERT INTO run(id, body_id, u) VALUES (1, 1, 0.2);"
       "INSERT INTO run_force VALUES (1, 'X', -1.5, NULL, NULL, 'on-body', 1, 2);"
       "INSERT INTO fit VALUES (1, 'sphere:X(u)', 1, 'X', 'u', 'u', 'squared', '', 'on-body', 1, 0.5, 0.9, 'now');"

@@ -33,8 +33,8 @@ inline std::uint32_t add_point(SurfaceMesh& mesh, const P3& p) {
 inline SurfaceMesh make_hexahedron(const std::array<P3, 8>& corners, bool triangulate = false) {
   SurfaceMesh mesh;
   for (const auto& c : corners) add_point(mesh, c);
-  const std::array<std::array<std::uint32_t, 4>, 6> quads = {{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                                               {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+  const std::array<std::array<std::uint32_t, 4>, 6> quads = {
+      {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
   for (const auto& q : quads) {
     if (triangulate) {
       add_face(mesh, {q[0], q[1], q[2]});
@@ -48,7 +48,8 @@ inline SurfaceMesh make_hexahedron(const std::array<P3, 8>& corners, bool triang
 
 inline std::array<P3, 8> box_corners(double a, double b, double c, P3 origin = {0, 0, 0}) {
   std::array<P3, 8> out{};
-  const std::array<P3, 8> unit = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
+  const std::array<P3, 8> unit = {
+      {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
   for (std::size_t i = 0; i < 8; ++i)
     out[i] = {origin[0] + a * unit[i][0], origin[1] + b * unit[i][1], origin[2] + c * unit[i][2]};
   return out;
@@ -95,11 +96,12 @@ inline std::pair<double, P3> trilinear_volume_and_centroid(const std::array<P3, 
 /// projected on the sphere; triangles, outward normals, closed.
 inline SurfaceMesh make_icosphere(double radius, int levels, P3 centre = {0, 0, 0}) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<P3> points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<std::array<std::uint32_t, 3>> faces = {
-      {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},   {4, 9, 5}, {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  std::vector<P3> points = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<std::uint32_t, 3>> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                                     {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                                     {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                                     {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   auto normalize = [](P3 p) {
     const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     return P3{p[0] / n, p[1] / n, p[2] / n};
@@ -111,8 +113,8 @@ inline SurfaceMesh make_icosphere(double radius, int levels, P3 centre = {0, 0, 
       const auto key = std::minmax(a, b);
       const auto found = midpoints.find(key);
       if (found != midpoints.end()) return found->second;
-      points.push_back(normalize({(points[a][0] + points[b][0]) / 2, (points[a][1] + points[b][1]) / 2,
-                                  (points[a][2] + points[b][2]) / 2}));
+      points.push_back(normalize(
+          {(points[a][0] + points[b][0]) / 2, (points[a][1] + points[b][1]) / 2, (points[a][2] + points[b][2]) / 2}));
       const auto index = static_cast<std::uint32_t>(points.size() - 1);
       midpoints[key] = index;
       return index;
@@ -184,7 +186,8 @@ void add_point_vector(SurfaceMesh& mesh, const std::string& name, F f) {
 /// Reverses the vertex order of every face (normals point inward).
 inline void reverse_faces(SurfaceMesh& mesh) {
   for (std::size_t f = 0; f + 1 < mesh.face_offsets.size(); ++f)
-    std::reverse(mesh.face_indices.begin() + mesh.face_offsets[f], mesh.face_indices.begin() + mesh.face_offsets[f + 1]);
+    std::reverse(mesh.face_indices.begin() + mesh.face_offsets[f],
+                 mesh.face_indices.begin() + mesh.face_offsets[f + 1]);
 }
 
 }  // namespace hydrocoef::test

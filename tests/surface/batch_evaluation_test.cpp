@@ -34,7 +34,8 @@ GridTable make_table(std::size_t axes, std::size_t outputs, Interpolation method
     const std::size_t count = axes > 4 ? 3 : 4 + a;
     std::vector<double> x(count);
     for (std::size_t i = 0; i < count; ++i)
-      x[i] = -0.5 + static_cast<double>(i) / static_cast<double>(count - 1) + (even || i == 0 || i + 1 == count ? 0.0 : 0.07 * std::sin(static_cast<double>(3 * i + a)));
+      x[i] = -0.5 + static_cast<double>(i) / static_cast<double>(count - 1) +
+             (even || i == 0 || i + 1 == count ? 0.0 : 0.07 * std::sin(static_cast<double>(3 * i + a)));
     grid.push_back({"x" + std::to_string(a), x, policy});
     nodes *= count;
   }
@@ -68,7 +69,8 @@ void expect_batch_equals_points(const CoefficientSurface& s, const std::vector<d
   std::vector<double> out(n * outputs, kNaN), grad(gradient ? n * outputs * axes : 0, kNaN);
   std::vector<StridedOutput> out_columns, grad_columns;
   for (std::size_t k = 0; k < outputs; ++k) out_columns.push_back({out.data() + k * n, 1});
-  for (std::size_t g = 0; gradient && g < outputs * axes; ++g) grad_columns.push_back({grad.data() + g, static_cast<std::ptrdiff_t>(outputs * axes)});
+  for (std::size_t g = 0; gradient && g < outputs * axes; ++g)
+    grad_columns.push_back({grad.data() + g, static_cast<std::ptrdiff_t>(outputs * axes)});
   evaluate_batch(s, n, in, out_columns, grad_columns, threads);
   std::vector<double> expected(outputs), expected_gradient(outputs * axes);
   for (std::size_t i = 0; i < n; ++i) {

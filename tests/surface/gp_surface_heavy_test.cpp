@@ -37,7 +37,8 @@ Runs scattered(std::size_t n, unsigned seed) {
 
 TEST(GpSurface, BeatsTheRbfOnTheSurfacesTestFunction) {
   const Runs runs = scattered(200, 7);
-  const GpSurface gp = GpSurface::fit(runs.x, 2, runs.y, {}, {.kernel = GpKernel::Matern52, .mean_degree = 1, .starts = 3});
+  const GpSurface gp =
+      GpSurface::fit(runs.x, 2, runs.y, {}, {.kernel = GpKernel::Matern52, .mean_degree = 1, .starts = 3});
   const RbfSurface rbf(2, runs.x, 1, runs.y);
   GpSurface::Workspace ws(gp);
   std::mt19937 random(99);

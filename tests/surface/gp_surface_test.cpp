@@ -57,8 +57,8 @@ TEST(GpSurface, GradientIsTheMeansDerivative) {
     for (const int degree : {0, 1, 2}) {
       // Fixed length scales a third of the runs' spread: a well-conditioned
       // surface on which central differences are accurate to ~1e-9.
-      const GpSurface gp = GpSurface::fit(runs.x, 2, runs.y, {},
-                                          {.kernel = kernel, .mean_degree = degree, .fixed_hyperparameters = {1.0, 0.3, 0.3}});
+      const GpSurface gp = GpSurface::fit(
+          runs.x, 2, runs.y, {}, {.kernel = kernel, .mean_degree = degree, .fixed_hyperparameters = {1.0, 0.3, 0.3}});
       GpSurface::Workspace ws(gp);
       const double p[2] = {0.31, -0.42};
       double gradient[2];
@@ -87,7 +87,9 @@ TEST(GpSurface, NoisyRunsAreSmoothedByTheirUncertainty) {
   const GpSurface gp = GpSurface::fit(x, 1, y, noise);
   GpSurface::Workspace ws(gp);
   double error = 0.0;
-  for (int i = 0; i < 60; ++i) error += std::pow(gp.evaluate(&x[static_cast<std::size_t>(i)], ws) - std::sin(2.0 * x[static_cast<std::size_t>(i)]), 2);
+  for (int i = 0; i < 60; ++i)
+    error +=
+        std::pow(gp.evaluate(&x[static_cast<std::size_t>(i)], ws) - std::sin(2.0 * x[static_cast<std::size_t>(i)]), 2);
   // Closer to the truth than the runs themselves (their RMS error is 0.05).
   EXPECT_LT(std::sqrt(error / 60), 0.035);
 }
@@ -147,9 +149,12 @@ TEST(GpSurface, StoredStatesRoundTripAndAreChecked) {
 }
 
 TEST(GpSurface, RefusesWhatItCannotFit) {
-  EXPECT_THROW(GpSurface::fit(std::vector<double>{0, 1}, 1, std::vector<double>{1, 2}, {}), InputError);  // too few for degree 1
-  EXPECT_THROW(GpSurface::fit(std::vector<double>{0, 0, 1}, 1, std::vector<double>{1, 2, 3}, {}), InputError);  // same point
-  EXPECT_THROW(GpSurface::fit(std::vector<double>{1, 1, 1}, 1, std::vector<double>{1, 2, 3}, {}), InputError);  // no range
+  EXPECT_THROW(GpSurface::fit(std::vector<double>{0, 1}, 1, std::vector<double>{1, 2}, {}),
+               InputError);  // too few for degree 1
+  EXPECT_THROW(GpSurface::fit(std::vector<double>{0, 0, 1}, 1, std::vector<double>{1, 2, 3}, {}),
+               InputError);  // same point
+  EXPECT_THROW(GpSurface::fit(std::vector<double>{1, 1, 1}, 1, std::vector<double>{1, 2, 3}, {}),
+               InputError);  // no range
   EXPECT_THROW(GpSurface::fit(std::vector<double>{0, 1, 2}, 1, std::vector<double>{1, NAN, 3}, {}), InputError);
   EXPECT_THROW(parse_gp_kernel("gauss"), InputError);
 }

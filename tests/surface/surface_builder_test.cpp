@@ -93,8 +93,11 @@ TEST(SurfaceBuilder, RunsWithoutAnOutputAreSkippedAndCounted) {
 TEST(SurfaceBuilder, AGapInTheGridIsRefusedNamingTheMissingPoint) {
   auto runs = grid_runs(bilinear);
   runs.erase(runs.begin() + 5);  // u = 0.2, current_v = 0.05
-  expect_input_error([&] { build_surface(runs, {{"u", "current_v"}, {"X"}, "linear"}); },
-                     {"do not fill a grid", "u=0.2 current_v=0.05", "--method rbf"});
+  expect_input_error(
+      [&] {
+        build_surface(runs, {{"u", "current_v"}, {"X"}, "linear"});
+      },
+      {"do not fill a grid", "u=0.2 current_v=0.05", "--method rbf"});
 }
 
 TEST(SurfaceBuilder, TwoRunsAtOnePointAreRefusedNamingBoth) {
@@ -105,8 +108,11 @@ TEST(SurfaceBuilder, TwoRunsAtOnePointAreRefusedNamingBoth) {
 TEST(SurfaceBuilder, UnknownNamesAreRefused) {
   const auto runs = grid_runs(bilinear);
   expect_input_error([&] { build_surface(runs, {{"u"}, {"F"}, "linear"}); }, {"output 'F'", "X, Y, Z, K, M or N"});
-  expect_input_error([&] { build_surface(runs, {{"u", "current_w"}, {"X"}, "linear"}); },
-                     {"no disturbance 'current_w'"});
+  expect_input_error(
+      [&] {
+        build_surface(runs, {{"u", "current_w"}, {"X"}, "linear"});
+      },
+      {"no disturbance 'current_w'"});
   expect_input_error([&] { build_surface(runs, {{"u", "u"}, {"X"}, "linear"}); }, {"axis 'u' is given twice"});
   expect_input_error([&] { build_surface(runs, {{"u", "current_v"}, {"X"}, "cubic"}); }, {"cubic"});
 }

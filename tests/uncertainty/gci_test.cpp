@@ -34,7 +34,9 @@ TEST(Gci, RecoversOrderAndLimitOfAPowerLaw) {
 }
 
 /// Rounds to the digits Celik et al. print: `decimals` after the point.
-double printed(double value, int decimals) { return std::round(value * std::pow(10.0, decimals)) / std::pow(10.0, decimals); }
+double printed(double value, int decimals) {
+  return std::round(value * std::pow(10.0, decimals)) / std::pow(10.0, decimals);
+}
 
 TEST(Gci, CelikTable1MonotonicColumn) {
   // Celik et al. (2008), Table 1, first column: N = 18000, 8000, 4500 cells
