@@ -28,6 +28,7 @@ struct FitArgs {
   bool strict = false;
   bool replace = false;
   bool refit = false;
+  bool unweighted = false;
   bool json = false;
 };
 
@@ -53,7 +54,8 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
                      args.mirror_odd,
                      args.name,
                      !args.no_store,
-                     args.replace ? Database::NameTaken::Replace : Database::NameTaken::Refuse};
+                     args.replace ? Database::NameTaken::Replace : Database::NameTaken::Refuse,
+                     !args.unweighted};
   Database database(global.database, Database::OpenMode::MustExist);
   if (args.by) {
     const LevelFitRequest level_request{request, *args.by, args.curve, args.strict};
@@ -104,6 +106,9 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
                     "With --by: refuse the fit when a level has too few runs for the law (default: skip it with a "
                     "note)");
   command->add_flag("--no-store", args->no_store, "Do not store the fit");
+  command->add_flag("--unweighted", args->unweighted,
+                    "Ordinary least squares even when every run states a standard error (by default such runs are "
+                    "weighted by 1/s^2 and the reduced chi^2 is reported)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_fit(*args, global); });
 

@@ -27,6 +27,7 @@ struct QueryArgs {
   std::string input;
   std::string output = "-";
   bool gradient = false;
+  bool uncertainty = false;
   bool json = false;
 };
 
@@ -52,10 +53,11 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
       throw InputError("no value for axis '" + surface.axis_names()[a] + "'; surface '" + args.name +
                        "' needs one value for each of its axes: " + join(surface.axis_names(), ", ") + " (e.g. " +
                        surface.axis_names()[a] + "=0.1)");
-  std::vector<double> out(n_out), gradient(n_out * n_axes);
+  std::vector<double> out(n_out), gradient(n_out * n_axes), sd(n_out);
+  if (args.uncertainty) surface.evaluate_with_standard_deviation(point, out, sd);
   if (args.gradient)
     surface.evaluate_with_gradient(point, out, gradient);
-  else
+  else if (!args.uncertainty)
     surface.evaluate(point, out);
 
   if (args.json) {
@@ -64,6 +66,7 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
     for (std::size_t k = 0; k < n_out; ++k) {
       json["values"][surface.output_names()[k]] = out[k];
       json["units"][surface.output_names()[k]] = surface.output_units()[k];
+      if (args.uncertainty) json["standard_deviation"][surface.output_names()[k]] = sd[k];
       if (args.gradient)
         for (std::size_t a = 0; a < n_axes; ++a)
           json["gradient"][surface.output_names()[k]][surface.axis_names()[a]] = gradient[k * n_axes + a];
@@ -77,7 +80,10 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
   std::cout << " (forces on the body)\n";
   for (std::size_t k = 0; k < n_out; ++k) {
     std::cout << "  " << std::left << std::setw(4) << surface.output_names()[k] << std::setw(16)
-              << significant(out[k], 9) << surface.output_units()[k] << '\n';
+              << significant(out[k], 9) << surface.output_units()[k];
+    if (args.uncertainty)
+      std::cout << "  +/- " << significant(sd[k], 3) << " " << surface.output_units()[k] << " (1 sd)";
+    std::cout << '\n';
     if (args.gradient)
       for (std::size_t a = 0; a < n_axes; ++a) {
         const std::string& unit = surface.axis_units()[a];
@@ -90,7 +96,8 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
 
 void query_batch(const QueryArgs& args, const StoredSurface& stored) {
   const std::size_t points =
-      query_csv_batch(stored.surface, CsvBatchRequest{args.name, args.input, args.output, args.gradient});
+      query_csv_batch(stored.surface,
+                      CsvBatchRequest{args.name, args.input, args.output, args.gradient, args.uncertainty});
   if (args.output != "-" && !args.json)
     std::cerr << "hydrocoef: " << points << " points of surface '" << args.name << "' written to " << args.output
               << '\n';
@@ -128,6 +135,9 @@ void add_query_command(CLI::App& app, const GlobalOptions& global) {
   query->add_option("--input", args->input, "CSV of points (header: axis names), - for standard input");
   query->add_option("--output", args->output, "CSV of results, - for standard output")->capture_default_str();
   query->add_flag("--gradient", args->gradient, "Also the derivative of each output along each axis");
+  query->add_flag("--uncertainty", args->uncertainty,
+                  "Also each output's standard deviation (GP surfaces: the posterior's; a sigma_OUT column per "
+                  "output in a batch)");
   query->add_flag("--json", args->json, "Machine-readable output (single point)");
   query->callback([args, &global] { run_query(*args, global); });
 }

@@ -50,6 +50,9 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
                           {"rmse", fit.rmse},
                           {"r2", optional_number(fit.r2)},
                           {"n", fit.n},
+                          {"weighting", fit.weighted ? "standard-error" : "none"},
+                          {"chi2_reduced", optional_number(fit.chi2_reduced)},
+                          {"covariance", fit.covariance},
                           {"runs", result.run_ids()},
                           {"mirror", setup.mirror.text()},
                           {"mirror_images", images},
@@ -99,6 +102,11 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
             << ", R^2 = " << significant(fit.r2, 8)
             << (std::isnan(fit.r2) ? " (the force does not vary over these runs)" : "") << ", loss " << fit.loss
             << '\n';
+  if (fit.weighted)
+    std::cout << "  weighted by each run's standard error (1/s^2); reduced chi^2 = "
+              << (std::isfinite(fit.chi2_reduced) ? significant(fit.chi2_reduced, 4) : std::string("n/a"))
+              << " (about 1: the runs scatter as their standard errors say); standard errors from the stated "
+                 "uncertainties\n";
   if (!result.varying_conditions.empty()) {
     std::string names;
     for (const auto& v : result.varying_conditions) names += (names.empty() ? "" : ", ") + v;
@@ -247,7 +255,10 @@ void print_fits(const std::vector<FitRecord>& fits, const std::string& database,
                              {"created_at", fit.created_at},
                              {"runs", fit.run_ids},
                              {"stale", fit.stale},
-                             {"mirror", fit.mirror}};
+                             {"mirror", fit.mirror},
+                             {"weighting", fit.weighting},
+                             {"chi2_reduced", fit.chi2_reduced ? nlohmann::json(*fit.chi2_reduced) : nlohmann::json()},
+                             {"covariance", fit.covariance}};
       item["coefficients"] = nlohmann::json::object();
       item["std_errors"] = nlohmann::json::object();
       for (const auto& c : fit.coefficients) {
@@ -265,7 +276,11 @@ void print_fits(const std::vector<FitRecord>& fits, const std::string& database,
   }
   for (const auto& fit : fits) {
     std::cout << fit.id << "  " << fit.name << "  [" << to_string(fit.sign) << ", n=" << fit.n
-              << ", RMSE=" << significant(fit.rmse, 4) << ", R^2=" << significant(fit.r2, 8) << "]"
+              << ", RMSE=" << significant(fit.rmse, 4) << ", R^2=" << significant(fit.r2, 8)
+              << (fit.weighting == "none" ? std::string()
+                                          : ", weighted, chi^2/dof=" + (fit.chi2_reduced ? significant(*fit.chi2_reduced, 3)
+                                                                                         : std::string("n/a")))
+              << "]"
               << (fit.stale ? "  STALE: a force of its runs changed or was deleted since; fit --refit makes it again"
                             : "")
               << "\n    from " << fit.run_ids.size() << (fit.run_ids.size() == 1 ? " run" : " runs")

@@ -15,11 +15,13 @@ void add_surface_build_options(CLI::App& command, SurfaceBuildArgs& args) {
   command.add_option("--axes", args.axes, "Axes: velocity components (u..r) or disturbance names, e.g. u,current_v")
       ->required()
       ->delimiter(',');
-  command.add_option("--method", args.method, "nearest, linear, pchip, makima, natural-spline, or rbf")
+  command.add_option("--method", args.method,
+                     "nearest, linear, pchip, makima, natural-spline (gridded runs), rbf or gp (scattered runs; gp: a "
+                     "Gaussian process that also states its standard deviation)")
       ->capture_default_str();
   command.add_option("--extrapolate", args.extrapolate,
                      "Out-of-range policy for every axis, or AXIS=POLICY (repeatable): error (default), clamp, linear, "
-                     "method; for rbf: error, clamp, extrapolate");
+                     "method; for rbf and gp: error, clamp, extrapolate");
   command.add_option(
       "--where", args.where,
       "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity component "
@@ -28,8 +30,13 @@ void add_surface_build_options(CLI::App& command, SurfaceBuildArgs& args) {
   command.add_option("--exclude-run", args.exclude_runs,
                      "Leave out the run with this id (repeatable; leave-one-out by hand)");
   add_mirror_options(command, args.mirror, args.mirror_odd);
-  command.add_option("--kernel", args.kernel, "RBF kernel: cubic, thin-plate, linear")->capture_default_str();
-  command.add_option("--degree", args.degree, "RBF polynomial degree (0, 1, 2)")->capture_default_str();
+  command.add_option("--kernel", args.kernel,
+                     "RBF kernel: cubic (default), thin-plate, linear; GP kernel: matern52 (default), "
+                     "squared-exponential");
+  command.add_option("--degree", args.degree, "RBF polynomial or GP mean degree (0, 1, 2)")->capture_default_str();
+  command.add_option("--starts", args.starts, "GP: optimiser starts of the hyperparameter search (1 to 100)")
+      ->capture_default_str();
+  command.add_option("--seed", args.seed, "GP: seed of the optimiser starts after the third")->capture_default_str();
   command.add_option("--smoothing", args.smoothing, "RBF smoothing (0 interpolates)")->capture_default_str();
   command.add_option("--resample", args.resample,
                      "Tabulate the RBF on a grid: AXIS=FROM:TO:COUNT or AXIS=X1,X2,... (one per axis)");
@@ -49,13 +56,23 @@ SurfaceBuildSpec surface_build_spec(const SurfaceBuildArgs& args) {
   surface.axes = args.axes;
   surface.outputs = args.outputs;
   surface.method = args.method;
-  if (args.method != "rbf") parse_interpolation(args.method);
+  if (args.method != "rbf" && args.method != "gp") parse_interpolation(args.method);
   surface.out_of_range = out_of_range_policies(args.axes, args.extrapolate, "--extrapolate");
   spec.where = args.where;
   spec.exclude_runs = args.exclude_runs;
   spec.mirror_planes = args.mirror;
   spec.mirror_odd = args.mirror_odd;
-  surface.rbf.kernel = parse_rbf_kernel(args.kernel);
+  if (args.degree < 0 || args.degree > 2) throw InputError("--degree " + std::to_string(args.degree) + ": expected 0, 1 or 2");
+  if (args.method == "gp") {
+    surface.gp.kernel = parse_gp_kernel(args.kernel.value_or("matern52"));
+    surface.gp.mean_degree = args.degree;
+    if (args.starts < 1 || args.starts > 100)
+      throw InputError("--starts " + std::to_string(args.starts) + ": expected 1 to 100");
+    surface.gp.starts = args.starts;
+    surface.gp.seed = args.seed;
+  } else {
+    surface.rbf.kernel = parse_rbf_kernel(args.kernel.value_or("cubic"));
+  }
   surface.rbf.polynomial_degree = args.degree;
   surface.rbf.smoothing = args.smoothing;
   surface.resample_method = args.resample_method;

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,10 @@ struct SurfaceBuildArgs {
   std::vector<std::string> mirror;
   std::vector<std::string> mirror_odd;
   bool replace = false;  ///< a surface of this name may be replaced (rebuild always replaces)
-  std::string kernel = "cubic";
+  std::optional<std::string> kernel;  ///< default: cubic (rbf), matern52 (gp)
   int degree = 1;
+  int starts = 5;         ///< gp
+  unsigned seed = 1;      ///< gp
   double smoothing = 0.0;
   std::vector<std::string> resample;
   std::string resample_method = "linear";

@@ -11,6 +11,7 @@
 #include "src/core/escape.hpp"
 #include "src/export/export.hpp"
 #include "src/pipeline/surface_build.hpp"
+#include "src/surface/gp_design.hpp"
 #include "src/surface/grid_table.hpp"
 
 namespace hydrocoef::cli {
@@ -48,7 +49,7 @@ std::optional<std::pair<std::int64_t, double>> worst_run(const nlohmann::json& q
 void print_quality(const SurfaceRecord& record, const CoefficientSurface& surface) {
   const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
   const std::string loo = quality.value("loo_method", "");
-  std::cout << "  leave-one-out (" << (loo == "rbf-exact" ? "exact, RBF" : "along grid lines") << ", "
+  std::cout << "  leave-one-out (" << loo_method_description(loo) << ", "
             << quality.value("loo_defined", 0) << " of " << quality.value("runs", 0) << " runs):\n";
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const auto& name = surface.output_names()[k];
@@ -89,6 +90,56 @@ void print_axes(const CoefficientSurface& surface) {
   }
 }
 
+namespace {
+
+/// A GP surface's hyperparameters per output and the three points of its
+/// range where its standard deviation is largest.
+nlohmann::json gp_json(const CoefficientSurface& surface) {
+  const GpSurfaces* gp = surface.gp();
+  nlohmann::json out = {{"kernel", std::string(gp_kernel_name(gp->kernel()))}, {"mean_degree", gp->mean_degree()}};
+  std::vector<double> lower, upper;
+  for (std::size_t a = 0; a < surface.axis_count(); ++a) lower.push_back(surface.lower(a)), upper.push_back(surface.upper(a));
+  for (std::size_t k = 0; k < surface.output_count(); ++k) {
+    const GpSurface& output = gp->output(k);
+    nlohmann::json entry = {{"signal_sd", output.signal_sd()}, {"length_scales", nlohmann::json::object()}};
+    const auto lengths = output.length_scales();
+    for (std::size_t a = 0; a < surface.axis_count(); ++a) entry["length_scales"][surface.axis_names()[a]] = lengths[a];
+    entry["largest_sd"] = nlohmann::json::array();
+    for (const auto& where : largest_standard_deviations(output, lower, upper, 3)) {
+      nlohmann::json point;
+      for (std::size_t a = 0; a < surface.axis_count(); ++a) point[surface.axis_names()[a]] = where.point[a];
+      entry["largest_sd"].push_back({{"point", point}, {"sd", where.standard_deviation}});
+    }
+    out["outputs"][surface.output_names()[k]] = entry;
+  }
+  return out;
+}
+
+void print_gp(const CoefficientSurface& surface) {
+  if (!surface.gp()) return;
+  const nlohmann::json gp = gp_json(surface);
+  std::cout << "  Gaussian process: " << gp["kernel"].get<std::string>() << " kernel, mean of degree "
+            << gp["mean_degree"].get<int>() << "; standard deviation largest at:\n";
+  for (std::size_t k = 0; k < surface.output_count(); ++k) {
+    const auto& name = surface.output_names()[k];
+    const auto& entry = gp["outputs"][name];
+    std::cout << "    " << std::left << std::setw(4) << name << "signal sd " << significant(entry["signal_sd"].get<double>(), 4)
+              << " " << surface.output_units()[k] << ", length scales";
+    for (std::size_t a = 0; a < surface.axis_count(); ++a)
+      std::cout << " " << surface.axis_names()[a] << " "
+                << significant(entry["length_scales"][surface.axis_names()[a]].get<double>(), 3);
+    std::cout << '\n';
+    for (const auto& where : entry["largest_sd"]) {
+      std::cout << "      sd " << std::setw(12) << significant(where["sd"].get<double>(), 4) << "at";
+      for (std::size_t a = 0; a < surface.axis_count(); ++a)
+        std::cout << " " << surface.axis_names()[a] << "=" << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
+      std::cout << '\n';
+    }
+  }
+}
+
+}  // namespace
+
 nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurface& surface, bool with_values) {
   nlohmann::json out = {{"name", record.name},
                         {"body", record.body},
@@ -124,6 +175,7 @@ nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurfac
     for (std::size_t a = 0; a < node.size(); ++a) point[surface.axis_names()[a]] = node[a];
     out["far_from_data_points"].push_back(point);
   }
+  if (surface.gp()) out["gp"] = gp_json(surface);
   const auto definition = nlohmann::json::parse(record.definition);
   if (definition.contains("build_spec")) out["build_spec"] = definition["build_spec"];
   return out;
@@ -174,6 +226,7 @@ void print_surface(const StoredSurface& stored, bool json) {
   for (std::size_t k = 0; k < stored.surface.output_count(); ++k)
     std::cout << "    " << stored.surface.output_names()[k] << " [" << stored.surface.output_units()[k] << "]\n";
   print_quality(record, stored.surface);
+  print_gp(stored.surface);
 }
 
 nlohmann::json surface_build_json(const SurfaceBuildResult& result) {
@@ -188,7 +241,7 @@ nlohmann::json surface_build_json(const SurfaceBuildResult& result) {
 void print_surface_build(const SurfaceBuildResult& result, const std::string& database) {
   const auto& [record, surface] = result.stored;
   std::cout << "surface " << record.name << " of body " << record.body << ": " << record.kind << ", "
-            << surface.method_name() << ", " << record.run_ids.size() << " runs";
+            << record.method << ", " << record.run_ids.size() << " runs";
   if (result.runs_skipped) std::cout << " (" << result.runs_skipped << " runs without every output skipped)";
   if (!result.mirror.empty())
     std::cout << "\n  mirror " << result.mirror << ": " << result.runs_measured << " runs and " << result.mirror_images
@@ -203,6 +256,7 @@ void print_surface_build(const SurfaceBuildResult& result, const std::string& da
     std::cout << (k ? ", " : "") << surface.output_names()[k] << " [" << surface.output_units()[k] << "]";
   std::cout << " (forces on the body)\n";
   print_quality(record, surface);
+  print_gp(surface);
   std::cout << "  stored as surface " << record.id << " in " << database << '\n';
 }
 

@@ -208,10 +208,10 @@ struct SurfaceBuildOptions {
   std::string body;
   std::vector<std::string> axes;
   std::vector<std::string> outputs;
-  /// nearest, linear, pchip, makima, natural-spline (runs on a grid), or rbf (scattered runs).
+  /// nearest, linear, pchip, makima, natural-spline (runs on a grid), rbf or gp (scattered runs).
   std::string method = "linear";
   /// Out-of-range policy: one for every axis, or "AXIS=POLICY" entries
-  /// (grid: error, clamp, linear, method; rbf: error, clamp, extrapolate). Empty: error.
+  /// (grid: error, clamp, linear, method; rbf, gp: error, clamp, extrapolate). Empty: error.
   std::vector<std::string> extrapolate;
   std::vector<std::string> where;          ///< selection clauses, as for runs()
   std::vector<std::int64_t> exclude_runs;  ///< run ids left out
@@ -225,6 +225,9 @@ struct SurfaceBuildOptions {
   std::string resample_method = "linear";  ///< interpolation of the resampled grid
   double far_threshold = 0.25;             ///< resampled grids: report points farther than this from every run
   bool replace = false;                    ///< replace a stored surface of that name (else refused)
+  std::string gp_kernel = "matern52";      ///< gp: matern52 or squared-exponential
+  int gp_degree = 1;                       ///< gp: mean of degree 0, 1, 2
+  int gp_starts = 5;                       ///< gp: optimiser starts (1 to 100)
 };
 
 class Database {

@@ -61,8 +61,8 @@ class Surface {
   const std::string& name() const;
   /// The body whose runs it was built from.
   const std::string& body() const;
-  /// "nearest", "linear", "pchip", "makima", "natural-spline" (gridded tables)
-  /// or "rbf" (scattered samples).
+  /// "nearest", "linear", "pchip", "makima", "natural-spline" (gridded tables),
+  /// "rbf" or "gp" (scattered samples; a GP states a standard deviation).
   const std::string& method() const;
   /// True when forces of the body changed in the database since the surface
   /// was built (`hydrocoef surface rebuild` makes it again).
@@ -82,7 +82,7 @@ class Surface {
   double lower(std::size_t axis) const;
   double upper(std::size_t axis) const;
   /// The out-of-range policy of an axis: "error", "clamp", "linear" or
-  /// "method" (gridded tables), "error", "clamp" or "extrapolate" (rbf).
+  /// "method" (gridded tables), "error", "clamp" or "extrapolate" (rbf, gp).
   std::string out_of_range(std::size_t axis) const;
 
   /// Every output at one point (one coordinate per axis, in axes() order and
@@ -91,6 +91,17 @@ class Surface {
   std::vector<double> evaluate(const std::vector<double>& point) const;
   /// As evaluate, with the exact gradient of the interpolant [output unit per axis unit].
   ValueAndGradient evaluate_with_gradient(const std::vector<double>& point) const;
+
+  /// Whether the surface states a standard deviation at a point (GP surfaces).
+  bool has_standard_deviation() const;
+  /// The outputs and their standard deviations at one point.
+  struct ValueAndDeviation {
+    std::vector<double> values;              ///< one per output
+    std::vector<double> standard_deviation;  ///< one per output, in its unit
+  };
+  /// As evaluate, with each output's standard deviation. InputError as
+  /// evaluate, or for a surface without one (has_standard_deviation() false).
+  ValueAndDeviation evaluate_with_standard_deviation(const std::vector<double>& point) const;
 
   /// Evaluates `count` points at once, on `threads` threads (0: every core),
   /// allocating nothing per point.
@@ -106,8 +117,11 @@ class Surface {
   /// the points after it are unspecified (some may have been written).
   /// std::invalid_argument when the number of columns is wrong or a column
   /// with count > 0 has no data.
+  ///   standard_deviations: empty, or one column per output receiving its
+  ///              standard deviation (InputError for a surface without one).
   void evaluate_batch(std::size_t count, const std::vector<ConstColumn>& inputs, const std::vector<Column>& outputs,
-                      const std::vector<Column>& gradients, unsigned threads = 0) const;
+                      const std::vector<Column>& gradients, unsigned threads = 0,
+                      const std::vector<Column>& standard_deviations = {}) const;
 
   /// Made by Database::surface(); Impl is the library's own.
   struct Impl;

@@ -160,9 +160,10 @@ AxisValues axis_values(const std::string& axis, const py::handle& value) {
 /// surface(u=..., v=...) or surface({"u": ..., "v": ...}): every output (and
 /// with gradient, every dOUT/dAXIS) at every point, shaped like the inputs.
 py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs kwargs) {
-  bool gradient = false;
+  bool gradient = false, uncertainty = false;
   long threads = 0;
   if (kwargs.contains("gradient")) gradient = py::cast<bool>(kwargs.attr("pop")("gradient"));
+  if (kwargs.contains("uncertainty")) uncertainty = py::cast<bool>(kwargs.attr("pop")("uncertainty"));
   if (kwargs.contains("threads")) threads = py::cast<long>(kwargs.attr("pop")("threads"));
   if (threads < 0 || threads > 4096)
     throw py::value_error("threads=" + std::to_string(threads) + ": expected 0 (every core) to 4096");
@@ -217,6 +218,11 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
     std::vector<double> point(n_axes);
     for (std::size_t a = 0; a < n_axes; ++a) point[a] = *values[a].column.data;
     const auto float64 = py::module_::import("numpy").attr("float64");
+    if (uncertainty) {
+      const auto answer = surface.evaluate_with_standard_deviation(point);
+      for (std::size_t k = 0; k < n_out; ++k)
+        result[py::str("sigma_" + outputs[k])] = float64(answer.standard_deviation[k]);
+    }
     if (gradient) {
       const auto answer = surface.evaluate_with_gradient(point);
       for (std::size_t k = 0; k < n_out; ++k) result[py::str(outputs[k])] = float64(answer.values[k]);
@@ -227,17 +233,32 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
       const auto answer = surface.evaluate(point);
       for (std::size_t k = 0; k < n_out; ++k) result[py::str(outputs[k])] = float64(answer[k]);
     }
+    if (uncertainty) {
+      // Outputs first, then their standard deviations, as in the batch.
+      py::dict ordered;
+      for (std::size_t k = 0; k < n_out; ++k) ordered[py::str(outputs[k])] = result[py::str(outputs[k])];
+      for (std::size_t k = 0; k < n_out; ++k)
+        ordered[py::str("sigma_" + outputs[k])] = result[py::str("sigma_" + outputs[k])];
+      for (const auto& item : result)
+        if (!ordered.contains(item.first)) ordered[item.first] = item.second;
+      return ordered;
+    }
     return result;
   }
 
   std::size_t count = 1;
   for (const auto extent : *shape) count *= static_cast<std::size_t>(extent);
-  std::vector<py::array_t<double>> out_arrays, gradient_arrays;
-  std::vector<hydrocoef::Column> out_columns, gradient_columns;
+  std::vector<py::array_t<double>> out_arrays, gradient_arrays, sd_arrays;
+  std::vector<hydrocoef::Column> out_columns, gradient_columns, sd_columns;
   for (std::size_t k = 0; k < n_out; ++k) {
     out_arrays.emplace_back(*shape);
     out_columns.push_back({out_arrays.back().mutable_data(), 1});
   }
+  if (uncertainty)
+    for (std::size_t k = 0; k < n_out; ++k) {
+      sd_arrays.emplace_back(*shape);
+      sd_columns.push_back({sd_arrays.back().mutable_data(), 1});
+    }
   if (gradient)
     for (std::size_t g = 0; g < n_out * n_axes; ++g) {
       gradient_arrays.emplace_back(*shape);
@@ -247,9 +268,11 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
   for (const auto& v : values) in_columns.push_back(v.column);
   {
     py::gil_scoped_release release;
-    surface.evaluate_batch(count, in_columns, out_columns, gradient_columns, static_cast<unsigned>(threads));
+    surface.evaluate_batch(count, in_columns, out_columns, gradient_columns, static_cast<unsigned>(threads),
+                           sd_columns);
   }
   for (std::size_t k = 0; k < n_out; ++k) result[py::str(outputs[k])] = out_arrays[k];
+  for (std::size_t k = 0; k < n_out && uncertainty; ++k) result[py::str("sigma_" + outputs[k])] = sd_arrays[k];
   for (std::size_t k = 0; k < n_out && gradient; ++k)
     for (std::size_t a = 0; a < n_axes; ++a)
       result[py::str("d" + outputs[k] + "/d" + axes[a])] = gradient_arrays[k * n_axes + a];
@@ -414,14 +437,16 @@ point). A Surface is immutable and stays valid after its Database is closed.)doc
     options.disable_function_signatures();
     surface_class.def(
         "__call__", &call_surface,
-        R"doc(__call__(self, values=None, /, *, gradient=False, threads=0, **axes) -> dict[str, numpy.ndarray]
+        R"doc(__call__(self, values=None, /, *, gradient=False, uncertainty=False, threads=0, **axes) -> dict[str, numpy.ndarray]
 
 Every output at every point. Give each axis a float or an array, by keyword
 (s(u=..., v=...)), or one mapping holding them (s({"u": ..., "v": ...}), or a
 Table of runs: keys other than the axes are left alone). Arrays must all have
 one shape (scalars stand for every point); the results have that shape
 (numpy.float64 values when every axis is a scalar). gradient=True adds
-"dOUT/dAXIS" for every output and axis [output unit per axis unit]. threads:
+"dOUT/dAXIS" for every output and axis [output unit per axis unit];
+uncertainty=True adds "sigma_OUT", each output's standard deviation (GP
+surfaces, method "gp"; others raise InputError). threads:
 0 uses every core. float64 arrays that are contiguous, or 1-D with any
 stride, are read in place; others are converted first. The GIL is released
 while the points are evaluated.
@@ -670,7 +695,8 @@ replace: replace a stored fit of that name; store=False: fit only. Returns a Fit
              const py::object& outputs, const std::string& method, const py::object& extrapolate,
              const py::object& where, const py::object& exclude_runs, const py::object& mirror,
              const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
-             const py::object& resample, const std::string& resample_method, double far_threshold, bool replace) {
+             const py::object& resample, const std::string& resample_method, double far_threshold, bool replace,
+             const std::string& gp_kernel, int gp_degree, int gp_starts) {
             hydrocoef::SurfaceBuildOptions options;
             options.name = name;
             options.body = body;
@@ -695,6 +721,9 @@ replace: replace a stored fit of that name; store=False: fit only. Returns a Fit
             options.resample_method = resample_method;
             options.far_threshold = far_threshold;
             options.replace = replace;
+            options.gp_kernel = gp_kernel;
+            options.gp_degree = gp_degree;
+            options.gp_starts = gp_starts;
             Database& d = database_of(self);
             py::gil_scoped_release release;
             return d.build_surface(options);
@@ -702,15 +731,18 @@ replace: replace a stored fit of that name; store=False: fit only. Returns a Fit
           "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear", "extrapolate"_a = py::none(),
           "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(), "mirror_odd"_a = py::none(),
           "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0, "resample"_a = py::none(),
-          "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false,
+          "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false, "gp_kernel"_a = "matern52",
+          "gp_degree"_a = 1, "gp_starts"_a = 5,
           R"doc(Builds a surface from the selected runs and stores it, as `hydrocoef surface build`.
 
 axes: velocity components (u..r) or disturbance names; outputs: X..N (forces on the body).
-method: nearest, linear, pchip, makima, natural-spline (runs on a grid) or rbf (scattered runs).
+method: nearest, linear, pchip, makima, natural-spline (runs on a grid), rbf or gp (scattered runs;
+gp: a Gaussian process whose surface also gives each value's standard deviation, s(..., uncertainty=True)).
 extrapolate: one policy for every axis or "AXIS=POLICY" entries (error, clamp, linear, method;
 rbf: error, clamp, extrapolate). where / exclude_runs / mirror / mirror_odd: as for fit().
 rbf_kernel, rbf_degree, rbf_smoothing, resample (one list of breakpoints per axis),
-resample_method, far_threshold: the RBF options. replace: replace a stored surface of that name.
+resample_method, far_threshold: the RBF options. gp_kernel (matern52, squared-exponential), gp_degree
+(its mean, 0 to 2), gp_starts: the GP options. replace: replace a stored surface of that name.
 Returns a SurfaceInfo; the surface keeps its build specification for rebuild_surfaces().)doc")
       .def(
           "rebuild_surfaces",

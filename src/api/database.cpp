@@ -171,6 +171,15 @@ SurfaceInfo Database::build_surface(const SurfaceBuildOptions& options) {
   spec.surface.rbf.kernel = parse_rbf_kernel(options.rbf_kernel);
   spec.surface.rbf.polynomial_degree = options.rbf_degree;
   spec.surface.rbf.smoothing = options.rbf_smoothing;
+  if (options.method == "gp") {
+    spec.surface.gp.kernel = parse_gp_kernel(options.gp_kernel);
+    if (options.gp_degree < 0 || options.gp_degree > 2)
+      throw InputError("gp_degree " + std::to_string(options.gp_degree) + ": expected 0, 1 or 2");
+    if (options.gp_starts < 1 || options.gp_starts > 100)
+      throw InputError("gp_starts " + std::to_string(options.gp_starts) + ": expected 1 to 100");
+    spec.surface.gp.mean_degree = options.gp_degree;
+    spec.surface.gp.starts = options.gp_starts;
+  }
   if (!options.resample.empty()) spec.surface.resample = options.resample;
   spec.surface.resample_method = options.resample_method;
   spec.surface.far_threshold = options.far_threshold;

@@ -43,9 +43,18 @@ Surface::ValueAndGradient Surface::evaluate_with_gradient(const std::vector<doub
   return result;
 }
 
+bool Surface::has_standard_deviation() const { return impl_->surface.has_standard_deviation(); }
+
+Surface::ValueAndDeviation Surface::evaluate_with_standard_deviation(const std::vector<double>& point) const {
+  const CoefficientSurface& s = impl_->surface;
+  ValueAndDeviation result{std::vector<double>(s.output_count()), std::vector<double>(s.output_count())};
+  s.evaluate_with_standard_deviation(point, result.values, result.standard_deviation);
+  return result;
+}
+
 void Surface::evaluate_batch(std::size_t count, const std::vector<ConstColumn>& inputs,
                              const std::vector<Column>& outputs, const std::vector<Column>& gradients,
-                             unsigned threads) const {
+                             unsigned threads, const std::vector<Column>& standard_deviations) const {
   // The public columns and the engine's have the same layout; copied (a few
   // per batch) rather than cast, so that neither depends on the other.
   std::vector<StridedInput> in(inputs.size());
@@ -53,7 +62,10 @@ void Surface::evaluate_batch(std::size_t count, const std::vector<ConstColumn>& 
   std::vector<StridedOutput> out(outputs.size()), grad(gradients.size());
   for (std::size_t i = 0; i < outputs.size(); ++i) out[i] = {outputs[i].data, outputs[i].stride};
   for (std::size_t i = 0; i < gradients.size(); ++i) grad[i] = {gradients[i].data, gradients[i].stride};
-  hydrocoef::evaluate_batch(impl_->surface, count, in, out, grad, threads);
+  std::vector<StridedOutput> sd(standard_deviations.size());
+  for (std::size_t i = 0; i < standard_deviations.size(); ++i)
+    sd[i] = {standard_deviations[i].data, standard_deviations[i].stride};
+  hydrocoef::evaluate_batch(impl_->surface, count, in, out, grad, threads, sd);
 }
 
 }  // namespace hydrocoef::api

@@ -217,7 +217,7 @@ std::string format_loss(const FitOptions& options) {
 double DampingLawFit::evaluate(double x) const { return damping_law_value(spec.terms, coefficients, x); }
 
 DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                              const FitOptions& options) {
+                              const FitOptions& options, std::span<const double> sigma) {
   check_damping_law_spec(spec);
   if (options.loss != LossKind::Squared && !(std::isfinite(options.loss_scale) && options.loss_scale > 0.0))
     throw InputError("loss scale " + shortest_number(options.loss_scale) +
@@ -231,6 +231,13 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
   if (n < k)
     throw InputError("damping law '" + format_damping_terms(spec) + "' has " + std::to_string(k) +
                      " terms and needs at least " + std::to_string(k) + " runs, found " + std::to_string(n));
+  if (!sigma.empty() && sigma.size() != n)
+    throw InputError("damping law fit got " + std::to_string(sigma.size()) + " uncertainties for " +
+                     std::to_string(n) + " runs; expected one per run or none");
+  for (std::size_t i = 0; i < sigma.size(); ++i)
+    if (!std::isfinite(sigma[i]) || !(sigma[i] > 0.0))
+      throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has uncertainty " +
+                       shortest_number(sigma[i]) + "; a weighted fit needs each run's uncertainty finite and > 0");
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
       throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has " + spec.variable + " = " +
@@ -247,15 +254,22 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
   }
   if (x_scale == 0.0) x_scale = 1.0;
   if (y_scale == 0.0) y_scale = 1.0;
+  // A weighted fit is the unweighted one of the rows divided by sigma_i
+  // (in units of y_scale): residuals r_i / sigma_i.
+  const bool weighted = !sigma.empty();
+  std::vector<double> row_weight(n, 1.0);
+  if (weighted)
+    for (std::size_t i = 0; i < n; ++i) row_weight[i] = y_scale / sigma[i];
   std::vector<double> y_scaled(n);
-  for (std::size_t i = 0; i < n; ++i) y_scaled[i] = y[i] / y_scale;
+  for (std::size_t i = 0; i < n; ++i) y_scaled[i] = y[i] / y_scale * row_weight[i];
 
   const auto rows = static_cast<Eigen::Index>(n);
   const auto cols = static_cast<Eigen::Index>(k);
   Eigen::MatrixXd design(rows, cols);
   for (Eigen::Index i = 0; i < rows; ++i)
     for (Eigen::Index j = 0; j < cols; ++j)
-      design(i, j) = basis_value(spec.terms[static_cast<std::size_t>(j)], x[static_cast<std::size_t>(i)] / x_scale);
+      design(i, j) = basis_value(spec.terms[static_cast<std::size_t>(j)], x[static_cast<std::size_t>(i)] / x_scale) *
+                     row_weight[static_cast<std::size_t>(i)];
   // An all-zero column keeps scale 1; the rank check below reports it.
   const Eigen::VectorXd column_norm = design.colwise().norm().transpose();
   const Eigen::VectorXd column_scale = (column_norm.array() > 0.0).select(column_norm, 1.0);
@@ -271,13 +285,17 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
   if (!solution.covariance_ok) throw_dependent_terms(spec, all_indices(k), x);
 
   const Eigen::Map<const Eigen::VectorXd> observed(y_scaled.data(), rows);
-  const Eigen::VectorXd residuals = scaled_design * solution.coefficients - observed;
-  const double ssr = residuals.squaredNorm();
-  const double sst = (observed.array() - observed.mean()).matrix().squaredNorm();
+  const Eigen::VectorXd residuals = scaled_design * solution.coefficients - observed;  // weighted: r_i / sigma_i
+  // R^2 and RMSE of the unweighted residuals (in units of y_scale).
+  const Eigen::Map<const Eigen::VectorXd> weights(row_weight.data(), rows);
+  const Eigen::VectorXd plain_residuals = residuals.cwiseQuotient(weights);
+  const Eigen::VectorXd plain_observed = observed.cwiseQuotient(weights);
+  const double ssr = plain_residuals.squaredNorm();
+  const double sst = (plain_observed.array() - plain_observed.mean()).matrix().squaredNorm();
 
   // The covariance Ceres reports already carries the robust weights W, so the
   // residual variance is the weighted one that goes with it.
-  double weighted_ssr = ssr;
+  double weighted_ssr = residuals.squaredNorm();
   if (loss != nullptr) {
     weighted_ssr = 0.0;
     for (Eigen::Index i = 0; i < rows; ++i) {
@@ -289,11 +307,16 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
   }
   const double residual_variance =
       n > k ? weighted_ssr / static_cast<double>(n - k) : std::numeric_limits<double>::quiet_NaN();
+  // Stated uncertainties are taken as they are: the covariance is not
+  // rescaled by the scatter (chi2_reduced says how far the scatter agrees).
+  const double covariance_factor = weighted ? 1.0 : residual_variance;
 
   DampingLawFit fit;
   fit.spec = spec;
   fit.n = n;
   fit.loss = format_loss(options);
+  fit.weighted = weighted;
+  if (weighted && n > k) fit.chi2_reduced = residuals.squaredNorm() / static_cast<double>(n - k);
   fit.rmse = std::sqrt(ssr / static_cast<double>(n)) * y_scale;
   fit.r2 = sst > 0.0 ? 1.0 - ssr / sst : std::numeric_limits<double>::quiet_NaN();
   for (Eigen::Index j = 0; j < cols; ++j) {
@@ -316,8 +339,21 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
                        "| = " + shortest_number(x_scale) + ") and forces (largest " + shortest_number(y_scale) +
                        ") whose powers in this law stay within double precision");
     fit.coefficients.push_back(coefficient);
-    fit.std_errors.push_back(to_law_units(std::sqrt(residual_variance * solution.covariance(j, j))));
+    fit.std_errors.push_back(to_law_units(std::sqrt(covariance_factor * solution.covariance(j, j))));
   }
+  // Cov(c_i, c_j) in law units: each index carries its own conversion.
+  std::vector<double> to_law(k);
+  for (std::size_t j = 0; j < k; ++j) {
+    double factor = y_scale / column_scale(static_cast<Eigen::Index>(j));
+    for (int p = 0; p < term_power(spec.terms[j]); ++p) factor /= x_scale;
+    to_law[j] = factor;
+  }
+  fit.covariance.resize(k * k);
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < k; ++j)
+      fit.covariance[i * k + j] = covariance_factor *
+                                  solution.covariance(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) *
+                                  to_law[i] * to_law[j];
   if (!std::isfinite(fit.rmse))
     throw InputError("the residuals of the fit overflow (largest force " + shortest_number(y_scale) +
                      "); expected forces whose squares stay within double precision");

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -58,7 +59,21 @@ struct DampingLawFit {
   /// sqrt(diag(s^2 (J^T W J)^-1)) with J the design matrix, W the robust
   /// loss's weights at the solution (all 1 for Squared) and
   /// s^2 = sum(w_i r_i^2)/(n-k). NaN when n <= k, where s^2 is undefined.
+  ///
+  /// Weighted fits (each run's standard uncertainty sigma_i given): the
+  /// residuals are r_i / sigma_i, the covariance is (J^T W J)^-1 itself
+  /// (the uncertainties are taken as stated, not rescaled by the scatter),
+  /// and the standard errors are the square roots of its diagonal.
   std::vector<double> std_errors;
+  /// The coefficients' covariance, k x k row by row [unit_i x unit_j], as the
+  /// standard errors above (their squares on the diagonal).
+  std::vector<double> covariance;
+  bool weighted = false;  ///< fitted with the runs' uncertainties
+  /// Weighted fits: chi^2 / (n - k), chi^2 = sum (r_i / sigma_i)^2. About 1
+  /// when the runs scatter about the law as their uncertainties say; well
+  /// above 1: the law misses something or the uncertainties are understated;
+  /// well below: overstated. NaN for unweighted fits or n <= k.
+  double chi2_reduced = std::numeric_limits<double>::quiet_NaN();
   double rmse = 0.0;  ///< sqrt(SSR/n) of the unweighted residuals [force unit]
   double r2 = 0.0;    ///< 1 - SSR/SST, SST about the mean of y; NaN when all y are equal
   std::size_t n = 0;  ///< number of observations fitted
@@ -73,11 +88,13 @@ struct DampingLawFit {
 ///   x:       velocity component of each run [m/s or rad/s].
 ///   y:       force component of each run [N or N m], same length as x.
 ///   options: loss; robust losses start from the least-squares solution.
+///   sigma:   each run's standard uncertainty [N or N m], all finite and > 0
+///            (a weighted fit), or empty (an unweighted one).
 /// Throws InputError when x and y differ in length, there are fewer runs than
 /// terms, a value is not finite, the spec is invalid, or the terms are
 /// linearly dependent on this data (e.g. all x equal with terms 1,u; or
 /// u,|u| with no negative u), naming the terms concerned.
 DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                              const FitOptions& options = {});
+                              const FitOptions& options = {}, std::span<const double> sigma = {});
 
 }  // namespace hydrocoef

@@ -143,10 +143,23 @@ FitSamples gather_fit_samples(Database& database, const std::string& body, std::
     out.keys.push_back(all[i].key);
     out.x.push_back(all[i].key.nu_b[variable]);
     out.y.push_back(to_convention(force.value.total, force.sign, out.sign));
+    out.sigma.push_back(force.statistics ? force.statistics->values.standard_error : 0.0);
     out.run_ids.push_back(all[i].id);
     out.mirrored.push_back(i >= out.runs.size());
   }
   return out;
+}
+
+std::vector<double> fit_weights(const FitSamples& samples, bool wanted, std::string* note) {
+  if (!wanted) return {};
+  const auto stated = static_cast<std::size_t>(
+      std::count_if(samples.sigma.begin(), samples.sigma.end(), [](double s) { return s > 0.0 && std::isfinite(s); }));
+  if (stated == samples.sigma.size() && stated > 0) return samples.sigma;
+  if (stated > 0 && note)
+    *note = std::to_string(samples.sigma.size() - stated) + " of the " + std::to_string(samples.sigma.size()) +
+            " runs state no standard error (values from a table or a surface, not a force history): fitted "
+            "unweighted";
+  return {};
 }
 
 std::string unconverged_runs_warning(const std::vector<StoredRun>& runs, std::size_t dof) {
@@ -182,6 +195,10 @@ FitRecord make_fit_record(const std::string& name, const std::string& body, std:
   record.n = fit.n;
   record.rmse = fit.rmse;
   record.r2 = fit.r2;
+  record.weighting = fit.weighted ? "standard-error" : "none";
+  if (std::isfinite(fit.chi2_reduced)) record.chi2_reduced = fit.chi2_reduced;
+  if (std::all_of(fit.covariance.begin(), fit.covariance.end(), [](double c) { return std::isfinite(c); }))
+    record.covariance = fit.covariance;
   for (std::size_t k = 0; k < spec.terms.size(); ++k) {
     FitRecord::Coefficient c{term_name(spec.terms[k], spec.variable), fit.coefficients[k], std::nullopt};
     if (std::isfinite(fit.std_errors[k])) c.std_error = fit.std_errors[k];
@@ -207,7 +224,8 @@ FitRecord refit(Database& database, const FitRecord& record) {
     throw InputError("fit '" + record.name + "' cannot be made again: " + error.what() +
                      "; delete it or import runs that its selection picks");
   }
-  const DampingLawFit fit = fit_damping_law(spec, samples.x, samples.y, options);
+  const DampingLawFit fit =
+      fit_damping_law(spec, samples.x, samples.y, options, fit_weights(samples, record.weighting != "none"));
   return make_fit_record(record.name, record.body, *dof, spec, fit, record.run_filter, mirror, samples,
                          samples.run_ids);
 }

@@ -1,6 +1,7 @@
 #include "src/pipeline/fit_stored_runs.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -87,7 +88,26 @@ FitResult fit_stored_runs(Database& database, const FitRequest& request) {
   result.setup = prepare(database, request, options);
   const FitSamples& samples = result.setup.samples;
   const DampingLawSpec& spec = result.setup.spec;
-  result.fit = fit_damping_law(spec, samples.x, samples.y, options);
+  std::string weight_note;
+  result.fit = fit_damping_law(spec, samples.x, samples.y, options, fit_weights(samples, request.weighted, &weight_note));
+  if (!weight_note.empty()) result.setup.warnings.push_back({"unweighted", weight_note});
+  if (result.fit.weighted && std::isfinite(result.fit.chi2_reduced)) {
+    // How far the scatter agrees with the stated uncertainties: chi^2/(n-k)
+    // has a standard deviation of about sqrt(2/(n-k)); beyond three of them
+    // the disagreement is worth a warning.
+    const double spread = 3.0 * std::sqrt(2.0 / static_cast<double>(result.fit.n - spec.terms.size()));
+    if (result.fit.chi2_reduced > 1.0 + spread)
+      result.setup.warnings.push_back(
+          {"scatter-exceeds-uncertainty",
+           "reduced chi^2 = " + shortest_number(result.fit.chi2_reduced) +
+               ": the runs scatter about the law more than their standard errors say (the law misses something, "
+               "or the standard errors are understated); the coefficients' standard errors may be too small"});
+    else if (result.fit.chi2_reduced < 1.0 - spread)
+      result.setup.warnings.push_back(
+          {"scatter-below-uncertainty", "reduced chi^2 = " + shortest_number(result.fit.chi2_reduced) +
+                                            ": the runs scatter about the law less than their standard errors say "
+                                            "(the standard errors are overstated)"});
+  }
   result.name = request.name.value_or(
       default_fit_name(request.body, request.dof, format_damping_terms(spec), result.setup.selection));
   result.varying_conditions = varying_conditions(samples.runs, result.setup.variable);

@@ -39,6 +39,9 @@ struct FitRequest {
   std::optional<std::string> name;  ///< default: default_fit_name (src/fit/fit_names.hpp)
   bool store = true;
   Database::NameTaken taken = Database::NameTaken::Refuse;
+  /// Weight each run by its standard error when every selected run has one
+  /// (forces averaged over histories); false: ordinary least squares.
+  bool weighted = true;
 };
 
 /// A warning about a fit: kind ("unconverged-runs" or a law_problem_name)

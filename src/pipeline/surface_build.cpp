@@ -22,7 +22,8 @@ SurfaceBuildResult build_and_store_surface(Database& database, const std::string
                                            const SurfaceBuildSpec& spec, Database::NameTaken taken) {
   check_name(NameKind::Surface, name, {}, "the surface name");
   check_name(NameKind::Body, body, {}, "the body");
-  if (spec.surface.method != "rbf") (void)parse_interpolation(spec.surface.method);  // before reading runs
+  if (spec.surface.method != "rbf" && spec.surface.method != "gp")
+    (void)parse_interpolation(spec.surface.method);  // before reading runs
   const RunSelection selection = parse_selection(spec.where, spec.exclude_runs);
   const MirrorSpec mirror = make_mirror_spec(spec.mirror_planes, spec.mirror_odd);
   // Reusing a name replaces what another build made: only when asked.

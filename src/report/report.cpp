@@ -14,6 +14,7 @@
 #include "src/fit/fit_names.hpp"
 #include "src/plot/plots.hpp"
 #include "src/surface/stored_surface.hpp"
+#include "src/surface/surface_builder.hpp"
 
 namespace hydrocoef::report {
 namespace {
@@ -97,7 +98,7 @@ std::string quality_html(const SurfaceRecord& surface) {
   } catch (const InputError&) {}
   std::ostringstream out;
   const std::string method = q.value("loo_method", "");
-  out << "leave-one-out (" << (method == "rbf-exact" ? "exact, RBF" : "along grid lines") << ", "
+  out << "leave-one-out (" << loo_method_description(method) << ", "
       << q.value("loo_defined", 0) << " of " << q.value("runs", 0) << " runs):<br>";
   if (q.contains("outputs") && q["outputs"].is_object())
     for (const auto& item : q["outputs"].items()) {

@@ -3,6 +3,7 @@
 #include <sqlite3.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
 
@@ -114,6 +115,20 @@ std::vector<double> CheckedRow::doubles(int column, std::size_t max_count) const
     fail(column, "a blob of at most " + std::to_string(max_count) + " float64 values (a multiple of 8 bytes)");
   std::vector<double> out = statement_.get_doubles(column);
   if (out.size() != bytes / sizeof(double)) fail(column, "a blob of float64 values");
+  return out;
+}
+
+std::vector<double> CheckedRow::real_list(int column, std::size_t max_count) const {
+  const std::string expected = "'' or a JSON list of at most " + std::to_string(max_count) + " finite numbers";
+  const std::string content = text(column, 32 * max_count + 64);
+  if (content.empty()) return {};
+  const nlohmann::json list = nlohmann::json::parse(content, nullptr, false);
+  if (list.is_discarded() || !list.is_array() || list.size() > max_count) fail(column, expected);
+  std::vector<double> out;
+  for (const auto& value : list) {
+    if (!value.is_number() || !std::isfinite(value.get<double>())) fail(column, expected);
+    out.push_back(value.get<double>());
+  }
   return out;
 }
 

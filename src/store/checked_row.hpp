@@ -47,6 +47,9 @@ class CheckedRow {
   std::string name(int column, NameKind kind) const;
   /// A blob of float64 values (a whole number of them, at most max_count).
   std::vector<double> doubles(int column, std::size_t max_count) const;
+  /// Text holding a JSON list of at most max_count finite numbers; '' is
+  /// the empty list.
+  std::vector<double> real_list(int column, std::size_t max_count) const;
 
   /// Throws InputError: "<db>: table 't', row N, column 'c': found ...; expected ...".
   [[noreturn]] void fail(int column, std::string_view expected) const;

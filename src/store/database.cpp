@@ -745,7 +745,8 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
   connection_.prepare("DELETE FROM fit WHERE name = ?").bind(1, fit.name).run();
   auto insert = connection_.prepare(
       "INSERT INTO fit(name, body_id, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
-      "created_at, mirror) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "created_at, mirror, weighting, chi2_reduced, covariance) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+      "?)");
   insert.bind(1, fit.name)
       .bind(2, body)
       .bind(3, fit.dof)
@@ -759,6 +760,9 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
       .bind(11, fit.r2)
       .bind(12, utc_timestamp_now())
       .bind(13, fit.mirror)
+      .bind(14, fit.weighting)
+      .bind(15, fit.chi2_reduced)
+      .bind(16, fit.covariance.empty() ? std::string() : escape::json_text(nlohmann::json(fit.covariance)))
       .run();
   const std::int64_t id = connection_.last_insert_id();
   auto coefficient = connection_.prepare(
@@ -775,7 +779,7 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
 std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
   std::string sql =
       "SELECT fit.id, fit.name, body.name, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
-      "created_at, stale, mirror FROM fit JOIN body ON body.id = fit.body_id";
+      "created_at, stale, mirror, weighting, chi2_reduced, covariance FROM fit JOIN body ON body.id = fit.body_id";
   if (body) sql += " WHERE body.name = ?1";
   sql += " ORDER BY fit.name";
   auto select = connection_.prepare(sql);
@@ -800,6 +804,9 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
     fit.created_at = row.text(12, 64);
     fit.stale = row.integer(13, 0, 1) != 0;
     fit.mirror = row.text(14, 256);
+    fit.weighting = row.one_of(15, {"none", "standard-error"});
+    fit.chi2_reduced = row.optional_non_negative(16);
+    fit.covariance = row.real_list(17, 36 * 36);
     out.push_back(std::move(fit));
   }
   auto coefficients =
@@ -811,6 +818,12 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
       fit.coefficients.push_back({row.text(0, 256), row.real(1), row.optional_non_negative(2)});
     }
     coefficients.reset();
+    if (!fit.covariance.empty() && fit.covariance.size() != fit.coefficients.size() * fit.coefficients.size())
+      throw InputError(SourceLocation{path_.string()},
+                       "table 'fit', row " + std::to_string(fit.id) + ": column 'covariance' holds " +
+                           std::to_string(fit.covariance.size()) + " numbers; expected " +
+                           std::to_string(fit.coefficients.size() * fit.coefficients.size()) +
+                           " (one per pair of its coefficients) or none");
     fit.run_ids = linked_runs("fit_run", "fit_id", fit.id);
   }
   return out;
@@ -881,7 +894,7 @@ std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::stri
     record.id = select.get_int(0);
     record.name = row.name(1, NameKind::Surface);
     record.body = row.name(2, NameKind::Body);
-    record.kind = row.one_of(3, {"grid", "rbf"});
+    record.kind = row.one_of(3, {"grid", "rbf", "gp"});
     record.method = row.text(4, 64);
     record.definition = row.text(5, kMaxSurfaceDefinitionBytes);
     record.data = row.doubles(6, kMaxSurfaceValues);

@@ -143,6 +143,12 @@ struct FitRecord {
   std::size_t n = 0;
   double rmse = 0.0;
   double r2 = 0.0;
+  /// "none", or "standard-error": each run weighted by its standard error
+  /// (src/fit/damping_law.hpp).
+  std::string weighting = "none";
+  std::optional<double> chi2_reduced;  ///< weighted fits with n > k
+  /// The coefficients' covariance, k x k row by row; empty when not recorded.
+  std::vector<double> covariance;
   std::string created_at;
   bool stale = false;  ///< a force of a run it was built from changed or was deleted since
   std::vector<Coefficient> coefficients;
@@ -161,7 +167,7 @@ struct SurfaceRecord {
   std::int64_t id = 0;
   std::string name;
   std::string body;
-  std::string kind;          ///< "grid" or "rbf"
+  std::string kind;          ///< "grid", "rbf" or "gp"
   std::string method;        ///< e.g. "pchip", or the RBF kernel
   std::string definition;    ///< JSON: axes, breakpoints, outputs, units, options
   std::vector<double> data;  ///< values in the layout the definition states

@@ -213,8 +213,9 @@ struct Work {
   std::span<const StridedInput> inputs;
   std::span<const StridedOutput> outputs;
   std::span<const StridedOutput> gradients;
+  std::span<const StridedOutput> deviations;  ///< standard deviations (GP surfaces), or none
   const GridLayout* grid = nullptr;
-  std::vector<double> point, values, gradient;
+  std::vector<double> point, values, gradient, deviation;
 };
 
 /// Points [i, end) on the fast path; i is where an exception left it.
@@ -271,11 +272,15 @@ void any_points(Work& w, std::size_t& i, std::size_t end) {
   for (; i < end; ++i) {
     const auto at = static_cast<std::ptrdiff_t>(i);
     for (std::size_t a = 0; a < n_axes; ++a) w.point[a] = w.inputs[a].data[at * w.inputs[a].stride];
+    if (!w.deviations.empty()) {
+      w.surface.evaluate_with_standard_deviation(w.point, w.values, w.deviation);
+      for (std::size_t k = 0; k < n_out; ++k) w.deviations[k].data[at * w.deviations[k].stride] = w.deviation[k];
+    }
     if (with_gradient) {
       w.surface.evaluate_with_gradient(w.point, w.values, w.gradient);
       for (std::size_t g = 0; g < w.gradient.size(); ++g)
         w.gradients[g].data[at * w.gradients[g].stride] = w.gradient[g];
-    } else {
+    } else if (w.deviations.empty()) {
       w.surface.evaluate(w.point, w.values);
     }
     for (std::size_t k = 0; k < n_out; ++k) w.outputs[k].data[at * w.outputs[k].stride] = w.values[k];
@@ -321,11 +326,17 @@ void check_columns(const char* what, std::size_t expected, std::size_t given, st
 
 void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::span<const StridedInput> inputs,
                     std::span<const StridedOutput> outputs, std::span<const StridedOutput> gradients,
-                    unsigned threads) {
+                    unsigned threads, std::span<const StridedOutput> standard_deviations) {
   const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
   check_columns("input", n_axes, inputs.size(), count, inputs);
   check_columns("output", n_out, outputs.size(), count, outputs);
   if (!gradients.empty()) check_columns("gradient", n_out * n_axes, gradients.size(), count, gradients);
+  if (!standard_deviations.empty()) {
+    check_columns("standard deviation", n_out, standard_deviations.size(), count, standard_deviations);
+    if (!surface.has_standard_deviation())
+      throw InputError("the surface (method '" + surface.method_name() +
+                       "') states no standard deviation; expected a GP surface (surface build --method gp)");
+  }
   if (count == 0) return;
 
   // Chunks in index order on every core; a point that fails stops the batch
@@ -333,13 +344,15 @@ void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::s
   // chunk, so the error names the first failing point whatever the timing.
   const std::size_t chunks = (count + kChunkPoints - 1) / kChunkPoints;
   std::optional<GridLayout> grid;
-  const PointsFunction points = points_function(surface, !gradients.empty(), grid);
+  const PointsFunction points =
+      points_function(surface, !gradients.empty() || !standard_deviations.empty(), grid);
   std::vector<Work> scratch;
   const unsigned workers = parallel_threads(chunks, threads);
   scratch.reserve(workers);
   for (unsigned w = 0; w < workers; ++w)
-    scratch.push_back(Work{surface, inputs, outputs, gradients, grid ? &*grid : nullptr, std::vector<double>(n_axes),
-                           std::vector<double>(n_out), std::vector<double>(gradients.empty() ? 0 : n_out * n_axes)});
+    scratch.push_back(Work{surface, inputs, outputs, gradients, standard_deviations, grid ? &*grid : nullptr,
+                           std::vector<double>(n_axes), std::vector<double>(n_out),
+                           std::vector<double>(gradients.empty() ? 0 : n_out * n_axes), std::vector<double>(n_out)});
   parallel_for(chunks, workers, [&](std::size_t chunk, unsigned worker) {
     std::size_t i = chunk * kChunkPoints;
     try {

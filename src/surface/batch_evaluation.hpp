@@ -40,6 +40,9 @@ struct StridedOutput {
 ///   outputs:   surface.output_count() columns, in output order.
 ///   gradients: empty, or output_count() * axis_count() columns, column
 ///              k * axis_count() + a receiving d output_k / d axis_a.
+///   standard_deviations: empty, or output_count() columns receiving each
+///              output's standard deviation (GP surfaces only: InputError for
+///              a surface that states none).
 /// A point the surface refuses (a NaN or infinite coordinate, a coordinate
 /// outside an axis whose policy is "error") stops the batch: the first such
 /// point in index order is thrown as InputError "point I: MESSAGE" (I 0-based,
@@ -49,6 +52,6 @@ struct StridedOutput {
 /// data while count > 0.
 void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::span<const StridedInput> inputs,
                     std::span<const StridedOutput> outputs, std::span<const StridedOutput> gradients,
-                    unsigned threads = 0);
+                    unsigned threads = 0, std::span<const StridedOutput> standard_deviations = {});
 
 }  // namespace hydrocoef

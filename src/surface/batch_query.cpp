@@ -97,9 +97,9 @@ struct SliceResult {
 };
 
 void answer_slice(const CoefficientSurface& surface, const std::vector<std::size_t>& column_axis, bool with_gradient,
-                  std::string_view rows, SliceResult& result) {
+                  bool with_sd, std::string_view rows, SliceResult& result) {
   const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
-  std::vector<double> point(n_axes), values(n_out), gradient(n_out * n_axes);
+  std::vector<double> point(n_axes), values(n_out), gradient(n_out * n_axes), sd(n_out);
   result.text.reserve(rows.size() * (with_gradient ? 6 : 3) / 2 + 64);
   while (!rows.empty()) {
     const auto newline = rows.find('\n');
@@ -140,9 +140,10 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
       point[column_axis[c]] = value;
     }
     try {
+      if (with_sd) surface.evaluate_with_standard_deviation(point, values, sd);
       if (with_gradient)
         surface.evaluate_with_gradient(point, values, gradient);
-      else
+      else if (!with_sd)
         surface.evaluate(point, values);
     } catch (const InputError& error) {
       fail(nullptr, error.what());
@@ -156,6 +157,11 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
       result.text += ',';
       append_shortest_number(result.text, values[k]);
     }
+    if (with_sd)
+      for (double s : sd) {
+        result.text += ',';
+        append_shortest_number(result.text, s);
+      }
     if (with_gradient)
       for (double g : gradient) {
         result.text += ',';
@@ -175,6 +181,9 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
 std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchRequest& request) {
   const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
   const std::string source = request.input == "-" ? "<stdin>" : request.input;
+  if (request.standard_deviation && !surface.has_standard_deviation())
+    throw InputError("surface '" + request.surface_name + "' (method '" + surface.method_name() +
+                     "') states no standard deviation; expected a GP surface (surface build --method gp)");
   const std::string data = read_all(request.input);
   std::string_view rest = data;
   std::size_t line_number = 0;
@@ -221,6 +230,8 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
   Output out(request.output);
   for (std::size_t a = 0; a < n_axes; ++a) out.text((a ? "," : "") + surface.axis_names()[a]);
   for (std::size_t k = 0; k < n_out; ++k) out.text("," + surface.output_names()[k]);
+  if (request.standard_deviation)
+    for (std::size_t k = 0; k < n_out; ++k) out.text(",sigma_" + surface.output_names()[k]);
   if (request.gradient)
     for (std::size_t k = 0; k < n_out; ++k)
       for (std::size_t a = 0; a < n_axes; ++a)
@@ -245,7 +256,7 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
     }
     parallel_for(slices.size(), static_cast<unsigned>(threads), [&](std::size_t t) {
       results[t] = SliceResult{};
-      answer_slice(surface, column_axis, request.gradient, slices[t], results[t]);
+      answer_slice(surface, column_axis, request.gradient, request.standard_deviation, slices[t], results[t]);
     });
     for (std::size_t t = 0; t < slices.size(); ++t) {
       const SliceResult& result = results[t];

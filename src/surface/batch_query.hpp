@@ -3,7 +3,8 @@
 //
 // Input: a header naming the surface's axes (each once, any order), then one
 // row of finite numbers per point (blank lines skipped, CRLF accepted).
-// Output: the header "axes..., outputs..." (with --gradient also
+// Output: the header "axes..., outputs..." (with --uncertainty also
+// "sigma_OUT", the standard deviation of each output; with --gradient also
 // "dOUT/dAXIS" per output and axis, output-major), then one row per point in
 // input order, numbers in shortest round-trip form. Rows are answered on
 // every core in slices of about 4 MB; the output file is written through an
@@ -24,6 +25,7 @@ struct CsvBatchRequest {
   std::string input;         ///< a CSV file, or "-" for standard input
   std::string output = "-";  ///< a CSV file, or "-" for standard output
   bool gradient = false;     ///< also the derivatives
+  bool standard_deviation = false;  ///< also each output's standard deviation (GP surfaces)
 };
 
 /// Answers every row; returns the number of points. InputError naming the

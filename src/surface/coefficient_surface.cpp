@@ -59,6 +59,19 @@ CoefficientSurface::CoefficientSurface(RbfSurface rbf, std::vector<std::string> 
   rbf_ = std::make_shared<const RbfSurface>(std::move(rbf));
 }
 
+CoefficientSurface::CoefficientSurface(GpSurfaces gp, std::vector<std::string> axis_names,
+                                       std::vector<std::string> output_names, std::vector<std::string> axis_units,
+                                       std::vector<std::string> output_units)
+    : axis_names_(std::move(axis_names)), output_names_(std::move(output_names)) {
+  if (axis_names_.size() != gp.axis_count() || output_names_.size() != gp.output_count())
+    throw InputError("a GP surface of " + std::to_string(gp.axis_count()) + " axes and " +
+                     std::to_string(gp.output_count()) + " outputs was given " + std::to_string(axis_names_.size()) +
+                     " axis names and " + std::to_string(output_names_.size()) + " output names; expected as many");
+  axis_units_ = units_or_default(std::move(axis_units), axis_names_, "axis");
+  output_units_ = units_or_default(std::move(output_units), output_names_, "output");
+  gp_ = std::make_shared<const GpSurfaces>(std::move(gp));
+}
+
 std::size_t CoefficientSurface::axis_index(std::string_view name) const { return find_name(axis_names_, name, "axis"); }
 
 std::size_t CoefficientSurface::output_index(std::string_view name) const {
@@ -67,18 +80,18 @@ std::size_t CoefficientSurface::output_index(std::string_view name) const {
 
 double CoefficientSurface::lower(std::size_t axis) const {
   if (axis >= axis_count()) throw std::out_of_range("CoefficientSurface::lower: axis out of range");
-  return grid_ ? grid_->axes()[axis].breakpoints.front() : rbf_->lower(axis);
+  return grid_ ? grid_->axes()[axis].breakpoints.front() : rbf_ ? rbf_->lower(axis) : gp_->lower(axis);
 }
 
 double CoefficientSurface::upper(std::size_t axis) const {
   if (axis >= axis_count()) throw std::out_of_range("CoefficientSurface::upper: axis out of range");
-  return grid_ ? grid_->axes()[axis].breakpoints.back() : rbf_->upper(axis);
+  return grid_ ? grid_->axes()[axis].breakpoints.back() : rbf_ ? rbf_->upper(axis) : gp_->upper(axis);
 }
 
 std::string CoefficientSurface::out_of_range_name(std::size_t axis) const {
   if (axis >= axis_count()) throw std::out_of_range("CoefficientSurface::out_of_range_name: axis out of range");
   if (grid_) return std::string(extrapolation_name(grid_->axes()[axis].extrapolation));
-  switch (rbf_->out_of_range(axis)) {
+  switch (rbf_ ? rbf_->out_of_range(axis) : gp_->out_of_range(axis)) {
     case RbfOutOfRange::Error: return "error";
     case RbfOutOfRange::Clamp: return "clamp";
     case RbfOutOfRange::Extrapolate: return "extrapolate";
@@ -87,22 +100,34 @@ std::string CoefficientSurface::out_of_range_name(std::size_t axis) const {
 }
 
 std::string CoefficientSurface::method_name() const {
-  return grid_ ? std::string(interpolation_name(grid_->method())) : std::string("rbf");
+  return grid_ ? std::string(interpolation_name(grid_->method())) : std::string(rbf_ ? "rbf" : "gp");
 }
 
 void CoefficientSurface::evaluate(std::span<const double> point, std::span<double> out) const {
   if (grid_)
     grid_->evaluate(point, out);
-  else
+  else if (rbf_)
     rbf_->evaluate(point, out);
+  else
+    gp_->evaluate(point, out);
 }
 
 void CoefficientSurface::evaluate_with_gradient(std::span<const double> point, std::span<double> out,
                                                 std::span<double> gradient) const {
   if (grid_)
     grid_->evaluate_with_gradient(point, out, gradient);
-  else
+  else if (rbf_)
     rbf_->evaluate_with_gradient(point, out, gradient);
+  else
+    gp_->evaluate(point, out, {}, gradient);
+}
+
+void CoefficientSurface::evaluate_with_standard_deviation(std::span<const double> point, std::span<double> out,
+                                                          std::span<double> standard_deviation) const {
+  if (!gp_)
+    throw InputError("the surface (method '" + method_name() +
+                     "') states no standard deviation at a point; expected a GP surface (surface build --method gp)");
+  gp_->evaluate(point, out, standard_deviation);
 }
 
 }  // namespace hydrocoef

@@ -1,5 +1,6 @@
 #include "src/surface/gp_design.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "src/core/error.hpp"
@@ -20,8 +21,25 @@ std::vector<double> halton_point(std::size_t i, std::size_t dims) {
   return out;
 }
 
-std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
-                                       const std::vector<double>& upper, std::size_t count, std::size_t candidates) {
+namespace {
+
+/// Candidates: the corners of the box, then a Halton sequence through it
+/// (point-major, `count` points).
+std::vector<double> candidate_points(const std::vector<double>& lower, const std::vector<double>& upper,
+                                     std::size_t count) {
+  const std::size_t d = lower.size();
+  std::vector<double> points;
+  const std::size_t corners = std::size_t{1} << d;
+  for (std::size_t c = 0; c < corners && c < count; ++c)
+    for (std::size_t a = 0; a < d; ++a) points.push_back((c >> a) & 1 ? upper[a] : lower[a]);
+  for (std::size_t i = 0; points.size() < count * d; ++i) {
+    const auto h = halton_point(i, d);
+    for (std::size_t a = 0; a < d; ++a) points.push_back(lower[a] + h[a] * (upper[a] - lower[a]));
+  }
+  return points;
+}
+
+void check_box(const GpSurface& surface, const std::vector<double>& lower, const std::vector<double>& upper) {
   const std::size_t d = surface.dims();
   if (lower.size() != d || upper.size() != d)
     throw InputError("suggest: " + std::to_string(lower.size()) + " bounds for a surface of " + std::to_string(d) +
@@ -29,18 +47,42 @@ std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vect
   for (std::size_t a = 0; a < d; ++a)
     if (!std::isfinite(lower[a]) || !std::isfinite(upper[a]) || !(lower[a] < upper[a]))
       throw InputError("suggest: the bounds of axis " + std::to_string(a) + " must be finite with lower < upper");
+}
+
+}  // namespace
+
+std::vector<SuggestedRun> largest_standard_deviations(const GpSurface& surface, const std::vector<double>& lower,
+                                                      const std::vector<double>& upper, std::size_t count,
+                                                      std::size_t candidates) {
+  check_box(surface, lower, upper);
+  const std::size_t d = surface.dims();
+  candidates = std::max(candidates, count);
+  const std::vector<double> points = candidate_points(lower, upper, candidates);
+  GpSurface::Workspace workspace(surface);
+  std::vector<SuggestedRun> all;
+  for (std::size_t c = 0; c < candidates; ++c) {
+    double sd = 0.0;
+    surface.evaluate(&points[c * d], workspace, &sd);
+    all.push_back({std::vector<double>(points.begin() + static_cast<std::ptrdiff_t>(c * d),
+                                       points.begin() + static_cast<std::ptrdiff_t>((c + 1) * d)),
+                   sd});
+  }
+  const std::size_t keep = std::min(count, all.size());
+  std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(keep), all.end(),
+                    [](const SuggestedRun& a, const SuggestedRun& b) { return a.standard_deviation > b.standard_deviation; });
+  all.resize(keep);
+  return all;
+}
+
+std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
+                                       const std::vector<double>& upper, std::size_t count, std::size_t candidates,
+                                       double* largest_sd_after) {
+  check_box(surface, lower, upper);
+  const std::size_t d = surface.dims();
   if (count == 0 || count > 1000) throw InputError("suggest: count must be 1 to 1000");
   if (candidates < count) throw InputError("suggest: fewer candidate points than runs asked for");
 
-  // Candidates: the corners, then a Halton sequence through the box.
-  std::vector<double> points;
-  const std::size_t corners = d <= 10 ? (std::size_t{1} << d) : 0;
-  for (std::size_t c = 0; c < corners && c < candidates; ++c)
-    for (std::size_t a = 0; a < d; ++a) points.push_back((c >> a) & 1 ? upper[a] : lower[a]);
-  for (std::size_t i = 0; points.size() < candidates * d; ++i) {
-    const auto h = halton_point(i, d);
-    for (std::size_t a = 0; a < d; ++a) points.push_back(lower[a] + h[a] * (upper[a] - lower[a]));
-  }
+  const std::vector<double> points = candidate_points(lower, upper, candidates);
   std::vector<bool> taken(candidates, false);
   GpSurface design = surface;
   std::vector<SuggestedRun> out;
@@ -58,6 +100,15 @@ std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vect
     const double* x = &points[best_index * d];
     out.push_back({std::vector<double>(x, x + d), best});
     design.add_pseudo_run(x);
+  }
+  if (largest_sd_after) {
+    GpSurface::Workspace workspace(design);
+    *largest_sd_after = 0.0;
+    for (std::size_t c = 0; c < candidates; ++c) {
+      double sd = 0.0;
+      design.evaluate(&points[c * d], workspace, &sd);
+      *largest_sd_after = std::max(*largest_sd_after, sd);
+    }
   }
   return out;
 }

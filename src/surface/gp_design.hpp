@@ -27,10 +27,19 @@ struct SuggestedRun {
 
 /// `count` run keys inside [lower, upper] (one bound per axis, lower < upper),
 /// chosen from `candidates` points. InputError for bounds of the wrong size
-/// or order, count 0 or above 1000, or candidates below count.
+/// or order, count 0 or above 1000, or candidates below count. When
+/// largest_sd_after is given, it receives the largest standard deviation
+/// over the candidates once every suggested run is added.
 std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
                                        const std::vector<double>& upper, std::size_t count,
-                                       std::size_t candidates = 4096);
+                                       std::size_t candidates = 4096, double* largest_sd_after = nullptr);
+
+/// The `count` points of the box [lower, upper] (its corners and a Halton
+/// sequence, `candidates` points in all) where the surface's standard
+/// deviation is largest, largest first: where a surface is least sure.
+std::vector<SuggestedRun> largest_standard_deviations(const GpSurface& surface, const std::vector<double>& lower,
+                                                      const std::vector<double>& upper, std::size_t count,
+                                                      std::size_t candidates = 1024);
 
 /// Point i of the Halton sequence in `dims` dimensions (bases 2, 3, 5, 7, 11,
 /// 13), each coordinate in [0, 1).

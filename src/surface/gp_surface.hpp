@@ -104,6 +104,8 @@ class GpSurface {
   class Workspace {
    public:
     explicit Workspace(const GpSurface& surface);
+    /// The largest sample count this workspace serves.
+    std::size_t capacity() const noexcept { return k_.size(); }
 
    private:
     friend class GpSurface;

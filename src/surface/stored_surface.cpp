@@ -6,6 +6,7 @@
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
 #include "src/core/source_file.hpp"
+#include "src/surface/stored_gp_surface.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -145,6 +146,16 @@ RbfKernel parse_rbf_kernel(std::string_view text) {
 }
 
 SurfaceRecord record_from_surface(const CoefficientSurface& surface) {
+  if (const GpSurfaces* gp = surface.gp()) {
+    SurfaceRecord record;
+    record.kind = "gp";
+    record.method = std::string(gp_kernel_name(gp->kernel()));
+    json definition = common_definition(surface);
+    definition["gp"] = gp_definition(*gp);
+    record.definition = escape::json_text(definition);
+    record.data = gp_data(*gp);
+    return record;
+  }
   const GridTable* grid = surface.grid();
   if (!grid)
     throw std::invalid_argument("record_from_surface: an RBF surface needs its samples (use the overload with them)");
@@ -292,12 +303,23 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
                    : RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options);
       return CoefficientSurface(std::move(rbf), axis_names, output_names, axis_units, output_units);
     }
+    if (record.kind == "gp") {
+      std::vector<RbfOutOfRange> policies;
+      for (const auto& axis : axes_json)
+        policies.push_back(parse_rbf_policy(member<std::string>(axis, "extrapolation", where), where));
+      GpSurfaces gp = gp_from_stored(member<json>(definition, "gp", where), record.data, axis_names,
+                                     std::move(policies), output_names.size(), where);
+      if (std::string(gp_kernel_name(gp.kernel())) != record.method)
+        throw InputError(where + ": its method '" + printable_text(record.method, 40) + "' is not its GP kernel '" +
+                         std::string(gp_kernel_name(gp.kernel())) + "'");
+      return CoefficientSurface(std::move(gp), axis_names, output_names, axis_units, output_units);
+    }
   } catch (const InputError& error) {
     const std::string message = error.what();
     if (message.rfind(where, 0) == 0) throw;
     throw InputError(where + ": " + message);
   }
-  throw InputError(where + ": kind '" + record.kind + "'; expected grid or rbf");
+  throw InputError(where + ": kind '" + printable_text(record.kind, 20) + "'; expected grid, rbf or gp");
 }
 
 StoredSurface load_surface(Database& database, const std::string& name) {

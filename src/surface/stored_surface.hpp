@@ -1,7 +1,8 @@
 // Coefficient surfaces to and from the run database: the store keeps a
 // surface as plain data (SurfaceRecord: a JSON definition and a blob of
 // doubles); this file is the only place that knows how a GridTable or an
-// RbfSurface is written into one and read back.
+// RbfSurface is written into one and read back (a GP surface's part:
+// src/surface/stored_gp_surface.hpp).
 //
 // Definition JSON (SurfaceRecord::definition):
 //   {"axes": [{"name": "u", "unit": "m/s", "breakpoints": [...],     (grid only)

@@ -127,6 +127,11 @@ json build_spec_json(const SurfaceBuildSpec& spec) {
               {"resample", s.resample ? json(*s.resample) : json()},
               {"resample_method", s.resample_method},
               {"far_threshold", s.far_threshold}};
+  if (s.method == "gp")
+    out["gp"] = {{"kernel", std::string(gp_kernel_name(s.gp.kernel))},
+                 {"degree", s.gp.mean_degree},
+                 {"starts", s.gp.starts},
+                 {"seed", s.gp.seed}};
   return out;
 }
 
@@ -193,6 +198,20 @@ SurfaceBuildSpec parse_build_spec(const json& stored, const std::string& context
   s.far_threshold = member(stored, "far_threshold", &json::is_number, "number", context).get<double>();
   if (!(s.far_threshold > 0.0) || !std::isfinite(s.far_threshold))
     throw InputError(context + ": stored far-from-data threshold is not a finite number > 0");
+  if (s.method == "gp") {
+    const auto& gp = member(stored, "gp", &json::is_object, "object", context);
+    s.gp.kernel = parse_gp_kernel(member(gp, "kernel", &json::is_string, "text", context).get<std::string>());
+    const auto whole = [&](const char* key, std::int64_t lowest, std::int64_t highest) {
+      const auto& value = member(gp, key, &json::is_number_integer, "whole number", context);
+      if (value.get<std::int64_t>() < lowest || value.get<std::int64_t>() > highest)
+        throw InputError(context + ": stored GP " + key + " " + value.dump() + "; expected " +
+                         std::to_string(lowest) + " to " + std::to_string(highest));
+      return value.get<std::int64_t>();
+    };
+    s.gp.mean_degree = static_cast<int>(whole("degree", 0, 2));
+    s.gp.starts = static_cast<int>(whole("starts", 1, 100));
+    s.gp.seed = static_cast<unsigned>(whole("seed", 0, 4294967295));
+  }
   return spec;
 }
 

@@ -6,7 +6,7 @@
 // Stored form (JSON, version 1):
 //   {"version": 1,
 //    "axes": ["u", "current_v"], "outputs": ["X", "N"],
-//    "method": "linear",                       (interpolation_name, or "rbf")
+//    "method": "linear",                       (interpolation_name, "rbf" or "gp")
 //    "out_of_range": ["error", "clamp"],       (one policy per axis)
 //    "where": ["u>=0.1"],                      (clauses of src/core/run_selection.hpp, all must hold)
 //    "exclude_runs": [6],
@@ -14,7 +14,8 @@
 //    "rbf": {"kernel": "cubic", "degree": 1, "smoothing": 0},
 //    "resample": null | [[u breakpoints], [current_v breakpoints]],
 //    "resample_method": "linear",
-//    "far_threshold": 0.25}
+//    "far_threshold": 0.25,
+//    "gp": {"kernel": "matern52", "degree": 1, "starts": 5, "seed": 1}}   (method "gp" only)
 // A stored specification is untrusted input (a database someone else made):
 // parse_build_spec checks every member's type, count and value.
 #pragma once

@@ -9,6 +9,7 @@
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
+#include "src/core/parallel.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/surface/stored_surface.hpp"
 
@@ -72,6 +73,7 @@ struct Samples {
   std::vector<const StoredRun*> runs;
   std::vector<double> points;  // run-major, axes
   std::vector<double> values;  // run-major, outputs
+  std::vector<double> noise;   // as values: the standard error of each (0: none stated)
   std::size_t skipped = 0;
 };
 
@@ -90,6 +92,7 @@ Samples collect(const std::vector<StoredRun>& runs, const SurfaceSpec& spec) {
     for (const auto& output : spec.outputs) {
       const StoredForce& force = *run.tau_b[*force_index(output)];
       samples.values.push_back(to_on_body(force.value.total, force.sign));
+      samples.noise.push_back(force.statistics ? force.statistics->values.standard_error : 0.0);
     }
   }
   if (samples.runs.empty())
@@ -244,23 +247,78 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
   return built;
 }
 
+/// The out-of-range policies of a scattered-run surface (RBF or GP).
+std::vector<RbfOutOfRange> scattered_policies(const SurfaceSpec& spec, const char* what) {
+  std::vector<RbfOutOfRange> out;
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    const std::string policy = policy_of(spec, a);
+    if (policy == "error")
+      out.push_back(RbfOutOfRange::Error);
+    else if (policy == "clamp")
+      out.push_back(RbfOutOfRange::Clamp);
+    else if (policy == "extrapolate")
+      out.push_back(RbfOutOfRange::Extrapolate);
+    else
+      throw InputError("out-of-range policy '" + policy + "' for axis '" + spec.axes[a] + "' of " + what +
+                       " surface; expected error, clamp or extrapolate");
+  }
+  return out;
+}
+
+constexpr std::size_t kMaxGpLooRuns = 400;
+
+/// GP leave-one-out errors, run-major (see the header): each run left out in
+/// turn, the rest fitted with the hyperparameters of the whole surface.
+std::vector<double> gp_loo(const GpSurfaces& gp, const Samples& samples) {
+  const std::size_t n = samples.runs.size(), d = gp.axis_count(), k_count = gp.output_count();
+  std::vector<double> errors(n * k_count, std::numeric_limits<double>::quiet_NaN());
+  if (n > kMaxGpLooRuns) return errors;
+  parallel_for(n * k_count, 0, [&](std::size_t job) {
+    const std::size_t i = job / k_count, k = job % k_count;
+    const GpSurface& full = gp.output(k);
+    GpOptions options;
+    options.kernel = full.state().kernel;
+    options.mean_degree = full.state().mean_degree;
+    options.fixed_hyperparameters = {full.signal_sd()};
+    for (const double l : full.length_scales()) options.fixed_hyperparameters.push_back(l);
+    std::vector<double> x, y, noise;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      x.insert(x.end(), samples.points.begin() + static_cast<std::ptrdiff_t>(j * d),
+               samples.points.begin() + static_cast<std::ptrdiff_t>((j + 1) * d));
+      y.push_back(samples.values[j * k_count + k]);
+      noise.push_back(samples.noise[j * k_count + k]);
+    }
+    try {
+      const GpSurface without = GpSurface::fit(x, d, y, noise, options);
+      GpSurface::Workspace workspace(without);
+      errors[i * k_count + k] =
+          samples.values[i * k_count + k] - without.evaluate(&samples.points[i * d], workspace);
+    } catch (const InputError&) {
+      // Too few runs left for the mean, or an axis left with one value: no LOO error.
+    }
+  });
+  return errors;
+}
+
+BuiltSurface build_gp(const Samples& samples, const SurfaceSpec& spec) {
+  const std::size_t n_axes = spec.axes.size(), n_outputs = spec.outputs.size();
+  GpSurfaces gp(n_axes, samples.points, n_outputs, samples.values, samples.noise, spec.gp, spec.axes,
+                scattered_policies(spec, "a GP"));
+  SurfaceQuality quality;
+  quality.method = samples.runs.size() <= kMaxGpLooRuns ? "gp-refit" : "gp-none";
+  quality.runs = samples.runs.size();
+  std::vector<std::int64_t> sample_runs;
+  for (const StoredRun* run : samples.runs) sample_runs.push_back(run->id);
+  summarize(quality, gp_loo(gp, samples), n_outputs, sample_runs);
+  return BuiltSurface{CoefficientSurface(std::move(gp), spec.axes, spec.outputs), quality, {}, samples.skipped, {}, {}};
+}
+
 BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
   const std::size_t n_axes = spec.axes.size(), n_outputs = spec.outputs.size();
   RbfOptions options = spec.rbf;
   options.axis_names = spec.axes;
-  options.out_of_range.clear();
-  for (std::size_t a = 0; a < n_axes; ++a) {
-    const std::string policy = policy_of(spec, a);
-    if (policy == "error")
-      options.out_of_range.push_back(RbfOutOfRange::Error);
-    else if (policy == "clamp")
-      options.out_of_range.push_back(RbfOutOfRange::Clamp);
-    else if (policy == "extrapolate")
-      options.out_of_range.push_back(RbfOutOfRange::Extrapolate);
-    else
-      throw InputError("out-of-range policy '" + policy + "' for axis '" + spec.axes[a] +
-                       "' of an RBF surface; expected error, clamp or extrapolate");
-  }
+  options.out_of_range = scattered_policies(spec, "an RBF");
   RbfSurface rbf(n_axes, samples.points, n_outputs, samples.values, options);
   SurfaceQuality quality;
   quality.method = "rbf-exact";
@@ -303,6 +361,14 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
 
 }  // namespace
 
+std::string loo_method_description(std::string_view method) {
+  if (method == "rbf-exact") return "exact, RBF";
+  if (method == "grid-lines") return "along grid lines";
+  if (method == "gp-refit") return "GP refitted without each run, same hyperparameters";
+  if (method == "gp-none") return "none: over " + std::to_string(kMaxGpLooRuns) + " runs";
+  return "by a method this hydrocoef does not know";
+}
+
 std::string SurfaceQuality::to_json(const std::vector<std::string>& outputs) const {
   nlohmann::json json;
   json["loo_method"] = method;
@@ -341,7 +407,9 @@ SurfaceRecord BuiltSurface::record(const std::string& name, const std::string& b
 BuiltSurface build_surface(const std::vector<StoredRun>& runs, const SurfaceSpec& spec) {
   check_names(spec);
   const Samples samples = collect(runs, spec);
-  BuiltSurface built = spec.method == "rbf" ? build_rbf(samples, spec) : build_grid(samples, spec);
+  BuiltSurface built = spec.method == "rbf"  ? build_rbf(samples, spec)
+                       : spec.method == "gp" ? build_gp(samples, spec)
+                                             : build_grid(samples, spec);
   for (const StoredRun* run : samples.runs) built.run_ids.push_back(run->id);
   // A mirror image carries the id of the run it is the image of: each id once.
   std::sort(built.run_ids.begin(), built.run_ids.end());

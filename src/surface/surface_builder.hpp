@@ -20,6 +20,9 @@
 //    is the mean over those axes. A node on no such line has no LOO error.
 //  - RBF resampled onto a grid: the RBF's LOO errors (the grid is a
 //    tabulation of that RBF), and the grid points far from every run.
+//  - GP: the surface built again without the run, with the same
+//    hyperparameters (they are not searched again), evaluated at the run;
+//    up to 400 runs (above, no LOO error: n refits of O(n^3) each).
 #pragma once
 
 #include <cstdint>
@@ -38,15 +41,19 @@ struct SurfaceSpec {
   /// Output names: "X".."N"; at least one, distinct.
   std::vector<std::string> outputs;
   /// interpolation_name of a grid method ("nearest", "linear", "pchip",
-  /// "makima", "natural-spline"), or "rbf" for scattered runs.
+  /// "makima", "natural-spline"), or "rbf" or "gp" for scattered runs.
   std::string method = "linear";
   /// Out-of-range policy per axis (one entry: for every axis), by name:
-  /// grid: "error", "clamp", "linear", "method"; rbf: "error", "clamp",
-  /// "extrapolate". Empty: "error" everywhere.
+  /// grid: "error", "clamp", "linear", "method"; rbf and gp: "error",
+  /// "clamp", "extrapolate". Empty: "error" everywhere.
   std::vector<std::string> out_of_range;
   /// RBF only: kernel, polynomial degree, smoothing (axis names and
   /// out-of-range policies are set from the fields above).
   RbfOptions rbf;
+  /// GP only: kernel, mean degree, optimiser starts and seed. Each run's
+  /// noise is the standard error of its force component (a mean over a
+  /// force history), 0 for a value without one.
+  GpOptions gp;
   /// RBF only: when set, the RBF is tabulated on these breakpoints (one list
   /// per axis) and stored as a grid table of resample_method.
   std::optional<std::vector<std::vector<double>>> resample;
@@ -75,6 +82,10 @@ struct SurfaceQuality {
   /// As stored in SurfaceRecord::quality.
   std::string to_json(const std::vector<std::string>& outputs) const;
 };
+
+/// How a quality method's leave-one-out errors were found, for people:
+/// "exact, RBF", "along grid lines", "GP refitted without each run", ...
+std::string loo_method_description(std::string_view method);
 
 struct BuiltSurface {
   CoefficientSurface surface;

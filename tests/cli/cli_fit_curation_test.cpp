@@ -206,5 +206,82 @@ TEST(FitCurationHistories, RunsShowTheirHistoryStatisticsAndFitsWarnOfUnconverge
   EXPECT_NE(plain.out.find("* = as tabulated"), std::string::npos) << plain.out;
 }
 
+// Runs averaged over force histories state a standard error: fits weight
+// them by 1/s^2 by default, report the reduced chi^2 and the covariance,
+// store how they were weighted, and a refit weights them again.
+TEST(FitCurationHistories, FitsAreWeightedByTheRunsStandardErrors) {
+  TempDir dir;
+  std::vector<std::string> args = {"import"};
+  for (const auto& entry : std::filesystem::directory_iterator(HYDROCOEF_SOURCE_DIR "/data/openfoam-sphere/cases"))
+    args.push_back(entry.path().string());
+  args.insert(args.end(), {"--body", "sphere", "--axes=-x,y,-z", "--quiet"});
+  ASSERT_EQ(run_cli(args, dir.path()).exit_code, 0);
+  const auto runs = nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out);
+  // The weighted least-squares slope of X = c u|u| through the origin:
+  // c = sum(w h y) / sum(w h^2), var(c) = 1 / sum(w h^2), h = u|u|, w = 1/s^2.
+  double swhy = 0.0, swhh = 0.0;
+  std::vector<std::pair<double, double>> points;
+  for (const auto& run : runs) {
+    const double u = run.at("u"), y = run.at("forces").at("X").at("total");
+    const double s = run.at("forces").at("X").at("statistics").at("standard_error");
+    const double h = u * std::abs(u), w = 1.0 / (s * s);
+    swhy += w * h * y;
+    swhh += w * h * h;
+    points.push_back({h, y});
+  }
+  const double c = swhy / swhh;
+  double chi2 = 0.0;
+  for (const auto& run : runs) {
+    const double u = run.at("u"), y = run.at("forces").at("X").at("total");
+    const double s = run.at("forces").at("X").at("statistics").at("standard_error");
+    chi2 += std::pow((y - c * u * std::abs(u)) / s, 2);
+  }
+  chi2 /= static_cast<double>(runs.size() - 1);
+
+  const auto fit = run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--name", "drag", "--json"},
+                           dir.path());
+  ASSERT_EQ(fit.exit_code, 0) << fit.err;
+  const auto fitted = nlohmann::json::parse(fit.out);
+  EXPECT_EQ(fitted.at("weighting"), "standard-error");
+  EXPECT_NEAR(fitted.at("coefficients").at("u|u|").get<double>(), c, 1e-9 * std::abs(c));
+  EXPECT_NEAR(fitted.at("std_errors").at("u|u|").get<double>(), std::sqrt(1.0 / swhh), 1e-7 / std::sqrt(swhh));
+  EXPECT_NEAR(fitted.at("chi2_reduced").get<double>(), chi2, 1e-8 * chi2);
+  EXPECT_NEAR(fitted.at("covariance")[0].get<double>(), 1.0 / swhh, 1e-7 / swhh);
+  const auto text = run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--no-store"}, dir.path());
+  EXPECT_NE(text.out.find("reduced chi^2 = "), std::string::npos) << text.out;
+
+  const auto stored = nlohmann::json::parse(run_cli({"fits", "--json"}, dir.path()).out);
+  ASSERT_EQ(stored.size(), 1u);
+  EXPECT_EQ(stored[0].at("weighting"), "standard-error");
+  EXPECT_EQ(stored[0].at("chi2_reduced"), fitted.at("chi2_reduced"));
+  EXPECT_EQ(stored[0].at("covariance"), fitted.at("covariance"));
+  // Made again, it is weighted again.
+  const auto refit = run_cli({"fit", "--refit", "--name", "drag", "--json"}, dir.path());
+  ASSERT_EQ(refit.exit_code, 0) << refit.err;
+  const auto again = nlohmann::json::parse(run_cli({"fits", "--json"}, dir.path()).out);
+  EXPECT_EQ(again[0].at("weighting"), "standard-error");
+  EXPECT_EQ(again[0].at("coefficients"), stored[0].at("coefficients"));
+
+  // --unweighted: ordinary least squares, no chi^2.
+  const auto plain = run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--unweighted", "--no-store",
+                              "--json"},
+                             dir.path());
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const auto unweighted = nlohmann::json::parse(plain.out);
+  EXPECT_EQ(unweighted.at("weighting"), "none");
+  EXPECT_TRUE(unweighted.at("chi2_reduced").is_null());
+  double shy = 0.0, shh = 0.0;
+  for (const auto& [h, y] : points) shy += h * y, shh += h * h;
+  EXPECT_NEAR(unweighted.at("coefficients").at("u|u|").get<double>(), shy / shh, 1e-9 * std::abs(shy / shh));
+
+  // A table's values state no standard error: unweighted, without a word.
+  TempDir other;
+  ASSERT_EQ(run_cli({"import", kSurge, "--body", "asr-v", "--sign", "opposing"}, other.path()).exit_code, 0);
+  const auto table = nlohmann::json::parse(
+      run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|", "--no-store", "--json"}, other.path()).out);
+  EXPECT_EQ(table.at("weighting"), "none");
+  for (const auto& warning : table.at("warnings")) EXPECT_NE(warning.at("kind"), "unweighted");
+}
+
 }  // namespace
 }  // namespace hydrocoef

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -335,6 +336,88 @@ TEST(DampingLawFit, ExtremeVelocitiesAndForcesFitOrAreRefusedSayingWhy) {
   // A robust loss's scale stays in the force's unit.
   const DampingLawFit huber = fit_damping_law(parse_damping_terms("u,u|u|"), speeds, huge, parse_loss("huber:1e300"));
   EXPECT_NEAR(huber.coefficients[1] / -5e307, 1.0, 1e-6);
+}
+
+// Weighted least squares: the coefficients, covariance and reduced chi^2
+// of the closed form c = (A^T W A)^-1 A^T W y, Cov = (A^T W A)^-1,
+// chi^2 = r^T W r / (n - k), W = diag(1/s_i^2), solved here with Eigen.
+TEST(DampingLawWeightedFit, IsTheClosedFormWeightedLeastSquares) {
+  const DampingLawSpec spec = parse_damping_terms("1,u,u|u|");
+  std::vector<double> x, y, sigma;
+  for (int i = 0; i < 15; ++i) {
+    const double u = -0.3 + 0.05 * i;
+    x.push_back(u);
+    y.push_back(0.02 - 1.5 * u - 9.0 * u * std::abs(u) + 0.01 * std::sin(7.0 * i));
+    sigma.push_back(0.002 + 0.004 * (i % 4));
+  }
+  const DampingLawFit fit = fit_damping_law(spec, x, y, {}, sigma);
+  const Eigen::Index n = 15, k = 3;
+  Eigen::MatrixXd a(n, k), w = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd b(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double u = x[static_cast<std::size_t>(i)];
+    a(i, 0) = 1.0, a(i, 1) = u, a(i, 2) = u * std::abs(u);
+    b(i) = y[static_cast<std::size_t>(i)];
+    w(i, i) = 1.0 / (sigma[static_cast<std::size_t>(i)] * sigma[static_cast<std::size_t>(i)]);
+  }
+  const Eigen::MatrixXd covariance = (a.transpose() * w * a).inverse();
+  const Eigen::VectorXd c = covariance * a.transpose() * w * b;
+  const Eigen::VectorXd r = a * c - b;
+  const double chi2 = r.dot(w * r) / static_cast<double>(n - k);
+  ASSERT_TRUE(fit.weighted);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    EXPECT_NEAR(fit.coefficients[static_cast<std::size_t>(j)], c(j), 1e-9 * (1.0 + std::abs(c(j))));
+    EXPECT_NEAR(fit.std_errors[static_cast<std::size_t>(j)], std::sqrt(covariance(j, j)),
+                1e-7 * std::sqrt(covariance(j, j)));
+    for (Eigen::Index l = 0; l < k; ++l)
+      EXPECT_NEAR(fit.covariance[static_cast<std::size_t>(j * k + l)], covariance(j, l),
+                  1e-7 * std::sqrt(covariance(j, j) * covariance(l, l)));
+  }
+  EXPECT_NEAR(fit.chi2_reduced, chi2, 1e-8 * chi2);
+  // RMSE and R^2 stay those of the unweighted residuals.
+  EXPECT_NEAR(fit.rmse, std::sqrt(r.squaredNorm() / n), 1e-10);
+
+  // With one uncertainty for every run the coefficients are the unweighted
+  // ones, and chi^2 is SSR / s^2 / (n - k).
+  const std::vector<double> same(15, 0.01);
+  const DampingLawFit uniform = fit_damping_law(spec, x, y, {}, same);
+  const DampingLawFit plain = fit_damping_law(spec, x, y);
+  EXPECT_FALSE(plain.weighted);
+  EXPECT_TRUE(std::isnan(plain.chi2_reduced));
+  for (std::size_t j = 0; j < 3; ++j)
+    EXPECT_NEAR(uniform.coefficients[j], plain.coefficients[j], 1e-9 * (1.0 + std::abs(plain.coefficients[j])));
+  EXPECT_NEAR(uniform.chi2_reduced, 15.0 * plain.rmse * plain.rmse / 1e-4 / 12.0, 1e-8 * uniform.chi2_reduced);
+  // The unweighted covariance is s^2 (A^T A)^-1 with s^2 = SSR / (n - k).
+  const Eigen::MatrixXd plain_cov = (a.transpose() * a).inverse() * (15.0 * plain.rmse * plain.rmse / 12.0);
+  for (Eigen::Index j = 0; j < k; ++j)
+    EXPECT_NEAR(plain.covariance[static_cast<std::size_t>(j * k + j)], plain_cov(j, j), 1e-7 * plain_cov(j, j));
+}
+
+// Runs that scatter exactly as their stated uncertainties say give a reduced
+// chi^2 near 1; understated uncertainties give a larger one.
+TEST(DampingLawWeightedFit, ReducedChiSquareMeasuresTheScatterAgainstTheUncertainties) {
+  const DampingLawSpec spec = parse_damping_terms("u,u|u|");
+  std::mt19937 random(2);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<double> x, y, sigma, half;
+  for (int i = 0; i < 400; ++i) {
+    const double u = 0.001 * i, s = 0.001 * (1 + i % 5);
+    x.push_back(u);
+    y.push_back(-2.0 * u - 10.0 * u * u + s * normal(random));
+    sigma.push_back(s);
+    half.push_back(s / 2);
+  }
+  const double spread = std::sqrt(2.0 / 398.0);  // standard deviation of chi^2/(n-k)
+  EXPECT_NEAR(fit_damping_law(spec, x, y, {}, sigma).chi2_reduced, 1.0, 3 * spread);
+  EXPECT_NEAR(fit_damping_law(spec, x, y, {}, half).chi2_reduced, 4.0, 12 * spread);
+}
+
+TEST(DampingLawWeightedFit, UncertaintiesMustBePositiveAndOnePerRun) {
+  const DampingLawSpec spec = parse_damping_terms("u");
+  const std::vector<double> x{0.1, 0.2, 0.3}, y{-1.0, -2.0, -3.1};
+  expect_input_error([&] { (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.1}); }, {"2 uncertainties for 3 runs"});
+  expect_input_error([&] { (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.0, 0.1}); }, {"run 2 of 3 has uncertainty 0"});
+  expect_input_error([&] { (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.1, std::nan("")}); }, {"run 3 of 3 has uncertainty"});
 }
 
 }  // namespace

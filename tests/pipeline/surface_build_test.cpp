@@ -13,6 +13,7 @@
 #include "src/store/sqlite.hpp"
 #include "tests/support/expect_input_error.hpp"
 #include "tests/support/import_batch.hpp"
+#include "tests/support/older_database.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -137,8 +138,8 @@ TEST(SurfaceBuildSpec, StoredFormReadsBackAndDamagedFormsAreRefused) {
 }
 
 // A database made before migration 7: its surface keeps the command line's
-// strings. Made by storing the legacy definition and setting the schema
-// version back to 6 (migration 7 changes no table).
+// strings. Made by storing the legacy definition and copying the rows into a
+// database of schema version 6 (tests/support/older_database.hpp).
 TEST(SurfaceBuildMigration, CommandLineOptionsBecomeTheBuildSpecification) {
   TempDir dir;
   const auto path = dir / "old.db";
@@ -173,9 +174,9 @@ TEST(SurfaceBuildMigration, CommandLineOptionsBecomeTheBuildSpecification) {
     definition.erase("build_spec");
     definition["build"] = legacy;
     connection.prepare("UPDATE surface SET definition = ? WHERE name = 'rbf'").bind(1, definition.dump()).run();
-    connection.execute("PRAGMA user_version = 6");
   }
-  Database database(path);
+  test::copy_as_schema_version(path, dir / "v6.db", 6);
+  Database database(dir / "v6.db");
   const SurfaceBuildSpec spec = stored_build_spec(database.surface("rbf"));
   EXPECT_EQ(spec.surface.method, "rbf");
   EXPECT_EQ(spec.surface.out_of_range, (std::vector<std::string>{"extrapolate", "clamp"}));
@@ -207,10 +208,11 @@ TEST(SurfaceBuildMigration, UnreadableOptionsStopTheMigrationAndLeaveTheDatabase
     connection.execute(
         "UPDATE surface SET definition = json_set(json_remove(definition, '$.build_spec'), '$.build', "
         "json('{\"axes\": [\"u\", \"v\"], \"resample\": [\"u=0:1\"]}'))");
-    connection.execute("PRAGMA user_version = 6");
   }
-  expect_input_error([&] { Database database(path); }, {"surface 'surge'", "build options are incomplete"});
-  store::Connection connection(path.string(), store::Access::ReadOnly);
+  const auto old = dir / "v6.db";
+  test::copy_as_schema_version(path, old, 6);
+  expect_input_error([&] { Database database(old); }, {"surface 'surge'", "build options are incomplete"});
+  store::Connection connection(old.string(), store::Access::ReadOnly);
   auto version = connection.prepare("PRAGMA user_version");
   ASSERT_TRUE(version.step());
   EXPECT_EQ(version.get_int(0), 6);

@@ -153,3 +153,32 @@ def test_float64_columns_are_read_in_place(db):
     assert peak(uv[:, 0], uv[:, 1]) < outputs + 100_000
     assert peak(np.ascontiguousarray(uv[:, 0]), 0.05) < outputs + 100_000
     assert peak(uv[:, 0].astype(np.float32), uv[:, 1]) > outputs + 8 * n * 0.9
+
+
+def test_a_gp_surface_states_its_standard_deviation_as_the_cli_does(tmp_path):
+    rng = np.random.default_rng(3)
+    u, v = rng.uniform(0.0, 0.5, 25), rng.uniform(-0.2, 0.2, 25)
+    rows = "".join(f"{a!r},{b!r},{-20 * a * abs(a) + 3 * b * b!r}\n" for a, b in zip(u, v))
+    (tmp_path / "scattered.csv").write_text("u [m s^-1],v [m s^-1],X [N]\n" + rows)
+    path = tmp_path / "gp.db"
+    with hydrocoef.Database(path) as db:
+        db.import_files([tmp_path / "scattered.csv"], body="blob")
+        info = db.build_surface("gp", body="blob", axes=["u", "v"], outputs=["X"], method="gp", gp_starts=2)
+        assert info.method == "gp"
+        s = db.surface("gp")
+        uq, vq = np.array([0.1, 0.3, u[4]]), np.array([0.0, -0.15, v[4]])
+        out = s(u=uq, v=vq, uncertainty=True)
+        assert list(out) == ["X", "sigma_X"]
+        assert out["sigma_X"][2] < 1e-3 < out["sigma_X"][0]  # sure at a run, less so between
+        strided = s(u=np.repeat(uq, 2)[::2], v=vq, uncertainty=True, threads=2)
+        np.testing.assert_array_equal(strided["sigma_X"], out["sigma_X"])
+        for k in range(2):
+            expected = cli_json(path, "query", "gp", f"u={uq[k]!r}", f"v={vq[k]!r}", "--uncertainty")
+            scalar = s(u=float(uq[k]), v=float(vq[k]), uncertainty=True)
+            assert scalar["X"] == expected["values"]["X"] == out["X"][k]
+            assert scalar["sigma_X"] == expected["standard_deviation"]["X"] == out["sigma_X"][k]
+        db.build_surface("rbf", body="blob", axes=["u", "v"], outputs=["X"], method="rbf")
+        with pytest.raises(hydrocoef.InputError, match="states no standard deviation"):
+            db.surface("rbf")(u=uq, v=vq, uncertainty=True)
+        with pytest.raises(hydrocoef.InputError, match="expected a GP surface"):
+            db.surface("rbf")(u=0.1, v=0.0, uncertainty=True)

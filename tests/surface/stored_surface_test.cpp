@@ -117,7 +117,7 @@ TEST(StoredSurface, DamagedDefinitionsAreRefusedNamingTheSurface) {
   expect_input_error([&] { surface_from_record(bad); }, {"surface 'xn'"});
   bad = record;
   bad.kind = "spline";
-  expect_input_error([&] { surface_from_record(bad); }, {"surface 'xn'", "grid or rbf"});
+  expect_input_error([&] { surface_from_record(bad); }, {"surface 'xn'", "grid, rbf or gp"});
 }
 
 TEST(StoredSurface, AMissingSurfaceIsNamed) {
