@@ -95,9 +95,8 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
 }
 
 void query_batch(const QueryArgs& args, const StoredSurface& stored) {
-  const std::size_t points =
-      query_csv_batch(stored.surface,
-                      CsvBatchRequest{args.name, args.input, args.output, args.gradient, args.uncertainty});
+  const std::size_t points = query_csv_batch(
+      stored.surface, CsvBatchRequest{args.name, args.input, args.output, args.gradient, args.uncertainty});
   if (args.output != "-" && !args.json)
     std::cerr << "hydrocoef: " << points << " points of surface '" << args.name << "' written to " << args.output
               << '\n';

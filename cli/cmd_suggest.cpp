@@ -26,8 +26,7 @@ void print_next_runs(const SuggestArgs& args, const NextRuns& next) {
                           {"output", next.output},
                           {"unit", next.unit},
                           {"largest_sd_after", next.largest_sd_after}};
-    for (std::size_t a = 0; a < next.axes.size(); ++a)
-      out["bounds"][next.axes[a]] = {next.lower[a], next.upper[a]};
+    for (std::size_t a = 0; a < next.axes.size(); ++a) out["bounds"][next.axes[a]] = {next.lower[a], next.upper[a]};
     out["runs"] = nlohmann::json::array();
     for (const auto& run : next.runs) {
       nlohmann::json entry = {{"sd_before", run.standard_deviation}};
@@ -53,7 +52,8 @@ void print_next_runs(const SuggestArgs& args, const NextRuns& next) {
   std::cout << "  largest sd in the bounds: " << significant(next.runs.front().standard_deviation, 4) << " now, "
             << significant(next.largest_sd_after, 4) << " " << next.unit << " with these runs\n";
   if (args.manifest)
-    std::cout << "  manifest " << *args.manifest << " (fill in each case's path; hydrocoef import --manifest reads it)\n";
+    std::cout << "  manifest " << *args.manifest
+              << " (fill in each case's path; hydrocoef import --manifest reads it)\n";
 }
 
 }  // namespace
@@ -66,8 +66,9 @@ void add_suggest_command(CLI::App& app, const GlobalOptions& global) {
       "the bounds (sequential maximum variance), printed and as a sweep manifest for import --manifest");
   command->add_option("name", args->name, "GP surface name")->required();
   command->add_option("--count", args->request.count, "Runs to propose (1 to 1000)")->capture_default_str();
-  command->add_option("--bounds", args->request.bounds,
-                      "AXIS=FROM:TO in SI units, comma-separated or repeated (default: the surface's range)")
+  command
+      ->add_option("--bounds", args->request.bounds,
+                   "AXIS=FROM:TO in SI units, comma-separated or repeated (default: the surface's range)")
       ->delimiter(',');
   command->add_option("--for", args->request.output, "The output whose uncertainty to reduce (default: the first)");
   command->add_option("--candidates", args->request.candidates, "Candidate points searched (Halton sequence)")

@@ -277,9 +277,10 @@ void print_fits(const std::vector<FitRecord>& fits, const std::string& database,
   for (const auto& fit : fits) {
     std::cout << fit.id << "  " << fit.name << "  [" << to_string(fit.sign) << ", n=" << fit.n
               << ", RMSE=" << significant(fit.rmse, 4) << ", R^2=" << significant(fit.r2, 8)
-              << (fit.weighting == "none" ? std::string()
-                                          : ", weighted, chi^2/dof=" + (fit.chi2_reduced ? significant(*fit.chi2_reduced, 3)
-                                                                                         : std::string("n/a")))
+              << (fit.weighting == "none"
+                      ? std::string()
+                      : ", weighted, chi^2/dof=" +
+                            (fit.chi2_reduced ? significant(*fit.chi2_reduced, 3) : std::string("n/a")))
               << "]"
               << (fit.stale ? "  STALE: a force of its runs changed or was deleted since; fit --refit makes it again"
                             : "")

@@ -15,9 +15,10 @@ void add_surface_build_options(CLI::App& command, SurfaceBuildArgs& args) {
   command.add_option("--axes", args.axes, "Axes: velocity components (u..r) or disturbance names, e.g. u,current_v")
       ->required()
       ->delimiter(',');
-  command.add_option("--method", args.method,
-                     "nearest, linear, pchip, makima, natural-spline (gridded runs), rbf or gp (scattered runs; gp: a "
-                     "Gaussian process that also states its standard deviation)")
+  command
+      .add_option("--method", args.method,
+                  "nearest, linear, pchip, makima, natural-spline (gridded runs), rbf or gp (scattered runs; gp: a "
+                  "Gaussian process that also states its standard deviation)")
       ->capture_default_str();
   command.add_option("--extrapolate", args.extrapolate,
                      "Out-of-range policy for every axis, or AXIS=POLICY (repeatable): error (default), clamp, linear, "
@@ -62,7 +63,8 @@ SurfaceBuildSpec surface_build_spec(const SurfaceBuildArgs& args) {
   spec.exclude_runs = args.exclude_runs;
   spec.mirror_planes = args.mirror;
   spec.mirror_odd = args.mirror_odd;
-  if (args.degree < 0 || args.degree > 2) throw InputError("--degree " + std::to_string(args.degree) + ": expected 0, 1 or 2");
+  if (args.degree < 0 || args.degree > 2)
+    throw InputError("--degree " + std::to_string(args.degree) + ": expected 0, 1 or 2");
   if (args.method == "gp") {
     surface.gp.kernel = parse_gp_kernel(args.kernel.value_or("matern52"));
     surface.gp.mean_degree = args.degree;

@@ -25,11 +25,11 @@ struct SurfaceBuildArgs {
   std::vector<std::int64_t> exclude_runs;
   std::vector<std::string> mirror;
   std::vector<std::string> mirror_odd;
-  bool replace = false;  ///< a surface of this name may be replaced (rebuild always replaces)
+  bool replace = false;               ///< a surface of this name may be replaced (rebuild always replaces)
   std::optional<std::string> kernel;  ///< default: cubic (rbf), matern52 (gp)
   int degree = 1;
-  int starts = 5;         ///< gp
-  unsigned seed = 1;      ///< gp
+  int starts = 5;     ///< gp
+  unsigned seed = 1;  ///< gp
   double smoothing = 0.0;
   std::vector<std::string> resample;
   std::string resample_method = "linear";

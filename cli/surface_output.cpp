@@ -49,8 +49,8 @@ std::optional<std::pair<std::int64_t, double>> worst_run(const nlohmann::json& q
 void print_quality(const SurfaceRecord& record, const CoefficientSurface& surface) {
   const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality);
   const std::string loo = quality.value("loo_method", "");
-  std::cout << "  leave-one-out (" << loo_method_description(loo) << ", "
-            << quality.value("loo_defined", 0) << " of " << quality.value("runs", 0) << " runs):\n";
+  std::cout << "  leave-one-out (" << loo_method_description(loo) << ", " << quality.value("loo_defined", 0) << " of "
+            << quality.value("runs", 0) << " runs):\n";
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const auto& name = surface.output_names()[k];
     const auto entry = quality.contains("outputs") && quality["outputs"].contains(name) ? quality["outputs"][name]
@@ -98,7 +98,8 @@ nlohmann::json gp_json(const CoefficientSurface& surface) {
   const GpSurfaces* gp = surface.gp();
   nlohmann::json out = {{"kernel", std::string(gp_kernel_name(gp->kernel()))}, {"mean_degree", gp->mean_degree()}};
   std::vector<double> lower, upper;
-  for (std::size_t a = 0; a < surface.axis_count(); ++a) lower.push_back(surface.lower(a)), upper.push_back(surface.upper(a));
+  for (std::size_t a = 0; a < surface.axis_count(); ++a)
+    lower.push_back(surface.lower(a)), upper.push_back(surface.upper(a));
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const GpSurface& output = gp->output(k);
     nlohmann::json entry = {{"signal_sd", output.signal_sd()}, {"length_scales", nlohmann::json::object()}};
@@ -123,8 +124,9 @@ void print_gp(const CoefficientSurface& surface) {
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const auto& name = surface.output_names()[k];
     const auto& entry = gp["outputs"][name];
-    std::cout << "    " << std::left << std::setw(4) << name << "signal sd " << significant(entry["signal_sd"].get<double>(), 4)
-              << " " << surface.output_units()[k] << ", length scales";
+    std::cout << "    " << std::left << std::setw(4) << name << "signal sd "
+              << significant(entry["signal_sd"].get<double>(), 4) << " " << surface.output_units()[k]
+              << ", length scales";
     for (std::size_t a = 0; a < surface.axis_count(); ++a)
       std::cout << " " << surface.axis_names()[a] << " "
                 << significant(entry["length_scales"][surface.axis_names()[a]].get<double>(), 3);
@@ -132,7 +134,8 @@ void print_gp(const CoefficientSurface& surface) {
     for (const auto& where : entry["largest_sd"]) {
       std::cout << "      sd " << std::setw(12) << significant(where["sd"].get<double>(), 4) << "at";
       for (std::size_t a = 0; a < surface.axis_count(); ++a)
-        std::cout << " " << surface.axis_names()[a] << "=" << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
+        std::cout << " " << surface.axis_names()[a] << "="
+                  << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
       std::cout << '\n';
     }
   }
@@ -240,8 +243,8 @@ nlohmann::json surface_build_json(const SurfaceBuildResult& result) {
 
 void print_surface_build(const SurfaceBuildResult& result, const std::string& database) {
   const auto& [record, surface] = result.stored;
-  std::cout << "surface " << record.name << " of body " << record.body << ": " << record.kind << ", "
-            << record.method << ", " << record.run_ids.size() << " runs";
+  std::cout << "surface " << record.name << " of body " << record.body << ": " << record.kind << ", " << record.method
+            << ", " << record.run_ids.size() << " runs";
   if (result.runs_skipped) std::cout << " (" << result.runs_skipped << " runs without every output skipped)";
   if (!result.mirror.empty())
     std::cout << "\n  mirror " << result.mirror << ": " << result.runs_measured << " runs and " << result.mirror_images

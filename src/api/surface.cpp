@@ -53,8 +53,8 @@ Surface::ValueAndDeviation Surface::evaluate_with_standard_deviation(const std::
 }
 
 void Surface::evaluate_batch(std::size_t count, const std::vector<ConstColumn>& inputs,
-                             const std::vector<Column>& outputs, const std::vector<Column>& gradients,
-                             unsigned threads, const std::vector<Column>& standard_deviations) const {
+                             const std::vector<Column>& outputs, const std::vector<Column>& gradients, unsigned threads,
+                             const std::vector<Column>& standard_deviations) const {
   // The public columns and the engine's have the same layout; copied (a few
   // per batch) rather than cast, so that neither depends on the other.
   std::vector<StridedInput> in(inputs.size());

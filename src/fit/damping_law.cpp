@@ -232,8 +232,8 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
     throw InputError("damping law '" + format_damping_terms(spec) + "' has " + std::to_string(k) +
                      " terms and needs at least " + std::to_string(k) + " runs, found " + std::to_string(n));
   if (!sigma.empty() && sigma.size() != n)
-    throw InputError("damping law fit got " + std::to_string(sigma.size()) + " uncertainties for " +
-                     std::to_string(n) + " runs; expected one per run or none");
+    throw InputError("damping law fit got " + std::to_string(sigma.size()) + " uncertainties for " + std::to_string(n) +
+                     " runs; expected one per run or none");
   for (std::size_t i = 0; i < sigma.size(); ++i)
     if (!std::isfinite(sigma[i]) || !(sigma[i] > 0.0))
       throw InputError("run " + std::to_string(i + 1) + " of " + std::to_string(n) + " has uncertainty " +

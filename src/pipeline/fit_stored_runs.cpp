@@ -89,7 +89,8 @@ FitResult fit_stored_runs(Database& database, const FitRequest& request) {
   const FitSamples& samples = result.setup.samples;
   const DampingLawSpec& spec = result.setup.spec;
   std::string weight_note;
-  result.fit = fit_damping_law(spec, samples.x, samples.y, options, fit_weights(samples, request.weighted, &weight_note));
+  result.fit =
+      fit_damping_law(spec, samples.x, samples.y, options, fit_weights(samples, request.weighted, &weight_note));
   if (!weight_note.empty()) result.setup.warnings.push_back({"unweighted", weight_note});
   if (result.fit.weighted && std::isfinite(result.fit.chi2_reduced)) {
     // How far the scatter agrees with the stated uncertainties: chi^2/(n-k)

@@ -39,8 +39,7 @@ NextRuns suggest_next_runs(const CoefficientSurface& surface, const NextRunsRequ
     const auto from = parse_finite_number(trim(std::string_view(entry).substr(equals + 1, colon - equals - 1)));
     const auto to = parse_finite_number(trim(std::string_view(entry).substr(colon + 1)));
     if (!from || !to) throw malformed();
-    if (!(*to > *from))
-      throw InputError("--bounds '" + escape::one_line(entry) + "': expected FROM < TO");
+    if (!(*to > *from)) throw InputError("--bounds '" + escape::one_line(entry) + "': expected FROM < TO");
     if (bounded[a]) throw InputError("--bounds gives axis '" + next.axes[a] + "' twice");
     bounded[a] = true;
     next.lower[a] = *from;

@@ -26,11 +26,11 @@ struct NextRunsRequest {
 };
 
 struct NextRuns {
-  std::string output, unit;         ///< the output whose uncertainty is reduced
-  std::vector<std::string> axes;    ///< the surface's axes (velocity components, disturbances)
+  std::string output, unit;          ///< the output whose uncertainty is reduced
+  std::vector<std::string> axes;     ///< the surface's axes (velocity components, disturbances)
   std::vector<double> lower, upper;  ///< the bounds searched, per axis
-  std::vector<SuggestedRun> runs;   ///< in the order chosen
-  double largest_sd_after = 0.0;    ///< over the candidates once all are added
+  std::vector<SuggestedRun> runs;    ///< in the order chosen
+  double largest_sd_after = 0.0;     ///< over the candidates once all are added
 };
 
 /// The next runs of a GP surface. InputError for a surface that is not a GP,

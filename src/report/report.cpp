@@ -98,8 +98,8 @@ std::string quality_html(const SurfaceRecord& surface) {
   } catch (const InputError&) {}
   std::ostringstream out;
   const std::string method = q.value("loo_method", "");
-  out << "leave-one-out (" << loo_method_description(method) << ", "
-      << q.value("loo_defined", 0) << " of " << q.value("runs", 0) << " runs):<br>";
+  out << "leave-one-out (" << loo_method_description(method) << ", " << q.value("loo_defined", 0) << " of "
+      << q.value("runs", 0) << " runs):<br>";
   if (q.contains("outputs") && q["outputs"].is_object())
     for (const auto& item : q["outputs"].items()) {
       const std::string name = item.key();

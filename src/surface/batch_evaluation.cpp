@@ -325,8 +325,8 @@ void check_columns(const char* what, std::size_t expected, std::size_t given, st
 }  // namespace
 
 void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::span<const StridedInput> inputs,
-                    std::span<const StridedOutput> outputs, std::span<const StridedOutput> gradients,
-                    unsigned threads, std::span<const StridedOutput> standard_deviations) {
+                    std::span<const StridedOutput> outputs, std::span<const StridedOutput> gradients, unsigned threads,
+                    std::span<const StridedOutput> standard_deviations) {
   const std::size_t n_axes = surface.axis_count(), n_out = surface.output_count();
   check_columns("input", n_axes, inputs.size(), count, inputs);
   check_columns("output", n_out, outputs.size(), count, outputs);
@@ -344,8 +344,7 @@ void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::s
   // chunk, so the error names the first failing point whatever the timing.
   const std::size_t chunks = (count + kChunkPoints - 1) / kChunkPoints;
   std::optional<GridLayout> grid;
-  const PointsFunction points =
-      points_function(surface, !gradients.empty() || !standard_deviations.empty(), grid);
+  const PointsFunction points = points_function(surface, !gradients.empty() || !standard_deviations.empty(), grid);
   std::vector<Work> scratch;
   const unsigned workers = parallel_threads(chunks, threads);
   scratch.reserve(workers);

@@ -21,10 +21,10 @@
 namespace hydrocoef {
 
 struct CsvBatchRequest {
-  std::string surface_name;  ///< for messages
-  std::string input;         ///< a CSV file, or "-" for standard input
-  std::string output = "-";  ///< a CSV file, or "-" for standard output
-  bool gradient = false;     ///< also the derivatives
+  std::string surface_name;         ///< for messages
+  std::string input;                ///< a CSV file, or "-" for standard input
+  std::string output = "-";         ///< a CSV file, or "-" for standard output
+  bool gradient = false;            ///< also the derivatives
   bool standard_deviation = false;  ///< also each output's standard deviation (GP surfaces)
 };
 

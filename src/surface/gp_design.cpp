@@ -68,8 +68,9 @@ std::vector<SuggestedRun> largest_standard_deviations(const GpSurface& surface, 
                    sd});
   }
   const std::size_t keep = std::min(count, all.size());
-  std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(keep), all.end(),
-                    [](const SuggestedRun& a, const SuggestedRun& b) { return a.standard_deviation > b.standard_deviation; });
+  std::partial_sort(
+      all.begin(), all.begin() + static_cast<std::ptrdiff_t>(keep), all.end(),
+      [](const SuggestedRun& a, const SuggestedRun& b) { return a.standard_deviation > b.standard_deviation; });
   all.resize(keep);
   return all;
 }

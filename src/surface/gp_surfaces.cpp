@@ -21,13 +21,14 @@ std::string label(const std::vector<std::string>& names, std::size_t axis) {
 }  // namespace
 
 GpSurfaces::GpSurfaces(std::size_t axes, std::span<const double> x, std::size_t outputs, std::span<const double> y,
-                       std::span<const double> noise_sd, const GpOptions& options,
-                       std::vector<std::string> axis_names, std::vector<RbfOutOfRange> out_of_range)
+                       std::span<const double> noise_sd, const GpOptions& options, std::vector<std::string> axis_names,
+                       std::vector<RbfOutOfRange> out_of_range)
     : axis_names_(std::move(axis_names)), policy_(std::move(out_of_range)) {
   if (axes == 0 || axes > kMaxAxes || outputs == 0 || outputs > 6)
     throw InputError("GP surface: " + std::to_string(axes) + " axes and " + std::to_string(outputs) +
                      " outputs; expected 1 to 6 of each");
-  if (x.size() % axes != 0 || y.size() != x.size() / axes * outputs || (!noise_sd.empty() && noise_sd.size() != y.size()))
+  if (x.size() % axes != 0 || y.size() != x.size() / axes * outputs ||
+      (!noise_sd.empty() && noise_sd.size() != y.size()))
     throw InputError("GP surface: " + std::to_string(x.size()) + " coordinates, " + std::to_string(y.size()) +
                      " values and " + std::to_string(noise_sd.size()) + " uncertainties do not make runs of " +
                      std::to_string(axes) + " axes and " + std::to_string(outputs) + " outputs");
@@ -75,7 +76,8 @@ void GpSurfaces::check() const {
     throw InputError("GP surface: ranges, policies and names do not give one per axis");
   for (std::size_t a = 0; a < d; ++a)
     if (!std::isfinite(lower_[a]) || !std::isfinite(upper_[a]) || !(upper_[a] > lower_[a]))
-      throw InputError("GP surface: the range of " + label(axis_names_, a) + " is not two finite numbers, lower < upper");
+      throw InputError("GP surface: the range of " + label(axis_names_, a) +
+                       " is not two finite numbers, lower < upper");
   for (const GpSurface& output : outputs_)
     if (output.dims() != d || output.samples() != outputs_.front().samples())
       throw InputError("GP surface: its outputs are not over the same " + std::to_string(d) + " axes and runs");

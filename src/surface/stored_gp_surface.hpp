@@ -33,7 +33,7 @@ std::vector<double> gp_data(const GpSurfaces& gp);
 /// out-of-range policies). `where` names the surface for messages; InputError
 /// for anything missing, mis-sized or inconsistent.
 GpSurfaces gp_from_stored(const nlohmann::json& gp_json, std::span<const double> data,
-                          std::vector<std::string> axis_names, std::vector<RbfOutOfRange> policies,
-                          std::size_t outputs, const std::string& where);
+                          std::vector<std::string> axis_names, std::vector<RbfOutOfRange> policies, std::size_t outputs,
+                          const std::string& where);
 
 }  // namespace hydrocoef

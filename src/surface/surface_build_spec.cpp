@@ -204,8 +204,8 @@ SurfaceBuildSpec parse_build_spec(const json& stored, const std::string& context
     const auto whole = [&](const char* key, std::int64_t lowest, std::int64_t highest) {
       const auto& value = member(gp, key, &json::is_number_integer, "whole number", context);
       if (value.get<std::int64_t>() < lowest || value.get<std::int64_t>() > highest)
-        throw InputError(context + ": stored GP " + key + " " + value.dump() + "; expected " +
-                         std::to_string(lowest) + " to " + std::to_string(highest));
+        throw InputError(context + ": stored GP " + key + " " + value.dump() + "; expected " + std::to_string(lowest) +
+                         " to " + std::to_string(highest));
       return value.get<std::int64_t>();
     };
     s.gp.mean_degree = static_cast<int>(whole("degree", 0, 2));

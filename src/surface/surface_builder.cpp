@@ -292,8 +292,7 @@ std::vector<double> gp_loo(const GpSurfaces& gp, const Samples& samples) {
     try {
       const GpSurface without = GpSurface::fit(x, d, y, noise, options);
       GpSurface::Workspace workspace(without);
-      errors[i * k_count + k] =
-          samples.values[i * k_count + k] - without.evaluate(&samples.points[i * d], workspace);
+      errors[i * k_count + k] = samples.values[i * k_count + k] - without.evaluate(&samples.points[i * d], workspace);
     } catch (const InputError&) {
       // Too few runs left for the mean, or an axis left with one value: no LOO error.
     }

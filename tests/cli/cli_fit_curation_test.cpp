@@ -238,8 +238,8 @@ TEST(FitCurationHistories, FitsAreWeightedByTheRunsStandardErrors) {
   }
   chi2 /= static_cast<double>(runs.size() - 1);
 
-  const auto fit = run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--name", "drag", "--json"},
-                           dir.path());
+  const auto fit =
+      run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--name", "drag", "--json"}, dir.path());
   ASSERT_EQ(fit.exit_code, 0) << fit.err;
   const auto fitted = nlohmann::json::parse(fit.out);
   EXPECT_EQ(fitted.at("weighting"), "standard-error");
@@ -263,9 +263,8 @@ TEST(FitCurationHistories, FitsAreWeightedByTheRunsStandardErrors) {
   EXPECT_EQ(again[0].at("coefficients"), stored[0].at("coefficients"));
 
   // --unweighted: ordinary least squares, no chi^2.
-  const auto plain = run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--unweighted", "--no-store",
-                              "--json"},
-                             dir.path());
+  const auto plain = run_cli(
+      {"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--unweighted", "--no-store", "--json"}, dir.path());
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   const auto unweighted = nlohmann::json::parse(plain.out);
   EXPECT_EQ(unweighted.at("weighting"), "none");

@@ -180,8 +180,8 @@ TEST(GpSurfaceCliOpenFoam, TheRunsStandardErrorsAreTheNoise) {
   for (const auto& run : runs) {
     const double u = run["u"], v = run["v"];
     const double standard_error = run["forces"]["X"]["statistics"]["standard_error"];
-    const auto q = run_cli({"query", "drag", "u=" + json(u).dump(), "v=" + json(v).dump(), "--uncertainty", "--json"},
-                           dir.path());
+    const auto q =
+        run_cli({"query", "drag", "u=" + json(u).dump(), "v=" + json(v).dump(), "--uncertainty", "--json"}, dir.path());
     ASSERT_EQ(q.exit_code, 0) << q.err;
     const double sd = json::parse(q.out)["standard_deviation"]["X"];
     EXPECT_LE(sd, std::sqrt(standard_error * standard_error + 1e-10 * sigma * sigma) * (1 + 1e-6)) << u << "," << v;

@@ -12,8 +12,8 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
-#include <random>
 #include <ostream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -415,9 +415,21 @@ TEST(DampingLawWeightedFit, ReducedChiSquareMeasuresTheScatterAgainstTheUncertai
 TEST(DampingLawWeightedFit, UncertaintiesMustBePositiveAndOnePerRun) {
   const DampingLawSpec spec = parse_damping_terms("u");
   const std::vector<double> x{0.1, 0.2, 0.3}, y{-1.0, -2.0, -3.1};
-  expect_input_error([&] { (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.1}); }, {"2 uncertainties for 3 runs"});
-  expect_input_error([&] { (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.0, 0.1}); }, {"run 2 of 3 has uncertainty 0"});
-  expect_input_error([&] { (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.1, std::nan("")}); }, {"run 3 of 3 has uncertainty"});
+  expect_input_error(
+      [&] {
+        (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.1});
+      },
+      {"2 uncertainties for 3 runs"});
+  expect_input_error(
+      [&] {
+        (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.0, 0.1});
+      },
+      {"run 2 of 3 has uncertainty 0"});
+  expect_input_error(
+      [&] {
+        (void)fit_damping_law(spec, x, y, {}, std::vector<double>{0.1, 0.1, std::nan("")});
+      },
+      {"run 3 of 3 has uncertainty"});
 }
 
 }  // namespace

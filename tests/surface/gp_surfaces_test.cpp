@@ -40,8 +40,8 @@ Runs scattered(std::size_t n, unsigned seed) {
 CoefficientSurface gp_surface(const Runs& runs, std::vector<RbfOutOfRange> policies = {}) {
   GpOptions options;
   options.starts = 3;
-  return CoefficientSurface(GpSurfaces(2, runs.x, 2, runs.y, {}, options, {"u", "v"}, std::move(policies)),
-                            {"u", "v"}, {"X", "N"});
+  return CoefficientSurface(GpSurfaces(2, runs.x, 2, runs.y, {}, options, {"u", "v"}, std::move(policies)), {"u", "v"},
+                            {"X", "N"});
 }
 
 TEST(GpSurfaces, EachOutputIsTheProcessOfItsOwnColumn) {
@@ -130,7 +130,8 @@ TEST(GpSurfaces, GradientIsTheMeansSlope) {
     surface.evaluate(up, out_up);
     surface.evaluate(down, out_down);
     for (std::size_t k = 0; k < 2; ++k)
-      EXPECT_NEAR(gradient[k * 2 + a], (out_up[k] - out_down[k]) / (2 * h), 1e-5 * (1.0 + std::abs(gradient[k * 2 + a])))
+      EXPECT_NEAR(gradient[k * 2 + a], (out_up[k] - out_down[k]) / (2 * h),
+                  1e-5 * (1.0 + std::abs(gradient[k * 2 + a])))
           << k << "," << a;
   }
 }
@@ -204,7 +205,8 @@ TEST(StoredGpSurface, DamagedRecordsAreRefusedNamingTheSurface) {
   refused(with_definition([](auto& d) { d["gp"]["outputs"][0]["sigma"] = -1.0; }), "positive");
   refused(with_definition([](auto& d) { d["gp"]["outputs"][0]["beta"] = nlohmann::json::array(); }), "'beta'");
   refused(with_definition([](auto& d) { d["gp"]["kernel"] = "cubic"; }), "expected matern52 or squared-exponential");
-  refused(with_definition([](auto& d) { d["axes"][0]["extrapolation"] = "linear"; }), "expected error, clamp or extrapolate");
+  refused(with_definition([](auto& d) { d["axes"][0]["extrapolation"] = "linear"; }),
+          "expected error, clamp or extrapolate");
   // The factor's diagonal must stay positive.
   SurfaceRecord negative = good;
   const std::size_t n = 12;
