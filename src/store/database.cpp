@@ -10,6 +10,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 #include <unordered_map>
 
 #include "src/core/error.hpp"
@@ -175,7 +176,18 @@ void Database::use_wal() {
   mode_now.step();
   const bool wal = mode_now.get_text(0) == "wal";
   mode_now.reset();
-  if (!wal) connection_.execute("PRAGMA journal_mode = WAL");
+  if (wal) return;
+  // The switch needs every other connection to let go of the file, and SQLite
+  // answers "busy" at once (without its busy handler) while one reads it. The
+  // write before has committed, so the switch is tried for up to 2 s and
+  // otherwise left to the next writer: the file is whole in either mode, and
+  // the command that wrote it must not fail saying nothing was changed.
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    const int rc = sqlite3_exec(connection_.handle(), "PRAGMA journal_mode = WAL", nullptr, nullptr, nullptr);
+    if (rc == SQLITE_OK) return;
+    if ((rc & 0xff) != SQLITE_BUSY && (rc & 0xff) != SQLITE_LOCKED) connection_.fail(rc, "switching to WAL");
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
 }
 
 int Database::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
