@@ -107,8 +107,9 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
                     "note)");
   command->add_flag("--no-store", args->no_store, "Do not store the fit");
   command->add_flag("--unweighted", args->unweighted,
-                    "Ordinary least squares even when every run states a standard error (by default such runs are "
-                    "weighted by 1/s^2 and the reduced chi^2 is reported)");
+                    "Ordinary least squares even when every run states an uncertainty (a mean over a force history, "
+                    "or import --uncertainty; by default such runs are weighted by 1/s^2 and the reduced chi^2 is "
+                    "reported)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_fit(*args, global); });
 

@@ -50,7 +50,7 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
                           {"rmse", fit.rmse},
                           {"r2", optional_number(fit.r2)},
                           {"n", fit.n},
-                          {"weighting", fit.weighted ? "standard-error" : "none"},
+                          {"weighting", fit.weighted ? "uncertainty" : "none"},
                           {"chi2_reduced", optional_number(fit.chi2_reduced)},
                           {"covariance", fit.covariance},
                           {"runs", result.run_ids()},
@@ -103,9 +103,9 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
             << (std::isnan(fit.r2) ? " (the force does not vary over these runs)" : "") << ", loss " << fit.loss
             << '\n';
   if (fit.weighted)
-    std::cout << "  weighted by each run's standard error (1/s^2); reduced chi^2 = "
+    std::cout << "  weighted by each run's uncertainty (1/s^2); reduced chi^2 = "
               << (std::isfinite(fit.chi2_reduced) ? significant(fit.chi2_reduced, 4) : std::string("n/a"))
-              << " (about 1: the runs scatter as their standard errors say); standard errors from the stated "
+              << " (about 1: the runs scatter as their uncertainties say); standard errors from the stated "
                  "uncertainties\n";
   if (!result.varying_conditions.empty()) {
     std::string names;

@@ -95,7 +95,9 @@ nlohmann::json run_json(const StoredRun& run) {
         {"viscous", f.value.viscous ? nlohmann::json(*f.value.viscous) : nlohmann::json()},
         {"sign_convention", std::string(to_string(f.sign))},
         {"source", f.source_path},
-        {"source_line", f.source_line}};
+        {"source_line", f.source_line},
+        {"given_uncertainty", f.value.uncertainty ? nlohmann::json(*f.value.uncertainty) : nlohmann::json()},
+        {"standard_uncertainty", f.standard_uncertainty()}};
     if (f.statistics) {
       const auto& st = *f.statistics;
       out["forces"][std::string(kForceNames[i])]["statistics"] = {{"abscissa", st.abscissa},

@@ -5,7 +5,9 @@
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
+#include "src/core/text.hpp"
 #include "src/loads/symmetry.hpp"
+#include "src/pipeline/given_uncertainty.hpp"
 
 #include <cmath>
 
@@ -41,6 +43,12 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
                      "whole body's loads");
   command.add_option("--window", args.window,
                      "Force histories: auto (the statistically steady part, MSER-5; the default), T0:T1 or last:N");
+  command
+      .add_option("--uncertainty", args.uncertainty,
+                  "Standard uncertainty of force components, COMPONENT=VALUE (N or N m) or COMPONENT=PERCENT% of "
+                  "each value, e.g. X=0.01,N=2%: stored with the runs, combined with a history's standard error, "
+                  "used by weighted fits and GP surfaces")
+      ->delimiter(',');
   command.add_option("--set", args.set,
                      "Run key: velocity (u v w [m/s], p q r [rad/s], body axes) or disturbance, NAME=VALUE "
                      "(repeatable)");
@@ -99,6 +107,11 @@ SettingsLayer command_line_settings(const SurfaceArgs& args) {
     layer.set("symmetry", *args.symmetry, "--symmetry");
   }
   set_text("window", args.window, "--window");
+  if (!args.uncertainty.empty()) {
+    const std::string text = join(args.uncertainty, ",");
+    (void)parse_given_uncertainty(text, "--uncertainty");  // refused here, naming the option
+    layer.set("uncertainty", text, "--uncertainty");
+  }
   for (const auto& text : args.set) {
     const auto [name, value] = parse_assignment(text, "--set");
     if (velocity_index(name)) {

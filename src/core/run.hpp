@@ -51,6 +51,9 @@ struct ForceComponent {
   double total = 0.0;
   std::optional<double> pressure;
   std::optional<double> viscous;
+  /// A standard uncertainty of total stated by the user at import
+  /// (--uncertainty X=0.01 or X=2%) [N or N m]; empty when none was.
+  std::optional<double> uncertainty;
 };
 
 /// The fluid a run was computed in; unknown values stay empty.

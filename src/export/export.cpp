@@ -35,6 +35,10 @@ std::string content_sha256(const SurfaceRecord& record) {
 }
 
 ExportMetadata metadata_from_record(const SurfaceRecord& record, const CoefficientSurface& surface) {
+  if (surface.kind() == CoefficientSurface::Kind::Gp)
+    throw InputError("surface '" + record.name + "' is a GP surface (scattered samples); only gridded surfaces " +
+                     "can be exported as tables; expected a grid: build one from the same runs with --method rbf "
+                     "--resample AXIS=FROM:TO:COUNT (one per axis), or query the GP on a grid (query --input)");
   if (surface.kind() != CoefficientSurface::Kind::Grid) {
     throw InputError("surface '" + record.name + "' is an RBF surface (scattered samples); only gridded surfaces " +
                      "can be exported as tables; expected a grid: tabulate it with `hydrocoef surface build NAME ... "

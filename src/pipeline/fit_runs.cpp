@@ -143,7 +143,7 @@ FitSamples gather_fit_samples(Database& database, const std::string& body, std::
     out.keys.push_back(all[i].key);
     out.x.push_back(all[i].key.nu_b[variable]);
     out.y.push_back(to_convention(force.value.total, force.sign, out.sign));
-    out.sigma.push_back(force.statistics ? force.statistics->values.standard_error : 0.0);
+    out.sigma.push_back(force.standard_uncertainty());
     out.run_ids.push_back(all[i].id);
     out.mirrored.push_back(i >= out.runs.size());
   }
@@ -157,7 +157,7 @@ std::vector<double> fit_weights(const FitSamples& samples, bool wanted, std::str
   if (stated == samples.sigma.size() && stated > 0) return samples.sigma;
   if (stated > 0 && note)
     *note = std::to_string(samples.sigma.size() - stated) + " of the " + std::to_string(samples.sigma.size()) +
-            " runs state no standard error (values from a table or a surface, not a force history): fitted "
+            " runs state no uncertainty (neither a mean over a force history nor import --uncertainty): fitted "
             "unweighted";
   return {};
 }
@@ -195,7 +195,7 @@ FitRecord make_fit_record(const std::string& name, const std::string& body, std:
   record.n = fit.n;
   record.rmse = fit.rmse;
   record.r2 = fit.r2;
-  record.weighting = fit.weighted ? "standard-error" : "none";
+  record.weighting = fit.weighted ? "uncertainty" : "none";
   if (std::isfinite(fit.chi2_reduced)) record.chi2_reduced = fit.chi2_reduced;
   if (std::all_of(fit.covariance.begin(), fit.covariance.end(), [](double c) { return std::isfinite(c); }))
     record.covariance = fit.covariance;

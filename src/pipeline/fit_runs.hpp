@@ -51,7 +51,7 @@ struct FitSamples {
   std::vector<StoredRun> runs;        ///< the selected (measured) runs
   std::vector<RunKey> keys;           ///< per sample: the run's key, or its mirror image's
   std::vector<double> x, y;           ///< the law's velocity component; the force in `sign`
-  std::vector<double> sigma;          ///< per sample: the force's standard error (0: none stated)
+  std::vector<double> sigma;          ///< per sample: the force's standard uncertainty (0: none known)
   std::vector<std::int64_t> run_ids;  ///< per sample: the run it is (or is the image of)
   std::vector<bool> mirrored;         ///< per sample
   std::size_t images_skipped = 0;     ///< images at the key of a measured run (the run is used)
@@ -65,9 +65,10 @@ struct FitSamples {
 FitSamples gather_fit_samples(Database& database, const std::string& body, std::size_t dof, std::size_t variable,
                               const RunSelection& selection, const MirrorSpec& mirror = {});
 
-/// The uncertainties a weighted fit uses: the samples' standard errors when
-/// `wanted` and every sample has one, else none (an unweighted fit). When
-/// wanted but only some samples have one, `note` says so.
+/// The uncertainties a weighted fit uses: the samples' standard uncertainties
+/// (StoredForce::standard_uncertainty) when `wanted` and every sample has
+/// one, else none (an unweighted fit). When wanted but only some samples
+/// have one, `note` says so.
 std::vector<double> fit_weights(const FitSamples& samples, bool wanted, std::string* note = nullptr);
 
 /// A warning when some selected runs' values of `dof` are means over force

@@ -101,13 +101,13 @@ FitResult fit_stored_runs(Database& database, const FitRequest& request) {
       result.setup.warnings.push_back(
           {"scatter-exceeds-uncertainty",
            "reduced chi^2 = " + shortest_number(result.fit.chi2_reduced) +
-               ": the runs scatter about the law more than their standard errors say (the law misses something, "
-               "or the standard errors are understated); the coefficients' standard errors may be too small"});
+               ": the runs scatter about the law more than their uncertainties say (the law misses something, "
+               "or the uncertainties are understated); the coefficients' standard errors may be too small"});
     else if (result.fit.chi2_reduced < 1.0 - spread)
       result.setup.warnings.push_back(
           {"scatter-below-uncertainty", "reduced chi^2 = " + shortest_number(result.fit.chi2_reduced) +
-                                            ": the runs scatter about the law less than their standard errors say "
-                                            "(the standard errors are overstated)"});
+                                            ": the runs scatter about the law less than their uncertainties say "
+                                            "(the uncertainties are overstated)"});
   }
   result.name = request.name.value_or(
       default_fit_name(request.body, request.dof, format_damping_terms(spec), result.setup.selection));

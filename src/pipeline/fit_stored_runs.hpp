@@ -39,8 +39,9 @@ struct FitRequest {
   std::optional<std::string> name;  ///< default: default_fit_name (src/fit/fit_names.hpp)
   bool store = true;
   Database::NameTaken taken = Database::NameTaken::Refuse;
-  /// Weight each run by its standard error when every selected run has one
-  /// (forces averaged over histories); false: ordinary least squares.
+  /// Weight each run by its standard uncertainty when every selected run has
+  /// one (a mean over a force history, or given at import); false: ordinary
+  /// least squares.
   bool weighted = true;
 };
 

@@ -22,6 +22,7 @@
 #include "src/core/source_file.hpp"
 #include "src/core/version.hpp"
 #include "src/loads/symmetry.hpp"
+#include "src/pipeline/given_uncertainty.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -483,7 +484,10 @@ std::string input_format(const PlannedInput& input, const std::string& requested
 
 ImportPlan plan_request(const ImportRequest& request) { return plan_import(request.inputs, request.plan); }
 
-ImportedInput read_input(const PlannedInput& input, const ImportRequest& request) {
+namespace {
+
+/// The runs of one input as its format gives them, with its settings.
+ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& request) {
   std::vector<SettingsLayer> layers;
   if (!request.command_line.empty()) layers.push_back(request.command_line);
   layers.insert(layers.end(), input.layers.begin(), input.layers.end());
@@ -528,6 +532,15 @@ ImportedInput read_input(const PlannedInput& input, const ImportRequest& request
   }
   record_settings(out.batch, settings, format, input.path);
   out.settings = std::move(settings);
+  return out;
+}
+
+}  // namespace
+
+ImportedInput read_input(const PlannedInput& input, const ImportRequest& request) {
+  ImportedInput out = read_input_values(input, request);
+  if (const auto text = out.settings.text("uncertainty"))
+    apply_given_uncertainty(out.batch, parse_given_uncertainty(*text, out.settings.find("uncertainty")->origin.where));
   return out;
 }
 

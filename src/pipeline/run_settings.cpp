@@ -113,7 +113,8 @@ const std::vector<std::string>& sidecar_keys() {
                                                 "locations",
                                                 "window",
                                                 "symmetry",
-                                                "sign"};
+                                                "sign",
+                                                "uncertainty"};
   return keys;
 }
 

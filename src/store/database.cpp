@@ -277,6 +277,12 @@ std::int64_t Database::body_id(const std::string& name, bool create) {
   return connection_.last_insert_id();
 }
 
+double StoredForce::standard_uncertainty() const {
+  const double se = statistics ? statistics->values.standard_error : 0.0;
+  const double given = value.uncertainty.value_or(0.0);
+  return std::hypot(se, given);
+}
+
 std::optional<std::int64_t> Database::find_run_id(std::int64_t body, const RunKey& key) {
   auto find = connection_.prepare(
       "SELECT id FROM run WHERE body_id = ? AND u = ? AND v = ? AND w = ? AND p = ? AND q = ? AND r = ? "
@@ -325,7 +331,7 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       "WHERE f.run_id = ? AND f.component = ?");
   auto write_force = connection_.prepare(
       "INSERT OR REPLACE INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, "
-      "source_line, import_id) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "source_line, import_id, uncertainty) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
 
   // A component's statistics go with it: a value written without
   // statistics leaves none of an earlier value behind.
@@ -480,6 +486,7 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
             .bind(7, source_id)
             .bind(8, static_cast<std::int64_t>(run.source_line))
             .bind(9, import_id)
+            .bind(10, force.uncertainty)
             .run();
         drop_statistics.bind(1, run_id).bind(2, force_name(i)).run();
         if (run.statistics && run.statistics->components[i]) {
@@ -573,7 +580,8 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   }
   auto forces = connection_.prepare(
       "SELECT f.run_id, f.component, f.total, f.pressure, f.viscous, f.sign_convention, f.source_id, s.path, "
-      "coalesce(f.source_line, 0), coalesce(f.import_id, 0) FROM run_force f JOIN source_file s ON s.id = f.source_id");
+      "coalesce(f.source_line, 0), coalesce(f.import_id, 0), f.uncertainty FROM run_force f JOIN source_file s ON "
+      "s.id = f.source_id");
   while (forces.step()) {
     const auto found = index.find(forces.get_int(0));
     if (found == index.end()) continue;
@@ -588,6 +596,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     force.source_path = row.text(7);
     force.source_line = static_cast<std::size_t>(row.integer(8, 0, std::numeric_limits<std::int64_t>::max()));
     force.import_id = row.integer(9, 0, std::numeric_limits<std::int64_t>::max());
+    force.value.uncertainty = row.optional_non_negative(10);
     out[found->second].tau_b[*component] = std::move(force);
   }
   auto statistics = connection_.prepare(
@@ -816,7 +825,7 @@ std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
     fit.created_at = row.text(12, 64);
     fit.stale = row.integer(13, 0, 1) != 0;
     fit.mirror = row.text(14, 256);
-    fit.weighting = row.one_of(15, {"none", "standard-error"});
+    fit.weighting = row.one_of(15, {"none", "uncertainty"});
     fit.chi2_reduced = row.optional_non_negative(16);
     fit.covariance = row.real_list(17, 36 * 36);
     out.push_back(std::move(fit));

@@ -38,6 +38,11 @@ struct StoredForce {
   std::size_t source_line = 0;
   std::int64_t import_id = 0;                  ///< the import it came from (0: none recorded)
   std::optional<StoredStatistics> statistics;  ///< when the value is a mean over a force history
+
+  /// The value's standard uncertainty [N or N m]: the standard error of a
+  /// mean over a force history and an uncertainty given at import, combined
+  /// in quadrature; 0 when neither is known.
+  double standard_uncertainty() const;
 };
 
 struct StoredRun {
@@ -143,8 +148,8 @@ struct FitRecord {
   std::size_t n = 0;
   double rmse = 0.0;
   double r2 = 0.0;
-  /// "none", or "standard-error": each run weighted by its standard error
-  /// (src/fit/damping_law.hpp).
+  /// "none", or "uncertainty": each run weighted by its standard
+  /// uncertainty (StoredForce::standard_uncertainty; src/fit/damping_law.hpp).
   std::string weighting = "none";
   std::optional<double> chi2_reduced;  ///< weighted fits with n > k
   /// The coefficients' covariance, k x k row by row; empty when not recorded.

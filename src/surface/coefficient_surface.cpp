@@ -50,12 +50,7 @@ CoefficientSurface::CoefficientSurface(RbfSurface rbf, std::vector<std::string> 
                                        std::vector<std::string> output_names, std::vector<std::string> axis_units,
                                        std::vector<std::string> output_units)
     : axis_names_(std::move(axis_names)), output_names_(std::move(output_names)) {
-  if (axis_names_.size() != rbf.axis_count() || output_names_.size() != rbf.output_count())
-    throw InputError("an RBF surface of " + std::to_string(rbf.axis_count()) + " axes and " +
-                     std::to_string(rbf.output_count()) + " outputs was given " + std::to_string(axis_names_.size()) +
-                     " axis names and " + std::to_string(output_names_.size()) + " output names; expected as many");
-  axis_units_ = units_or_default(std::move(axis_units), axis_names_, "axis");
-  output_units_ = units_or_default(std::move(output_units), output_names_, "output");
+  set_units("an RBF", rbf.axis_count(), rbf.output_count(), std::move(axis_units), std::move(output_units));
   rbf_ = std::make_shared<const RbfSurface>(std::move(rbf));
 }
 
@@ -63,13 +58,18 @@ CoefficientSurface::CoefficientSurface(GpSurfaces gp, std::vector<std::string> a
                                        std::vector<std::string> output_names, std::vector<std::string> axis_units,
                                        std::vector<std::string> output_units)
     : axis_names_(std::move(axis_names)), output_names_(std::move(output_names)) {
-  if (axis_names_.size() != gp.axis_count() || output_names_.size() != gp.output_count())
-    throw InputError("a GP surface of " + std::to_string(gp.axis_count()) + " axes and " +
-                     std::to_string(gp.output_count()) + " outputs was given " + std::to_string(axis_names_.size()) +
+  set_units("a GP", gp.axis_count(), gp.output_count(), std::move(axis_units), std::move(output_units));
+  gp_ = std::make_shared<const GpSurfaces>(std::move(gp));
+}
+
+void CoefficientSurface::set_units(const char* kind, std::size_t axes, std::size_t outputs,
+                                   std::vector<std::string> axis_units, std::vector<std::string> output_units) {
+  if (axis_names_.size() != axes || output_names_.size() != outputs)
+    throw InputError(std::string(kind) + " surface of " + std::to_string(axes) + " axes and " +
+                     std::to_string(outputs) + " outputs was given " + std::to_string(axis_names_.size()) +
                      " axis names and " + std::to_string(output_names_.size()) + " output names; expected as many");
   axis_units_ = units_or_default(std::move(axis_units), axis_names_, "axis");
   output_units_ = units_or_default(std::move(output_units), output_names_, "output");
-  gp_ = std::make_shared<const GpSurfaces>(std::move(gp));
 }
 
 std::size_t CoefficientSurface::axis_index(std::string_view name) const { return find_name(axis_names_, name, "axis"); }

@@ -92,6 +92,10 @@ class CoefficientSurface {
                                         std::span<double> standard_deviation) const;
 
  private:
+  /// Checks the names against the counts of a scattered surface ("an RBF",
+  /// "a GP") and sets the units (default_unit where none are given).
+  void set_units(const char* kind, std::size_t axes, std::size_t outputs, std::vector<std::string> axis_units,
+                 std::vector<std::string> output_units);
   std::shared_ptr<const GridTable> grid_;
   std::shared_ptr<const RbfSurface> rbf_;
   std::shared_ptr<const GpSurfaces> gp_;

@@ -92,7 +92,7 @@ Samples collect(const std::vector<StoredRun>& runs, const SurfaceSpec& spec) {
     for (const auto& output : spec.outputs) {
       const StoredForce& force = *run.tau_b[*force_index(output)];
       samples.values.push_back(to_on_body(force.value.total, force.sign));
-      samples.noise.push_back(force.statistics ? force.statistics->values.standard_error : 0.0);
+      samples.noise.push_back(force.standard_uncertainty());
     }
   }
   if (samples.runs.empty())

@@ -51,8 +51,9 @@ struct SurfaceSpec {
   /// out-of-range policies are set from the fields above).
   RbfOptions rbf;
   /// GP only: kernel, mean degree, optimiser starts and seed. Each run's
-  /// noise is the standard error of its force component (a mean over a
-  /// force history), 0 for a value without one.
+  /// noise is the standard uncertainty of its force component (the standard
+  /// error of a mean over a force history and any uncertainty given at
+  /// import, StoredForce::standard_uncertainty; 0 when neither is known).
   GpOptions gp;
   /// RBF only: when set, the RBF is tabulated on these breakpoints (one list
   /// per axis) and stored as a grid table of resample_method.

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "tests/support/run_cli.hpp"
+#include "tests/support/sphere_cases.hpp"
 #include "tests/support/sqlite_dump.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -170,11 +171,7 @@ TEST(FitCurationMirror, AMirroredFitOverHalfThePlaneIsTheFitOverTheWholePlane) {
 
 TEST(FitCurationHistories, RunsShowTheirHistoryStatisticsAndFitsWarnOfUnconvergedOnes) {
   TempDir dir;
-  std::vector<std::string> args = {"import"};
-  for (const auto& entry : std::filesystem::directory_iterator(HYDROCOEF_SOURCE_DIR "/data/openfoam-sphere/cases"))
-    args.push_back(entry.path().string());
-  args.insert(args.end(), {"--body", "sphere", "--axes=-x,y,-z", "--quiet"});
-  ASSERT_EQ(run_cli(args, dir.path()).exit_code, 0);
+  ASSERT_EQ(test::import_sphere_cases(dir.path()).exit_code, 0);
   const auto runs = nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out);
   ASSERT_EQ(runs.size(), 4u);
   std::size_t flagged = 0;
@@ -211,11 +208,7 @@ TEST(FitCurationHistories, RunsShowTheirHistoryStatisticsAndFitsWarnOfUnconverge
 // store how they were weighted, and a refit weights them again.
 TEST(FitCurationHistories, FitsAreWeightedByTheRunsStandardErrors) {
   TempDir dir;
-  std::vector<std::string> args = {"import"};
-  for (const auto& entry : std::filesystem::directory_iterator(HYDROCOEF_SOURCE_DIR "/data/openfoam-sphere/cases"))
-    args.push_back(entry.path().string());
-  args.insert(args.end(), {"--body", "sphere", "--axes=-x,y,-z", "--quiet"});
-  ASSERT_EQ(run_cli(args, dir.path()).exit_code, 0);
+  ASSERT_EQ(test::import_sphere_cases(dir.path()).exit_code, 0);
   const auto runs = nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out);
   // The weighted least-squares slope of X = c u|u| through the origin:
   // c = sum(w h y) / sum(w h^2), var(c) = 1 / sum(w h^2), h = u|u|, w = 1/s^2.
@@ -242,7 +235,7 @@ TEST(FitCurationHistories, FitsAreWeightedByTheRunsStandardErrors) {
       run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--name", "drag", "--json"}, dir.path());
   ASSERT_EQ(fit.exit_code, 0) << fit.err;
   const auto fitted = nlohmann::json::parse(fit.out);
-  EXPECT_EQ(fitted.at("weighting"), "standard-error");
+  EXPECT_EQ(fitted.at("weighting"), "uncertainty");
   EXPECT_NEAR(fitted.at("coefficients").at("u|u|").get<double>(), c, 1e-9 * std::abs(c));
   EXPECT_NEAR(fitted.at("std_errors").at("u|u|").get<double>(), std::sqrt(1.0 / swhh), 1e-7 / std::sqrt(swhh));
   EXPECT_NEAR(fitted.at("chi2_reduced").get<double>(), chi2, 1e-8 * chi2);
@@ -252,14 +245,14 @@ TEST(FitCurationHistories, FitsAreWeightedByTheRunsStandardErrors) {
 
   const auto stored = nlohmann::json::parse(run_cli({"fits", "--json"}, dir.path()).out);
   ASSERT_EQ(stored.size(), 1u);
-  EXPECT_EQ(stored[0].at("weighting"), "standard-error");
+  EXPECT_EQ(stored[0].at("weighting"), "uncertainty");
   EXPECT_EQ(stored[0].at("chi2_reduced"), fitted.at("chi2_reduced"));
   EXPECT_EQ(stored[0].at("covariance"), fitted.at("covariance"));
   // Made again, it is weighted again.
   const auto refit = run_cli({"fit", "--refit", "--name", "drag", "--json"}, dir.path());
   ASSERT_EQ(refit.exit_code, 0) << refit.err;
   const auto again = nlohmann::json::parse(run_cli({"fits", "--json"}, dir.path()).out);
-  EXPECT_EQ(again[0].at("weighting"), "standard-error");
+  EXPECT_EQ(again[0].at("weighting"), "uncertainty");
   EXPECT_EQ(again[0].at("coefficients"), stored[0].at("coefficients"));
 
   // --unweighted: ordinary least squares, no chi^2.

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "tests/support/run_cli.hpp"
+#include "tests/support/sphere_cases.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -68,6 +69,11 @@ TEST_F(GpSurfaceCli, BuildsStoresAndStatesItsQuality) {
   ASSERT_EQ(show.exit_code, 0) << show.err;
   EXPECT_NE(show.out.find("Gaussian process: matern52 kernel"), std::string::npos) << show.out;
   EXPECT_NE(show.out.find("GP refitted without each run"), std::string::npos) << show.out;
+  // Not a table: an export says how to make one.
+  const auto exported = cli({"export", "gpxn", "--format", "csv", "-o", "gp.csv"});
+  EXPECT_EQ(exported.exit_code, 2);
+  EXPECT_NE(exported.err.find("is a GP surface"), std::string::npos) << exported.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "gp.csv"));
   // Rebuilt from its stored specification, it is the same surface.
   const auto rebuild = cli({"surface", "rebuild", "gpxn", "--json"});
   ASSERT_EQ(rebuild.exit_code, 0) << rebuild.err;
@@ -165,11 +171,7 @@ TEST_F(GpSurfaceCli, SuggestProposesRunsInsideTheBoundsAndWritesAManifest) {
 // jitter 1e-10 sigma^2 on the diagonal (gp_surface.hpp).
 TEST(GpSurfaceCliOpenFoam, TheRunsStandardErrorsAreTheNoise) {
   TempDir dir;
-  std::vector<std::string> args = {"import"};
-  for (const auto& entry : std::filesystem::directory_iterator(HYDROCOEF_SOURCE_DIR "/data/openfoam-sphere/cases"))
-    args.push_back(entry.path().string());
-  args.insert(args.end(), {"--body", "sphere", "--axes=-x,y,-z", "--quiet"});
-  ASSERT_EQ(run_cli(args, dir.path()).exit_code, 0);
+  ASSERT_EQ(test::import_sphere_cases(dir.path()).exit_code, 0);
   const auto build = run_cli({"surface", "build", "drag", "--body", "sphere", "--outputs", "X", "--axes", "u,v",
                               "--method", "gp", "--degree", "0", "--json"},
                              dir.path());
