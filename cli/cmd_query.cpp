@@ -54,10 +54,12 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
                        "' needs one value for each of its axes: " + join(surface.axis_names(), ", ") + " (e.g. " +
                        surface.axis_names()[a] + "=0.1)");
   std::vector<double> out(n_out), gradient(n_out * n_axes), sd(n_out);
-  if (args.uncertainty) surface.evaluate_with_standard_deviation(point, out, sd);
-  if (args.gradient)
+  if (args.uncertainty)
+    surface.evaluate_with_standard_deviation(point, out, sd,
+                                             args.gradient ? std::span<double>(gradient) : std::span<double>());
+  else if (args.gradient)
     surface.evaluate_with_gradient(point, out, gradient);
-  else if (!args.uncertainty)
+  else
     surface.evaluate(point, out);
 
   if (args.json) {

@@ -218,31 +218,24 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
     std::vector<double> point(n_axes);
     for (std::size_t a = 0; a < n_axes; ++a) point[a] = *values[a].column.data;
     const auto float64 = py::module_::import("numpy").attr("float64");
+    // Outputs, then their standard deviations, then the gradient: the batch's order.
+    std::vector<double> value, deviation, slope;
     if (uncertainty) {
-      const auto answer = surface.evaluate_with_standard_deviation(point);
-      for (std::size_t k = 0; k < n_out; ++k)
-        result[py::str("sigma_" + outputs[k])] = float64(answer.standard_deviation[k]);
+      auto answer = surface.evaluate_with_standard_deviation(point);
+      value = std::move(answer.values);
+      deviation = std::move(answer.standard_deviation);
     }
     if (gradient) {
-      const auto answer = surface.evaluate_with_gradient(point);
-      for (std::size_t k = 0; k < n_out; ++k) result[py::str(outputs[k])] = float64(answer.values[k]);
-      for (std::size_t k = 0; k < n_out; ++k)
-        for (std::size_t a = 0; a < n_axes; ++a)
-          result[py::str("d" + outputs[k] + "/d" + axes[a])] = float64(answer.gradient[k * n_axes + a]);
-    } else {
-      const auto answer = surface.evaluate(point);
-      for (std::size_t k = 0; k < n_out; ++k) result[py::str(outputs[k])] = float64(answer[k]);
+      auto answer = surface.evaluate_with_gradient(point);
+      value = std::move(answer.values);
+      slope = std::move(answer.gradient);
     }
-    if (uncertainty) {
-      // Outputs first, then their standard deviations, as in the batch.
-      py::dict ordered;
-      for (std::size_t k = 0; k < n_out; ++k) ordered[py::str(outputs[k])] = result[py::str(outputs[k])];
-      for (std::size_t k = 0; k < n_out; ++k)
-        ordered[py::str("sigma_" + outputs[k])] = result[py::str("sigma_" + outputs[k])];
-      for (const auto& item : result)
-        if (!ordered.contains(item.first)) ordered[item.first] = item.second;
-      return ordered;
-    }
+    if (!uncertainty && !gradient) value = surface.evaluate(point);
+    for (std::size_t k = 0; k < n_out; ++k) result[py::str(outputs[k])] = float64(value[k]);
+    for (std::size_t k = 0; k < deviation.size(); ++k) result[py::str("sigma_" + outputs[k])] = float64(deviation[k]);
+    for (std::size_t k = 0; k < n_out && gradient; ++k)
+      for (std::size_t a = 0; a < n_axes; ++a)
+        result[py::str("d" + outputs[k] + "/d" + axes[a])] = float64(slope[k * n_axes + a]);
     return result;
   }
 

@@ -273,16 +273,17 @@ void any_points(Work& w, std::size_t& i, std::size_t end) {
     const auto at = static_cast<std::ptrdiff_t>(i);
     for (std::size_t a = 0; a < n_axes; ++a) w.point[a] = w.inputs[a].data[at * w.inputs[a].stride];
     if (!w.deviations.empty()) {
-      w.surface.evaluate_with_standard_deviation(w.point, w.values, w.deviation);
+      w.surface.evaluate_with_standard_deviation(w.point, w.values, w.deviation,
+                                                 with_gradient ? std::span<double>(w.gradient) : std::span<double>());
       for (std::size_t k = 0; k < n_out; ++k) w.deviations[k].data[at * w.deviations[k].stride] = w.deviation[k];
-    }
-    if (with_gradient) {
+    } else if (with_gradient) {
       w.surface.evaluate_with_gradient(w.point, w.values, w.gradient);
-      for (std::size_t g = 0; g < w.gradient.size(); ++g)
-        w.gradients[g].data[at * w.gradients[g].stride] = w.gradient[g];
-    } else if (w.deviations.empty()) {
+    } else {
       w.surface.evaluate(w.point, w.values);
     }
+    if (with_gradient)
+      for (std::size_t g = 0; g < w.gradient.size(); ++g)
+        w.gradients[g].data[at * w.gradients[g].stride] = w.gradient[g];
     for (std::size_t k = 0; k < n_out; ++k) w.outputs[k].data[at * w.outputs[k].stride] = w.values[k];
   }
 }

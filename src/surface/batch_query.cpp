@@ -140,10 +140,12 @@ void answer_slice(const CoefficientSurface& surface, const std::vector<std::size
       point[column_axis[c]] = value;
     }
     try {
-      if (with_sd) surface.evaluate_with_standard_deviation(point, values, sd);
-      if (with_gradient)
+      if (with_sd)
+        surface.evaluate_with_standard_deviation(point, values, sd,
+                                                 with_gradient ? std::span<double>(gradient) : std::span<double>());
+      else if (with_gradient)
         surface.evaluate_with_gradient(point, values, gradient);
-      else if (!with_sd)
+      else
         surface.evaluate(point, values);
     } catch (const InputError& error) {
       fail(nullptr, error.what());

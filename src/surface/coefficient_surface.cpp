@@ -123,11 +123,12 @@ void CoefficientSurface::evaluate_with_gradient(std::span<const double> point, s
 }
 
 void CoefficientSurface::evaluate_with_standard_deviation(std::span<const double> point, std::span<double> out,
-                                                          std::span<double> standard_deviation) const {
+                                                          std::span<double> standard_deviation,
+                                                          std::span<double> gradient) const {
   if (!gp_)
     throw InputError("the surface (method '" + method_name() +
                      "') states no standard deviation at a point; expected a GP surface (surface build --method gp)");
-  gp_->evaluate(point, out, standard_deviation);
+  gp_->evaluate(point, out, standard_deviation, gradient);
 }
 
 }  // namespace hydrocoef

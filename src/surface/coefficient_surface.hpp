@@ -86,10 +86,11 @@ class CoefficientSurface {
   /// Whether the surface states a standard deviation at a point (GP surfaces).
   bool has_standard_deviation() const noexcept { return gp_ != nullptr; }
   /// As evaluate, and standard_deviation[k]: that of output k (the surface's
-  /// predictive standard deviation, in the output's unit). InputError for a
-  /// surface without one (has_standard_deviation() false).
+  /// predictive standard deviation, in the output's unit); with a gradient
+  /// buffer also the gradient, as evaluate_with_gradient, in the same pass.
+  /// InputError for a surface without one (has_standard_deviation() false).
   void evaluate_with_standard_deviation(std::span<const double> point, std::span<double> out,
-                                        std::span<double> standard_deviation) const;
+                                        std::span<double> standard_deviation, std::span<double> gradient = {}) const;
 
  private:
   /// Checks the names against the counts of a scattered surface ("an RBF",

@@ -116,6 +116,30 @@ TEST_F(GpSurfaceCli, QueriesStateTheStandardDeviation) {
   EXPECT_EQ(cells[4], mid["standard_deviation"]["X"].get<double>());
   EXPECT_EQ(cells[5], mid["standard_deviation"]["N"].get<double>());
 
+  // Both at once: the standard deviations and the gradient of one pass, as
+  // the point queries give them.
+  const auto both = cli({"query", "gpxn", "--input", "points.csv", "--uncertainty", "--gradient"});
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  std::istringstream both_lines(both.out);
+  std::string both_header, both_first, both_second;
+  std::getline(both_lines, both_header);
+  std::getline(both_lines, both_first);
+  std::getline(both_lines, both_second);
+  EXPECT_EQ(both_header, "u,v,X,N,sigma_X,sigma_N,dX/du,dX/dv,dN/du,dN/dv");
+  const auto slope = json::parse(cli({"query", "gpxn", "u=0.25", "v=0.1", "--gradient", "--json"}).out);
+  std::vector<double> both_cells;
+  std::stringstream both_row(both_second);
+  for (std::string cell; std::getline(both_row, cell, ',');) both_cells.push_back(std::stod(cell));
+  ASSERT_EQ(both_cells.size(), 10u);
+  EXPECT_EQ(both_cells[2], mid["values"]["X"].get<double>());
+  EXPECT_EQ(both_cells[4], mid["standard_deviation"]["X"].get<double>());
+  EXPECT_EQ(both_cells[6], slope["gradient"]["X"]["u"].get<double>());
+  EXPECT_EQ(both_cells[9], slope["gradient"]["N"]["v"].get<double>());
+  const auto point_both =
+      json::parse(cli({"query", "gpxn", "u=0.25", "v=0.1", "--uncertainty", "--gradient", "--json"}).out);
+  EXPECT_EQ(point_both["gradient"], slope["gradient"]);
+  EXPECT_EQ(point_both["standard_deviation"], mid["standard_deviation"]);
+
   // A surface that states no standard deviation says so, and writes nothing.
   ASSERT_EQ(cli({"surface", "build", "rbfx", "--body", "blob", "--outputs", "X", "--axes", "u,v", "--method", "rbf"})
                 .exit_code,

@@ -12,7 +12,9 @@
 #include <variant>
 
 #include "src/core/error.hpp"
+#include "src/core/names.hpp"
 #include "src/pipeline/sweep_keys.hpp"
+#include "tests/support/hostile_names.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -109,6 +111,31 @@ TEST(NextRuns, TheManifestIsReadBackByTheSweepImporter) {
     EXPECT_EQ(std::get<double>(row->values.at("disturbance.current_v").value), next.runs[i].point[1]);
     EXPECT_EQ(std::get<std::string>(row->values.at("body").value), "sphere");
   }
+}
+
+// A body's name goes into the manifest's CSV through escape::csv_field:
+// every hostile name a body may have comes back from Manifest::read as it was.
+TEST(NextRuns, HostileBodyNamesSurviveTheManifest) {
+  const CoefficientSurface surface = surface_of_runs(8);
+  NextRunsRequest request;
+  request.count = 1;
+  const NextRuns next = suggest_next_runs(surface, request);
+  test::TempDir dir;
+  std::size_t tried = 0;
+  for (const std::string& name : test::hostile_names()) {
+    try {
+      check_name(NameKind::Body, name, {}, "test");
+    } catch (const InputError&) {
+      continue;  // a name no body can have
+    }
+    ++tried;
+    write_next_runs_manifest(next, name, dir / "next.csv");
+    const Manifest manifest = Manifest::read(dir / "next.csv");
+    const SettingsLayer* row = manifest.find(dir / "next-01");
+    ASSERT_NE(row, nullptr) << name;
+    EXPECT_EQ(std::get<std::string>(row->values.at("body").value), name);
+  }
+  EXPECT_GT(tried, 20u);
 }
 
 }  // namespace
