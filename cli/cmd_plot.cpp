@@ -7,6 +7,7 @@
 #include "cli/common.hpp"
 #include "cli/plot_common.hpp"
 #include "src/core/error.hpp"
+#include "src/dynamics/surface_source.hpp"
 #include "src/dynamics/vehicle.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/pipeline/fit_stored_runs.hpp"
@@ -143,7 +144,9 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
       if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::ReadOnly);
       return load_surface(**database, name).surface;
     };
-    const VehicleModel model(load_vehicle(a.vehicle), resolver);
+    VehicleDescription vehicle = load_vehicle(a.vehicle);
+    resolve_stored_fits(vehicle, global.database);
+    const VehicleModel model(std::move(vehicle), resolver);
     std::vector<plot::SteadyPoint> measured;
     if (a.points) measured = plot::read_steady_points(*a.points);
     const std::string name = model.description().name.empty() ? a.vehicle : model.description().name;

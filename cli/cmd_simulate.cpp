@@ -16,6 +16,8 @@
 #include "cli/simulate_output.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/dynamics/damping_draws.hpp"
+#include "src/dynamics/ensemble.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
 #include "src/dynamics/simulation.hpp"
@@ -23,6 +25,70 @@
 
 namespace hydrocoef::cli {
 namespace {
+
+// ---- Monte Carlo options -----------------------------------------------------
+
+struct SampleArgs {
+  std::size_t samples = 0;  // 0: no Monte Carlo
+  std::uint64_t seed = 1;
+  std::vector<double> percentiles;
+  unsigned threads = 0;
+};
+
+void add_sample_options(CLI::App* command, SampleArgs& args, const char* default_percentiles) {
+  command->add_option("--samples", args.samples,
+                      "Monte Carlo: draw the uncertain damping N times (laws from their covariance, GP surfaces from "
+                      "their posterior; one draw per run, not per step) and report percentiles");
+  command->add_option("--seed", args.seed, "Seed of the draws (the same seed gives the same draws)")
+      ->capture_default_str();
+  command
+      ->add_option(
+          "--percentiles", args.percentiles,
+          std::string("Percentiles to report, comma-separated, increasing (default ") + default_percentiles + ")")
+      ->delimiter(',');
+  command->add_option("--threads", args.threads, "Threads for the draws (0: one per core)")->capture_default_str();
+}
+
+/// The draws of a model's damping, or InputError when nothing in it is uncertain.
+DampingDraws model_draws(const VehicleModel& model) {
+  DampingDraws draws(model.damping(), model.description().damping);
+  if (!draws.any()) {
+    std::string held;
+    for (const auto& line : draws.held()) held += "; " + line;
+    throw InputError("--samples: nothing in the vehicle's damping has an uncertainty to draw from" + held +
+                     " (give a law a \"covariance\", name a stored fit with \"fit\", or use a GP surface)");
+  }
+  return draws;
+}
+
+EnsembleOptions ensemble_options(const SampleArgs& args, std::vector<double> default_percentiles) {
+  EnsembleOptions options;
+  options.samples = args.samples;
+  options.seed = args.seed;
+  options.percentiles = args.percentiles.empty() ? std::move(default_percentiles) : args.percentiles;
+  options.threads = args.threads;
+  check_ensemble_options(options);
+  return options;
+}
+
+/// "sampling: 350 of 1000 draws" on a terminal, at most five times a second.
+EnsembleProgress draw_progress() {
+  if (isatty(STDERR_FILENO) == 0) return {};
+  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
+  return [last](std::size_t done, std::size_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - *last < std::chrono::milliseconds(200) && done < total) return;
+    *last = now;
+    std::fprintf(stderr, "\rsampling: %zu of %zu draws%s", done, total, done == total ? "\n" : "");
+  };
+}
+
+/// The vehicle with its stored fits filled in, as a model.
+VehicleModel load_model(const std::string& vehicle, const GlobalOptions& global) {
+  VehicleDescription description = load_vehicle(vehicle);
+  resolve_stored_fits(description, global.database);
+  return VehicleModel(std::move(description), database_surface_resolver(global.database));
+}
 
 // ---- simulate ---------------------------------------------------------------
 
@@ -32,12 +98,19 @@ struct SimulateArgs {
   std::optional<std::string> out;
   std::optional<std::string> experiment;
   double steady_fraction = 0.2;
+  SampleArgs sampling;
   bool json = false;
 };
 
 void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
-  const VehicleModel model(load_vehicle(args.vehicle), database_surface_resolver(global.database));
+  const VehicleModel model = load_model(args.vehicle, global);
   const Scenario scenario = load_scenario(args.scenario);
+  std::optional<DampingDraws> draws;
+  EnsembleOptions options;
+  if (args.sampling.samples > 0) {
+    options = ensemble_options(args.sampling, {5.0, 50.0, 95.0});
+    draws.emplace(model_draws(model));
+  }
   std::optional<MeasuredTrajectory> measured;
   if (args.experiment) measured = read_measured_trajectory(*args.experiment);
   if (!(args.steady_fraction > 0.0 && args.steady_fraction <= 1.0))
@@ -58,16 +131,30 @@ void run_simulate(const SimulateArgs& args, const GlobalOptions& global) {
   const SimulationResult result = simulate(model, scenario, progress);
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (tty && std::chrono::duration<double>(last_print - started).count() > 0.0) std::fprintf(stderr, "\n");
-  if (args.out) write_trajectory_csv(*args.out, result.samples);
+  std::optional<TrajectoryBands> bands;
+  double samples_wall_s = 0.0;
+  if (draws) {
+    const auto sampling_started = std::chrono::steady_clock::now();
+    bands = simulate_samples(model, *draws, scenario, options, draw_progress());
+    samples_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - sampling_started).count();
+  }
+  if (args.out) write_trajectory_csv(*args.out, result.samples, bands ? &*bands : nullptr);
   std::vector<ComponentComparison> comparison;
   if (measured) {
-    ComparisonOptions options;
-    options.steady_fraction = args.steady_fraction;
-    comparison = compare_with_experiment(*measured, result.samples, options);
+    ComparisonOptions compare;
+    compare.steady_fraction = args.steady_fraction;
+    comparison = compare_with_experiment(*measured, result.samples, compare);
   }
-  print_simulation(SimulationReport{args.vehicle, model.description().name, args.scenario, scenario, result, wall_s,
-                                    args.out, args.experiment, args.steady_fraction, comparison},
-                   args.json);
+  SimulationReport report{args.vehicle, model.description().name, args.scenario,        scenario,  result, wall_s,
+                          args.out,     args.experiment,          args.steady_fraction, comparison};
+  if (bands) {
+    report.bands = &*bands;
+    report.draws = &*draws;
+    report.seed = options.seed;
+    report.samples_wall_s = samples_wall_s;
+    report.measured = measured ? &*measured : nullptr;
+  }
+  print_simulation(report, args.json);
 }
 
 // ---- equilibrium ------------------------------------------------------------
@@ -78,11 +165,18 @@ struct EquilibriumArgs {
   std::vector<std::string> current;
   std::vector<std::string> disturbance;
   std::string attitude = "0,0,0";
+  SampleArgs sampling;
   bool json = false;
 };
 
 void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
-  const VehicleModel model(load_vehicle(args.vehicle), database_surface_resolver(global.database));
+  const VehicleModel model = load_model(args.vehicle, global);
+  std::optional<DampingDraws> draws;
+  EnsembleOptions options;
+  if (args.sampling.samples > 0) {
+    options = ensemble_options(args.sampling, {2.5, 50.0, 97.5});
+    draws.emplace(model_draws(model));
+  }
   EquilibriumInputs in;
   for (const auto& text : args.tau) {
     const auto [name, value] = parse_assignment(text, "--tau");
@@ -123,7 +217,18 @@ void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
         std::string(kForceNames[worst]) +
         " (a DOF with a force but no damping, or a coupling that only a change of attitude could balance)");
   }
-  print_equilibrium(EquilibriumReport{args.vehicle, model.description().name, in, eq, attitude}, args.json);
+  EquilibriumReport report{args.vehicle, model.description().name, in, eq, attitude};
+  std::optional<EquilibriumSamples> samples;
+  if (draws) {
+    const auto started = std::chrono::steady_clock::now();
+    in.initial_guess_b = eq.nu_b;  // each draw starts from the nominal equilibrium
+    samples = solve_equilibrium_samples(model, *draws, in, options, draw_progress());
+    report.samples = &*samples;
+    report.draws = &*draws;
+    report.seed = options.seed;
+    report.samples_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  }
+  print_equilibrium(report, args.json);
 }
 
 }  // namespace
@@ -142,6 +247,7 @@ void add_simulate_command(CLI::App& app, const GlobalOptions& global) {
       ->add_option("--steady-fraction", args->steady_fraction,
                    "Fraction of the compared record at its end taken as steady state")
       ->capture_default_str();
+  add_sample_options(command, args->sampling, "5,50,95; with --out, their bands are columns such as r_p5");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_simulate(*args, global); });
 }
@@ -156,6 +262,7 @@ void add_equilibrium_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--disturbance", args->disturbance,
                       "Disturbance parameter NAME=VALUE read by surfaces (repeatable)");
   command->add_option("--attitude-deg", args->attitude, "Attitude held: roll,pitch,yaw [deg]")->capture_default_str();
+  add_sample_options(command, args->sampling, "2.5,50,97.5: the 95 % interval");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_equilibrium(*args, global); });
 }

@@ -9,6 +9,7 @@
 
 #include "cli/common.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -16,6 +17,9 @@ namespace {
 constexpr std::array<const char*, 6> kVelocityUnits{"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
 constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
 constexpr const char* kSignNote = "forces on the body in body axes about CO (SNAME: damping is negative)";
+constexpr const char* kSamplingNote =
+    "each draw holds one sample of the uncertain damping (laws from their covariance, GP surfaces from their "
+    "posterior) for the whole run: parameter uncertainty, not per-step noise";
 
 nlohmann::json velocity_json(const Vector6& nu) {
   nlohmann::json out = nlohmann::json::object();
@@ -58,6 +62,82 @@ std::string integrator_text(const IntegratorSettings& s) {
   if (s.method == IntegratorSettings::Method::Rk4) return "rk4, step " + significant(s.step_s, 6) + " s";
   return "dopri5, rtol " + significant(s.relative_tolerance, 3) + ", atol " + significant(s.absolute_tolerance, 3) +
          ", max step " + significant(s.max_step_s, 6) + " s";
+}
+
+nlohmann::json draws_json(const DampingDraws& draws, std::uint64_t seed, std::size_t requested, std::size_t used,
+                          const EnsembleFailures& failures, double wall_s, const std::vector<double>& percentiles) {
+  return {{"requested", requested},           {"used", used},         {"failed", failures.count},
+          {"first_failures", failures.first}, {"seed", seed},         {"percentiles", percentiles},
+          {"drawn", draws.drawn()},           {"held", draws.held()}, {"notes", draws.notes()},
+          {"sampling", kSamplingNote},        {"wall_time_s", wall_s}};
+}
+
+void print_draws(const DampingDraws& draws, std::uint64_t seed, std::size_t requested, std::size_t used,
+                 const EnsembleFailures& failures, double wall_s) {
+  std::cout << "\n  Monte Carlo: " << used << " of " << requested << " draws (seed " << seed << ", "
+            << significant(wall_s, 3) << " s wall); " << kSamplingNote << '\n';
+  for (const auto& line : draws.drawn()) std::cout << "    drawn: " << line << '\n';
+  for (const auto& line : draws.held()) std::cout << "    held:  " << line << '\n';
+  for (const auto& line : draws.notes()) std::cout << "    note:  " << line << '\n';
+  if (failures.count) {
+    std::cout << "    FAILED: " << failures.count << " draws (the bands are those of the others); first:\n";
+    for (const auto& line : failures.first) std::cout << "      " << line << '\n';
+  }
+}
+
+std::string percentile_label(double p) { return "p" + shortest_number(p); }
+
+void print_bands(const SimulationReport& r) {
+  const TrajectoryBands& b = *r.bands;
+  print_draws(*r.draws, r.seed, b.samples + b.failures.count, b.samples, b.failures, r.samples_wall_s);
+  const std::size_t last = b.t_s.size() - 1;
+  std::cout << "  at t = " << significant(b.t_s[last], 6) << " s, percentiles over the draws:\n  " << std::left
+            << std::setw(7) << "";
+  for (const double p : b.percentiles) std::cout << std::setw(14) << percentile_label(p);
+  std::cout << "unit\n";
+  for (std::size_t q = 0; q < b.quantities.size(); ++q) {
+    // Quantities that do not move in any draw are left out of the table.
+    if (b.value(q, 0, last) == b.value(q, b.percentiles.size() - 1, last) && b.value(q, 0, last) == 0.0) continue;
+    std::cout << "  " << std::setw(7) << b.quantities[q];
+    for (std::size_t j = 0; j < b.percentiles.size(); ++j)
+      std::cout << std::setw(14) << significant(b.value(q, j, last), 6);
+    std::cout << b.units[q] << '\n';
+  }
+  std::cout << std::right;
+  if (r.measured && b.percentiles.size() >= 2) {
+    for (std::size_t i = 0; i < 6; ++i) {
+      if (r.measured->nu_b[i].empty()) continue;
+      const double share = share_inside_band(b, kVelocityNames[i], r.measured->t_s, r.measured->nu_b[i]);
+      if (std::isfinite(share))
+        std::cout << "  measured " << kVelocityNames[i] << " inside the " << percentile_label(b.percentiles.front())
+                  << "-" << percentile_label(b.percentiles.back()) << " band: " << significant(100.0 * share, 3)
+                  << " % of its samples\n";
+    }
+  }
+}
+
+nlohmann::json bands_json(const SimulationReport& r) {
+  const TrajectoryBands& b = *r.bands;
+  nlohmann::json out = draws_json(*r.draws, r.seed, b.samples + b.failures.count, b.samples, b.failures,
+                                  r.samples_wall_s, b.percentiles);
+  const std::size_t last = b.t_s.size() - 1;
+  nlohmann::json final_values = nlohmann::json::object();
+  for (std::size_t q = 0; q < b.quantities.size(); ++q) {
+    nlohmann::json values = nlohmann::json::object();
+    for (std::size_t j = 0; j < b.percentiles.size(); ++j)
+      values[percentile_label(b.percentiles[j])] = b.value(q, j, last);
+    final_values[b.quantities[q]] = values;
+  }
+  out["final"] = {{"t", b.t_s[last]}, {"percentiles", final_values}};
+  if (r.measured && b.percentiles.size() >= 2) {
+    nlohmann::json inside = nlohmann::json::object();
+    for (std::size_t i = 0; i < 6; ++i)
+      if (!r.measured->nu_b[i].empty())
+        inside[std::string(kVelocityNames[i])] =
+            optional_number(share_inside_band(b, kVelocityNames[i], r.measured->t_s, r.measured->nu_b[i]));
+    out["measured_inside_band"] = inside;
+  }
+  return out;
 }
 
 }  // namespace
@@ -106,6 +186,7 @@ void print_simulation(const SimulationReport& r, bool json) {
                                      {"t63_measured_s", optional_number(c.t63_measured_s)},
                                      {"t63_simulated_s", optional_number(c.t63_simulated_s)}});
     }
+    if (r.bands) out["monte_carlo"] = bands_json(r);
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
@@ -138,6 +219,7 @@ void print_simulation(const SimulationReport& r, bool json) {
                 << std::setw(10) << significant(c.t63_measured_s, 4) << significant(c.t63_simulated_s, 4) << '\n';
     std::cout << std::right;
   }
+  if (r.bands) print_bands(r);
 }
 
 void print_equilibrium(const EquilibriumReport& r, bool json) {
@@ -153,6 +235,18 @@ void print_equilibrium(const EquilibriumReport& r, bool json) {
                           {"attitude_deg", {{"phi", r.attitude[0]}, {"theta", r.attitude[1]}, {"psi", r.attitude[2]}}},
                           {"units", units_json()},
                           {"sign_convention", kSignNote}};
+    if (r.samples) {
+      const EquilibriumSamples& m = *r.samples;
+      nlohmann::json mc = draws_json(*r.draws, r.seed, m.samples + m.failures.count, m.samples, m.failures,
+                                     r.samples_wall_s, m.percentiles);
+      mc["mean"] = velocity_json(m.mean);
+      mc["standard_deviation"] = velocity_json(m.standard_deviation);
+      nlohmann::json values = nlohmann::json::object();
+      for (std::size_t j = 0; j < m.percentiles.size(); ++j)
+        values[percentile_label(m.percentiles[j])] = velocity_json(m.percentile_values[j]);
+      mc["velocity_percentiles"] = values;
+      out["monte_carlo"] = mc;
+    }
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
@@ -166,6 +260,23 @@ void print_equilibrium(const EquilibriumReport& r, bool json) {
             << significant(r.eq.residual_b.cwiseAbs().maxCoeff(), 3) << ")\n";
   print_velocity_table(r.eq.nu_b, r.eq.forces);
   std::cout << "  (" << kSignNote << ")\n";
+  if (!r.samples) return;
+  const EquilibriumSamples& m = *r.samples;
+  print_draws(*r.draws, r.seed, m.samples + m.failures.count, m.samples, m.failures, r.samples_wall_s);
+  std::cout << "  steady velocity over the draws:\n  " << std::left << std::setw(4) << "" << std::setw(14) << "mean"
+            << std::setw(14) << "std. dev.";
+  for (const double p : m.percentiles) std::cout << std::setw(14) << percentile_label(p);
+  std::cout << "unit\n";
+  for (std::size_t i = 0; i < 6; ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    if (m.standard_deviation[k] == 0.0 && m.mean[k] == 0.0) continue;
+    std::cout << "  " << std::setw(4) << kVelocityNames[i] << std::setw(14) << significant(m.mean[k], 6)
+              << std::setw(14) << significant(m.standard_deviation[k], 4);
+    for (std::size_t j = 0; j < m.percentiles.size(); ++j)
+      std::cout << std::setw(14) << significant(m.percentile_values[j][k], 6);
+    std::cout << kVelocityUnits[i] << '\n';
+  }
+  std::cout << std::right;
 }
 
 }  // namespace hydrocoef::cli

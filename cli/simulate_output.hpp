@@ -2,10 +2,13 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "src/dynamics/damping_draws.hpp"
+#include "src/dynamics/ensemble.hpp"
 #include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/experiment.hpp"
 #include "src/dynamics/simulation.hpp"
@@ -24,6 +27,13 @@ struct SimulationReport {
   const std::optional<std::string>& experiment;  ///< the measured trajectory compared with, if any
   double steady_fraction = 0.2;
   const std::vector<ComponentComparison>& comparison;
+  /// A Monte Carlo run (--samples): its bands and what was drawn; null otherwise.
+  const TrajectoryBands* bands = nullptr;
+  const DampingDraws* draws = nullptr;
+  std::uint64_t seed = 0;
+  double samples_wall_s = 0.0;
+  /// The measured record, for the share of it inside the outer band.
+  const MeasuredTrajectory* measured = nullptr;
 };
 
 /// What an equilibrium command solved.
@@ -33,6 +43,11 @@ struct EquilibriumReport {
   const EquilibriumInputs& in;
   const EquilibriumResult& eq;
   const std::array<double, 3>& attitude;  ///< roll, pitch, yaw held [deg]
+  /// A Monte Carlo run (--samples): its distribution and what was drawn; null otherwise.
+  const EquilibriumSamples* samples = nullptr;
+  const DampingDraws* draws = nullptr;
+  std::uint64_t seed = 0;
+  double samples_wall_s = 0.0;
 };
 
 void print_simulation(const SimulationReport& report, bool json);

@@ -42,6 +42,7 @@ Trajectory simulate(const std::string& vehicle_json, const std::string& scenario
       is_json_text(vehicle_json) ? parse_vehicle(vehicle_json, "vehicle JSON") : load_vehicle(vehicle_json);
   const Scenario scenario =
       is_json_text(scenario_json) ? parse_scenario(scenario_json, "scenario JSON") : load_scenario(scenario_json);
+  if (!database.empty()) resolve_stored_fits(vehicle, database);
   const VehicleModel model(std::move(vehicle),
                            database.empty() ? SurfaceResolver() : database_surface_resolver(database));
   const SimulationResult result = hydrocoef::simulate(model, scenario);

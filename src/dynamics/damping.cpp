@@ -1,6 +1,8 @@
 #include "src/dynamics/damping.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "src/core/error.hpp"
@@ -34,6 +36,30 @@ std::vector<std::string> axis_bindings(const CoefficientSurface& surface, const 
 
 }  // namespace
 
+std::optional<std::string> covariance_problem(std::span<const double> covariance, std::size_t k) {
+  if (covariance.size() != k * k)
+    return "found " + std::to_string(covariance.size()) + " numbers, expected " + std::to_string(k * k) + " (" +
+           std::to_string(k) + " x " + std::to_string(k) + ")";
+  double largest = 0.0;
+  for (const double c : covariance) {
+    if (!std::isfinite(c)) return "found a number that is not finite, expected a covariance matrix";
+    largest = std::max(largest, std::abs(c));
+  }
+  const double tolerance = 1e-9 * largest;
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::abs(covariance[i * k + j] - covariance[j * k + i]) > tolerance)
+        return "found entries [" + std::to_string(i) + "][" + std::to_string(j) + "] and [" + std::to_string(j) + "][" +
+               std::to_string(i) + "] that differ, expected a symmetric matrix";
+  const Eigen::Map<const Eigen::MatrixXd> c(covariance.data(), static_cast<Eigen::Index>(k),
+                                            static_cast<Eigen::Index>(k));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(c, Eigen::EigenvaluesOnly);
+  if (k > 0 && eigen.eigenvalues().minCoeff() < -1e-9 * std::max(largest, 1e-300))
+    return "found the eigenvalue " + std::to_string(eigen.eigenvalues().minCoeff()) +
+           ", expected a positive semi-definite matrix (variances cannot be negative)";
+  return std::nullopt;
+}
+
 DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resolver) {
   // Pass 1: laws, and the surfaces with their bindings.
   struct Pending {
@@ -49,12 +75,18 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
     switch (d.kind) {
       case DofDamping::Kind::None: break;
       case DofDamping::Kind::Law: {
+        if (!d.fit.empty() && d.law.terms.empty())
+          throw InputError(dof_context(dof) + ": the stored fit '" + d.fit +
+                           "' is needed but no run database was given to read it from");
         const auto variable = velocity_index(d.law.variable);
         if (!variable || d.law.terms.empty() || d.law.terms.size() > 6)
           throw InputError(dof_context(dof) + ": a law needs 1 to 6 terms of one velocity component u, v, w, p, q, r");
         if (d.coefficients.size() != d.law.terms.size())
           throw InputError(dof_context(dof) + ": found " + std::to_string(d.coefficients.size()) +
                            " coefficients for " + std::to_string(d.law.terms.size()) + " terms, expected one per term");
+        if (!d.covariance.empty())
+          if (const auto problem = covariance_problem(d.covariance, d.coefficients.size()))
+            throw InputError(dof_context(dof) + ": covariance: " + *problem);
         Law law;
         law.dof = dof;
         law.variable = *variable;

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -47,6 +48,14 @@ struct DofDamping {
   // one coefficient per term [force unit / term unit].
   DampingLawSpec law;
   std::vector<double> coefficients;
+  /// Law: the coefficients' covariance, k x k row by row [unit_i unit_j], in
+  /// the law's sign convention; empty when the law states none (it is then
+  /// held at its values by Monte Carlo draws, src/dynamics/damping_draws.hpp).
+  std::vector<double> covariance;
+  /// Law from a stored fit of this name: terms, coefficients, covariance and
+  /// sign are filled from the database by resolve_stored_fits
+  /// (src/dynamics/surface_source.hpp) before the model is built.
+  std::string fit;
   // Surface: its name (for the resolver), the output read ("X".."N" or any
   // output name), and for each surface axis where its value comes from: a
   // relative velocity component "u".."r" or a disturbance parameter name.
@@ -62,9 +71,16 @@ struct DofDamping {
 /// The damping of X, Y, Z, K, M, N in that order.
 using DampingSpec = std::array<DofDamping, 6>;
 
+/// Why `covariance` (k x k, row by row) cannot be a covariance matrix: a size
+/// other than k^2, a number that is not finite, an asymmetry beyond round-off,
+/// or a negative eigenvalue beyond round-off. nullopt when it can.
+std::optional<std::string> covariance_problem(std::span<const double> covariance, std::size_t k);
+
 /// Resolves a surface name to a surface (for example from the run database,
 /// see src/surface/stored_surface.hpp); throws InputError when it has none.
 using SurfaceResolver = std::function<CoefficientSurface(const std::string& name)>;
+
+class DampingDraws;
 
 class DampingModel {
  public:
@@ -108,6 +124,8 @@ class DampingModel {
     std::array<std::size_t, 6> dof{};
     std::array<double, 6> sign{};
   };
+
+  friend class DampingDraws;  // makes copies with drawn coefficients and surfaces
 
   std::array<bool, 6> damped_{};
   std::vector<Law> laws_;

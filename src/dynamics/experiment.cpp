@@ -7,6 +7,7 @@
 
 #include "importers/text_table.hpp"
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
 #include "src/core/units.hpp"
 #include "src/dynamics/json_input.hpp"
@@ -60,11 +61,28 @@ MeasuredTrajectory parse_measured_trajectory(std::string_view text, const std::s
   double time_scale = 1.0;
   std::array<std::optional<std::size_t>, 6> columns;
   std::array<double, 6> scales{};
+  struct BandColumn {
+    std::size_t component;
+    double percentile;
+    std::size_t column;
+    double scale;
+  };
+  std::vector<BandColumn> band_columns;
   for (std::size_t c = 0; c < fields.size(); ++c) {
     const NameAndUnit nu = split_name_and_unit(fields[c].text);
     const SourceLocation where{file, header.number, fields[c].column};
     const bool is_time = nu.name == "t" || nu.name == "time";
-    const auto component = velocity_index(nu.name);
+    auto component = velocity_index(nu.name);
+    // A percentile band of a Monte Carlo simulation: "r_p5", "u_p97.5".
+    std::optional<double> percentile;
+    if (!is_time && !component && nu.name.size() > 3 && nu.name.substr(1, 2) == "_p") {
+      const auto band_of = velocity_index(nu.name.substr(0, 1));
+      const auto value = parse_finite_number(nu.name.substr(3));
+      if (band_of && value && *value > 0.0 && *value < 100.0) {
+        component = band_of;
+        percentile = value;
+      }
+    }
     if (!is_time && !component) continue;
     const Dimension expected = is_time ? kTime : (*component < 3 ? kVelocity : kAngularVelocity);
     double scale = 1.0;
@@ -80,7 +98,12 @@ MeasuredTrajectory parse_measured_trajectory(std::string_view text, const std::s
                                     "), expected " + si_unit_name(expected));
       scale = unit.scale;
     }
-    if (is_time) {
+    if (percentile) {
+      for (const auto& band : band_columns)
+        if (band.component == *component && band.percentile == *percentile)
+          throw InputError(where, "found column '" + nu.name + "' twice, expected it once");
+      band_columns.push_back({*component, *percentile, c, scale});
+    } else if (is_time) {
       if (time_column) throw InputError(where, "found a second time column '" + fields[c].text + "', expected one");
       time_column = c;
       time_scale = scale;
@@ -95,6 +118,11 @@ MeasuredTrajectory parse_measured_trajectory(std::string_view text, const std::s
   if (std::none_of(columns.begin(), columns.end(), [](const auto& c) { return c.has_value(); }))
     throw InputError(SourceLocation{file, header.number, 1},
                      "found no velocity column, expected at least one of u, v, w, p, q, r");
+
+  std::sort(band_columns.begin(), band_columns.end(), [](const BandColumn& a, const BandColumn& b) {
+    return a.component != b.component ? a.component < b.component : a.percentile < b.percentile;
+  });
+  for (const auto& band : band_columns) m.bands_b[band.component].push_back({band.percentile, {}});
 
   for (std::size_t l = header_line + 1; l < lines.size(); ++l) {
     const TextLine& line = lines[l];
@@ -114,6 +142,12 @@ MeasuredTrajectory parse_measured_trajectory(std::string_view text, const std::s
     m.t_s.push_back(t);
     for (std::size_t k = 0; k < 6; ++k)
       if (columns[k]) m.nu_b[k].push_back(field(*columns[k], kVelocityNames[k]) * scales[k]);
+    for (std::size_t b = 0, at = 0; b < band_columns.size(); ++b, ++at) {
+      const BandColumn& band = band_columns[b];
+      if (b > 0 && band.component != band_columns[b - 1].component) at = 0;
+      m.bands_b[band.component][at].second.push_back(
+          field(band.column, band_column(kVelocityNames[band.component], band.percentile)) * band.scale);
+    }
   }
   if (m.t_s.size() < 2)
     throw InputError(SourceLocation{file}, "found " + std::to_string(m.t_s.size()) + " rows, expected at least 2");

@@ -7,8 +7,8 @@
 // one header line naming a time column "t" or "time" and any velocity
 // components "u", "v", "w", "p", "q", "r", each with an optional unit in
 // brackets ("t [s]", "r [deg s^-1]"; no unit means SI); other columns are
-// ignored. Times are on the scenario's clock (t = 0 when the scenario starts)
-// and must increase.
+// ignored, except percentile bands "r_p5" of `simulate --samples`. Times are on the scenario's clock (t = 0 when the
+// scenario starts) and must increase.
 #pragma once
 
 #include <array>
@@ -26,6 +26,10 @@ struct MeasuredTrajectory {
   std::vector<double> t_s;
   /// Per component u..r, SI; empty when the file has no such column.
   std::array<std::vector<double>, 6> nu_b;
+  /// Percentile bands of a Monte Carlo simulation (columns such as "r_p5",
+  /// src/dynamics/trajectory.hpp), per component u..r: (percentile, values),
+  /// percentiles increasing; empty when the file has none.
+  std::array<std::vector<std::pair<double, std::vector<double>>>, 6> bands_b;
 };
 
 /// InputError "FILE:LINE:COLUMN: ..." for a missing time or velocity column,

@@ -1,12 +1,14 @@
-// Where a vehicle's damping surfaces come from: a run database, opened
-// read-only on first use, so that a vehicle whose damping is all fitted laws
-// never opens it (and needs no database file). What `hydrocoef simulate` and
-// `equilibrium`, and the C++ and Python simulate, give VehicleModel.
+// Where a vehicle's damping comes from when it names stored records: a run
+// database, opened read-only on first use, so that a vehicle whose damping
+// is all laws given in its file never opens it (and needs no database file).
+// What `hydrocoef simulate`, `equilibrium` and `plot steady`, and the C++
+// and Python simulate, give VehicleModel.
 #pragma once
 
 #include <filesystem>
 
 #include "src/dynamics/damping.hpp"
+#include "src/dynamics/vehicle.hpp"
 
 namespace hydrocoef {
 
@@ -14,5 +16,14 @@ namespace hydrocoef {
 /// database for a file that is not one, or listing the stored surfaces for a
 /// name that is not there).
 SurfaceResolver database_surface_resolver(const std::filesystem::path& database);
+
+/// Fills every damping law the vehicle takes from a stored fit ("fit":
+/// NAME): its terms, coefficients, sign convention and covariance (empty
+/// when the fit recorded none). InputError prefixed with the vehicle's file
+/// for a fit that is not stored (listing those of the vehicle's DOF), of
+/// another force component than the DOF it is given for, or whose stored
+/// covariance is not one (src/dynamics/damping.hpp, covariance_problem).
+/// Opens the database only when a fit is named.
+void resolve_stored_fits(VehicleDescription& vehicle, const std::filesystem::path& database);
 
 }  // namespace hydrocoef

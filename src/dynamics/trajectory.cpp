@@ -3,6 +3,7 @@
 #include <array>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "src/core/atomic_file.hpp"
@@ -45,10 +46,31 @@ std::string trajectory_csv_header() {
   return h;
 }
 
-void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>& samples) {
-  out << trajectory_csv_header() << '\n';
+std::size_t TrajectoryBands::quantity_index(std::string_view name) const {
+  for (std::size_t q = 0; q < quantities.size(); ++q)
+    if (quantities[q] == name) return q;
+  std::string list;
+  for (const auto& n : quantities) list += (list.empty() ? "" : ", ") + n;
+  throw InputError("found the quantity '" + std::string(name) + "', expected one of " + list);
+}
+
+std::string band_column(std::string_view quantity, double percentile) {
+  return std::string(quantity) + "_p" + shortest_number(percentile);
+}
+
+void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>& samples,
+                          const TrajectoryBands* bands) {
+  if (bands && bands->t_s.size() != samples.size())
+    throw std::invalid_argument("write_trajectory_csv: bands at other times than the samples");
+  std::string header = trajectory_csv_header();
+  if (bands)
+    for (std::size_t q = 0; q < bands->quantities.size(); ++q)
+      for (const double p : bands->percentiles)
+        header += "," + band_column(bands->quantities[q], p) + " [" + bands->units[q] + "]";
+  out << header << '\n';
   std::string line;
-  for (const auto& s : samples) {
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const auto& s = samples[k];
     line.clear();
     append_shortest_number(line, s.t_s);
     append_all(line, s.p_n);
@@ -60,15 +82,22 @@ void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>
     append_all(line, s.forces.damping_b);
     append_all(line, s.forces.hydrostatic_b);
     append_all(line, s.forces.coriolis_b);
+    if (bands)
+      for (std::size_t q = 0; q < bands->quantities.size(); ++q)
+        for (std::size_t j = 0; j < bands->percentiles.size(); ++j) {
+          line += ',';
+          append_shortest_number(line, bands->value(q, j, k));
+        }
     line += '\n';
     out << line;
   }
 }
 
-void write_trajectory_csv(const std::filesystem::path& path, const std::vector<TrajectorySample>& samples) {
+void write_trajectory_csv(const std::filesystem::path& path, const std::vector<TrajectorySample>& samples,
+                          const TrajectoryBands* bands) {
   // Whole or not at all: a failed write (a full disk) leaves no partial file.
   std::ostringstream out;
-  write_trajectory_csv(out, samples);
+  write_trajectory_csv(out, samples, bands);
   write_file_atomically(path, out.str());
 }
 

@@ -12,6 +12,8 @@
 
 #include <filesystem>
 #include <ostream>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "src/dynamics/vehicle_model.hpp"
@@ -27,14 +29,45 @@ struct TrajectorySample {
   ForceBreakdown forces;  ///< includes nu_r_b
 };
 
+/// The draws that failed: how many, and the first few messages ("draw 17: ...").
+struct EnsembleFailures {
+  std::size_t count = 0;
+  std::vector<std::string> first;
+};
+
+/// Percentile bands of every state component over time.
+struct TrajectoryBands {
+  std::vector<double> t_s;
+  /// x_n y_n z_n [m], phi theta psi [rad] (zyx Euler, unwrapped in time),
+  /// u v w [m s^-1], p q r [rad s^-1]: as in the trajectory CSV.
+  std::vector<std::string> quantities;
+  std::vector<std::string> units;
+  std::vector<double> percentiles;
+  /// Percentile j of quantity q at time k: values[(q * percentiles + j) * times + k].
+  std::vector<double> values;
+  std::size_t samples = 0;  ///< trajectories that reached the end
+  EnsembleFailures failures;
+
+  double value(std::size_t quantity, std::size_t percentile, std::size_t time) const {
+    return values[(quantity * percentiles.size() + percentile) * t_s.size() + time];
+  }
+  /// Index of a quantity by name; InputError listing them otherwise.
+  std::size_t quantity_index(std::string_view name) const;
+};
+
 /// The sample of state x at time t under inputs (forces evaluated there).
 TrajectorySample make_sample(const VehicleModel& model, double t_s, const StateVector& x, const ModelInputs& inputs);
 
 /// The header line (without newline).
 std::string trajectory_csv_header();
-/// Writes the header and one row per sample, numbers in shortest round-trip form.
-void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>& samples);
+/// Writes the header and one row per sample, numbers in shortest round-trip
+/// form; with bands (at the samples' times), their columns after the others.
+void write_trajectory_csv(std::ostream& out, const std::vector<TrajectorySample>& samples,
+                          const TrajectoryBands* bands = nullptr);
 /// As above into a file; InputError naming the file when it cannot be written.
-void write_trajectory_csv(const std::filesystem::path& path, const std::vector<TrajectorySample>& samples);
+void write_trajectory_csv(const std::filesystem::path& path, const std::vector<TrajectorySample>& samples,
+                          const TrajectoryBands* bands = nullptr);
+/// "r_p5": the CSV column name of percentile P of a quantity.
+std::string band_column(std::string_view quantity, double percentile);
 
 }  // namespace hydrocoef

@@ -89,12 +89,25 @@ SignConvention read_sign(const Json& object, const std::string& file, const std:
 }
 
 DofDamping read_dof_damping(const Json& value, const std::string& file, const std::string& path) {
-  ji::expect_object(value, file, path, {"law", "surface", "output", "axes", "sign"});
+  ji::expect_object(value, file, path, {"law", "covariance", "fit", "surface", "output", "axes", "sign"});
   DofDamping d;
-  d.sign = read_sign(value, file, path);
   const Json* law = ji::find(value, "law");
+  const Json* fit = ji::find(value, "fit");
   const Json* surface = ji::find(value, "surface");
-  if ((law != nullptr) == (surface != nullptr)) ji::fail(file, path, "expected exactly one of \"law\" and \"surface\"");
+  if ((law != nullptr) + (fit != nullptr) + (surface != nullptr) != 1)
+    ji::fail(file, path, "expected exactly one of \"law\", \"fit\" and \"surface\"");
+  if (fit) {
+    // A stored fit brings its terms, coefficients, covariance and sign
+    // (resolve_stored_fits, src/dynamics/surface_source.hpp).
+    for (const char* key : {"sign", "covariance", "output", "axes"})
+      if (ji::find(value, key))
+        ji::fail(file, ji::join(path, key), "a stored fit brings its own terms, sign and covariance");
+    d.fit = ji::string(*fit, file, ji::join(path, "fit"));
+    if (d.fit.empty()) ji::fail(file, ji::join(path, "fit"), "found an empty name, expected a stored fit's name");
+    d.kind = DofDamping::Kind::Law;
+    return d;
+  }
+  d.sign = read_sign(value, file, path);
   if (law) {
     if (ji::find(value, "output") || ji::find(value, "axes"))
       ji::fail(file, path, "\"output\" and \"axes\" belong to a surface, not to a law");
@@ -113,9 +126,18 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
     // parse_damping_terms keeps the order of the text, i.e. the object's key order.
     for (const auto& item : law->items())
       d.coefficients.push_back(ji::number(item.value(), file, ji::join(law_path, item.key())));
+    if (const Json* covariance = ji::find(value, "covariance")) {
+      const auto k = static_cast<Eigen::Index>(d.coefficients.size());
+      const Eigen::MatrixXd c = ji::matrix(*covariance, file, ji::join(path, "covariance"), k);
+      d.covariance.assign(c.data(), c.data() + c.size());  // symmetric: column-major = row-major
+      if (const auto problem = covariance_problem(d.covariance, d.coefficients.size()))
+        ji::fail(file, ji::join(path, "covariance"), *problem);
+    }
     d.kind = DofDamping::Kind::Law;
     return d;
   }
+  if (ji::find(value, "covariance"))
+    ji::fail(file, ji::join(path, "covariance"), "a covariance belongs to a law; a surface states its own uncertainty");
   d.kind = DofDamping::Kind::Surface;
   d.surface = ji::string(*surface, file, ji::join(path, "surface"));
   d.output = ji::string(ji::require(value, file, path, "output"), file, ji::join(path, "output"));

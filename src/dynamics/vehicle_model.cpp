@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <stdexcept>
 
 #include "src/core/error.hpp"
 
@@ -41,6 +42,14 @@ VehicleModel::VehicleModel(VehicleDescription description, const SurfaceResolver
   } catch (const InputError& e) {
     throw InputError(SourceLocation{description_.file}, e.what());
   }
+}
+
+VehicleModel VehicleModel::with_damping(DampingModel damping) const {
+  if (damping.disturbance_names() != damping_.disturbance_names())
+    throw std::invalid_argument("VehicleModel::with_damping: a damping model reading other disturbances");
+  VehicleModel copy = *this;
+  copy.damping_ = std::move(damping);
+  return copy;
 }
 
 double VehicleModel::clamp_thrust(std::size_t thruster, double thrust_N) const {

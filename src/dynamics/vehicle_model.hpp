@@ -81,6 +81,11 @@ class VehicleModel {
   /// symmetric positive definite.
   explicit VehicleModel(VehicleDescription description, const SurfaceResolver& resolver = {});
 
+  /// The same vehicle with another damping model (a Monte Carlo draw of this
+  /// one's, src/dynamics/damping_draws.hpp): it must read the same
+  /// disturbances (std::invalid_argument otherwise).
+  VehicleModel with_damping(DampingModel damping) const;
+
   const VehicleDescription& description() const noexcept { return description_; }
   const Matrix6& rigid_body_mass() const noexcept { return m_rb_; }
   const Matrix6& added_mass() const noexcept { return m_a_; }

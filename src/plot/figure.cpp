@@ -63,6 +63,9 @@ void check_figure(const Figure& figure) {
       if (s.x.size() != s.y.size())
         throw InputError("plot series '" + s.title + "': " + std::to_string(s.x.size()) + " x values but " +
                          std::to_string(s.y.size()) + " y values");
+      if ((s.style == Series::Style::Band) != !s.y_high.empty() ||
+          (s.style == Series::Style::Band && s.y_high.size() != s.x.size()))
+        throw InputError("plot series '" + s.title + "': a band needs one upper value per x value, other series none");
       any = any || !s.x.empty();
     }
     if (!any) throw InputError("plot panel '" + panel.title + "': nothing to draw (no values)");
@@ -174,10 +177,12 @@ std::string data_file_text(const Figure& figure) {
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       const Series& series = panel.series[s];
       if (index.series[p][s] < 0) continue;
-      out +=
-          "# block " + std::to_string(index.series[p][s]) + ": " + escape::gnuplot_comment(series.title) + "\n# x y\n";
+      const bool band = series.style == Series::Style::Band;
+      out += "# block " + std::to_string(index.series[p][s]) + ": " + escape::gnuplot_comment(series.title) +
+             (band ? "\n# x y_low y_high\n" : "\n# x y\n");
       for (std::size_t i = 0; i < series.x.size(); ++i)
-        out += gnuplot_number(series.x[i]) + " " + gnuplot_number(series.y[i]) + "\n";
+        out += gnuplot_number(series.x[i]) + " " + gnuplot_number(series.y[i]) +
+               (band ? " " + gnuplot_number(series.y_high[i]) : std::string()) + "\n";
       out += "\n\n";
     }
   }
@@ -244,8 +249,12 @@ std::string script_text(const Figure& figure, const std::filesystem::path& data,
       const Series& series = panel.series[s];
       if (index.series[p][s] < 0) continue;
       const std::string colour = kPalette[series.colour % kPalette.size()];
-      std::string clause = file + " index " + std::to_string(index.series[p][s]) + " using 1:2 with ";
+      std::string clause = file + " index " + std::to_string(index.series[p][s]) +
+                           (series.style == Series::Style::Band ? " using 1:2:3 with " : " using 1:2 with ");
       switch (series.style) {
+        case Series::Style::Band:
+          clause += "filledcurves fc rgb '" + colour + "' fs transparent solid 0.25 noborder";
+          break;
         case Series::Style::Points: clause += "points pt 7 ps 0.8 lc rgb '" + colour + "'"; break;
         case Series::Style::Line: clause += "lines lw 2 lc rgb '" + colour + "'"; break;
         case Series::Style::DashedLine: clause += "lines lw 2 dt 2 lc rgb '" + colour + "'"; break;

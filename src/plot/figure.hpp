@@ -26,12 +26,15 @@ namespace hydrocoef::plot {
 
 /// One set of (x, y) values drawn as points or as a line.
 struct Series {
-  enum class Style { Points, Line, DashedLine };
+  /// Band: the region between y (lower edge) and y_high (upper edge),
+  /// shaded in the series' colour, e.g. a percentile band of a simulation.
+  enum class Style { Points, Line, DashedLine, Band };
   std::string title;  ///< legend text; empty: no legend entry
   Style style = Style::Line;
   std::size_t colour = 0;  ///< index into a fixed palette; points and line of one level share it
   std::vector<double> x;
-  std::vector<double> y;  ///< same length as x
+  std::vector<double> y;       ///< same length as x
+  std::vector<double> y_high;  ///< Band only: the upper edge, same length as x
 };
 
 /// Values z(x, y) on a regular grid drawn as a coloured map.

@@ -550,6 +550,58 @@ double GpSurface::evaluate(const double* x, Workspace& ws, double* standard_devi
   return state_.value_centre + state_.value_scale * mean;
 }
 
+void GpSurface::posterior(std::span<const double> points, std::size_t count, std::vector<double>& mean,
+                          std::vector<double>& covariance) const {
+  const std::size_t n = state_.samples, d = state_.dims, m = terms_;
+  if (points.size() != count * d) throw std::logic_error("GpSurface::posterior: points do not match count x dims");
+  Workspace ws(*this);
+  // Per point: w = L^-1 k* (n values) and v = R^-1 u (m values), columns of W and V.
+  std::vector<double> w(count * n), v(count * m), xl(count * d);
+  mean.assign(count, 0.0);
+  for (std::size_t j = 0; j < count; ++j) {
+    const double* x = points.data() + j * d;
+    double sd = 0.0;
+    mean[j] = evaluate(x, ws, &sd);  // fills ws.w_ = L^-1 k*
+    std::copy(ws.w_.begin(), ws.w_.begin() + static_cast<std::ptrdiff_t>(n),
+              w.begin() + static_cast<std::ptrdiff_t>(j * n));
+    double z[kMaxDims], h[1 + 2 * kMaxDims];
+    for (std::size_t a = 0; a < d; ++a) {
+      z[a] = (x[a] - state_.axis_centre[a]) / state_.axis_scale[a];
+      xl[j * d + a] = z[a] / state_.length_scales[a];
+    }
+    mean_basis(state_.mean_degree, d, z, h);
+    double* u = v.data() + j * m;
+    const double* wj = w.data() + j * n;
+    for (std::size_t t = 0; t < m; ++t) u[t] = h[t] - dot_product(state_.basis_solve.data() + t * n, wj, n);
+    const double* R = state_.mean_cholesky.data();
+    for (std::size_t t = 0; t < m; ++t) {
+      const double* row = R + t * (t + 1) / 2;
+      double sum = u[t];
+      for (std::size_t s = 0; s < t; ++s) sum -= row[s] * u[s];
+      u[t] = sum / row[t];
+    }
+  }
+  const double s2 = state_.sigma * state_.sigma;
+  const double scale2 = state_.value_scale * state_.value_scale;
+  covariance.assign(count * count, 0.0);
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t j = 0; j <= i; ++j) {
+      double r2 = 0.0;
+      for (std::size_t a = 0; a < d; ++a) {
+        const double delta = xl[i * d + a] - xl[j * d + a];
+        r2 += delta * delta;
+      }
+      double c = 0.0, dc = 0.0;
+      correlation(state_.kernel, r2, c, dc);
+      double value = s2 * c - dot_product(w.data() + i * n, w.data() + j * n, n) +
+                     dot_product(v.data() + i * m, v.data() + j * m, m);
+      value *= scale2;
+      covariance[i * count + j] = value;
+      covariance[j * count + i] = value;
+    }
+  }
+}
+
 void GpSurface::add_pseudo_run(const double* x) {
   const std::size_t n = state_.samples, d = state_.dims, m = terms_;
   Workspace ws(*this);

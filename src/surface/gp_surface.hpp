@@ -117,6 +117,15 @@ class GpSurface {
   double evaluate(const double* x, Workspace& workspace, double* standard_deviation = nullptr,
                   double* gradient = nullptr) const;
 
+  /// The posterior of the latent function at `count` points jointly
+  /// (`points`: count x dims, point-major, axis units): mean[j] and
+  /// covariance[i * count + j] = cov(f(x_i), f(x_j)) [value unit^2],
+  ///   k(x_i, x_j) - w_i^T w_j + (R^-1 u_i)^T (R^-1 u_j)
+  /// with w, u as for the standard deviation (the same variance on the
+  /// diagonal). What a draw of a whole function is made from. O(count n^2).
+  void posterior(std::span<const double> points, std::size_t count, std::vector<double>& mean,
+                 std::vector<double>& covariance) const;
+
   /// Adds a pseudo-run at x whose value is the current mean (it changes no
   /// mean, only where the surface is sure): the basis of sequential design.
   /// O(n^2).
