@@ -42,6 +42,9 @@ struct SteadyPlotArgs : CommonPlotArgs {
   std::optional<double> tau_from, tau_to;
   std::size_t count = 6;
   std::optional<std::string> points;
+  std::size_t samples = 0;
+  std::uint64_t seed = 1;
+  std::vector<double> percentiles;
 };
 
 }  // namespace
@@ -133,6 +136,14 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   steady->add_option("--count", steady_args->count, "Number of forces in the range")->capture_default_str();
   steady->add_option("--experiment-points", steady_args->points,
                      "Measured steady points: CSV with a header and rows force,velocity (SI)");
+  steady->add_option("--samples", steady_args->samples,
+                     "Draw the uncertain damping N times and shade the steady velocity's interval (as equilibrium "
+                     "--samples)");
+  steady->add_option("--seed", steady_args->seed, "Seed of the draws")->capture_default_str();
+  steady
+      ->add_option("--percentiles", steady_args->percentiles,
+                   "The band's percentiles, comma-separated (default 2.5,97.5)")
+      ->delimiter(',');
   add_common(steady, *steady_args);
   steady->callback([steady_args, &global] {
     const auto& a = *steady_args;
@@ -150,7 +161,21 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     std::vector<plot::SteadyPoint> measured;
     if (a.points) measured = plot::read_steady_points(*a.points);
     const std::string name = model.description().name.empty() ? a.vehicle : model.description().name;
-    render_and_print(plot::steady_figure(model, *dof, taus, measured, name), default_image("steady", a.dof), a);
+    if (a.samples == 0) {
+      render_and_print(plot::steady_figure(model, *dof, taus, measured, name), default_image("steady", a.dof), a);
+      return;
+    }
+    const DampingDraws draws(model.damping(), model.description().damping);
+    if (!draws.any())
+      throw InputError("--samples: nothing in the vehicle's damping has an uncertainty to draw from");
+    EnsembleOptions options;
+    options.samples = a.samples;
+    options.seed = a.seed;
+    options.percentiles = a.percentiles.empty() ? std::vector<double>{2.5, 97.5} : a.percentiles;
+    check_ensemble_options(options);
+    const plot::SteadyBandOptions band{draws, options};
+    render_and_print(plot::steady_figure(model, *dof, taus, measured, name, &band), default_image("steady", a.dof),
+                     a);
   });
 }
 

@@ -358,6 +358,30 @@ Figure simulation_figure(const std::filesystem::path& trajectory,
   panel.x_label = "t [s]";
   panel.y_label = axis_label(component, kVelocityUnits[*index]) + " (body axes)";
   panel.title = trajectory.filename().string() + (experiment ? " and " + experiment->filename().string() : "");
+  // A Monte Carlo run's band first (behind), between its outer percentiles,
+  // and its median; then the nominal trajectory; the experiment on top.
+  const auto& bands = simulated.bands_b[*index];
+  if (bands.size() >= 2) {
+    Series band;
+    band.title = "simulated p" + short_number(bands.front().first) + "-p" + short_number(bands.back().first) +
+                 " over the damping's uncertainty";
+    band.style = Series::Style::Band;
+    band.colour = 0;
+    band.x = simulated.t_s;
+    band.y = bands.front().second;
+    band.y_high = bands.back().second;
+    panel.series.push_back(std::move(band));
+    for (const auto& [percentile, values] : bands)
+      if (percentile == 50.0) {
+        Series median;
+        median.title = "simulated median (p50)";
+        median.style = Series::Style::DashedLine;
+        median.colour = 0;
+        median.x = simulated.t_s;
+        median.y = values;
+        panel.series.push_back(std::move(median));
+      }
+  }
   Series sim;
   sim.title = "simulated (" + trajectory.filename().string() + ")";
   sim.x = simulated.t_s;
@@ -400,7 +424,8 @@ std::vector<SteadyPoint> steady_curve(const VehicleModel& model, std::size_t dof
 }
 
 Figure steady_figure(const VehicleModel& model, std::size_t dof, const std::vector<double>& taus,
-                     const std::vector<SteadyPoint>& measured, const std::string& vehicle_name) {
+                     const std::vector<SteadyPoint>& measured, const std::string& vehicle_name,
+                     const SteadyBandOptions* band_options) {
   if (taus.empty()) throw InputError("steady curve: no forces to solve for");
   const auto points = steady_curve(model, dof, taus);
   Figure figure;
@@ -409,6 +434,32 @@ Figure steady_figure(const VehicleModel& model, std::size_t dof, const std::vect
   Panel panel;
   panel.x_label = std::string(kForceNames[dof]) + " [" + kForceUnits[dof] + "] (applied, on body)";
   panel.y_label = axis_label(std::string(kVelocityNames[dof]), kVelocityUnits[dof]);
+  if (band_options) {
+    // The equilibrium's interval at each force over the damping's draws.
+    const auto d = static_cast<Eigen::Index>(dof);
+    Series band;
+    const auto& percentiles = band_options->options.percentiles;
+    band.title = "p" + short_number(percentiles.front()) + "-p" + short_number(percentiles.back()) + " of " +
+                 std::to_string(band_options->options.samples) + " draws of the damping";
+    band.style = Series::Style::Band;
+    for (std::size_t i = 0; i < taus.size(); ++i) {
+      EquilibriumInputs in;
+      in.tau_b[d] = taus[i];
+      in.disturbances.assign(model.disturbance_names().size(), 0.0);
+      Vector6 guess = Vector6::Zero();
+      guess[d] = points[i].velocity;
+      in.initial_guess_b = guess;
+      const EquilibriumSamples s = solve_equilibrium_samples(model, band_options->draws, in, band_options->options);
+      if (s.failures.count > 0)
+        throw InputError("steady band under " + std::string(kForceNames[dof]) + " = " + short_number(taus[i]) + " " +
+                         kForceUnits[dof] + ": " + std::to_string(s.failures.count) + " draws have no equilibrium; " +
+                         s.failures.first.front());
+      band.x.push_back(taus[i]);
+      band.y.push_back(s.percentile_values.front()[d]);
+      band.y_high.push_back(s.percentile_values.back()[d]);
+    }
+    panel.series.push_back(std::move(band));
+  }
   Series line;
   line.title = "model (equilibrium)";
   for (const auto& p : points) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "src/dynamics/ensemble.hpp"
 #include "src/dynamics/vehicle_model.hpp"
 #include "src/fit/coefficient_curve.hpp"
 #include "src/plot/figure.hpp"
@@ -60,9 +61,18 @@ struct SteadyPoint {
   double velocity = 0.0;  ///< m/s or rad/s
 };
 std::vector<SteadyPoint> steady_curve(const VehicleModel& model, std::size_t dof, const std::vector<double>& taus);
-/// measured: optional points (force, velocity) drawn as markers.
+/// A band of the steady velocity over Monte Carlo draws of the damping
+/// (src/dynamics/ensemble.hpp): between the first and the last percentile.
+struct SteadyBandOptions {
+  const DampingDraws& draws;
+  EnsembleOptions options;
+};
+/// measured: optional points (force, velocity) drawn as markers; band:
+/// optional, drawn behind the curve (InputError when a draw has no
+/// equilibrium at one of the forces).
 Figure steady_figure(const VehicleModel& model, std::size_t dof, const std::vector<double>& taus,
-                     const std::vector<SteadyPoint>& measured, const std::string& vehicle_name);
+                     const std::vector<SteadyPoint>& measured, const std::string& vehicle_name,
+                     const SteadyBandOptions* band = nullptr);
 
 /// Reads measured steady points: CSV (comma, tab or semicolon), '#' comment
 /// lines, one header line, then rows "force,velocity" in SI.
