@@ -166,16 +166,14 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
       return;
     }
     const DampingDraws draws(model.damping(), model.description().damping);
-    if (!draws.any())
-      throw InputError("--samples: nothing in the vehicle's damping has an uncertainty to draw from");
+    if (!draws.any()) throw InputError("--samples: nothing in the vehicle's damping has an uncertainty to draw from");
     EnsembleOptions options;
     options.samples = a.samples;
     options.seed = a.seed;
     options.percentiles = a.percentiles.empty() ? std::vector<double>{2.5, 97.5} : a.percentiles;
     check_ensemble_options(options);
     const plot::SteadyBandOptions band{draws, options};
-    render_and_print(plot::steady_figure(model, *dof, taus, measured, name, &band), default_image("steady", a.dof),
-                     a);
+    render_and_print(plot::steady_figure(model, *dof, taus, measured, name, &band), default_image("steady", a.dof), a);
   });
 }
 

@@ -13,10 +13,13 @@
 namespace hydrocoef {
 namespace {
 
-/// The smallest number of nodes per axis, and the largest spacing in units
-/// of the shortest length scale, of a GP surface's draw grid.
+/// The smallest number of nodes per axis, and the number of nodes per
+/// shortest length scale, of a GP surface's draw grid: evenly spaced (so a
+/// lookup finds its cell by direct index) and fine enough that the spline's
+/// error, of order (spacing / length scale)^4 of the draw's own scale, is
+/// far below the posterior's spread even next to a noise-free run.
 constexpr std::size_t kMinNodesPerAxis = 17;
-constexpr double kNodesPerLengthScale = 4.0;
+constexpr double kNodesPerLengthScale = 16.0;
 
 /// The largest n with n^dims <= budget.
 std::size_t nodes_per_axis_cap(std::size_t budget, std::size_t dims) {
@@ -36,40 +39,6 @@ Extrapolation grid_policy(RbfOutOfRange policy) {
     case RbfOutOfRange::Extrapolate: return Extrapolation::Linear;
   }
   return Extrapolation::Error;
-}
-
-/// The breakpoints of axis a of a GP surface's draw grid: the runs' own
-/// coordinates on that axis (so that a draw passes through a noise-free run
-/// of a gridded sweep, where the posterior is sure), and n evenly spaced
-/// nodes over the range except those within a third of their spacing of a
-/// run's coordinate. Evenly spaced nodes alone when the runs have more than
-/// n distinct coordinates (a scattered design).
-std::vector<double> draw_breakpoints(const GpSurfaces& gp, std::size_t a, std::size_t n) {
-  const double lower = gp.lower(a), upper = gp.upper(a), range = upper - lower;
-  const double spacing = range / static_cast<double>(n - 1);
-  const GpState& state = gp.output(0).state();
-  std::vector<double> runs;
-  for (std::size_t i = 0; i < state.samples; ++i)
-    runs.push_back(state.points[a * state.samples + i] * state.length_scales[a] * state.axis_scale[a] +
-                   state.axis_centre[a]);
-  std::sort(runs.begin(), runs.end());
-  std::vector<double> distinct;
-  for (const double x : runs)
-    if (distinct.empty() || x - distinct.back() > 1e-9 * range) distinct.push_back(std::clamp(x, lower, upper));
-  std::vector<double> out;
-  if (distinct.size() <= n) out = distinct;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = i + 1 == n ? upper : lower + range * static_cast<double>(i) / static_cast<double>(n - 1);
-    const auto near = std::lower_bound(distinct.begin(), distinct.end(), x);
-    const bool close = (near != distinct.end() && *near - x < spacing / 3.0) ||
-                       (near != distinct.begin() && x - *std::prev(near) < spacing / 3.0);
-    if (out.empty() || !close || distinct.size() > n) out.push_back(x);
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end(), [&](double p, double q) { return q - p <= 1e-9 * range; }), out.end());
-  out.front() = lower;
-  out.back() = upper;
-  return out;
 }
 
 }  // namespace
@@ -113,7 +82,8 @@ DampingDraws::DampingDraws(const DampingModel& nominal, const DampingSpec& spec)
     const auto& lookup = nominal_.lookups_[l];
     const CoefficientSurface& surface = lookup.surface;
     std::string dofs;
-    for (std::size_t k = 0; k < lookup.used; ++k) dofs += std::string(dofs.empty() ? "" : ",") + std::string(kForceNames[lookup.dof[k]]);
+    for (std::size_t k = 0; k < lookup.used; ++k)
+      dofs += std::string(dofs.empty() ? "" : ",") + std::string(kForceNames[lookup.dof[k]]);
     const std::string name = dofs + ": surface '" + lookup.key.substr(0, lookup.key.find('|')) + "'";
     const GpSurfaces* gp = surface.gp();
     if (!gp) {
@@ -137,14 +107,16 @@ DampingDraws::DampingDraws(const DampingModel& nominal, const DampingSpec& spec)
       const double wanted_spacing = shortest / kNodesPerLengthScale;
       const double wanted = std::ceil(range / wanted_spacing) + 1.0;
       std::size_t n = kMinNodesPerAxis;
-      if (wanted > static_cast<double>(n)) n = wanted > static_cast<double>(cap) ? cap : static_cast<std::size_t>(wanted);
+      if (wanted > static_cast<double>(n))
+        n = wanted > static_cast<double>(cap) ? cap : static_cast<std::size_t>(wanted);
       if (n > cap) n = cap;
       if (wanted > static_cast<double>(n)) coarse = true;
       GridAxis axis;
       axis.name = surface.axis_names()[a];
       axis.extrapolation = grid_policy(gp->out_of_range(a));
-      axis.breakpoints = draw_breakpoints(*gp, a, n);
-      if (axis.breakpoints.size() > n) n = axis.breakpoints.size();
+      for (std::size_t i = 0; i < n; ++i)
+        axis.breakpoints.push_back(
+            i + 1 == n ? gp->upper(a) : gp->lower(a) + range * static_cast<double>(i) / static_cast<double>(n - 1));
       draw.nodes *= n;
       draw.axes.push_back(std::move(axis));
     }
@@ -171,12 +143,11 @@ DampingDraws::DampingDraws(const DampingModel& nominal, const DampingSpec& spec)
       draw.output.push_back(gaussian(std::move(m), c));
     }
     std::string grid;
-    for (const auto& axis : draw.axes)
-      grid += (grid.empty() ? "" : " x ") + std::to_string(axis.breakpoints.size());
+    for (const auto& axis : draw.axes) grid += (grid.empty() ? "" : " x ") + std::to_string(axis.breakpoints.size());
     drawn_.push_back(name + " (gp) drawn from its posterior on " + grid + " nodes");
     if (coarse)
       notes_.push_back(name + ": the draw grid (" + grid + " nodes, at most " + std::to_string(kMaxNodes) +
-                       ") is coarser than a quarter of the shortest length scale; draws are smoothed between nodes");
+                       ") is coarser than a sixteenth of the shortest length scale; draws are smoothed between nodes");
     surfaces_.push_back(std::move(draw));
   }
 }
@@ -204,7 +175,8 @@ DampingModel DampingDraws::draw(std::uint64_t seed, std::uint64_t index) const {
     for (std::size_t k = 0; k < outputs; ++k) {
       const Gaussian& g = s.output[k];
       const Eigen::VectorXd v = g.factor.size() == 0 ? g.mean : sample(g);
-      for (std::size_t node = 0; node < s.nodes; ++node) values[node * outputs + k] = v[static_cast<Eigen::Index>(node)];
+      for (std::size_t node = 0; node < s.nodes; ++node)
+        values[node * outputs + k] = v[static_cast<Eigen::Index>(node)];
     }
     auto& lookup = model.lookups_[s.lookup];
     const CoefficientSurface& nominal = lookup.surface;

@@ -12,12 +12,12 @@
 //     The posterior is drawn jointly at the nodes of a grid over the
 //     surface's range (mean m and covariance K from GpSurface::posterior;
 //     f = m + F z with F F^T = K as above) and a natural cubic spline passes
-//     through those nodes. Along each axis the nodes are the runs'
-//     coordinates (so a draw of a gridded sweep passes through its noise-free
-//     runs) and evenly spaced nodes between them: at least 17 per axis and a
-//     spacing of at most a quarter of the output's shortest length scale,
-//     within a budget of kMaxNodes nodes (a note says when the budget makes
-//     it coarser). Outputs are independent processes and are drawn
+//     through those nodes. The nodes are evenly spaced: at least 17 per axis
+//     and a spacing of at most a sixteenth of the output's shortest length
+//     scale (the spline's error is then a few thousandths of the draw's own
+//     variation, so a draw passes through a noise-free run to that), within
+//     a budget of kMaxNodes nodes (a note says when the budget makes it
+//     coarser). Outputs are independent processes and are drawn
 //     independently; outputs the vehicle does not read are held at the mean.
 //     Outside the range the draw follows the surface's policy: error, clamp,
 //     or (extrapolate) linear continuation of the drawn spline.
@@ -71,7 +71,7 @@ class DampingDraws {
     Eigen::MatrixXd factor;
   };
   struct LawDraw {
-    std::size_t law = 0;  // index into DampingModel::laws_
+    std::size_t law = 0;    // index into DampingModel::laws_
     Gaussian coefficients;  // on the body
   };
   struct SurfaceDraw {

@@ -16,8 +16,8 @@ namespace hydrocoef {
 namespace {
 
 constexpr std::size_t kQuantities = 12;
-constexpr std::array<std::string_view, kQuantities> kQuantityNames = {"x_n",   "y_n", "z_n", "phi", "theta", "psi",
-                                                                      "u",     "v",   "w",   "p",   "q",     "r"};
+constexpr std::array<std::string_view, kQuantities> kQuantityNames = {"x_n", "y_n", "z_n", "phi", "theta", "psi",
+                                                                      "u",   "v",   "w",   "p",   "q",     "r"};
 constexpr std::array<std::string_view, kQuantities> kQuantityUnits = {
     "m", "m", "m", "rad", "rad", "rad", "m s^-1", "m s^-1", "m s^-1", "rad s^-1", "rad s^-1", "rad s^-1"};
 /// Failure messages kept per ensemble.

@@ -25,6 +25,20 @@ inline Matrix3 rotation_body_to_ned(const Quaternion4& q) {
   return r;
 }
 
+/// The rotation of q / |q| for any nonzero q, without a square root: the
+/// homogeneous form of the formula above, 2 replaced by 2 / (q^T q), which
+/// is exact because every entry is quadratic in q (1 - 2 (y^2 + z^2) / q^T q
+/// = (e^2 + x^2 - y^2 - z^2) / q^T q). The dynamics model's hot path.
+inline Matrix3 rotation_body_to_ned_any_norm(const Quaternion4& q) {
+  const double e = q[0], x = q[1], y = q[2], z = q[3];
+  const double s = 2.0 / (e * e + x * x + y * y + z * z);
+  Matrix3 r;
+  r << 1.0 - s * (y * y + z * z), s * (x * y - z * e), s * (x * z + y * e),  //
+      s * (x * y + z * e), 1.0 - s * (x * x + z * z), s * (y * z - x * e),   //
+      s * (x * z - y * e), s * (y * z + x * e), 1.0 - s * (x * x + y * y);
+  return r;
+}
+
 /// Fossen eq. 2.82 with the normalisation feedback of eq. 2.93:
 ///   q' = 1/2 T(q) omega_b + gain/2 (1 - q^T q) q,
 /// omega_b = (p, q, r) [rad/s]. The feedback term (gain [1/s], >= 0) pulls a

@@ -83,8 +83,7 @@ Vector6 VehicleModel::hydrostatic_from_rotation(const Matrix3& rotation) const {
 }
 
 ForceBreakdown VehicleModel::evaluate(const StateVector& x, const ModelInputs& inputs, Matrix3& rotation) const {
-  const Quaternion4 q = attitude_nb(x).normalized();
-  rotation = rotation_body_to_ned(q);
+  rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
   const Vector6 nu = velocity_b(x);
   const Vector3 omega = nu.tail<3>();
   const Vector3 current_b = rotation.transpose() * inputs.current_n;

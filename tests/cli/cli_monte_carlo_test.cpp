@@ -34,7 +34,8 @@ struct Fixture {
                                    "--sign", "on-body", "--rho", "998.2", "--nu", "1.004e-6"},
                                   dir.path());
     EXPECT_EQ(imported.exit_code, 0) << imported.err;
-    const auto fitted = run_cli({"--db", db, "fit", "--body", "asr-v", "--dof", "N", "--terms", "1,r,r|r|"}, dir.path());
+    const auto fitted =
+        run_cli({"--db", db, "fit", "--body", "asr-v", "--dof", "N", "--terms", "1,r,r|r|"}, dir.path());
     EXPECT_EQ(fitted.exit_code, 0) << fitted.err;
     std::ifstream in(kExample + "vehicle.json");
     nlohmann::json doc = nlohmann::json::parse(in, nullptr, true, true);
@@ -123,10 +124,10 @@ TEST(CliMonteCarlo, SimulateWritesBandsThatPlotDraws) {
     "initial": {"position": [0, 0, 0], "euler_deg": [0, 0, 0], "velocity": [0, 0, 0, 0, 0, 0]},
     "segments": [{"start": 0.0, "tau": {"N": 0.0027}}]})";
   const std::string csv = (f.dir.path() / "traj.csv").string();
-  const auto sim = run_cli({"--db", f.db, "simulate", "--vehicle", f.vehicle, "--scenario",
-                            (f.dir.path() / "short.json").string(), "--samples", "12", "--percentiles", "10,50,90",
-                            "--out", csv, "--json"},
-                           f.dir.path());
+  const auto sim =
+      run_cli({"--db", f.db, "simulate", "--vehicle", f.vehicle, "--scenario", (f.dir.path() / "short.json").string(),
+               "--samples", "12", "--percentiles", "10,50,90", "--out", csv, "--json"},
+              f.dir.path());
   ASSERT_EQ(sim.exit_code, 0) << sim.err;
   const auto out = nlohmann::json::parse(sim.out);
   const auto& final_r = out.at("monte_carlo").at("final").at("percentiles").at("r");
@@ -139,9 +140,9 @@ TEST(CliMonteCarlo, SimulateWritesBandsThatPlotDraws) {
   for (const char* column : {"r_p10 [rad s^-1]", "r_p50 [rad s^-1]", "r_p90 [rad s^-1]", "psi_p90 [rad]"})
     EXPECT_NE(header.find(column), std::string::npos) << column;
 
-  const auto plot = run_cli({"plot", "simulation", "--trajectory", csv, "--component", "r", "-o",
-                             (f.dir.path() / "r.svg").string()},
-                            f.dir.path());
+  const auto plot =
+      run_cli({"plot", "simulation", "--trajectory", csv, "--component", "r", "-o", (f.dir.path() / "r.svg").string()},
+              f.dir.path());
   ASSERT_EQ(plot.exit_code, 0) << plot.err;
   std::ifstream data(f.dir.path() / "r.dat");
   const std::string text((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
@@ -158,9 +159,9 @@ TEST(CliMonteCarlo, WhatCannotBeSampledFailsWithOneLine) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   };
   // The example vehicle's laws carry no covariance.
-  expect_one_line({"--db", f.db, "equilibrium", "--vehicle", kExample + "vehicle.json", "--tau", "N=0.0027",
-                   "--samples", "10"},
-                  "nothing in the vehicle's damping has an uncertainty");
+  expect_one_line(
+      {"--db", f.db, "equilibrium", "--vehicle", kExample + "vehicle.json", "--tau", "N=0.0027", "--samples", "10"},
+      "nothing in the vehicle's damping has an uncertainty");
   expect_one_line({"--db", f.db, "equilibrium", "--vehicle", f.vehicle, "--tau", "N=0.0027", "--samples", "10",
                    "--percentiles", "50,5"},
                   "expected increasing percentiles");
@@ -171,21 +172,21 @@ TEST(CliMonteCarlo, WhatCannotBeSampledFailsWithOneLine) {
   nlohmann::json doc = nlohmann::json::parse(in);
   doc["damping"]["N"] = {{"fit", "no-such-fit"}};
   std::ofstream(f.dir.path() / "missing.json") << doc.dump();
-  expect_one_line({"--db", f.db, "equilibrium", "--vehicle", (f.dir.path() / "missing.json").string(), "--tau",
-                   "N=0.0027"},
-                  "fits of N: " + kFit);
+  expect_one_line(
+      {"--db", f.db, "equilibrium", "--vehicle", (f.dir.path() / "missing.json").string(), "--tau", "N=0.0027"},
+      "fits of N: " + kFit);
   doc["damping"].erase("N");
   doc["damping"]["K"] = {{"fit", kFit}};
   std::ofstream(f.dir.path() / "other-dof.json") << doc.dump();
-  expect_one_line({"--db", f.db, "equilibrium", "--vehicle", (f.dir.path() / "other-dof.json").string(), "--tau",
-                   "N=0.0027"},
-                  "expected a fit of K");
+  expect_one_line(
+      {"--db", f.db, "equilibrium", "--vehicle", (f.dir.path() / "other-dof.json").string(), "--tau", "N=0.0027"},
+      "expected a fit of K");
   // A covariance that is not one, given in the vehicle file.
   doc["damping"]["K"] = {{"law", {{"p", -0.006}}}, {"sign", "on-body"}, {"covariance", {{-1e-6}}}};
   std::ofstream(f.dir.path() / "bad-cov.json") << doc.dump();
-  expect_one_line({"--db", f.db, "equilibrium", "--vehicle", (f.dir.path() / "bad-cov.json").string(), "--tau",
-                   "N=0.0027"},
-                  "damping.K.covariance");
+  expect_one_line(
+      {"--db", f.db, "equilibrium", "--vehicle", (f.dir.path() / "bad-cov.json").string(), "--tau", "N=0.0027"},
+      "damping.K.covariance");
 }
 
 }  // namespace

@@ -103,7 +103,8 @@ TEST(DampingDraws, LawDrawsHaveTheStatedMeanAndCovariance) {
     for (int j = 0; j < 3; ++j) {
       const double sj = std::sqrt(cov[static_cast<std::size_t>(4 * j)]);
       // Standard error of a sample covariance <= sd_k sd_j sqrt(2 / n).
-      EXPECT_NEAR(sample_cov(k, j), cov[static_cast<std::size_t>(3 * k + j)], 4.0 * sd * sj * std::sqrt(2.0 / double(n)))
+      EXPECT_NEAR(sample_cov(k, j), cov[static_cast<std::size_t>(3 * k + j)],
+                  4.0 * sd * sj * std::sqrt(2.0 / double(n)))
           << k << "," << j;
     }
   }
@@ -221,10 +222,8 @@ TEST(DampingDraws, GpSurfaceDrawsFollowThePosterior) {
   const VehicleModel model(v, [&](const std::string&) { return surface; });
   const DampingDraws draws(model.damping(), v.damping);
   ASSERT_EQ(draws.drawn().size(), 1u);
-  // 17 evenly spaced nodes over [0, 0.3] and the six runs, two of which
-  // (0 and 0.3) are nodes already; nodes within a third of the spacing of a
-  // run give way to it.
-  EXPECT_NE(draws.drawn()[0].find(" nodes"), std::string::npos) << draws.drawn()[0];
+  // Evenly spaced nodes, 1/16 of the length scale apart: 0.3 / (0.08 / 16) + 1.
+  EXPECT_NE(draws.drawn()[0].find("on 61 nodes"), std::string::npos) << draws.drawn()[0];
   const std::vector<double> at = {0.06, 0.03, 0.135, 0.27};  // a run, then between runs
   const std::size_t n = 2000;
   std::vector<double> sum(at.size(), 0.0), sum2(at.size(), 0.0);
@@ -243,9 +242,11 @@ TEST(DampingDraws, GpSurfaceDrawsFollowThePosterior) {
     const double m = gp.output(0).evaluate(&at[j], ws, &sd);
     const double sample_mean = sum[j] / n;
     const double sample_sd = std::sqrt(std::max(0.0, sum2[j] / n - sample_mean * sample_mean));
-    if (j == 0) {  // at a noise-free run every draw passes through it
-      EXPECT_NEAR(sample_mean, y[1], 1e-7);
-      EXPECT_LT(sample_sd, 1e-6);
+    if (j == 0) {  // at a noise-free run every draw passes through it, up to the spline's error
+      double between = 0.0;
+      gp.output(0).evaluate(&at[1], ws, &between);
+      EXPECT_NEAR(sample_mean, y[1], 1e-3 * between);
+      EXPECT_LT(sample_sd, 1e-2 * between);
       continue;
     }
     ASSERT_GT(sd, 1e-6) << at[j];

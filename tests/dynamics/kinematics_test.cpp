@@ -74,3 +74,18 @@ TEST(Kinematics, NormFeedbackPullsTowardsUnitNorm) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+TEST(Kinematics, RotationOfAnyNormEqualsThatOfTheUnitQuaternion) {
+  const Quaternion4 unit = quaternion_from_euler(Vector3(0.3, -1.1, 2.9));
+  for (const double scale : {1.0, 1.0 + 1e-9, 0.97, 3.7}) {
+    const Matrix3 r = rotation_body_to_ned_any_norm(scale * unit);
+    EXPECT_LT((r - rotation_body_to_ned(unit)).cwiseAbs().maxCoeff(), 1e-15) << scale;
+    EXPECT_LT((r * r.transpose() - Matrix3::Identity()).cwiseAbs().maxCoeff(), 1e-15) << scale;
+  }
+}
+
+}  // namespace
+}  // namespace hydrocoef
