@@ -7,7 +7,8 @@
 #
 # Then coefficient surfaces over the surge speed and the yaw rate are built
 # from the runs, queried with their gradients, and exported (JSON, a C header,
-# MATLAB) into asr-v-export/ beside the database.
+# MATLAB) into asr-v-export/ beside the database; the pool test is simulated,
+# and with the fits' covariances drawn, given a band and an interval.
 #
 # What to expect (paper eq. 5 and 6, sign as in each table):
 #   surge  X(u) = c + 0.01551 u + 11.0364 u|u|      (positive opposes motion)
@@ -80,14 +81,25 @@ h simulate --vehicle "$here/vehicle-surfaces.json" --scenario "$here/scenario-ya
   --out "$out/yaw-0.0045-surfaces.csv"
 
 echo
+echo "== uncertainty: the fits' covariances drawn 2000 times (vehicle-fits.json names the stored fits)"
+echo "   the steady yaw rate's 95 % interval under the paper's calibrated torque:"
+h equilibrium --vehicle "$here/vehicle-fits.json" --tau N=0.0027 --samples 2000 --seed 1
+echo "   the yaw-rate band of the constant-torque test (200 trajectories, 5/50/95 %):"
+h simulate --vehicle "$here/vehicle-fits.json" --scenario "$here/scenario-yaw-0.0027.json" --samples 200 --seed 1 \
+  --out "$out/yaw-0.0027-band.csv"
+
+echo
 echo "== plots (gnuplot) and a shareable report into $out"
 h plot fit "asr-v:X(1,u,u|u|)" -o "$out/plots/fit-surge.png"
 h plot fit "asr-v:N(1,r,r|r|)" -o "$out/plots/fit-yaw.png"
 h plot surface asr-v-surge -o "$out/plots/surface-surge.png"
 h plot surface asr-v-yaw -o "$out/plots/surface-yaw.png"
 h plot simulation --trajectory "$out/yaw-0.0027.csv" --component r -o "$out/plots/yaw-0.0027.png"
+h plot simulation --trajectory "$out/yaw-0.0027-band.csv" --component r -o "$out/plots/yaw-0.0027-band.png"
 h plot steady --vehicle "$here/vehicle.json" --dof N --tau-from 0.001 --tau-to 0.006 --count 6 \
   -o "$out/plots/steady-yaw.png"
-h report -o "$out/report" --body asr-v --trajectory "$out/yaw-0.0027.csv"
+h plot steady --vehicle "$here/vehicle-fits.json" --dof N --tau-from 0.001 --tau-to 0.006 --count 6 \
+  --samples 500 -o "$out/plots/steady-yaw-band.png"
+h report -o "$out/report" --body asr-v --trajectory "$out/yaw-0.0027.csv" --trajectory "$out/yaw-0.0027-band.csv"
 echo
 echo "results: database $db; exports, trajectories and plots in $out; report: open $out/report/index.html"

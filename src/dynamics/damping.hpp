@@ -48,14 +48,6 @@ struct DofDamping {
   // one coefficient per term [force unit / term unit].
   DampingLawSpec law;
   std::vector<double> coefficients;
-  /// Law: the coefficients' covariance, k x k row by row [unit_i unit_j], in
-  /// the law's sign convention; empty when the law states none (it is then
-  /// held at its values by Monte Carlo draws, src/dynamics/damping_draws.hpp).
-  std::vector<double> covariance;
-  /// Law from a stored fit of this name: terms, coefficients, covariance and
-  /// sign are filled from the database by resolve_stored_fits
-  /// (src/dynamics/surface_source.hpp) before the model is built.
-  std::string fit;
   // Surface: its name (for the resolver), the output read ("X".."N" or any
   // output name), and for each surface axis where its value comes from: a
   // relative velocity component "u".."r" or a disturbance parameter name.
@@ -66,6 +58,14 @@ struct DofDamping {
   std::map<std::string, std::string> axis_sources;
   /// How the law's or surface's numbers are signed.
   SignConvention sign = SignConvention::OnBody;
+  /// Law: the coefficients' covariance, k x k row by row [unit_i unit_j], in
+  /// the law's sign convention; empty when the law states none (it is then
+  /// held at its values by Monte Carlo draws, src/dynamics/damping_draws.hpp).
+  std::vector<double> covariance;
+  /// Law from a stored fit of this name: terms, coefficients, covariance and
+  /// sign are filled from the database by resolve_stored_fits
+  /// (src/dynamics/surface_source.hpp) before the model is built.
+  std::string fit;
 };
 
 /// The damping of X, Y, Z, K, M, N in that order.
