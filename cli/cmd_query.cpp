@@ -137,8 +137,9 @@ void add_query_command(CLI::App& app, const GlobalOptions& global) {
   query->add_option("--output", args->output, "CSV of results, - for standard output")->capture_default_str();
   query->add_flag("--gradient", args->gradient, "Also the derivative of each output along each axis");
   query->add_flag("--uncertainty", args->uncertainty,
-                  "Also each output's standard deviation (GP surfaces: the posterior's; a sigma_OUT column per "
-                  "output in a batch)");
+                  "Also each output's standard deviation (GP surfaces: the posterior's; grid and RBF surfaces: "
+                  "the runs' uncertainty interpolated as the surface, with the leave-one-out RMS error in "
+                  "quadrature; a sigma_OUT column per output in a batch)");
   query->add_flag("--json", args->json, "Machine-readable output (single point)");
   query->callback([args, &global] { run_query(*args, global); });
 }

@@ -145,6 +145,86 @@ void print_gp(const CoefficientSurface& surface) {
   }
 }
 
+/// A grid or RBF surface's stated uncertainty (CoefficientSurface::
+/// with_run_uncertainty): the formula, its leave-one-out part per output and
+/// the three candidate points of the range where the standard deviation is
+/// largest. Candidates: every grid node (at most 100000) and a regular
+/// lattice of about 4096 points over the range (cell midpoints included for
+/// 2 or more per axis), so that an RBF's maxima between samples are seen.
+nlohmann::json run_uncertainty_json(const CoefficientSurface& surface) {
+  const std::size_t d = surface.axis_count(), n_out = surface.output_count();
+  nlohmann::json out = {{"formula", "sd^2 = (runs' uncertainty interpolated as the surface)^2 + loo_rms^2"}};
+  std::vector<std::vector<double>> candidates;
+  if (const GridTable* grid = surface.grid(); grid && grid->node_count() <= 100000)
+    for (std::size_t node = 0; node < grid->node_count(); ++node) {
+      std::vector<double> point(d);
+      std::size_t rest = node;
+      for (std::size_t a = 0; a < d; ++a) {
+        const auto& x = grid->axes()[a].breakpoints;
+        point[a] = x[rest % x.size()];
+        rest /= x.size();
+      }
+      candidates.push_back(std::move(point));
+    }
+  const auto per_axis = std::max<std::size_t>(
+      2, static_cast<std::size_t>(std::floor(std::pow(4096.0, 1.0 / static_cast<double>(d)) + 1e-9)));
+  std::size_t lattice = 1;
+  for (std::size_t a = 0; a < d; ++a) lattice *= per_axis;
+  for (std::size_t i = 0; i < lattice; ++i) {
+    std::vector<double> point(d);
+    std::size_t rest = i;
+    for (std::size_t a = 0; a < d; ++a) {
+      const double t = static_cast<double>(rest % per_axis) / static_cast<double>(per_axis - 1);
+      point[a] = surface.lower(a) + t * (surface.upper(a) - surface.lower(a));
+      rest /= per_axis;
+    }
+    candidates.push_back(std::move(point));
+  }
+  std::vector<double> sd(candidates.size() * n_out), values(n_out);
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    surface.evaluate_with_standard_deviation(candidates[i], values, std::span<double>(sd).subspan(i * n_out, n_out));
+  for (std::size_t k = 0; k < n_out; ++k) {
+    std::vector<std::size_t> order(candidates.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const std::size_t top = std::min<std::size_t>(3, order.size());
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(top), order.end(),
+                      [&](std::size_t a, std::size_t b) { return sd[a * n_out + k] > sd[b * n_out + k]; });
+    nlohmann::json entry = {{"loo_sd", surface.loo_standard_deviation()[k]}, {"largest_sd", nlohmann::json::array()}};
+    for (std::size_t j = 0; j < top; ++j) {
+      nlohmann::json point;
+      for (std::size_t a = 0; a < d; ++a) point[surface.axis_names()[a]] = candidates[order[j]][a];
+      entry["largest_sd"].push_back({{"point", point}, {"sd", sd[order[j] * n_out + k]}});
+    }
+    out["outputs"][surface.output_names()[k]] = entry;
+  }
+  return out;
+}
+
+void print_run_uncertainty(const CoefficientSurface& surface) {
+  if (surface.gp()) return;
+  if (!surface.has_standard_deviation()) {
+    std::cout << "  uncertainty: none stated (stored without its runs' uncertainty or with no leave-one-out "
+                 "error; hydrocoef surface rebuild adds it when the runs allow)\n";
+    return;
+  }
+  const nlohmann::json uncertainty = run_uncertainty_json(surface);
+  std::cout << "  uncertainty: sd^2 = (runs' uncertainty, interpolated as the surface)^2 + (leave-one-out RMS)^2;"
+               " largest at:\n";
+  for (std::size_t k = 0; k < surface.output_count(); ++k) {
+    const auto& name = surface.output_names()[k];
+    const auto& entry = uncertainty["outputs"][name];
+    std::cout << "    " << std::left << std::setw(4) << name << "leave-one-out part "
+              << significant(entry["loo_sd"].get<double>(), 4) << " " << surface.output_units()[k] << '\n';
+    for (const auto& where : entry["largest_sd"]) {
+      std::cout << "      sd " << std::setw(12) << significant(where["sd"].get<double>(), 4) << "at";
+      for (std::size_t a = 0; a < surface.axis_count(); ++a)
+        std::cout << " " << surface.axis_names()[a] << "="
+                  << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
+      std::cout << '\n';
+    }
+  }
+}
+
 }  // namespace
 
 nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurface& surface, bool with_values) {
@@ -183,6 +263,7 @@ nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurfac
     out["far_from_data_points"].push_back(point);
   }
   if (surface.gp()) out["gp"] = gp_json(surface);
+  if (!surface.gp() && surface.has_standard_deviation()) out["uncertainty"] = run_uncertainty_json(surface);
   const auto definition = nlohmann::json::parse(record.definition);
   if (definition.contains("build_spec")) out["build_spec"] = definition["build_spec"];
   return out;
@@ -234,6 +315,7 @@ void print_surface(const StoredSurface& stored, bool json) {
     std::cout << "    " << stored.surface.output_names()[k] << " [" << stored.surface.output_units()[k] << "]\n";
   print_quality(record, stored.surface);
   print_gp(stored.surface);
+  print_run_uncertainty(stored.surface);
 }
 
 nlohmann::json surface_build_json(const SurfaceBuildResult& result) {
@@ -264,6 +346,7 @@ void print_surface_build(const SurfaceBuildResult& result, const std::string& da
   std::cout << " (forces on the body)\n";
   print_quality(record, surface);
   print_gp(surface);
+  print_run_uncertainty(surface);
   std::cout << "  stored as surface " << record.id << " in " << database << '\n';
 }
 

@@ -92,7 +92,12 @@ class Surface {
   /// As evaluate, with the exact gradient of the interpolant [output unit per axis unit].
   ValueAndGradient evaluate_with_gradient(const std::vector<double>& point) const;
 
-  /// Whether the surface states a standard deviation at a point (GP surfaces).
+  /// Whether the surface states a standard deviation at a point: GP surfaces
+  /// (the posterior's), and grid and RBF surfaces built by this version (the
+  /// runs' standard uncertainty interpolated as the surface interpolates
+  /// their values, and the leave-one-out RMS error, in quadrature; README,
+  /// "Uncertainty of grid and RBF surfaces"). A surface stored by an older
+  /// version without it states none (false) until it is rebuilt.
   bool has_standard_deviation() const;
   /// The outputs and their standard deviations at one point.
   struct ValueAndDeviation {

@@ -439,7 +439,8 @@ one shape (scalars stand for every point); the results have that shape
 (numpy.float64 values when every axis is a scalar). gradient=True adds
 "dOUT/dAXIS" for every output and axis [output unit per axis unit];
 uncertainty=True adds "sigma_OUT", each output's standard deviation (GP
-surfaces, method "gp"; others raise InputError). threads:
+surfaces, and grid and RBF surfaces built with their runs' uncertainty;
+others raise InputError). threads:
 0 uses every core. float64 arrays that are contiguous, or 1-D with any
 stride, are read in place; others are converted first. The GIL is released
 while the points are evaluated.

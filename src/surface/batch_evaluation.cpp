@@ -336,7 +336,9 @@ void evaluate_batch(const CoefficientSurface& surface, std::size_t count, std::s
     check_columns("standard deviation", n_out, standard_deviations.size(), count, standard_deviations);
     if (!surface.has_standard_deviation())
       throw InputError("the surface (method '" + surface.method_name() +
-                       "') states no standard deviation; expected a GP surface (surface build --method gp)");
+                       "') states no standard deviation (stored without its runs' uncertainty: rebuild it with "
+                       "hydrocoef surface rebuild); expected a GP surface or a grid or RBF surface built by this "
+                       "hydrocoef");
   }
   if (count == 0) return;
 

@@ -185,7 +185,9 @@ std::size_t query_csv_batch(const CoefficientSurface& surface, const CsvBatchReq
   const std::string source = request.input == "-" ? "<stdin>" : request.input;
   if (request.standard_deviation && !surface.has_standard_deviation())
     throw InputError("surface '" + request.surface_name + "' (method '" + surface.method_name() +
-                     "') states no standard deviation; expected a GP surface (surface build --method gp)");
+                     "') states no standard deviation (stored without its runs' uncertainty: rebuild it with "
+                     "hydrocoef surface rebuild); expected a GP surface or a grid or RBF surface built by this "
+                     "hydrocoef");
   const std::string data = read_all(request.input);
   std::string_view rest = data;
   std::size_t line_number = 0;

@@ -1,5 +1,7 @@
 #include "src/surface/coefficient_surface.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "src/core/error.hpp"
@@ -125,10 +127,86 @@ void CoefficientSurface::evaluate_with_gradient(std::span<const double> point, s
 void CoefficientSurface::evaluate_with_standard_deviation(std::span<const double> point, std::span<double> out,
                                                           std::span<double> standard_deviation,
                                                           std::span<double> gradient) const {
-  if (!gp_)
+  if (gp_) {
+    gp_->evaluate(point, out, standard_deviation, gradient);
+    return;
+  }
+  if (loo_sd_.empty())
     throw InputError("the surface (method '" + method_name() +
-                     "') states no standard deviation at a point; expected a GP surface (surface build --method gp)");
-  gp_->evaluate(point, out, standard_deviation, gradient);
+                     "') states no standard deviation at a point (it was stored without its runs' uncertainty: "
+                     "rebuild it with hydrocoef surface rebuild); expected a GP surface or a grid or RBF surface "
+                     "built by this hydrocoef");
+  if (standard_deviation.size() != output_count())
+    throw std::invalid_argument(
+        "CoefficientSurface::evaluate_with_standard_deviation: one standard deviation per "
+        "output expected");
+  if (gradient.empty())
+    evaluate(point, out);
+  else
+    evaluate_with_gradient(point, out, gradient);
+  // The runs' part: their uncertainties through the surface's own
+  // interpolant, clamped to the runs' range (see with_run_uncertainty).
+  if (sigma_grid_)
+    sigma_grid_->evaluate(point, standard_deviation);
+  else
+    sigma_rbf_->evaluate(point, standard_deviation);
+  for (std::size_t k = 0; k < standard_deviation.size(); ++k)
+    standard_deviation[k] = std::hypot(std::max(0.0, standard_deviation[k]), loo_sd_[k]);
+}
+
+namespace {
+
+std::vector<double> checked_loo(std::vector<double> loo, std::size_t outputs) {
+  if (loo.size() != outputs)
+    throw InputError("a surface's uncertainty has " + std::to_string(loo.size()) + " leave-one-out figures for " +
+                     std::to_string(outputs) + " outputs; expected one per output");
+  for (const double x : loo)
+    if (!std::isfinite(x) || x < 0.0)
+      throw InputError("a surface's leave-one-out standard deviation is " + std::to_string(x) +
+                       "; expected a finite number >= 0");
+  return loo;
+}
+
+}  // namespace
+
+CoefficientSurface CoefficientSurface::with_run_uncertainty(std::vector<double> sigma, std::vector<double> loo) const {
+  if (!grid_)
+    throw InputError("the runs' uncertainty as one number per node needs a grid surface; this one's method is '" +
+                     method_name() + "'");
+  if (sigma.size() != grid_->values().size())
+    throw InputError("a grid surface's run uncertainty has " + std::to_string(sigma.size()) + " numbers; expected " +
+                     std::to_string(grid_->values().size()) + " (one per node and output)");
+  for (const double x : sigma)
+    if (!std::isfinite(x) || x < 0.0)
+      throw InputError("a run's standard uncertainty is " + std::to_string(x) + "; expected a finite number >= 0");
+  CoefficientSurface out = *this;
+  out.loo_sd_ = checked_loo(std::move(loo), output_count());
+  // The same breakpoints and method; clamped outside the range.
+  std::vector<GridAxis> axes = grid_->axes();
+  for (auto& axis : axes) axis.extrapolation = Extrapolation::Clamp;
+  out.sigma_grid_ =
+      std::make_shared<const GridTable>(std::move(axes), grid_->outputs(), std::move(sigma), grid_->method());
+  out.sigma_rbf_.reset();
+  return out;
+}
+
+CoefficientSurface CoefficientSurface::with_run_uncertainty(RbfSurface sigma, std::vector<double> loo) const {
+  if (!rbf_)
+    throw InputError("the runs' uncertainty as an RBF needs an RBF surface; this one's method is '" + method_name() +
+                     "'");
+  if (sigma.axis_count() != rbf_->axis_count() || sigma.output_count() != rbf_->output_count() ||
+      sigma.sample_count() != rbf_->sample_count())
+    throw InputError("an RBF surface's run uncertainty has " + std::to_string(sigma.sample_count()) + " samples of " +
+                     std::to_string(sigma.output_count()) + " outputs; expected the surface's " +
+                     std::to_string(rbf_->sample_count()) + " of " + std::to_string(rbf_->output_count()));
+  for (std::size_t a = 0; a < sigma.axis_count(); ++a)
+    if (sigma.out_of_range(a) != RbfOutOfRange::Clamp)
+      throw InputError("an RBF surface's run uncertainty must be clamped outside the runs' range on every axis");
+  CoefficientSurface out = *this;
+  out.loo_sd_ = checked_loo(std::move(loo), output_count());
+  out.sigma_rbf_ = std::make_shared<const RbfSurface>(std::move(sigma));
+  out.sigma_grid_.reset();
+  return out;
 }
 
 }  // namespace hydrocoef

@@ -83,14 +83,49 @@ class CoefficientSurface {
   /// As evaluate, and gradient[k * axis_count() + a] = d output_k / d axis_a.
   void evaluate_with_gradient(std::span<const double> point, std::span<double> out, std::span<double> gradient) const;
 
-  /// Whether the surface states a standard deviation at a point (GP surfaces).
-  bool has_standard_deviation() const noexcept { return gp_ != nullptr; }
-  /// As evaluate, and standard_deviation[k]: that of output k (the surface's
-  /// predictive standard deviation, in the output's unit); with a gradient
+  /// Whether the surface states a standard deviation at a point: GP
+  /// surfaces, and grid and RBF surfaces given their runs' uncertainty
+  /// (with_run_uncertainty; those built by this hydrocoef's surface build).
+  bool has_standard_deviation() const noexcept { return gp_ != nullptr || !loo_sd_.empty(); }
+  /// As evaluate, and standard_deviation[k]: that of output k, in the
+  /// output's unit (a GP's predictive standard deviation; for a grid or an
+  /// RBF surface the formula at with_run_uncertainty); with a gradient
   /// buffer also the gradient, as evaluate_with_gradient, in the same pass.
   /// InputError for a surface without one (has_standard_deviation() false).
   void evaluate_with_standard_deviation(std::span<const double> point, std::span<double> out,
                                         std::span<double> standard_deviation, std::span<double> gradient = {}) const;
+
+  /// A grid or RBF surface's stated uncertainty. Per output k, at point x:
+  ///     sd_k(x)^2 = s_k(x)^2 + loo_k^2,   s_k(x) = max(0, I[sigma_.k](x)),
+  /// sigma_ik the standard uncertainty of run i's output k (its statistical
+  /// standard error and any given at import, in quadrature:
+  /// StoredForce::standard_uncertainty; 0 when neither is known), I[.] the
+  /// surface's own interpolant through those numbers in place of the runs'
+  /// values (the same breakpoints and method, or the same RBF kernel,
+  /// polynomial, smoothing and scaling), and loo_k the surface's
+  /// leave-one-out RMS error of output k (SurfaceQuality::loo_rms).
+  /// The interpolants but PCHIP/makima are linear in their data,
+  /// I[y](x) = sum_i a_i(x) y_i, so s_k(x) = |sum_i a_i(x) sigma_ik| is the
+  /// propagated standard deviation when the runs' errors are fully
+  /// correlated (one systematic error, as a mesh or model bias); for
+  /// independent errors it would be sqrt(sum_i a_i^2 sigma_ik^2), which is
+  /// no larger when every a_i >= 0 (nearest, linear): then s_k is an upper
+  /// bound. loo_k stands for the interpolation error, taken as independent of
+  /// the runs' errors and the same everywhere. Outside the runs' range the
+  /// runs' part is that at the nearest point of the range (no extrapolation
+  /// error is added).
+  /// sigma: grid surfaces, the runs' uncertainty at every node in the
+  /// table's values layout; RBF surfaces, an RbfSurface through the same
+  /// samples with those uncertainties as values. loo: one finite value >= 0
+  /// per output. InputError when they do not fit the surface; a GP surface
+  /// has its own standard deviation (InputError).
+  CoefficientSurface with_run_uncertainty(std::vector<double> sigma, std::vector<double> loo) const;
+  CoefficientSurface with_run_uncertainty(RbfSurface sigma, std::vector<double> loo) const;
+  /// The parts of that uncertainty: per output loo_k (empty when none is
+  /// stated), and the table or RBF of the runs' sigma (nullptr when none).
+  const std::vector<double>& loo_standard_deviation() const noexcept { return loo_sd_; }
+  const GridTable* run_uncertainty_grid() const noexcept { return sigma_grid_.get(); }
+  const RbfSurface* run_uncertainty_rbf() const noexcept { return sigma_rbf_.get(); }
 
  private:
   /// Checks the names against the counts of a scattered surface ("an RBF",
@@ -100,6 +135,10 @@ class CoefficientSurface {
   std::shared_ptr<const GridTable> grid_;
   std::shared_ptr<const RbfSurface> rbf_;
   std::shared_ptr<const GpSurfaces> gp_;
+  // with_run_uncertainty's parts (empty / nullptr without one).
+  std::vector<double> loo_sd_;
+  std::shared_ptr<const GridTable> sigma_grid_;
+  std::shared_ptr<const RbfSurface> sigma_rbf_;
   std::vector<std::string> axis_names_;
   std::vector<std::string> output_names_;
   std::vector<std::string> axis_units_;

@@ -1,5 +1,7 @@
 #include "src/surface/stored_surface.hpp"
 
+#include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
@@ -127,6 +129,38 @@ std::optional<std::string> quality_problem(const std::string& text) {
   return std::nullopt;
 }
 
+// The uncertainty of a grid or RBF surface, as the definition's
+// "uncertainty" (see the header); null when the surface states none.
+json uncertainty_json(const CoefficientSurface& surface, std::span<const double> rbf_sigma) {
+  if (surface.loo_standard_deviation().empty()) return json();
+  json out = {{"formula", "runs-interpolated+loo"}, {"loo_sd", surface.loo_standard_deviation()}};
+  if (const GridTable* sigma = surface.run_uncertainty_grid()) out["run_sd"] = sigma->values();
+  if (const RbfSurface* sigma = surface.run_uncertainty_rbf()) {
+    if (rbf_sigma.size() != sigma->sample_count() * sigma->output_count())
+      throw std::invalid_argument("record_from_surface: an RBF surface with an uncertainty needs its runs' sigma");
+    const RbfSolution solution = sigma->solution();
+    out["run_sd"] = std::vector<double>(rbf_sigma.begin(), rbf_sigma.end());
+    out["kernel_weights"] = solution.kernel_weights;
+    out["polynomial_weights"] = solution.polynomial_weights;
+  }
+  return out;
+}
+
+// A list of finite numbers >= 0 of the given size from the "uncertainty"
+// object, naming the key when it is not.
+std::vector<double> sd_list(const json& object, const char* key, std::size_t size, const std::string& where,
+                            bool signed_values = false) {
+  const auto values = member<std::vector<double>>(object, key, where);
+  if (values.size() != size)
+    throw InputError(where + ": its uncertainty's '" + key + "' holds " + std::to_string(values.size()) +
+                     " numbers; expected " + std::to_string(size));
+  for (const double x : values)
+    if (!std::isfinite(x) || (!signed_values && x < 0.0))
+      throw InputError(where + ": its uncertainty's '" + key + "' holds " + std::to_string(x) +
+                       "; expected finite numbers" + (signed_values ? "" : " >= 0"));
+  return values;
+}
+
 }  // namespace
 
 std::string_view rbf_kernel_name(RbfKernel kernel) {
@@ -162,13 +196,16 @@ SurfaceRecord record_from_surface(const CoefficientSurface& surface) {
   SurfaceRecord record;
   record.kind = "grid";
   record.method = surface.method_name();
-  record.definition = escape::json_text(common_definition(surface));
+  json definition = common_definition(surface);
+  if (auto uncertainty = uncertainty_json(surface, {}); !uncertainty.is_null())
+    definition["uncertainty"] = std::move(uncertainty);
+  record.definition = escape::json_text(definition);
   record.data = grid->values();
   return record;
 }
 
 SurfaceRecord record_from_surface(const CoefficientSurface& surface, std::span<const double> rbf_points,
-                                  std::span<const double> rbf_values) {
+                                  std::span<const double> rbf_values, std::span<const double> rbf_sigma) {
   const RbfSurface* rbf = surface.rbf();
   if (!rbf) return record_from_surface(surface);
   if (rbf_points.size() != rbf->sample_count() * rbf->axis_count() ||
@@ -184,6 +221,8 @@ SurfaceRecord record_from_surface(const CoefficientSurface& surface, std::span<c
   definition["rbf"] = options;
   definition["rbf"]["solution"] = {{"samples_sha256", samples_hash(rbf_points, rbf_values, options)},
                                    {"polynomial_terms", solution.polynomial_weights.size() / rbf->output_count()}};
+  if (auto uncertainty = uncertainty_json(surface, rbf_sigma); !uncertainty.is_null())
+    definition["uncertainty"] = std::move(uncertainty);
   record.definition = escape::json_text(definition);
   record.data.assign(rbf_points.begin(), rbf_points.end());
   record.data.insert(record.data.end(), rbf_values.begin(), rbf_values.end());
@@ -240,9 +279,14 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
         axes.push_back({member<std::string>(axis, "name", where),
                         member<std::vector<double>>(axis, "breakpoints", where),
                         parse_extrapolation(member<std::string>(axis, "extrapolation", where))});
-      return CoefficientSurface(
+      CoefficientSurface surface(
           GridTable(std::move(axes), output_names, record.data, parse_interpolation(record.method)), axis_units,
           output_units);
+      // Stored before surfaces had an uncertainty: none is stated.
+      if (!definition.contains("uncertainty")) return surface;
+      const auto uncertainty = member<json>(definition, "uncertainty", where);
+      return surface.with_run_uncertainty(sd_list(uncertainty, "run_sd", record.data.size(), where),
+                                          sd_list(uncertainty, "loo_sd", output_names.size(), where));
     }
     if (record.kind == "rbf") {
       const auto rbf_json = member<json>(definition, "rbf", where);
@@ -301,7 +345,21 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
       RbfSurface rbf =
           solution ? RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options, *solution)
                    : RbfSurface(d, data.first(n_points), k, data.subspan(n_points, n_values), options);
-      return CoefficientSurface(std::move(rbf), axis_names, output_names, axis_units, output_units);
+      CoefficientSurface surface(std::move(rbf), axis_names, output_names, axis_units, output_units);
+      // Stored before surfaces had an uncertainty: none is stated.
+      if (!definition.contains("uncertainty")) return surface;
+      const auto uncertainty = member<json>(definition, "uncertainty", where);
+      // The RBF of the runs' uncertainties: the same samples and options,
+      // clamped outside the range, with its stored weights (no solve).
+      const std::vector<double> sigma = sd_list(uncertainty, "run_sd", n_values, where);
+      RbfSolution sigma_solution;
+      sigma_solution.kernel_weights = sd_list(uncertainty, "kernel_weights", n_values, where, true);
+      sigma_solution.polynomial_weights =
+          sd_list(uncertainty, "polynomial_weights", surface.rbf()->solution().polynomial_weights.size(), where, true);
+      sigma_solution.loo_errors.assign(n_values, std::numeric_limits<double>::quiet_NaN());
+      options.out_of_range.assign(d, RbfOutOfRange::Clamp);
+      return surface.with_run_uncertainty(RbfSurface(d, data.first(n_points), k, sigma, options, sigma_solution),
+                                          sd_list(uncertainty, "loo_sd", k, where));
     }
     if (record.kind == "gp") {
       std::vector<RbfOutOfRange> policies;

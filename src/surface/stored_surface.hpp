@@ -14,7 +14,17 @@
 //            "length_scales": [...], "samples": N}}
 // Data (SurfaceRecord::data): grid: the table's values in GridTable's layout;
 // rbf: the N sample points (sample-major, axis_count each) followed by their
-// values (sample-major, output_count each). An RBF is refactorized on load.
+// values (sample-major, output_count each), and the solved weights.
+//
+// A grid or RBF surface that states an uncertainty
+// (CoefficientSurface::with_run_uncertainty) has in its definition
+//    "uncertainty": {"formula": "runs-interpolated+loo",
+//                    "loo_sd": [...],                (per output)
+//                    "run_sd": [...],                (the runs' standard uncertainty: grid,
+//                                                     per node as the data; rbf, per sample)
+//                    "kernel_weights": [...], "polynomial_weights": [...]}  (rbf: the solved
+//                                                     RBF of run_sd, as the data's)
+// A surface stored without it (by an older hydrocoef) states none.
 #pragma once
 
 #include <string>
@@ -31,10 +41,11 @@ RbfKernel parse_rbf_kernel(std::string_view text);
 /// The definition and data of a surface (kind, method, definition, data of the
 /// record); the caller fills name, body, quality and run_ids. An RBF surface
 /// needs its samples, which the RbfSurface does not keep: pass them as
-/// RbfSurface's constructor took them.
+/// RbfSurface's constructor took them (and, when it states an uncertainty,
+/// its runs' standard uncertainties as the values: BuiltSurface::rbf_sigma).
 SurfaceRecord record_from_surface(const CoefficientSurface& surface);
 SurfaceRecord record_from_surface(const CoefficientSurface& surface, std::span<const double> rbf_points,
-                                  std::span<const double> rbf_values);
+                                  std::span<const double> rbf_values, std::span<const double> rbf_sigma = {});
 
 /// The surface a record describes. InputError naming the surface when the
 /// definition is malformed or disagrees with the data.

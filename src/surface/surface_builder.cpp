@@ -193,6 +193,26 @@ std::vector<double> grid_line_loo(const std::vector<GridAxis>& axes, const std::
   return errors;
 }
 
+/// The leave-one-out part of a grid or RBF surface's stated uncertainty
+/// (CoefficientSurface::with_run_uncertainty): the RMS error per output, or
+/// nullopt when no run has a leave-one-out error (the surface then states
+/// no uncertainty rather than one without that part).
+std::optional<std::vector<double>> stated_loo(const SurfaceQuality& quality) {
+  if (quality.loo_defined == 0) return std::nullopt;
+  for (const double x : quality.loo_rms)
+    if (!std::isfinite(x)) return std::nullopt;
+  return quality.loo_rms;
+}
+
+/// The RBF of the runs' uncertainties: the surface's samples and options
+/// with the uncertainties as values, clamped outside the runs' range.
+RbfSurface sigma_rbf(const Samples& samples, const RbfOptions& surface_options, std::size_t n_axes,
+                     std::size_t n_outputs) {
+  RbfOptions options = surface_options;
+  options.out_of_range.assign(n_axes, RbfOutOfRange::Clamp);
+  return RbfSurface(n_axes, samples.points, n_outputs, samples.noise, options);
+}
+
 BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
   const std::size_t n_axes = spec.axes.size(), n_outputs = spec.outputs.size(), n_runs = samples.runs.size();
   const Interpolation method = parse_interpolation(spec.method);
@@ -207,6 +227,7 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
   std::vector<double> values(nodes * n_outputs, std::numeric_limits<double>::quiet_NaN());
   std::vector<bool> filled(nodes, false);
   std::vector<std::int64_t> node_run(nodes, 0);  // the run at each node, for the per-run LOO errors
+  std::vector<std::size_t> run_node(n_runs, 0);  // the node of each run, for its uncertainty
   for (std::size_t i = 0; i < n_runs; ++i) {
     std::size_t node = 0, stride = 1;
     for (std::size_t a = 0; a < n_axes; ++a) {
@@ -215,6 +236,7 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
     }
     filled[node] = true;
     node_run[node] = samples.runs[i]->id;
+    run_node[i] = node;
     for (std::size_t k = 0; k < n_outputs; ++k) values[node * n_outputs + k] = samples.values[i * n_outputs + k];
   }
   if (n_runs != nodes) {
@@ -244,6 +266,12 @@ BuiltSurface build_grid(const Samples& samples, const SurfaceSpec& spec) {
   built.quality.method = "grid-lines";
   built.quality.runs = n_runs;
   summarize(built.quality, grid_line_loo(axes, values, n_outputs, method), n_outputs, node_run);
+  if (const auto loo = stated_loo(built.quality)) {
+    std::vector<double> sigma(nodes * n_outputs, 0.0);
+    for (std::size_t i = 0; i < n_runs; ++i)
+      for (std::size_t k = 0; k < n_outputs; ++k) sigma[run_node[i] * n_outputs + k] = samples.noise[i * n_outputs + k];
+    built.surface = built.surface.with_run_uncertainty(std::move(sigma), *loo);
+  }
   return built;
 }
 
@@ -326,6 +354,7 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
   for (const StoredRun* run : samples.runs) sample_runs.push_back(run->id);
   summarize(quality, rbf.cross_validation().errors, n_outputs, sample_runs);
 
+  const auto loo = stated_loo(quality);
   if (!spec.resample) {
     BuiltSurface built{CoefficientSurface(std::move(rbf), spec.axes, spec.outputs),
                        quality,
@@ -333,6 +362,10 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
                        samples.skipped,
                        samples.points,
                        samples.values};
+    if (loo) {
+      built.surface = built.surface.with_run_uncertainty(sigma_rbf(samples, options, n_axes, n_outputs), *loo);
+      built.rbf_sigma = samples.noise;
+    }
     return built;
   }
   if (spec.resample->size() != n_axes)
@@ -355,6 +388,26 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
       samples.skipped,
       {},
       {}};
+  if (loo) {
+    // The tabulated surface's nodes carry the RBF of the runs' uncertainty
+    // there (the grid is a tabulation of the RBF, and so is its uncertainty).
+    const RbfSurface sigma = sigma_rbf(samples, options, n_axes, n_outputs);
+    const GridTable& table = *built.surface.grid();
+    std::vector<double> node_sigma(table.values().size());
+    std::vector<double> point(n_axes);
+    for (std::size_t node = 0; node < table.node_count(); ++node) {
+      std::size_t rest = node;
+      for (std::size_t a = 0; a < n_axes; ++a) {
+        const auto& x = table.axes()[a].breakpoints;
+        point[a] = x[rest % x.size()];
+        rest /= x.size();
+      }
+      sigma.evaluate(point, std::span<double>(node_sigma).subspan(node * n_outputs, n_outputs));
+      for (std::size_t k = 0; k < n_outputs; ++k)
+        node_sigma[node * n_outputs + k] = std::max(0.0, node_sigma[node * n_outputs + k]);
+    }
+    built.surface = built.surface.with_run_uncertainty(std::move(node_sigma), *loo);
+  }
   return built;
 }
 
@@ -395,7 +448,7 @@ std::string SurfaceQuality::to_json(const std::vector<std::string>& outputs) con
 
 SurfaceRecord BuiltSurface::record(const std::string& name, const std::string& body) const {
   SurfaceRecord out =
-      surface.rbf() ? record_from_surface(surface, rbf_points, rbf_values) : record_from_surface(surface);
+      surface.rbf() ? record_from_surface(surface, rbf_points, rbf_values, rbf_sigma) : record_from_surface(surface);
   out.name = name;
   out.body = body;
   out.quality = quality.to_json(surface.output_names());

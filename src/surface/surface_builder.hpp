@@ -23,6 +23,15 @@
 //  - GP: the surface built again without the run, with the same
 //    hyperparameters (they are not searched again), evaluated at the run;
 //    up to 400 runs (above, no LOO error: n refits of O(n^3) each).
+//
+// Uncertainty. A grid or RBF surface states a standard deviation at a point
+// (CoefficientSurface::with_run_uncertainty has the formula): from its runs'
+// standard uncertainties (StoredForce::standard_uncertainty) interpolated as
+// the surface interpolates their values, and its leave-one-out RMS error.
+// A resampled grid carries at its nodes the RBF of the runs' uncertainties
+// there. When no run has a leave-one-out error (a grid whose every axis has
+// 2 breakpoints, an RBF whose polynomial needs every run) the surface states
+// none (has_standard_deviation() false) rather than one without that part.
 #pragma once
 
 #include <cstdint>
@@ -96,6 +105,9 @@ struct BuiltSurface {
   /// RBF surfaces: the samples, as RbfSurface took them (for storing).
   std::vector<double> rbf_points;
   std::vector<double> rbf_values;
+  /// RBF surfaces stating an uncertainty: the runs' standard uncertainties,
+  /// as rbf_values (CoefficientSurface::with_run_uncertainty); else empty.
+  std::vector<double> rbf_sigma;
 
   /// The record to store (name and body set; kind, method, definition, data,
   /// quality, run_ids filled).

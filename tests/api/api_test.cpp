@@ -235,6 +235,27 @@ TEST_F(ApiTest, SurfaceAnswersAsTheCliQuery) {
   EXPECT_NO_THROW(db.surface("asr-v-yaw").evaluate({0.5}));
 }
 
+TEST_F(ApiTest, AGridSurfaceStatesTheCliQuerysStandardDeviation) {
+  const auto db = Database::open(path_, OpenMode::ReadOnly);
+  const auto s = db.surface("grid-pchip");
+  ASSERT_TRUE(s.has_standard_deviation());
+  const auto answer = s.evaluate_with_standard_deviation({0.234, -0.0567});
+  const auto query = cli({"query", "grid-pchip", "u=0.234", "v=-0.0567", "--uncertainty", "--json"});
+  ASSERT_EQ(query.exit_code, 0) << query.err;
+  const auto json = nlohmann::json::parse(query.out);
+  EXPECT_EQ(answer.standard_deviation[0], json["standard_deviation"]["X"].get<double>());
+  EXPECT_EQ(answer.standard_deviation[1], json["standard_deviation"]["Y"].get<double>());
+  // The runs state no uncertainty: the leave-one-out RMS alone, everywhere.
+  const auto show = nlohmann::json::parse(cli({"surface", "show", "grid-pchip", "--json"}).out);
+  EXPECT_EQ(answer.standard_deviation[0], show["quality"]["outputs"]["X"]["loo_rms"].get<double>());
+  // The batch gives the same.
+  const double u = 0.234, v = -0.0567;
+  double x = 0, y = 0, sx = 0, sy = 0;
+  s.evaluate_batch(1, {{&u, 1}, {&v, 1}}, {{&x, 1}, {&y, 1}}, {}, 1, {{&sx, 1}, {&sy, 1}});
+  EXPECT_EQ(sx, answer.standard_deviation[0]);
+  EXPECT_EQ(sy, answer.standard_deviation[1]);
+}
+
 TEST_F(ApiTest, BatchEqualsPointEvaluationOnStridedColumns) {
   const auto db = Database::open(path_, OpenMode::ReadOnly);
   const auto s = db.surface("grid-pchip");

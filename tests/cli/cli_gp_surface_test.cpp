@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "src/store/sqlite.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sphere_cases.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -140,10 +141,15 @@ TEST_F(GpSurfaceCli, QueriesStateTheStandardDeviation) {
   EXPECT_EQ(point_both["gradient"], slope["gradient"]);
   EXPECT_EQ(point_both["standard_deviation"], mid["standard_deviation"]);
 
-  // A surface that states no standard deviation says so, and writes nothing.
+  // A surface that states no standard deviation says so, and writes nothing:
+  // an RBF stored as an older hydrocoef stored it, without its uncertainty.
   ASSERT_EQ(cli({"surface", "build", "rbfx", "--body", "blob", "--outputs", "X", "--axes", "u,v", "--method", "rbf"})
                 .exit_code,
             0);
+  {
+    store::Connection connection((dir_ / "runs.db").string(), store::Access::ReadWrite);
+    connection.execute("UPDATE surface SET definition = json_remove(definition, '$.uncertainty') WHERE name = 'rbfx'");
+  }
   const auto refused = cli({"query", "rbfx", "--input", "points.csv", "--output", "out.csv", "--uncertainty"});
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("states no standard deviation"), std::string::npos) << refused.err;

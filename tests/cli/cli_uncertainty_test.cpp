@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sqlite_dump.hpp"
@@ -113,6 +115,42 @@ TEST(GivenUncertainty, AnotherUncertaintyIsAnotherReadingOfTheFile) {
     if (run["forces"].contains("X")) {
       EXPECT_EQ(run["forces"]["X"]["given_uncertainty"], 0.003);
     }
+  }
+}
+
+TEST(GivenUncertainty, AGridSurfaceStatesItThroughQueryBatchShowAndExport) {
+  // One given uncertainty for every run: a linear table's interpolated runs'
+  // part is that number everywhere, so sd = sqrt(0.002^2 + loo_rms^2).
+  TempDir dir;
+  ASSERT_EQ(run_cli({"import", kSurge, "--body", "asr-v", "--sign", "opposing", "--uncertainty", "X=0.002"}, dir.path())
+                .exit_code,
+            0);
+  const auto build =
+      run_cli({"surface", "build", "surge", "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method", "linear"},
+              dir.path());
+  ASSERT_EQ(build.exit_code, 0) << build.err;
+  EXPECT_NE(build.out.find("uncertainty: sd^2"), std::string::npos) << build.out;
+  const auto show = json::parse(run_cli({"surface", "show", "surge", "--json"}, dir.path()).out);
+  const double loo = show["quality"]["outputs"]["X"]["loo_rms"];
+  ASSERT_GT(loo, 0.0);
+  const double expected = std::hypot(0.002, loo);
+  EXPECT_EQ(show["uncertainty"]["outputs"]["X"]["loo_sd"], loo);
+  ASSERT_EQ(show["uncertainty"]["outputs"]["X"]["largest_sd"].size(), 3u);
+  EXPECT_NEAR(show["uncertainty"]["outputs"]["X"]["largest_sd"][0]["sd"].get<double>(), expected, 1e-12);
+
+  const auto point = json::parse(run_cli({"query", "surge", "u=0.05", "--uncertainty", "--json"}, dir.path()).out);
+  EXPECT_NEAR(point["standard_deviation"]["X"].get<double>(), expected, 1e-12);
+
+  std::ofstream(dir.path() / "points.csv") << "u\n0.05\n0.1\n";
+  const auto batch = run_cli({"query", "surge", "--input", "points.csv", "--uncertainty"}, dir.path());
+  ASSERT_EQ(batch.exit_code, 0) << batch.err;
+  std::istringstream lines(batch.out);
+  std::string header, row;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "u,X,sigma_X");
+  for (int i = 0; i < 2; ++i) {
+    ASSERT_TRUE(std::getline(lines, row));
+    EXPECT_NEAR(std::stod(row.substr(row.rfind(',') + 1)), expected, 1e-9 * expected) << row;
   }
 }
 

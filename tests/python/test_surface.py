@@ -1,6 +1,8 @@
 """Surface calls: values against the C++ point evaluation (`hydrocoef query`)
 and the table's own numbers; shapes, dtypes, strides, threads."""
 
+import sqlite3
+
 import numpy as np
 import pytest
 
@@ -183,6 +185,18 @@ def test_a_gp_surface_states_its_standard_deviation_as_the_cli_does(tmp_path):
             assert scalar["X"] == expected["values"]["X"] == out["X"][k]
             assert scalar["sigma_X"] == expected["standard_deviation"]["X"] == out["sigma_X"][k]
         db.build_surface("rbf", body="blob", axes=["u", "v"], outputs=["X"], method="rbf")
+        # An RBF surface states one too: the runs' (none here) interpolated and its leave-one-out RMS.
+        rbf = db.surface("rbf")(u=uq, v=vq, uncertainty=True)
+        loo = cli_json(path, "surface", "show", "rbf")["quality"]["outputs"]["X"]["loo_rms"]
+        np.testing.assert_allclose(rbf["sigma_X"], loo, rtol=1e-12)
+        for k in range(2):
+            expected = cli_json(path, "query", "rbf", f"u={uq[k]!r}", f"v={vq[k]!r}", "--uncertainty")
+            assert rbf["sigma_X"][k] == expected["standard_deviation"]["X"]
+        # Stored as an older hydrocoef stored it (no uncertainty), it states none.
+        raw = sqlite3.connect(path)
+        with raw:
+            raw.execute("UPDATE surface SET definition = json_remove(definition, '$.uncertainty') WHERE name = 'rbf'")
+        raw.close()
         with pytest.raises(hydrocoef.InputError, match="states no standard deviation"):
             db.surface("rbf")(u=uq, v=vq, uncertainty=True)
         with pytest.raises(hydrocoef.InputError, match="expected a GP surface"):

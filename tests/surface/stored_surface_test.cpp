@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "src/surface/surface_builder.hpp"
@@ -124,6 +125,87 @@ TEST(StoredSurface, AMissingSurfaceIsNamed) {
   TempDir dir;
   Database db(dir / "runs.db");
   expect_input_error([&] { load_surface(db, "nope"); }, {"nope"});
+}
+
+/// Runs on a 4 x 3 grid of (u, current_v) with X and its stated uncertainty.
+std::vector<StoredRun> runs_with_sigma() {
+  std::vector<StoredRun> runs;
+  std::int64_t id = 1;
+  for (double v : {0.0, 0.1, 0.3})
+    for (double u : {0.1, 0.2, 0.4, 0.8}) {
+      StoredRun run;
+      run.id = id++;
+      run.key.body = "sphere";
+      run.key.nu_b[0] = u;
+      run.key.disturbances["current_v"] = v;
+      run.tau_b[0] = StoredForce{
+          {std::sin(3 * u) + v * u, {}, {}, 0.01 + 0.1 * u * (1 + v)}, SignConvention::OnBody, 1, "f.csv", 0};
+      runs.push_back(run);
+    }
+  return runs;
+}
+
+void expect_same_sd(const CoefficientSurface& a, const CoefficientSurface& b, double tolerance) {
+  ASSERT_TRUE(b.has_standard_deviation());
+  EXPECT_EQ(a.loo_standard_deviation(), b.loo_standard_deviation());
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> du(0.1, 0.8), dv(0.0, 0.3);
+  for (int i = 0; i < 100; ++i) {
+    const double p[2] = {du(rng), dv(rng)};
+    double va = 0, vb = 0, sa = 0, sb = 0;
+    a.evaluate_with_standard_deviation(p, std::span<double>(&va, 1), std::span<double>(&sa, 1));
+    b.evaluate_with_standard_deviation(p, std::span<double>(&vb, 1), std::span<double>(&sb, 1));
+    EXPECT_NEAR(va, vb, tolerance);
+    EXPECT_NEAR(sa, sb, tolerance);
+    EXPECT_GT(sb, 0.0);
+  }
+}
+
+TEST(StoredSurface, GridAndRbfUncertaintyComeBackFromTheDatabase) {
+  TempDir dir;
+  Database db(dir / "runs.db");
+  seed(db);
+  for (const std::string method : {"pchip", "rbf"}) {
+    const BuiltSurface built = build_surface(runs_with_sigma(), {{"u", "current_v"}, {"X"}, method});
+    ASSERT_TRUE(built.surface.has_standard_deviation()) << method;
+    SurfaceRecord record = built.record("s-" + method, "sphere");
+    record.run_ids.clear();
+    db.save_surface(record);
+    const StoredSurface stored = load_surface(db, "s-" + method);
+    expect_same_sd(built.surface, stored.surface, method == "rbf" ? 1e-12 : 0.0);
+    EXPECT_EQ(stored.surface.run_uncertainty_rbf() != nullptr, method == "rbf");
+  }
+}
+
+TEST(StoredSurface, ASurfaceStoredWithoutUncertaintyStatesNone) {
+  // As an older hydrocoef stored it: no "uncertainty" in the definition.
+  const CoefficientSurface plain = makima_table();
+  ASSERT_FALSE(plain.has_standard_deviation());
+  SurfaceRecord record = record_from_surface(plain);
+  record.name = "old";
+  EXPECT_EQ(record.definition.find("uncertainty"), std::string::npos);
+  const CoefficientSurface loaded = surface_from_record(record);
+  EXPECT_FALSE(loaded.has_standard_deviation());
+  const double p[2] = {0.3, 0.1};
+  double out[2], sd[2];
+  expect_input_error([&] { loaded.evaluate_with_standard_deviation(p, out, sd); },
+                     {"no standard deviation", "surface rebuild"});
+}
+
+TEST(StoredSurface, DamagedUncertaintyIsRefusedNamingTheSurface) {
+  const BuiltSurface built = build_surface(runs_with_sigma(), {{"u", "current_v"}, {"X"}, "linear"});
+  SurfaceRecord record = built.record("xs", "sphere");
+  auto definition = nlohmann::json::parse(record.definition);
+  ASSERT_TRUE(definition.contains("uncertainty"));
+  auto bad_definition = definition;
+  bad_definition["uncertainty"]["run_sd"].erase(0);
+  SurfaceRecord bad = record;
+  bad.definition = bad_definition.dump();
+  expect_input_error([&] { surface_from_record(bad); }, {"surface 'xs'", "run_sd", "expected 12"});
+  bad_definition = definition;
+  bad_definition["uncertainty"]["loo_sd"][0] = -1.0;
+  bad.definition = bad_definition.dump();
+  expect_input_error([&] { surface_from_record(bad); }, {"surface 'xs'", "loo_sd", ">= 0"});
 }
 
 }  // namespace
