@@ -66,6 +66,24 @@ ExportMetadata metadata_from_record(const SurfaceRecord& record, const Coefficie
     }
     metadata.far_from_data = grid_node_coordinates(*surface.grid(), indices);
   }
+  if (surface.has_standard_deviation()) {
+    // The surface's own standard deviation at each node (at a node the
+    // runs' part is that node's own uncertainty; see with_run_uncertainty).
+    const GridTable& table = *surface.grid();
+    const std::size_t n_axes = table.axis_count(), n_out = table.output_count();
+    metadata.standard_deviation.resize(table.values().size());
+    std::vector<double> point(n_axes), values(n_out);
+    for (std::size_t node = 0; node < table.node_count(); ++node) {
+      std::size_t rest = node;
+      for (std::size_t a = 0; a < n_axes; ++a) {
+        const auto& x = table.axes()[a].breakpoints;
+        point[a] = x[rest % x.size()];
+        rest /= x.size();
+      }
+      surface.evaluate_with_standard_deviation(
+          point, values, std::span<double>(metadata.standard_deviation).subspan(node * n_out, n_out));
+    }
+  }
   return metadata;
 }
 

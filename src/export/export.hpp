@@ -44,6 +44,11 @@ struct ExportMetadata {
   /// Grid nodes of a resampled RBF surface that are far from every run (the
   /// quality's far_from_data), as axis coordinates: extrapolation, not data.
   std::vector<std::vector<double>> far_from_data;
+  /// When the surface states a standard deviation (CoefficientSurface::
+  /// has_standard_deviation): that of every output at every node, in the
+  /// table's values layout (outputs fastest, then axis 0, ...) and the
+  /// outputs' units; empty otherwise.
+  std::vector<double> standard_deviation;
 };
 
 /// The coordinates of grid nodes listed by flat index (axis 0 fastest), for

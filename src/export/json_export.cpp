@@ -1,6 +1,7 @@
 #include "src/export/json_export.hpp"
 
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "src/core/escape.hpp"
 #include "src/core/version.hpp"
@@ -33,6 +34,23 @@ std::string json_text(const GridTable& table, const ExportMetadata& metadata) {
     std::vector<double> column(table.node_count());
     for (std::size_t node = 0; node < column.size(); ++node) column[node] = table.values()[node * n_out + k];
     document["values"][table.outputs()[k]] = std::move(column);
+  }
+  // Each output's standard deviation at each node, when the surface states
+  // one (CoefficientSurface::with_run_uncertainty has the formula).
+  if (!metadata.standard_deviation.empty()) {
+    if (metadata.standard_deviation.size() != table.values().size())
+      throw std::invalid_argument("json_text: one standard deviation per node and output expected");
+    document["sigma"] = json::object();
+    for (std::size_t k = 0; k < n_out; ++k) {
+      std::vector<double> column(table.node_count());
+      for (std::size_t node = 0; node < column.size(); ++node)
+        column[node] = metadata.standard_deviation[node * n_out + k];
+      document["sigma"][table.outputs()[k]] = std::move(column);
+    }
+    document["sigma_definition"] =
+        "one standard deviation per node in the output's unit, laid out as values: the runs' standard uncertainty "
+        "(statistical and given, in quadrature) interpolated as the surface interpolates the runs' values, and the "
+        "surface's leave-one-out RMS error, in quadrature";
   }
   document["layout"] =
       "values[output][((i_{n-1} * n_{n-2} + ... + i_1) * n_0 + i_0)]: axis 0 varies fastest (column-major, as "

@@ -9,6 +9,9 @@
 //              "valid_range": [lo, hi], "extrapolation": "clamp"}, ...],
 //    "outputs": [{"name": "X", "unit": "N"}, ...],
 //    "values": {"X": [...], ...},             (per output, one per node, axis 0 fastest)
+//    "sigma": {"X": [...], ...},              (when the surface states a standard deviation:
+//                                                per output, one per node, as "values")
+//    "sigma_definition": "...",               (what sigma is, in words; with "sigma")
 //    "layout": "...",                         (the index formula in words)
 //    "sign_convention": "on-body", "frame": "...",
 //    "fit_statistics": {...},                 (the stored leave-one-out figures, or null)

@@ -152,6 +152,13 @@ TEST(GivenUncertainty, AGridSurfaceStatesItThroughQueryBatchShowAndExport) {
     ASSERT_TRUE(std::getline(lines, row));
     EXPECT_NEAR(std::stod(row.substr(row.rfind(',') + 1)), expected, 1e-9 * expected) << row;
   }
+
+  ASSERT_EQ(run_cli({"export", "surge", "--format", "json", "-o", "surge.json"}, dir.path()).exit_code, 0);
+  std::ifstream file(dir.path() / "surge.json");
+  const auto exported = json::parse(file);
+  ASSERT_TRUE(exported.contains("sigma"));
+  EXPECT_EQ(exported["sigma"]["X"].size(), exported["values"]["X"].size());
+  for (const auto& sd : exported["sigma"]["X"]) EXPECT_NEAR(sd.get<double>(), expected, 1e-12);
 }
 
 }  // namespace

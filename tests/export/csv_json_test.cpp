@@ -10,6 +10,7 @@
 
 #include "src/export/csv_export.hpp"
 #include "src/export/json_export.hpp"
+#include "src/surface/surface_builder.hpp"
 #include "tests/support/expect_input_error.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -150,6 +151,45 @@ TEST(JsonExport, ParsesBackIntoATableThatEvaluatesIdentically) {
       EXPECT_EQ(a, b);
     }
   }
+}
+
+TEST(JsonExport, HoldsTheSurfacesStandardDeviationAtEveryNode) {
+  // A 4 x 3 grid of runs with stated uncertainties, pchip: sigma per output
+  // per node equals evaluate_with_standard_deviation there.
+  std::vector<StoredRun> runs;
+  std::int64_t id = 1;
+  for (double r : {-0.2, 0.0, 0.3})
+    for (double u : {0.1, 0.2, 0.5, 0.9}) {
+      StoredRun run;
+      run.id = id++;
+      run.key.body = "asr-v";
+      run.key.nu_b[0] = u;
+      run.key.nu_b[5] = r;
+      run.tau_b[0] = StoredForce{{-3 * u * u + r, {}, {}, 0.02 + 0.05 * u}, SignConvention::OnBody, 1, "f.csv", 0};
+      run.tau_b[5] = StoredForce{{-0.5 * r * std::abs(r) + u * r, {}, {}, 0.01}, SignConvention::OnBody, 1, "f.csv", 0};
+      runs.push_back(run);
+    }
+  const BuiltSurface built = build_surface(runs, {{"u", "r"}, {"X", "N"}, "pchip"});
+  ASSERT_TRUE(built.surface.has_standard_deviation());
+  const SurfaceRecord record = built.record("asr-v:ur", "asr-v");
+  const GridTable& table = *built.surface.grid();
+  const nlohmann::json document = nlohmann::json::parse(json_text(table, metadata_from_record(record, built.surface)));
+  ASSERT_TRUE(document.contains("sigma"));
+  EXPECT_TRUE(document.contains("sigma_definition"));
+  std::vector<double> values(2), sd(2);
+  for (std::size_t node = 0; node < table.node_count(); ++node) {
+    const std::vector<double> point = {table.axes()[0].breakpoints[node % 4], table.axes()[1].breakpoints[node / 4]};
+    built.surface.evaluate_with_standard_deviation(point, values, sd);
+    EXPECT_EQ(document.at("values").at("X")[node].get<double>(), values[0]);
+    EXPECT_EQ(document.at("sigma").at("X")[node].get<double>(), sd[0]);
+    EXPECT_EQ(document.at("sigma").at("N")[node].get<double>(), sd[1]);
+    // At a node the runs' part is that run's own uncertainty.
+    const double u = point[0];
+    EXPECT_NEAR(sd[0], std::hypot(0.02 + 0.05 * u, built.quality.loo_rms[0]), 1e-15);
+  }
+  // A table without a stated standard deviation has no sigma.
+  const GridTable plain = table_2d(Interpolation::Linear);
+  EXPECT_FALSE(nlohmann::json::parse(json_text(plain, metadata_of(plain))).contains("sigma"));
 }
 
 }  // namespace
