@@ -98,12 +98,13 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
 
 void add_export_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<ExportArgs>();
-  auto* command =
-      app.add_subcommand("export",
-                         "Write a stored gridded surface for another tool: csv, csv-wide, json, c (C99 header), mat "
-                         "(MATLAB v5 + Simulink set-up script), jsbsim (XML tables) or vtk (ParaView)");
+  auto* command = app.add_subcommand(
+      "export",
+      "Write a stored gridded surface for another tool: csv, csv-wide, json, c (C99 header), mat "
+      "(MATLAB v5 + Simulink set-up script), jsbsim (XML tables), vtk (ParaView) or daveml (DAVE-ML, "
+      "AIAA S-119; with each node's standard deviation when the surface states one)");
   command->add_option("name", args->name, "Surface name")->required();
-  command->add_option("--format", args->format, "csv, csv-wide, json, c, mat, jsbsim or vtk")->required();
+  command->add_option("--format", args->format, "csv, csv-wide, json, c, mat, jsbsim, vtk or daveml")->required();
   command->add_option("-o,--output", args->output, "File to write (written whole or not at all)")->required();
   command->add_flag("--float", args->single_precision, "C header: float tables and arithmetic (microcontrollers)");
   command->add_option("--identifier", args->identifier,

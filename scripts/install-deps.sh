@@ -11,6 +11,7 @@ packages=(
   libceres-dev          # damping-law fitting and covariance
   libsqlite3-dev        # run database
   sqlite3               # tests: tests/data/tampered/make-tampered.sh edits copies of a database
+  libxml2-utils         # tests: xmllint --noout checks the DAVE-ML export is well-formed
   libssl-dev            # SHA-256 of imported files (libcrypto)
   libgtest-dev libgmock-dev
   libcgns-dev           # tests write CGNS files for the CGNS reader path

@@ -13,6 +13,7 @@
 #include "src/core/source_file.hpp"
 #include "src/export/c_header_export.hpp"
 #include "src/export/csv_export.hpp"
+#include "src/export/daveml_export.hpp"
 #include "src/export/jsbsim_export.hpp"
 #include "src/export/json_export.hpp"
 #include "src/export/mat_export.hpp"
@@ -123,17 +124,18 @@ std::string_view export_format_name(ExportFormat format) {
     case ExportFormat::Mat: return "mat";
     case ExportFormat::Jsbsim: return "jsbsim";
     case ExportFormat::Vtk: return "vtk";
+    case ExportFormat::Daveml: return "daveml";
   }
   return "?";
 }
 
 ExportFormat parse_export_format(std::string_view text) {
   for (ExportFormat format : {ExportFormat::Csv, ExportFormat::CsvWide, ExportFormat::Json, ExportFormat::CHeader,
-                              ExportFormat::Mat, ExportFormat::Jsbsim, ExportFormat::Vtk}) {
+                              ExportFormat::Mat, ExportFormat::Jsbsim, ExportFormat::Vtk, ExportFormat::Daveml}) {
     if (text == export_format_name(format)) return format;
   }
   throw InputError("unknown export format '" + std::string(text) +
-                   "'; expected csv, csv-wide, json, c, mat, jsbsim or vtk");
+                   "'; expected csv, csv-wide, json, c, mat, jsbsim, vtk or daveml");
 }
 
 void check_metadata(const GridTable& table, const ExportMetadata& metadata) {
@@ -163,6 +165,7 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
     case ExportFormat::Mat: return write_mat(table, metadata, path);
     case ExportFormat::Jsbsim: write_file_atomically(path, jsbsim_text(table, metadata)); return {path};
     case ExportFormat::Vtk: write_vtk(table, metadata, path); return {path};
+    case ExportFormat::Daveml: write_file_atomically(path, daveml_text(table, metadata)); return {path};
   }
   return {};
 }

@@ -6,6 +6,7 @@
 //   c              compiles under -std=c99 -Wall -Wextra -Werror -pedantic, and
 //                  defines exactly the expected macros and symbols;
 //   jsbsim         well-formed XML (VTK's expat-based parser);
+//   daveml         well-formed XML with the same elements for every name;
 //   mat            the Simulink script has no statement that a plain name's
 //                  script does not have (a small MATLAB lexer below).
 // No file is named after a name: the files are the ones asked for.
@@ -123,6 +124,24 @@ TEST(HostileNames, JsbsimXmlIsWellFormed) {
     ASSERT_TRUE(root) << test::read_text(dir / "table.xml");
     EXPECT_STREQ(root->GetName(), "hydrocoef_tables");
     EXPECT_EQ(root->GetNumberOfNestedElements(), 2);
+  }
+}
+
+// DAVE-ML: names only in attributes and descriptions (the IDs are
+// hydrocoef's own), so every name leaves the same elements.
+TEST(HostileNames, DavemlXmlIsWellFormed) {
+  TempDir dir;
+  for (const auto& name : test::hostile_names()) {
+    SCOPED_TRACE(testing::PrintToString(name));
+    const GridTable table = table_named(name);
+    ExportMetadata metadata = metadata_named(table, name);
+    metadata.standard_deviation.assign(table.values().size(), 0.5);
+    export_table(table, metadata, ExportFormat::Daveml, dir / "table.dml");
+    const auto root = test::read_xml(dir / "table.dml");
+    ASSERT_TRUE(root) << test::read_text(dir / "table.dml");
+    EXPECT_STREQ(root->GetName(), "DAVEfunc");
+    // fileHeader, 2 + 2 variableDef, 2 breakpointDef, 2 griddedTableDef, 2 function.
+    EXPECT_EQ(root->GetNumberOfNestedElements(), 11);
   }
 }
 
