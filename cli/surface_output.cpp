@@ -149,8 +149,8 @@ void print_gp(const CoefficientSurface& surface) {
 /// with_run_uncertainty): the formula, its leave-one-out part per output and
 /// the three candidate points of the range where the standard deviation is
 /// largest. Candidates: every grid node (at most 100000) and a regular
-/// lattice of about 4096 points over the range (cell midpoints included for
-/// 2 or more per axis), so that an RBF's maxima between samples are seen.
+/// lattice of about 4096 points over the range, so that an RBF's maxima
+/// between samples are seen; the three are at least 1% of the range apart.
 nlohmann::json run_uncertainty_json(const CoefficientSurface& surface) {
   const std::size_t d = surface.axis_count(), n_out = surface.output_count();
   nlohmann::json out = {{"formula", "sd^2 = (runs' uncertainty interpolated as the surface)^2 + loo_rms^2"}};
@@ -186,14 +186,25 @@ nlohmann::json run_uncertainty_json(const CoefficientSurface& surface) {
   for (std::size_t k = 0; k < n_out; ++k) {
     std::vector<std::size_t> order(candidates.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    const std::size_t top = std::min<std::size_t>(3, order.size());
-    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(top), order.end(),
-                      [&](std::size_t a, std::size_t b) { return sd[a * n_out + k] > sd[b * n_out + k]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return sd[a * n_out + k] > sd[b * n_out + k]; });
+    // The three largest, each at least 1% of the range (on some axis) from
+    // those already listed: a node and the lattice point on it are one point.
+    const auto near = [&](std::size_t a, std::size_t b) {
+      for (std::size_t axis = 0; axis < d; ++axis)
+        if (std::abs(candidates[a][axis] - candidates[b][axis]) > 0.01 * (surface.upper(axis) - surface.lower(axis)))
+          return false;
+      return true;
+    };
+    std::vector<std::size_t> chosen;
+    for (std::size_t i = 0; i < order.size() && chosen.size() < 3; ++i)
+      if (std::none_of(chosen.begin(), chosen.end(), [&](std::size_t c) { return near(c, order[i]); }))
+        chosen.push_back(order[i]);
     nlohmann::json entry = {{"loo_sd", surface.loo_standard_deviation()[k]}, {"largest_sd", nlohmann::json::array()}};
-    for (std::size_t j = 0; j < top; ++j) {
+    for (const std::size_t c : chosen) {
       nlohmann::json point;
-      for (std::size_t a = 0; a < d; ++a) point[surface.axis_names()[a]] = candidates[order[j]][a];
-      entry["largest_sd"].push_back({{"point", point}, {"sd", sd[order[j] * n_out + k]}});
+      for (std::size_t a = 0; a < d; ++a) point[surface.axis_names()[a]] = candidates[c][a];
+      entry["largest_sd"].push_back({{"point", point}, {"sd", sd[c * n_out + k]}});
     }
     out["outputs"][surface.output_names()[k]] = entry;
   }

@@ -137,6 +137,13 @@ TEST(GivenUncertainty, AGridSurfaceStatesItThroughQueryBatchShowAndExport) {
   EXPECT_EQ(show["uncertainty"]["outputs"]["X"]["loo_sd"], loo);
   ASSERT_EQ(show["uncertainty"]["outputs"]["X"]["largest_sd"].size(), 3u);
   EXPECT_NEAR(show["uncertainty"]["outputs"]["X"]["largest_sd"][0]["sd"].get<double>(), expected, 1e-12);
+  // Three distinct points: at least 1% of the range apart (a node and the lattice point on it are one).
+  const auto& largest = show["uncertainty"]["outputs"]["X"]["largest_sd"];
+  const double range = show["axes"][0]["upper"].get<double>() - show["axes"][0]["lower"].get<double>();
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = i + 1; j < 3; ++j)
+      EXPECT_GT(std::abs(largest[i]["point"]["u"].get<double>() - largest[j]["point"]["u"].get<double>()),
+                0.01 * range);
 
   const auto point = json::parse(run_cli({"query", "surge", "u=0.05", "--uncertainty", "--json"}, dir.path()).out);
   EXPECT_NEAR(point["standard_deviation"]["X"].get<double>(), expected, 1e-12);
