@@ -141,17 +141,7 @@ int term_power(DampingTerm term) {
   return 0;
 }
 
-double basis_value(DampingTerm term, double x) {
-  switch (term) {
-    case DampingTerm::Constant: return 1.0;
-    case DampingTerm::Linear: return x;
-    case DampingTerm::SignedQuadratic: return x * std::abs(x);
-    case DampingTerm::Quadratic: return x * x;
-    case DampingTerm::Cubic: return x * x * x;
-    case DampingTerm::AbsLinear: return std::abs(x);
-  }
-  throw std::invalid_argument("basis_value: unknown DampingTerm");
-}
+void throw_unknown_damping_term() { throw std::invalid_argument("basis_value: unknown DampingTerm"); }
 
 void check_damping_law_spec(const DampingLawSpec& spec) {
   if (spec.terms.empty()) throw InputError("damping law has no terms; " + std::string(kAcceptedTerms));

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cmath>
 #include <span>
 #include <string>
 #include <string_view>
@@ -60,9 +61,22 @@ std::string format_damping_terms(const DampingLawSpec& spec);
 /// 2 for x|x| and x^2, 3 for x^3 (a coefficient's unit is force / velocity^power).
 int term_power(DampingTerm term);
 
+/// std::invalid_argument for a DampingTerm outside the enumeration.
+[[noreturn]] void throw_unknown_damping_term();
+
 /// The basis term's value at x (x in m/s or rad/s; result in x's unit to the
-/// term's power, 1 for Constant).
-double basis_value(DampingTerm term, double x);
+/// term's power, 1 for Constant). Inline: the dynamics' hot path.
+inline double basis_value(DampingTerm term, double x) {
+  switch (term) {
+    case DampingTerm::Constant: return 1.0;
+    case DampingTerm::Linear: return x;
+    case DampingTerm::SignedQuadratic: return x * std::abs(x);
+    case DampingTerm::Quadratic: return x * x;
+    case DampingTerm::Cubic: return x * x * x;
+    case DampingTerm::AbsLinear: return std::abs(x);
+  }
+  throw_unknown_damping_term();
+}
 
 /// The law's value sum_k coefficients[k] basis_value(terms[k], x), summed in
 /// term order [force unit]; terms without a coefficient (or coefficients

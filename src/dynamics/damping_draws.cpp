@@ -87,7 +87,11 @@ DampingDraws::DampingDraws(const DampingModel& nominal, const DampingSpec& spec)
     const std::string name = dofs + ": surface '" + lookup.key.substr(0, lookup.key.find('|')) + "'";
     const GpSurfaces* gp = surface.gp();
     if (!gp) {
-      held_.push_back(name + " (" + surface.method_name() + ") held at its values (no posterior to draw from)");
+      held_.push_back(name + " (" + surface.method_name() + ") held at its values (" +
+                      (surface.has_standard_deviation()
+                           ? "its standard deviation is pointwise, with no joint distribution to draw a function from"
+                           : "it states no uncertainty") +
+                      "; a GP surface or a fitted law can be drawn)");
       continue;
     }
     SurfaceDraw draw;

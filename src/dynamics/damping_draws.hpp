@@ -22,8 +22,10 @@
 //     Outside the range the draw follows the surface's policy: error, clamp,
 //     or (extrapolate) linear continuation of the drawn spline.
 //   - Laws without a covariance and surfaces without a posterior (grid and
-//     RBF surfaces) are held at their values; held() lists them, so that a
-//     band never looks narrower than it is without saying so.
+//     RBF surfaces: their standard deviation is pointwise, with no joint
+//     distribution of functions to draw from) are held at their values;
+//     held() lists them, so that a band never looks narrower than it is
+//     without saying so.
 //
 // Draw i of seed s comes from its own generator (std::mt19937_64 seeded with
 // s and i), so a set of draws does not depend on the number of threads or
