@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "src/core/run.hpp"
@@ -38,10 +39,15 @@ struct StoredForce {
   std::size_t source_line = 0;
   std::int64_t import_id = 0;                  ///< the import it came from (0: none recorded)
   std::optional<StoredStatistics> statistics;  ///< when the value is a mean over a force history
+  /// The numerical (discretization) standard uncertainty of the value from a
+  /// mesh study of its key (hydrocoef gci: GCI_fine |phi1| / 2) when the run
+  /// is on the study's finest mesh [N or N m]; empty otherwise.
+  std::optional<double> numerical_uncertainty;
 
   /// The value's standard uncertainty [N or N m]: the standard error of a
-  /// mean over a force history and an uncertainty given at import, combined
-  /// in quadrature; 0 when neither is known.
+  /// mean over a force history, an uncertainty given at import and the
+  /// numerical uncertainty of a mesh study, combined in quadrature; 0 when
+  /// none is known.
   double standard_uncertainty() const;
 };
 
@@ -58,6 +64,38 @@ struct StoredRun {
 /// first met ("no-steady-window", "drifting", ...); empty when every averaged
 /// component converged or none was averaged.
 std::vector<std::string> run_flags(const StoredRun& run);
+
+/// The disturbance parameters that say which mesh a run was computed on
+/// (hydrocoef gci): the level parameter (by default "mesh", any number that
+/// tells the meshes apart) and the mesh's size, either its cell count
+/// (kCellCountParameter) or its representative cell size in m
+/// (kCellSizeParameter). They are part of a run's key, so runs of one flow
+/// condition on different meshes are different runs.
+inline constexpr std::string_view kDefaultMeshParameter = "mesh";
+inline constexpr std::string_view kCellCountParameter = "cells";
+inline constexpr std::string_view kCellSizeParameter = "cell_size";
+
+/// A key's disturbances without its mesh parameters (mesh_parameter, cells,
+/// cell_size): what makes the flow condition, whatever the mesh.
+std::map<std::string, double> physical_disturbances(const std::map<std::string, double>& disturbances,
+                                                    const std::string& mesh_parameter);
+
+/// The numerical uncertainty of one force component of one physical key from
+/// a mesh study (table numerical_uncertainty, migration 11).
+struct NumericalUncertaintyRecord {
+  RunKey key;                 ///< the physical key: its disturbances without the mesh parameters
+  std::size_t component = 0;  ///< 0..5 = X..N
+  std::string mesh_parameter;
+  double fine_level = 0.0;      ///< the mesh parameter's value on the finest mesh: the runs it applies to
+  std::size_t levels = 0;       ///< mesh levels of the key (the three finest are used)
+  std::array<double, 3> h{};    ///< representative cell sizes, fine to coarse
+  std::array<double, 3> phi{};  ///< the component's values, fine to coarse
+  std::string convergence;      ///< grid_convergence_name()
+  std::optional<double> apparent_order, extrapolated, relative_error, extrapolated_relative_error, gci_fine;
+  std::optional<double> numerical_uncertainty;  ///< GCI_fine |phi1| / 2 [N or N m]
+  std::string note;
+  std::string created_at;
+};
 
 /// Which runs to list. Values are compared with a tolerance of 1e-9 (SI).
 struct RunFilter {
@@ -248,6 +286,13 @@ class Database {
   /// One surface by name; InputError listing the names there are when absent.
   SurfaceRecord surface(const std::string& name);
 
+  /// Stores mesh-study results in one transaction: the rows of each key
+  /// (body and physical key) in `records` replace what was stored for it.
+  void save_numerical_uncertainties(const std::vector<NumericalUncertaintyRecord>& records);
+  /// The stored mesh-study results of a body (all bodies when empty), by key and component.
+  std::vector<NumericalUncertaintyRecord> numerical_uncertainties(
+      const std::optional<std::string>& body = std::nullopt);
+
   /// "ok", or SQLite's list of problems.
   std::string integrity_check();
   /// True when the database was opened read-only (OpenMode::ReadOnly).
@@ -270,6 +315,9 @@ class Database {
   std::optional<std::int64_t> find_run_id(std::int64_t body, const RunKey& key);
   /// All runs, or those of one body, or one run; ordered by body and key.
   std::vector<StoredRun> load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run);
+  /// Sets the numerical uncertainty of the forces of runs on the finest mesh
+  /// of a stored mesh study of their key.
+  void apply_numerical_uncertainties(std::vector<StoredRun>& runs);
   /// The id of a body that must exist (InputError naming it otherwise).
   std::int64_t existing_body_id(const std::string& name);
   /// Records / reads the runs a fit or surface was built from, in a link
