@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   cli::add_surface_command(app, global);
   cli::add_query_command(app, global);
   cli::add_suggest_command(app, global);
+  cli::add_gci_command(app, global);
   cli::add_export_command(app, global);
   cli::add_export_gazebo_command(app, global);
   cli::add_plot_command(app, global);

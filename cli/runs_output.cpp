@@ -97,6 +97,8 @@ nlohmann::json run_json(const StoredRun& run) {
         {"source", f.source_path},
         {"source_line", f.source_line},
         {"given_uncertainty", f.value.uncertainty ? nlohmann::json(*f.value.uncertainty) : nlohmann::json()},
+        {"numerical_uncertainty",
+         f.numerical_uncertainty ? nlohmann::json(*f.numerical_uncertainty) : nlohmann::json()},
         {"standard_uncertainty", f.standard_uncertainty()}};
     if (f.statistics) {
       const auto& st = *f.statistics;

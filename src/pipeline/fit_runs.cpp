@@ -157,7 +157,7 @@ std::vector<double> fit_weights(const FitSamples& samples, bool wanted, std::str
   if (stated == samples.sigma.size() && stated > 0) return samples.sigma;
   if (stated > 0 && note)
     *note = std::to_string(samples.sigma.size() - stated) + " of the " + std::to_string(samples.sigma.size()) +
-            " runs state no uncertainty (neither a mean over a force history nor import --uncertainty): fitted "
+            " runs state no uncertainty (no mean over a force history, import --uncertainty or gci): fitted "
             "unweighted";
   return {};
 }
