@@ -12,6 +12,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "src/core/error.hpp"
+#include "src/core/names.hpp"
+#include "tests/support/hostile_names.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sqlite_dump.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -256,6 +259,49 @@ TEST(Gci, ASurfaceRefusesRunsOfSeveralMeshesAtOnePoint) {
       run_cli({"surface", "build", "surge", "--body", "hull", "--outputs", "X", "--axes", "u", "--where", "mesh=1"},
               dir.path());
   EXPECT_EQ(fine.exit_code, 0) << fine.err;
+}
+
+TEST(Gci, NoStoreLeavesTheDatabaseUnchanged) {
+  TempDir dir;
+  ASSERT_EQ(import_table(dir, write_table(dir.path(), "mesh.csv", {0.1}, {0, 1, 2})), 0);
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  const auto result = run_cli({"gci", "--body", "hull", "--no-store", "--json"}, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(json::parse(result.out)["stored"], false);
+  EXPECT_EQ(test::dump_database(dir / "hydrocoef.db"), before);
+}
+
+TEST(Gci, HostileBodyNamesAreDataInTheTableAndTheJson) {
+  TempDir dir;
+  std::size_t tried = 0;
+  for (const std::string& name : test::hostile_names()) {
+    try {
+      check_name(NameKind::Body, name, {}, "test");
+    } catch (const InputError&) {
+      continue;  // a name no body can have
+    }
+    // The names a terminal or a JSON reader could take for something else.
+    if (std::none_of(name.begin(), name.end(), [](char c) {
+          const auto b = static_cast<unsigned char>(c);
+          return b < 0x20 || b >= 0x7f || c == '"' || c == '\\';
+        }))
+      continue;
+    ++tried;
+    // Other bytes for each body: the same file again would be another reading of it.
+    const auto table = write_table(dir.path(), "mesh.csv", {0.1 * static_cast<double>(tried)}, {0, 1, 2});
+    ASSERT_EQ(import_table(dir, table, name), 0) << name;
+    const auto result = run_cli({"gci", "--body", name, "--json", "--no-store"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
+    const auto study = json::parse(result.out);
+    EXPECT_EQ(study["body"], name);
+    EXPECT_EQ(study["keys"][0]["key"]["body"], name);
+    const auto text = run_cli({"gci", "--body", name, "--no-store"}, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << name;
+    for (const char c : text.out)
+      EXPECT_TRUE(c == '\n' || (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f))
+          << name << ": a control character in " << text.out;
+  }
+  EXPECT_GT(tried, 5u);
 }
 
 }  // namespace
