@@ -137,11 +137,32 @@ void add_gci_command(CLI::App& app, const GlobalOptions& global) {
     const bool store = args->store;
     Database database(global.database, store ? Database::OpenMode::MustExist : Database::OpenMode::ReadOnly);
     const GridConvergenceStudy study = grid_convergence_of_runs(database, args->request);
-    if (store) database.save_numerical_uncertainties(numerical_uncertainty_records(study));
-    if (args->json)
-      std::cout << escape::json_text(study_json(study, store), 2) << '\n';
-    else
+    std::size_t fits_made_stale = 0, surfaces_made_stale = 0;
+    if (store) {
+      const auto stale = [&] {
+        const auto fits = database.fits(args->request.body);
+        const auto surfaces = database.surfaces(args->request.body);
+        return std::pair<std::size_t, std::size_t>(
+            std::count_if(fits.begin(), fits.end(), [](const FitRecord& f) { return f.stale; }),
+            std::count_if(surfaces.begin(), surfaces.end(), [](const SurfaceRecord& s) { return s.stale; }));
+      };
+      const auto before = stale();
+      database.save_numerical_uncertainties(numerical_uncertainty_records(study));
+      const auto after = stale();
+      fits_made_stale = after.first - before.first;
+      surfaces_made_stale = after.second - before.second;
+    }
+    if (args->json) {
+      auto out = study_json(study, store);
+      out["fits_made_stale"] = fits_made_stale;
+      out["surfaces_made_stale"] = surfaces_made_stale;
+      std::cout << escape::json_text(out, 2) << '\n';
+    } else {
       print_study(study, args->request, store);
+      if (fits_made_stale + surfaces_made_stale > 0)
+        std::cout << "  made stale (their runs' uncertainty changed): " << fits_made_stale << " fit(s), "
+                  << surfaces_made_stale << " surface(s); fit --refit and surface rebuild --stale make them again\n";
+    }
   });
 }
 

@@ -703,6 +703,23 @@ void Database::apply_numerical_uncertainties(std::vector<StoredRun>& runs) {
 
 void Database::save_numerical_uncertainties(const std::vector<NumericalUncertaintyRecord>& records) {
   store::Transaction transaction(connection_);
+  // The numerical uncertainty of every force of the bodies concerned, before
+  // and after: fits of a force whose uncertainty changed, and the body's
+  // surfaces, become stale (a weighted fit or a GP surface would differ).
+  std::set<std::string> bodies;
+  for (const auto& record : records) bodies.insert(record.key.body);
+  const auto snapshot = [&] {
+    std::map<std::pair<std::int64_t, std::size_t>, std::optional<double>> out;
+    for (const auto& name : bodies) {
+      const std::int64_t id = body_id(name, false);
+      if (id < 0) continue;
+      for (const auto& run : load_runs(id, std::nullopt))
+        for (std::size_t c = 0; c < 6; ++c)
+          if (run.tau_b[c]) out[{run.id, c}] = run.tau_b[c]->numerical_uncertainty;
+    }
+    return out;
+  };
+  const auto before = snapshot();
   auto drop = connection_.prepare(
       "DELETE FROM numerical_uncertainty WHERE body_id = ? AND u = ? AND v = ? AND w = ? AND p = ? AND q = ? AND "
       "r = ? AND disturbance_key = ?");
@@ -744,6 +761,18 @@ void Database::save_numerical_uncertainties(const std::vector<NumericalUncertain
     insert.bind(c++, record.created_at.empty() ? utc_timestamp_now() : record.created_at);
     insert.run();
     insert.reset();
+  }
+  auto stale_fits = connection_.prepare(
+      "UPDATE fit SET stale = 1 WHERE dof = ? AND id IN (SELECT fit_id FROM fit_run WHERE run_id = ?)");
+  auto stale_surfaces =
+      connection_.prepare("UPDATE surface SET stale = 1 WHERE body_id = (SELECT body_id FROM run WHERE id = ?)");
+  for (const auto& [force, uncertainty] : snapshot()) {
+    const auto old = before.find(force);
+    if (old != before.end() && old->second == uncertainty) continue;
+    stale_fits.bind(1, force_name(force.second)).bind(2, force.first).run();
+    stale_fits.reset();
+    stale_surfaces.bind(1, force.first).run();
+    stale_surfaces.reset();
   }
   transaction.commit();
   use_wal();

@@ -288,6 +288,8 @@ class Database {
 
   /// Stores mesh-study results in one transaction: the rows of each key
   /// (body and physical key) in `records` replace what was stored for it.
+  /// Fits of a force whose numerical uncertainty changes, and the surfaces
+  /// of its body, become stale.
   void save_numerical_uncertainties(const std::vector<NumericalUncertaintyRecord>& records);
   /// The stored mesh-study results of a body (all bodies when empty), by key and component.
   std::vector<NumericalUncertaintyRecord> numerical_uncertainties(

@@ -233,6 +233,36 @@ TEST(Gci, TheNumericalUncertaintyReachesTheRunsAndAWeightedFit) {
   EXPECT_TRUE(after["chi2_reduced"].is_number()) << after;
 }
 
+TEST(Gci, AFitOfRunsWhoseUncertaintyChangesBecomesStaleOnce) {
+  TempDir dir;
+  ASSERT_EQ(import_table(dir, write_table(dir.path(), "mesh.csv", {0.1, 0.2, 0.3}, {0, 1, 2})), 0);
+  ASSERT_EQ(
+      run_cli({"fit", "--body", "hull", "--dof", "X", "--terms", "u,u|u|", "--where", "mesh=1", "--name", "surge-x"},
+              dir.path())
+          .exit_code,
+      0);
+  ASSERT_EQ(run_cli({"fit", "--body", "hull", "--dof", "Y", "--terms", "1,u", "--where", "mesh=1", "--name", "sway-y",
+                     "--unweighted"},
+                    dir.path())
+                .exit_code,
+            0);
+  const auto stale = [&] {
+    std::map<std::string, bool> out;
+    for (const auto& fit : json::parse(run_cli({"fits", "--json"}, dir.path()).out)) out[fit["name"]] = fit["stale"];
+    return out;
+  };
+  EXPECT_EQ(stale(), (std::map<std::string, bool>{{"surge-x", false}, {"sway-y", false}}));
+  const auto first = json::parse(run_cli({"gci", "--body", "hull", "--json"}, dir.path()).out);
+  EXPECT_EQ(first["fits_made_stale"], 2);
+  EXPECT_EQ(stale(), (std::map<std::string, bool>{{"surge-x", true}, {"sway-y", true}}));
+  ASSERT_EQ(run_cli({"fit", "--refit"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(stale(), (std::map<std::string, bool>{{"surge-x", false}, {"sway-y", false}}));
+  // The same study again changes no uncertainty: nothing becomes stale.
+  const auto again = json::parse(run_cli({"gci", "--body", "hull", "--json"}, dir.path()).out);
+  EXPECT_EQ(again["fits_made_stale"], 0);
+  EXPECT_EQ(stale(), (std::map<std::string, bool>{{"surge-x", false}, {"sway-y", false}}));
+}
+
 TEST(Gci, AFitOverEveryMeshIsToldThatTheMeshVaries) {
   TempDir dir;
   ASSERT_EQ(import_table(dir, write_table(dir.path(), "mesh.csv", {0.1, 0.2, 0.3}, {0, 1, 2})), 0);
