@@ -12,8 +12,8 @@
 // (src/core/sign_convention.hpp converts).
 #pragma once
 
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
