@@ -1,4 +1,5 @@
 #include "src/dynamics/damping_draws.hpp"
+#include "src/surface/grid_nodes.hpp"
 
 #include <Eigen/Cholesky>
 #include <algorithm>
@@ -126,14 +127,8 @@ DampingDraws::DampingDraws(const DampingModel& nominal, const DampingSpec& spec)
     }
     // The nodes, axis 0 fastest (GridTable's order).
     std::vector<double> points(draw.nodes * dims);
-    for (std::size_t node = 0; node < draw.nodes; ++node) {
-      std::size_t rest = node;
-      for (std::size_t a = 0; a < dims; ++a) {
-        const std::size_t n = draw.axes[a].breakpoints.size();
-        points[node * dims + a] = draw.axes[a].breakpoints[rest % n];
-        rest /= n;
-      }
-    }
+    for (std::size_t node = 0; node < draw.nodes; ++node)
+      grid_node_point(draw.axes, node, std::span<double>(points).subspan(node * dims, dims));
     for (std::size_t k = 0; k < surface.output_count(); ++k) {
       std::vector<double> mean, covariance;
       gp->output(k).posterior(points, draw.nodes, mean, covariance);

@@ -64,6 +64,29 @@ class ProgressCounter {
   std::mutex mutex_;
 };
 
+/// Runs body(i, drawn model) for every draw i on options.threads threads;
+/// a draw whose body throws InputError is recorded as failed. Returns which
+/// draws succeeded and the failures.
+template <typename Body>
+std::vector<char> run_draws(const VehicleModel& model, const DampingDraws& draws, const EnsembleOptions& options,
+                            const EnsembleProgress& progress, EnsembleFailures& failed, Body&& body) {
+  const std::size_t n = options.samples;
+  std::vector<char> ok(n, 0);
+  FailureLog failures;
+  ProgressCounter counter(progress, n);
+  parallel_for(n, options.threads, [&](std::size_t i) {
+    try {
+      body(i, model.with_damping(draws.draw(options.seed, i)));
+      ok[i] = 1;
+    } catch (const InputError& e) {
+      failures.add(i, e.what());
+    }
+    counter.done();
+  });
+  failed = failures.result();
+  return ok;
+}
+
 [[noreturn]] void all_failed(const char* what, EnsembleFailures failures) {
   throw InputError("every one of the " + std::to_string(failures.count) + " draws failed to " + what + "; the first, " +
                    (failures.first.empty() ? std::string("?") : failures.first.front()));
@@ -110,44 +133,36 @@ TrajectoryBands simulate_samples(const VehicleModel& model, const DampingDraws& 
 
   // All trajectories, draw-major: data[(draw * kQuantities + q) * times + k].
   std::vector<double> data(n * kQuantities * times);
-  std::vector<char> ok(n, 0);
-  FailureLog failures;
-  ProgressCounter counter(progress, n);
-  parallel_for(n, options.threads, [&](std::size_t i) {
-    try {
-      const VehicleModel drawn = model.with_damping(draws.draw(options.seed, i));
-      const SimulationResult r = simulate(drawn, scenario);
-      if (r.samples.size() != times) throw std::logic_error("simulate_samples: a draw with other output times");
-      double* out = data.data() + i * kQuantities * times;
-      for (std::size_t k = 0; k < times; ++k) {
-        const TrajectorySample& s = r.samples[k];
-        for (std::size_t a = 0; a < 3; ++a) {
-          out[a * times + k] = s.p_n[static_cast<Eigen::Index>(a)];
-          out[(3 + a) * times + k] = s.euler_rad[static_cast<Eigen::Index>(a)];
+  EnsembleFailures failures;
+  const std::vector<char> ok =
+      run_draws(model, draws, options, progress, failures, [&](std::size_t i, const VehicleModel& drawn) {
+        const SimulationResult r = simulate(drawn, scenario);
+        if (r.samples.size() != times) throw std::logic_error("simulate_samples: a draw with other output times");
+        double* out = data.data() + i * kQuantities * times;
+        for (std::size_t k = 0; k < times; ++k) {
+          const TrajectorySample& s = r.samples[k];
+          for (std::size_t a = 0; a < 3; ++a) {
+            out[a * times + k] = s.p_n[static_cast<Eigen::Index>(a)];
+            out[(3 + a) * times + k] = s.euler_rad[static_cast<Eigen::Index>(a)];
+          }
+          for (std::size_t a = 0; a < 6; ++a) out[(6 + a) * times + k] = s.nu_b[static_cast<Eigen::Index>(a)];
         }
-        for (std::size_t a = 0; a < 6; ++a) out[(6 + a) * times + k] = s.nu_b[static_cast<Eigen::Index>(a)];
-      }
-      // Unwrap the Euler angles in time.
-      for (std::size_t a = 3; a < 6; ++a) {
-        double* angle = out + a * times;
-        double turns = 0.0;
-        for (std::size_t k = 1; k < times; ++k) {
-          const double raw = angle[k] + turns;
-          const double step = raw - angle[k - 1];
-          if (step > std::numbers::pi) turns -= 2.0 * std::numbers::pi;
-          if (step < -std::numbers::pi) turns += 2.0 * std::numbers::pi;
-          angle[k] += turns;
+        // Unwrap the Euler angles in time.
+        for (std::size_t a = 3; a < 6; ++a) {
+          double* angle = out + a * times;
+          double turns = 0.0;
+          for (std::size_t k = 1; k < times; ++k) {
+            const double raw = angle[k] + turns;
+            const double step = raw - angle[k - 1];
+            if (step > std::numbers::pi) turns -= 2.0 * std::numbers::pi;
+            if (step < -std::numbers::pi) turns += 2.0 * std::numbers::pi;
+            angle[k] += turns;
+          }
         }
-      }
-      ok[i] = 1;
-    } catch (const InputError& e) {
-      failures.add(i, e.what());
-    }
-    counter.done();
-  });
+      });
 
   TrajectoryBands bands;
-  bands.failures = failures.result();
+  bands.failures = failures;
   for (const char good : ok) bands.samples += good ? 1 : 0;
   if (bands.samples == 0) all_failed("reach the end of the scenario", bands.failures);
   for (const auto& s : nominal.samples) bands.t_s.push_back(s.t_s);
@@ -199,30 +214,22 @@ EquilibriumSamples solve_equilibrium_samples(const VehicleModel& model, const Da
   check_ensemble_options(options);
   const std::size_t n = options.samples;
   std::vector<Vector6> nu(n, Vector6::Zero());
-  std::vector<char> ok(n, 0);
-  FailureLog failures;
-  ProgressCounter counter(progress, n);
-  parallel_for(n, options.threads, [&](std::size_t i) {
-    try {
-      const VehicleModel drawn = model.with_damping(draws.draw(options.seed, i));
-      const EquilibriumResult r = solve_equilibrium(drawn, inputs);
-      if (!r.converged) {
-        std::size_t worst = 0;
-        r.residual_b.cwiseAbs().maxCoeff(&worst);
-        throw InputError("no steady state: the residual stays at " +
-                         shortest_number(r.residual_b[static_cast<Eigen::Index>(worst)]) + " in " +
-                         std::string(1, "XYZKMN"[worst]));
-      }
-      nu[i] = r.nu_b;
-      ok[i] = 1;
-    } catch (const InputError& e) {
-      failures.add(i, e.what());
-    }
-    counter.done();
-  });
+  EnsembleFailures failures;
+  const std::vector<char> ok =
+      run_draws(model, draws, options, progress, failures, [&](std::size_t i, const VehicleModel& drawn) {
+        const EquilibriumResult r = solve_equilibrium(drawn, inputs);
+        if (!r.converged) {
+          std::size_t worst = 0;
+          r.residual_b.cwiseAbs().maxCoeff(&worst);
+          throw InputError("no steady state: the residual stays at " +
+                           shortest_number(r.residual_b[static_cast<Eigen::Index>(worst)]) + " in " +
+                           std::string(1, "XYZKMN"[worst]));
+        }
+        nu[i] = r.nu_b;
+      });
 
   EquilibriumSamples out;
-  out.failures = failures.result();
+  out.failures = failures;
   std::vector<Vector6> good;
   for (std::size_t i = 0; i < n; ++i)
     if (ok[i]) good.push_back(nu[i]);

@@ -1,4 +1,5 @@
 #include "src/export/csv_export.hpp"
+#include "src/surface/grid_nodes.hpp"
 
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
@@ -54,13 +55,10 @@ std::string csv_long_text(const GridTable& table, const ExportMetadata& metadata
   for (std::size_t k = 0; k < n_out; ++k) text += "," + column(table.outputs()[k], metadata.output_units[k]);
   text += "\n";
   const std::vector<double>& values = table.values();
+  std::vector<double> point(n);
   for (std::size_t node = 0; node < table.node_count(); ++node) {
-    std::size_t rest = node;
-    for (std::size_t a = 0; a < n; ++a) {
-      const std::vector<double>& x = table.axes()[a].breakpoints;
-      text += (a ? "," : "") + shortest_number(x[rest % x.size()]);
-      rest /= x.size();
-    }
+    grid_node_point(table.axes(), node, point);
+    for (std::size_t a = 0; a < n; ++a) text += (a ? "," : "") + shortest_number(point[a]);
     for (std::size_t k = 0; k < n_out; ++k) text += "," + shortest_number(values[node * n_out + k]);
     text += "\n";
   }

@@ -1,4 +1,5 @@
 #include "src/export/export.hpp"
+#include "src/surface/grid_nodes.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -75,12 +76,7 @@ ExportMetadata metadata_from_record(const SurfaceRecord& record, const Coefficie
     metadata.standard_deviation.resize(table.values().size());
     std::vector<double> point(n_axes), values(n_out);
     for (std::size_t node = 0; node < table.node_count(); ++node) {
-      std::size_t rest = node;
-      for (std::size_t a = 0; a < n_axes; ++a) {
-        const auto& x = table.axes()[a].breakpoints;
-        point[a] = x[rest % x.size()];
-        rest /= x.size();
-      }
+      grid_node_point(table.axes(), node, point);
       surface.evaluate_with_standard_deviation(
           point, values, std::span<double>(metadata.standard_deviation).subspan(node * n_out, n_out));
     }
@@ -95,12 +91,8 @@ std::vector<std::vector<double>> grid_node_coordinates(const GridTable& table,
     if (index >= table.node_count())
       throw InputError("grid node " + std::to_string(index) + " is outside a grid of " +
                        std::to_string(table.node_count()) + " nodes; expected an index below it");
-    std::vector<double> point;
-    std::size_t rest = index;
-    for (const GridAxis& axis : table.axes()) {
-      point.push_back(axis.breakpoints[rest % axis.breakpoints.size()]);
-      rest /= axis.breakpoints.size();
-    }
+    std::vector<double> point(table.axis_count());
+    grid_node_point(table.axes(), index, point);
     out.push_back(std::move(point));
   }
   return out;

@@ -149,6 +149,20 @@ constexpr std::size_t kMaxDims = 6;
   return ww;
 }
 
+/// Replaces u by R^-1 u for R lower triangular, packed by rows (row t holds
+/// R_t0..R_tt); returns |R^-1 u|^2. For the mean's few terms.
+double solve_lower_packed(const double* R, double* u, std::size_t m) {
+  double uu = 0.0;
+  for (std::size_t t = 0; t < m; ++t) {
+    const double* row = R + t * (t + 1) / 2;
+    double sum = u[t];
+    for (std::size_t j = 0; j < t; ++j) sum -= row[j] * u[j];
+    u[t] = sum / row[t];
+    uu += u[t] * u[t];
+  }
+  return uu;
+}
+
 /// Kernel correlation c(r^2) (sigma = 1) and, for the gradients, the factor
 /// dc such that d c / d x'_a = dc * (x'_a - p_a) (x' = z / l).
 inline void correlation(GpKernel kernel, double r2, double& c, double& dc) {
@@ -535,15 +549,7 @@ double GpSurface::evaluate(const double* x, Workspace& ws, double* standard_devi
     // u = h - (L^-1 H)^T w, then |R^-1 u|^2 with R the mean's Cholesky factor.
     double u[1 + 2 * kMaxDims];
     for (std::size_t t = 0; t < m; ++t) u[t] = h[t] - dot_product(state_.basis_solve.data() + t * n, w, n);
-    double uu = 0.0;
-    const double* R = state_.mean_cholesky.data();
-    for (std::size_t t = 0; t < m; ++t) {
-      const double* row = R + t * (t + 1) / 2;
-      double sum = u[t];
-      for (std::size_t j = 0; j < t; ++j) sum -= row[j] * u[j];
-      u[t] = sum / row[t];
-      uu += u[t] * u[t];
-    }
+    const double uu = solve_lower_packed(state_.mean_cholesky.data(), u, m);
     const double variance = std::max(0.0, s2 - ww + uu);
     *standard_deviation = std::sqrt(variance) * state_.value_scale;
   }
@@ -573,13 +579,7 @@ void GpSurface::posterior(std::span<const double> points, std::size_t count, std
     double* u = v.data() + j * m;
     const double* wj = w.data() + j * n;
     for (std::size_t t = 0; t < m; ++t) u[t] = h[t] - dot_product(state_.basis_solve.data() + t * n, wj, n);
-    const double* R = state_.mean_cholesky.data();
-    for (std::size_t t = 0; t < m; ++t) {
-      const double* row = R + t * (t + 1) / 2;
-      double sum = u[t];
-      for (std::size_t s = 0; s < t; ++s) sum -= row[s] * u[s];
-      u[t] = sum / row[t];
-    }
+    solve_lower_packed(state_.mean_cholesky.data(), u, m);
   }
   const double s2 = state_.sigma * state_.sigma;
   const double scale2 = state_.value_scale * state_.value_scale;

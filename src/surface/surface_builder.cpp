@@ -1,4 +1,5 @@
 #include "src/surface/surface_builder.hpp"
+#include "src/surface/grid_nodes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -396,12 +397,7 @@ BuiltSurface build_rbf(const Samples& samples, const SurfaceSpec& spec) {
     std::vector<double> node_sigma(table.values().size());
     std::vector<double> point(n_axes);
     for (std::size_t node = 0; node < table.node_count(); ++node) {
-      std::size_t rest = node;
-      for (std::size_t a = 0; a < n_axes; ++a) {
-        const auto& x = table.axes()[a].breakpoints;
-        point[a] = x[rest % x.size()];
-        rest /= x.size();
-      }
+      grid_node_point(table.axes(), node, point);
       sigma.evaluate(point, std::span<double>(node_sigma).subspan(node * n_outputs, n_outputs));
       for (std::size_t k = 0; k < n_outputs; ++k)
         node_sigma[node * n_outputs + k] = std::max(0.0, node_sigma[node * n_outputs + k]);
