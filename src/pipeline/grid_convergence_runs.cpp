@@ -214,4 +214,19 @@ std::vector<NumericalUncertaintyRecord> numerical_uncertainty_records(const Grid
   return out;
 }
 
+StoredStudy store_grid_convergence(Database& database, const GridConvergenceStudy& study) {
+  const auto stale = [&] {
+    const auto fits = database.fits(study.body);
+    const auto surfaces = database.surfaces(study.body);
+    return StoredStudy{
+        static_cast<std::size_t>(std::count_if(fits.begin(), fits.end(), [](const FitRecord& f) { return f.stale; })),
+        static_cast<std::size_t>(
+            std::count_if(surfaces.begin(), surfaces.end(), [](const SurfaceRecord& s) { return s.stale; }))};
+  };
+  const StoredStudy before = stale();
+  database.save_numerical_uncertainties(numerical_uncertainty_records(study));
+  const StoredStudy after = stale();
+  return {after.fits_made_stale - before.fits_made_stale, after.surfaces_made_stale - before.surfaces_made_stale};
+}
+
 }  // namespace hydrocoef

@@ -93,4 +93,13 @@ GridConvergenceStudy grid_convergence_of_runs(Database& database, const GridConv
 /// The study's results as records to store (one per key and component).
 std::vector<NumericalUncertaintyRecord> numerical_uncertainty_records(const GridConvergenceStudy& study);
 
+/// What storing a study changed besides its own rows.
+struct StoredStudy {
+  std::size_t fits_made_stale = 0;      ///< the body's fits that became stale
+  std::size_t surfaces_made_stale = 0;  ///< the body's surfaces that became stale
+};
+/// Stores the study's results (replacing those of its keys) and counts the
+/// body's fits and surfaces this made stale (their runs' uncertainty changed).
+StoredStudy store_grid_convergence(Database& database, const GridConvergenceStudy& study);
+
 }  // namespace hydrocoef
