@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "src/core/covariance.hpp"
 #include "src/core/damping_terms.hpp"
 #include "src/core/matrix6.hpp"
 #include "src/core/run.hpp"
@@ -70,11 +71,6 @@ struct DofDamping {
 
 /// The damping of X, Y, Z, K, M, N in that order.
 using DampingSpec = std::array<DofDamping, 6>;
-
-/// Why `covariance` (k x k, row by row) cannot be a covariance matrix: a size
-/// other than k^2, a number that is not finite, an asymmetry beyond round-off,
-/// or a negative eigenvalue beyond round-off. nullopt when it can.
-std::optional<std::string> covariance_problem(std::span<const double> covariance, std::size_t k);
 
 /// Resolves a surface name to a surface (for example from the run database,
 /// see src/surface/stored_surface.hpp); throws InputError when it has none.
