@@ -76,12 +76,13 @@ void print_draws(const DampingDraws& draws, std::uint64_t seed, std::size_t requ
                  const EnsembleFailures& failures, double wall_s) {
   std::cout << "\n  Monte Carlo: " << used << " of " << requested << " draws (seed " << seed << ", "
             << significant(wall_s, 3) << " s wall); " << kSamplingNote << '\n';
-  for (const auto& line : draws.drawn()) std::cout << "    drawn: " << line << '\n';
-  for (const auto& line : draws.held()) std::cout << "    held:  " << line << '\n';
-  for (const auto& line : draws.notes()) std::cout << "    note:  " << line << '\n';
+  // The lines name fits and surfaces of a database someone else may have made.
+  for (const auto& line : draws.drawn()) std::cout << "    drawn: " << escape::one_line(line) << '\n';
+  for (const auto& line : draws.held()) std::cout << "    held:  " << escape::one_line(line) << '\n';
+  for (const auto& line : draws.notes()) std::cout << "    note:  " << escape::one_line(line) << '\n';
   if (failures.count) {
     std::cout << "    FAILED: " << failures.count << " draws (the bands are those of the others); first:\n";
-    for (const auto& line : failures.first) std::cout << "      " << line << '\n';
+    for (const auto& line : failures.first) std::cout << "      " << escape::one_line(line) << '\n';
   }
 }
 

@@ -120,6 +120,17 @@ nlohmann::json gp_json(const CoefficientSurface& surface) {
   return out;
 }
 
+/// The points of `largest` ({"point": {axis: value}, "sd": value}), one a line.
+void print_largest_sd(const CoefficientSurface& surface, const nlohmann::json& largest) {
+  for (const auto& where : largest) {
+    std::cout << "      sd " << std::setw(12) << significant(where["sd"].get<double>(), 4) << "at";
+    for (std::size_t a = 0; a < surface.axis_count(); ++a)
+      std::cout << " " << surface.axis_names()[a] << "="
+                << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
+    std::cout << '\n';
+  }
+}
+
 void print_gp(const CoefficientSurface& surface) {
   if (!surface.gp()) return;
   const nlohmann::json gp = gp_json(surface);
@@ -135,13 +146,7 @@ void print_gp(const CoefficientSurface& surface) {
       std::cout << " " << surface.axis_names()[a] << " "
                 << significant(entry["length_scales"][surface.axis_names()[a]].get<double>(), 3);
     std::cout << '\n';
-    for (const auto& where : entry["largest_sd"]) {
-      std::cout << "      sd " << std::setw(12) << significant(where["sd"].get<double>(), 4) << "at";
-      for (std::size_t a = 0; a < surface.axis_count(); ++a)
-        std::cout << " " << surface.axis_names()[a] << "="
-                  << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
-      std::cout << '\n';
-    }
+    print_largest_sd(surface, entry["largest_sd"]);
   }
 }
 
@@ -226,13 +231,7 @@ void print_run_uncertainty(const CoefficientSurface& surface) {
     const auto& entry = uncertainty["outputs"][name];
     std::cout << "    " << std::left << std::setw(4) << name << "leave-one-out part "
               << significant(entry["loo_sd"].get<double>(), 4) << " " << surface.output_units()[k] << '\n';
-    for (const auto& where : entry["largest_sd"]) {
-      std::cout << "      sd " << std::setw(12) << significant(where["sd"].get<double>(), 4) << "at";
-      for (std::size_t a = 0; a < surface.axis_count(); ++a)
-        std::cout << " " << surface.axis_names()[a] << "="
-                  << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
-      std::cout << '\n';
-    }
+    print_largest_sd(surface, entry["largest_sd"]);
   }
 }
 

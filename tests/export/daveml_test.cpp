@@ -21,6 +21,8 @@
 namespace hydrocoef {
 namespace {
 
+using test::numbers_in;
+
 GridTable table_3x2(Interpolation method = Interpolation::Linear) {
   std::vector<GridAxis> axes = {{"u", {0.0, 0.5, 1.5}, Extrapolation::Clamp},
                                 {"r", {-0.2, 0.4}, Extrapolation::Linear}};
@@ -31,24 +33,6 @@ GridTable table_3x2(Interpolation method = Interpolation::Linear) {
       values.push_back(-0.3 * r + 0.01 * u);         // N
     }
   return GridTable(std::move(axes), {"X", "N"}, std::move(values), method);
-}
-
-/// The comma- or space-separated numbers of an element's text.
-std::vector<double> numbers_in(vtkXMLDataElement* element) {
-  std::vector<double> out;
-  if (!element || !element->GetCharacterData()) return out;
-  std::string text = element->GetCharacterData();
-  for (char& c : text)
-    if (c == ',') c = ' ';
-  const char* at = text.c_str();
-  while (*at) {
-    char* end = nullptr;
-    const double value = std::strtod(at, &end);
-    if (end == at) break;
-    out.push_back(value);
-    at = end;
-  }
-  return out;
 }
 
 std::vector<vtkXMLDataElement*> children(vtkXMLDataElement* root, const std::string& name) {

@@ -19,16 +19,16 @@ inline vtkSmartPointer<vtkXMLDataElement> read_xml(const std::filesystem::path& 
   return vtkSmartPointer<vtkXMLDataElement>::Take(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
 }
 
-/// The numbers in the first element called `name` below root; a test failure if there is none.
-inline std::vector<double> numbers_of(vtkXMLDataElement* root, const std::string& name) {
-  vtkXMLDataElement* element = root->FindNestedElementWithName(name.c_str());
-  if (!element) {
-    ADD_FAILURE() << "no element <" << name << ">";
-    return {};
-  }
+/// The numbers of an element's text, separated by white space or commas
+/// (DAVE-ML separates them with commas); none for a missing element.
+inline std::vector<double> numbers_in(vtkXMLDataElement* element) {
   std::vector<double> out;
-  const char* at = element->GetCharacterData();
-  while (at && *at) {
+  if (!element || !element->GetCharacterData()) return out;
+  std::string text = element->GetCharacterData();
+  for (char& c : text)
+    if (c == ',') c = ' ';
+  const char* at = text.c_str();
+  while (*at) {
     char* end = nullptr;
     const double value = std::strtod(at, &end);
     if (end == at) break;
@@ -36,6 +36,13 @@ inline std::vector<double> numbers_of(vtkXMLDataElement* root, const std::string
     at = end;
   }
   return out;
+}
+
+/// The numbers in the first element called `name` below root; a test failure if there is none.
+inline std::vector<double> numbers_of(vtkXMLDataElement* root, const std::string& name) {
+  vtkXMLDataElement* element = root->FindNestedElementWithName(name.c_str());
+  if (!element) ADD_FAILURE() << "no element <" << name << ">";
+  return numbers_in(element);
 }
 
 /// The single number of that element (a test failure unless there is exactly one).
