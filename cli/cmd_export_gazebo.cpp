@@ -36,7 +36,7 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
   request.allow_missing = args.allow_missing;
   request.allow_unphysical = args.allow_unphysical;
   request.linearize_at = args.linearize_at;
-  std::tie(request.added_mass, request.added_mass_source) = added_mass_from(args);
+  std::tie(request.added_mass, request.added_mass_source) = added_mass_from(args, global.database);
 
   Database database(global.database, Database::OpenMode::ReadOnly);
   // --where picks the fits made from that selection of runs (a filtered fit
@@ -73,6 +73,12 @@ void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global) {
                       "Added mass of a sphere of this radius [m]: 2/3 pi rho R^3 in each translation (needs --rho "
                       "and --added-mass-rotation)");
   command->add_option("--rho", args->rho, "Fluid density for --sphere-radius [kg/m^3]");
+  command->add_option("--added-mass-from-database", args->added_mass_from_database,
+                      "The added mass assembled from BODY's stored forced-oscillation runs (hydrocoef pmm; see "
+                      "hydrocoef added-mass)");
+  command->add_option("--same", args->same, "With --added-mass-from-database: DOF=DOF for a DOF no run moves");
+  command->add_option("--zero", args->zero, "With --added-mass-from-database: a DOF whose added mass is zero")
+      ->delimiter(',');
   command->add_option("--added-mass-rotation", args->rotation,
                       "With --sphere-radius: rotational added mass a,b,c [kg m^2] (a sphere has none)");
   command->add_flag("--drop-constant", args->drop_constant,

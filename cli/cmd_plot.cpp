@@ -156,7 +156,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
       return load_surface(**database, name).surface;
     };
     VehicleDescription vehicle = load_vehicle(a.vehicle);
-    resolve_stored_fits(vehicle, global.database);
+    resolve_stored_records(vehicle, global.database);
     const VehicleModel model(std::move(vehicle), resolver);
     std::vector<plot::SteadyPoint> measured;
     if (a.points) measured = plot::read_steady_points(*a.points);

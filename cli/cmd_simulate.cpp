@@ -86,7 +86,7 @@ EnsembleProgress draw_progress() {
 /// The vehicle with its stored fits filled in, as a model.
 VehicleModel load_model(const std::string& vehicle, const GlobalOptions& global) {
   VehicleDescription description = load_vehicle(vehicle);
-  resolve_stored_fits(description, global.database);
+  resolve_stored_records(description, global.database);
   return VehicleModel(std::move(description), database_surface_resolver(global.database));
 }
 

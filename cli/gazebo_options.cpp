@@ -1,6 +1,9 @@
 // The added mass export-gazebo is given (cli/gazebo_options.hpp).
 #include "cli/gazebo_options.hpp"
 
+#include "cli/pmm_output.hpp"
+#include "src/pmm/added_mass_assembly.hpp"
+
 #include <charconv>
 #include <cmath>
 
@@ -31,13 +34,29 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count, co
 
 }  // namespace
 
-std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args) {
-  const int sources =
-      int(args.added_mass.has_value()) + int(args.added_mass_matrix.has_value()) + int(args.sphere_radius.has_value());
+std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args, const std::string& database) {
+  const int sources = int(args.added_mass.has_value()) + int(args.added_mass_matrix.has_value()) +
+                      int(args.sphere_radius.has_value()) + int(args.added_mass_from_database.has_value());
   if (sources != 1) {
     throw InputError(std::string(sources == 0 ? "no added mass given" : "more than one added mass given") +
-                     "; expected exactly one of --added-mass d1,...,d6, --added-mass-matrix FILE or --sphere-radius "
-                     "R --rho RHO --added-mass-rotation a,b,c");
+                     "; expected exactly one of --added-mass d1,...,d6, --added-mass-matrix FILE, --sphere-radius "
+                     "R --rho RHO --added-mass-rotation a,b,c or --added-mass-from-database BODY");
+  }
+  if ((!args.same.empty() || !args.zero.empty()) && !args.added_mass_from_database)
+    throw InputError("--same and --zero apply to --added-mass-from-database only; expected it with them");
+  if (args.added_mass_from_database) {
+    Database db(database, Database::OpenMode::ReadOnly);
+    const AddedMassAssembly assembly =
+        assemble_added_mass(*args.added_mass_from_database, db.pmm_records(*args.added_mass_from_database, false),
+                            parse_added_mass_options(args.same, args.zero));
+    if (!assembly.missing.empty()) {
+      std::string list;
+      for (const auto& m : assembly.missing) list += (list.empty() ? "" : "; ") + m;
+      throw InputError("--added-mass-from-database " + printable_text(*args.added_mass_from_database, 80) +
+                       ": the stored runs lack " + list + "; expected runs of those DOFs, or --same/--zero for them");
+    }
+    return {assembly.added_mass, "assembled from " + std::to_string(assembly.records) +
+                                     " forced-oscillation runs of body '" + *args.added_mass_from_database + "'"};
   }
   if (args.rho && !args.sphere_radius) throw InputError("--rho applies to --sphere-radius only; expected both");
   if (args.rotation && !args.sphere_radius)

@@ -22,6 +22,8 @@ struct GazeboArgs {
   std::optional<double> sphere_radius;
   std::optional<double> rho;
   std::optional<std::string> rotation;
+  std::optional<std::string> added_mass_from_database;  ///< BODY of stored forced-oscillation runs
+  std::vector<std::string> same, zero;                  ///< with it: DOFs no run moves
   bool drop_constant = false;
   bool allow_missing = false;
   bool allow_unphysical = false;
@@ -32,9 +34,11 @@ struct GazeboArgs {
   bool json = false;
 };
 
-/// The added-mass matrix from exactly one of the three ways to give it
-/// (--added-mass, --added-mass-matrix, --sphere-radius with --rho), and a
-/// sentence saying where it came from. InputError naming the option otherwise.
-std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args);
+/// The added-mass matrix from exactly one of the four ways to give it
+/// (--added-mass, --added-mass-matrix, --sphere-radius with --rho,
+/// --added-mass-from-database BODY with the database at `database`), and a
+/// sentence saying where it came from. InputError naming the option otherwise,
+/// or naming the entries the stored runs do not give.
+std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args, const std::string& database);
 
 }  // namespace hydrocoef::cli

@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   cli::add_query_command(app, global);
   cli::add_suggest_command(app, global);
   cli::add_gci_command(app, global);
+  cli::add_pmm_command(app, global);
+  cli::add_added_mass_command(app, global);
   cli::add_export_command(app, global);
   cli::add_export_gazebo_command(app, global);
   cli::add_plot_command(app, global);

@@ -42,7 +42,10 @@ Trajectory simulate(const std::string& vehicle_json, const std::string& scenario
       is_json_text(vehicle_json) ? parse_vehicle(vehicle_json, "vehicle JSON") : load_vehicle(vehicle_json);
   const Scenario scenario =
       is_json_text(scenario_json) ? parse_scenario(scenario_json, "scenario JSON") : load_scenario(scenario_json);
-  if (!database.empty()) resolve_stored_fits(vehicle, database);
+  if (!database.empty()) resolve_stored_records(vehicle, database);
+  if (database.empty() && vehicle.added_mass_from_database)
+    throw InputError(SourceLocation{vehicle.file},
+                     "key 'added_mass.from_database': no database was given; expected one");
   const VehicleModel model(std::move(vehicle),
                            database.empty() ? SurfaceResolver() : database_surface_resolver(database));
   const SimulationResult result = hydrocoef::simulate(model, scenario);

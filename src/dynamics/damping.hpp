@@ -64,7 +64,7 @@ struct DofDamping {
   /// held at its values by Monte Carlo draws, src/dynamics/damping_draws.hpp).
   std::vector<double> covariance;
   /// Law from a stored fit of this name: terms, coefficients, covariance and
-  /// sign are filled from the database by resolve_stored_fits
+  /// sign are filled from the database by resolve_stored_records
   /// (src/dynamics/surface_source.hpp) before the model is built.
   std::string fit;
 };

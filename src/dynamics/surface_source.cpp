@@ -1,11 +1,18 @@
 #include "src/dynamics/surface_source.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <memory>
 
 #include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
+#include "src/dynamics/rigid_body.hpp"
+#include "src/pmm/added_mass_assembly.hpp"
+#include "src/pmm/imposed_motion.hpp"
 #include "src/store/database.hpp"
+#include "src/store/pmm_record.hpp"
 #include "src/surface/stored_surface.hpp"
 
 namespace hydrocoef {
@@ -19,17 +26,68 @@ SurfaceResolver database_surface_resolver(const std::filesystem::path& database)
   };
 }
 
-void resolve_stored_fits(VehicleDescription& vehicle, const std::filesystem::path& database) {
+namespace {
+
+/// The vehicle's added mass from the body's forced-oscillation runs.
+void resolve_added_mass(VehicleDescription& vehicle, Database& db) {
+  const auto& reference = *vehicle.added_mass_from_database;
+  const std::string where = "key 'added_mass.from_database': ";
+  const auto dof = [&](const std::string& name, const std::string& key) {
+    const auto index = dof_named(name);
+    if (!index)
+      throw InputError(SourceLocation{vehicle.file},
+                       "key '" + key + "': found \"" + name + "\", expected surge, sway, heave, roll, pitch or yaw");
+    return *index;
+  };
+  AddedMassOptions options;
+  for (const auto& [to, from] : reference.same) options.same[dof(to, "added_mass.same")] = dof(from, "added_mass.same");
+  for (const auto& name : reference.zero) options.zero.push_back(dof(name, "added_mass.zero"));
+  AddedMassAssembly assembly;
+  try {
+    assembly = assemble_added_mass(reference.body, db.pmm_records(reference.body, false), options);
+  } catch (const InputError& e) {
+    throw InputError(SourceLocation{vehicle.file}, where + e.what());
+  }
+  if (!assembly.missing.empty()) {
+    std::string list;
+    for (const auto& m : assembly.missing) list += (list.empty() ? "" : "; ") + m;
+    throw InputError(SourceLocation{vehicle.file}, where + "body \"" + reference.body + "\" lacks " + list +
+                                                       "; expected runs of those DOFs, or \"same\"/\"zero\" for them");
+  }
+  vehicle.added_mass_b = assembly.added_mass;
+  const Matrix6 total =
+      rigid_body_mass_matrix(vehicle.mass_kg, vehicle.inertia_cg_b, vehicle.r_g_b) + assembly.added_mass;
+  if (!symmetric_positive_definite(total)) {
+    const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(total, Eigen::EigenvaluesOnly);
+    throw InputError(SourceLocation{vehicle.file},
+                     where + "M_RB + M_A from body \"" + reference.body + "\" has smallest eigenvalue " +
+                         shortest_number(eigen.eigenvalues().minCoeff()) + ", expected it positive definite");
+  }
+}
+
+}  // namespace
+
+void resolve_stored_records(VehicleDescription& vehicle, const std::filesystem::path& database) {
   std::unique_ptr<Database> db;
+  if (vehicle.added_mass_from_database) {
+    try {
+      db = std::make_unique<Database>(database, Database::OpenMode::ReadOnly);
+    } catch (const InputError& e) {
+      throw InputError(SourceLocation{vehicle.file}, std::string("key 'added_mass.from_database': ") + e.what());
+    }
+    resolve_added_mass(vehicle, *db);
+  }
   std::vector<FitRecord> fits;
+  bool fits_loaded = false;
   for (std::size_t dof = 0; dof < 6; ++dof) {
     DofDamping& d = vehicle.damping[dof];
     if (d.fit.empty()) continue;
     const std::string where = "key 'damping." + std::string(kForceNames[dof]) + ".fit': ";
-    if (!db) {
+    if (!fits_loaded) {
       try {
-        db = std::make_unique<Database>(database, Database::OpenMode::ReadOnly);
+        if (!db) db = std::make_unique<Database>(database, Database::OpenMode::ReadOnly);
         fits = db->fits();
+        fits_loaded = true;
       } catch (const InputError& e) {
         throw InputError(SourceLocation{vehicle.file}, where + e.what());
       }

@@ -17,13 +17,16 @@ namespace hydrocoef {
 /// name that is not there).
 SurfaceResolver database_surface_resolver(const std::filesystem::path& database);
 
-/// Fills every damping law the vehicle takes from a stored fit ("fit":
-/// NAME): its terms, coefficients, sign convention and covariance (empty
-/// when the fit recorded none). InputError prefixed with the vehicle's file
+/// Fills what the vehicle takes from the database: every damping law from a
+/// stored fit ("fit": NAME: its terms, coefficients, sign convention and
+/// covariance, empty when the fit recorded none), and the added mass from
+/// the body's forced-oscillation runs ("added_mass": {"from_database":
+/// BODY}; InputError naming the missing entries, or when M_RB + M_A is not
+/// positive definite). InputError prefixed with the vehicle's file
 /// for a fit that is not stored (listing those of the vehicle's DOF), of
 /// another force component than the DOF it is given for, or whose stored
 /// covariance is not one (src/dynamics/damping.hpp, covariance_problem).
-/// Opens the database only when a fit is named.
-void resolve_stored_fits(VehicleDescription& vehicle, const std::filesystem::path& database);
+/// Opens the database only when a fit or the added mass names it.
+void resolve_stored_records(VehicleDescription& vehicle, const std::filesystem::path& database);
 
 }  // namespace hydrocoef

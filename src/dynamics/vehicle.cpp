@@ -47,9 +47,33 @@ Matrix3 read_inertia(const Json& value, const std::string& file) {
   return inertia;
 }
 
+VehicleDescription::AddedMassFromDatabase read_added_mass_reference(const Json& value, const std::string& file) {
+  VehicleDescription::AddedMassFromDatabase out;
+  out.body = ji::string(value.at("from_database"), file, "added_mass.from_database");
+  if (const Json* same = ji::find(value, "same")) {
+    if (!same->is_object())
+      ji::fail(file, "added_mass.same", "found " + ji::describe(*same) + ", expected an object {\"sway\": \"surge\"}");
+    for (const auto& [dof, from] : same->items())
+      out.same.emplace_back(dof, ji::string(from, file, "added_mass.same." + dof));
+  }
+  if (const Json* zero = ji::find(value, "zero")) {
+    if (!zero->is_array()) ji::fail(file, "added_mass.zero", "found " + ji::describe(*zero) + ", expected an array");
+    for (std::size_t k = 0; k < zero->size(); ++k)
+      out.zero.push_back(ji::string((*zero)[k], file, "added_mass.zero[" + std::to_string(k) + "]"));
+  }
+  return out;
+}
+
 Matrix6 read_added_mass(const Json& value, const std::string& file, double rho) {
-  ji::expect_object(value, file, "added_mass", {"sphere_radius", "diagonal", "matrix"});
-  if (value.size() != 1) ji::fail(file, "added_mass", "expected exactly one of sphere_radius, diagonal, matrix");
+  ji::expect_object(value, file, "added_mass",
+                    {"sphere_radius", "diagonal", "matrix", "from_database", "same", "zero"});
+  if (ji::find(value, "from_database") == nullptr && (ji::find(value, "same") || ji::find(value, "zero")))
+    ji::fail(file, "added_mass", "found same or zero without from_database, expected them with from_database");
+  if (value.size() != 1 && ji::find(value, "from_database") == nullptr)
+    ji::fail(file, "added_mass", "expected exactly one of sphere_radius, diagonal, matrix, from_database");
+  if (ji::find(value, "from_database") &&
+      (ji::find(value, "sphere_radius") || ji::find(value, "diagonal") || ji::find(value, "matrix")))
+    ji::fail(file, "added_mass", "expected exactly one of sphere_radius, diagonal, matrix, from_database");
   if (const Json* r = ji::find(value, "sphere_radius"))
     return sphere_added_mass(rho, ji::positive(*r, file, "added_mass.sphere_radius"));
   if (const Json* d = ji::find(value, "diagonal")) {
@@ -58,6 +82,7 @@ Matrix6 read_added_mass(const Json& value, const std::string& file, double rho) 
     for (Eigen::Index i = 0; i < 6; ++i) m(i, i) = v[static_cast<std::size_t>(i)];
     return m;
   }
+  if (ji::find(value, "from_database")) return Matrix6::Zero();  // filled from the database later
   const Matrix6 m = ji::matrix(value.at("matrix"), file, "added_mass.matrix", 6);
   if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(1.0, m.cwiseAbs().maxCoeff()))
     ji::fail(file, "added_mass.matrix", "found a non-symmetric matrix, expected M_A = M_A^T");
@@ -98,7 +123,7 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
     ji::fail(file, path, "expected exactly one of \"law\", \"fit\" and \"surface\"");
   if (fit) {
     // A stored fit brings its terms, coefficients, covariance and sign
-    // (resolve_stored_fits, src/dynamics/surface_source.hpp).
+    // (resolve_stored_records, src/dynamics/surface_source.hpp).
     for (const char* key : {"sign", "covariance", "output", "axes"})
       if (ji::find(value, key))
         ji::fail(file, ji::join(path, key), "a stored fit brings its own terms, sign and covariance");
@@ -184,9 +209,15 @@ VehicleDescription parse_vehicle(std::string_view json_text, const std::string& 
     v.buoyancy_N = v.mass_kg * v.gravity_m_s2;
   }
 
-  if (const Json* am = ji::find(doc, "added_mass")) v.added_mass_b = read_added_mass(*am, file, v.rho_kg_m3);
+  const Json* am = ji::find(doc, "added_mass");
+  if (am && am->is_object() && ji::find(*am, "from_database")) {
+    read_added_mass(*am, file, v.rho_kg_m3);  // checks the keys
+    v.added_mass_from_database = read_added_mass_reference(*am, file);
+  } else if (am) {
+    v.added_mass_b = read_added_mass(*am, file, v.rho_kg_m3);
+  }
   const Matrix6 total = rigid_body_mass_matrix(v.mass_kg, v.inertia_cg_b, v.r_g_b) + v.added_mass_b;
-  if (!symmetric_positive_definite(total))
+  if (!v.added_mass_from_database && !symmetric_positive_definite(total))
     ji::fail(file, "added_mass",
              "the mass matrix M_RB + M_A has smallest eigenvalue " + smallest_eigenvalue_text(total) +
                  ", expected it symmetric positive definite");

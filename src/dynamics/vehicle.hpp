@@ -17,9 +17,14 @@
 //     "center_of_buoyancy": [x, y, z],       m from CO, optional ([0, 0, 0])
 //     one of "buoyancy_force": B (N), "displaced_volume": V (m^3, B = rho g V),
 //            "neutrally_buoyant": true (B = m g),
-//     "added_mass": {"sphere_radius": R} | {"diagonal": [6]} | {"matrix": [[6x6]]},
+//     "added_mass": {"sphere_radius": R} | {"diagonal": [6]} | {"matrix": [[6x6]]}
+//                 | {"from_database": "BODY", "same": {"sway": "surge"}, "zero": ["roll"]},
 //                                            optional (none); positive entries,
-//                                            M_A = -diag(X_udot, ...); symmetric
+//                                            M_A = -diag(X_udot, ...); symmetric;
+//                                            from_database: assembled from the
+//                                            body's stored forced-oscillation runs
+//                                            (src/pmm/added_mass_assembly.hpp), with
+//                                            "same"/"zero" for DOFs no run moves
 //     "thrusters": [{"name": "port-fore", "position": [x, y, z], "direction": [dx, dy, dz],
 //                    "min_thrust": -1.0, "max_thrust": 1.0}, ...],   optional; N
 //     "damping": {"X": {"law": {"u": -0.0155, "u|u|": -11.0365}, "sign": "on-body"},
@@ -33,8 +38,10 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "src/dynamics/damping.hpp"
@@ -62,6 +69,14 @@ struct VehicleDescription {
   Vector3 r_b_b = Vector3::Zero();         ///< CB from CO [m]
   double buoyancy_N = 0.0;
   Matrix6 added_mass_b = Matrix6::Zero();  ///< M_A about CO, positive definite-ish, symmetric
+  /// "added_mass": {"from_database": BODY, ...}: added_mass_b is filled, and
+  /// M_RB + M_A checked, by resolve_stored_records (src/dynamics/surface_source.hpp).
+  struct AddedMassFromDatabase {
+    std::string body;
+    std::vector<std::pair<std::string, std::string>> same;  ///< DOF name -> DOF name
+    std::vector<std::string> zero;                          ///< DOF names
+  };
+  std::optional<AddedMassFromDatabase> added_mass_from_database;
   std::vector<Thruster> thrusters;
   DampingSpec damping;
 };

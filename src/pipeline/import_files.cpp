@@ -395,10 +395,11 @@ ImportedRun run_from_history(const ForceHistory& history, const HistoryAnalysis&
   return run;
 }
 
-ImportedInput read_history(const PlannedInput& input, const std::string& format, RunSettings settings,
-                           const ImportRequest& request) {
-  ImportedInput out;
-  out.input = input;
+/// A history input read and brought into body axes, moments about the
+/// run's reference point (what read_history averages and read_body_history returns).
+BodyHistory body_history_of(const PlannedInput& input, const std::string& format, RunSettings settings,
+                            const ImportRequest& request) {
+  BodyHistory out;
   out.format = format;
   const FrameTransform frame = resolve_frame(settings);
   ForceHistory history;
@@ -431,7 +432,26 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
     reference_b = resolve_reference_point(settings, frame);
   else if (history.frame.moment_centre)
     reference_b = frame.point_to_body(*history.frame.moment_centre);
-  const ForceHistory body = history_in_body_axes(std::move(history), settings, frame, reference_b, out.notes);
+  out.history = history_in_body_axes(std::move(history), settings, frame, reference_b, out.notes);
+  out.provenance = std::move(provenance);
+  out.frame = frame;
+  out.reference_b = reference_b;
+  out.key = resolve_key(settings, frame, request.default_body);
+  out.settings = std::move(settings);
+  return out;
+}
+
+ImportedInput read_history(const PlannedInput& input, const std::string& format, RunSettings settings,
+                           const ImportRequest& request) {
+  ImportedInput out;
+  out.input = input;
+  out.format = format;
+  BodyHistory read = body_history_of(input, format, std::move(settings), request);
+  out.notes = std::move(read.notes);
+  settings = std::move(read.settings);
+  const ForceHistory& body = read.history;
+  const Vec3 reference_b = read.reference_b;
+  Provenance& provenance = read.provenance;
   HistoryAnalysisOptions analysis_options;
   analysis_options.window = window_of(settings);
   // --average-last N on a monitor is the window of its last N iterations.
@@ -440,7 +460,7 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   const HistoryAnalysis analysis = analyze_force_history(body, analysis_options);
   for (const auto& note : analysis.notes) out.notes.push_back(note);
   ImportedRun run = run_from_history(body, analysis);
-  run.key = resolve_key(settings, frame, request.default_body);
+  run.key = read.key;
   check_flow_speed(settings, run.key, input.path, out.notes);
   run.fluid = fluid_of(settings);
   run.reference_point_b = reference_b;
@@ -536,6 +556,20 @@ ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& 
 }
 
 }  // namespace
+
+BodyHistory read_body_history(const PlannedInput& input, const ImportRequest& request) {
+  std::vector<SettingsLayer> layers;
+  if (!request.command_line.empty()) layers.push_back(request.command_line);
+  layers.insert(layers.end(), input.layers.begin(), input.layers.end());
+  RunSettings settings = merge_settings(layers);
+  const std::string format = input_format(input, request.format);
+  if (format != "openfoam-forces" && format != "force-history" && format != "openfoam-case" && format != "monitor")
+    throw InputError(SourceLocation{input.path.string()},
+                     "read as '" + format +
+                         "'; expected a force history (OpenFOAM force files or case folder, a CFX "
+                         "monitor file, a CSV of time and forces)");
+  return body_history_of(input, format, std::move(settings), request);
+}
 
 ImportedInput read_input(const PlannedInput& input, const ImportRequest& request) {
   ImportedInput out = read_input_values(input, request);

@@ -79,6 +79,25 @@ struct ImportedInput {
   std::vector<std::string> notes;
 };
 
+/// A force-history input before any averaging: every sample in body axes,
+/// moments about the run's reference point, with what the reading decided.
+/// What the forced-oscillation analysis (src/pipeline/pmm_runs) starts from.
+struct BodyHistory {
+  std::string format;    ///< openfoam-forces, force-history, openfoam-case, monitor
+  ForceHistory history;  ///< body axes
+  Provenance provenance;
+  RunSettings settings;
+  FrameTransform frame;
+  Vec3 reference_b{};  ///< the moment reference point, body axes [m]
+  RunKey key;          ///< the run's key from its settings (body, mean velocity, disturbances)
+  std::vector<std::string> notes;
+};
+
+/// Reads one planned force-history input into body axes. InputError naming
+/// the file for an input of another kind (a surface export, a table) or
+/// anything read_input would refuse.
+BodyHistory read_body_history(const PlannedInput& input, const ImportRequest& request);
+
 /// Plans the request (see plan_import).
 ImportPlan plan_request(const ImportRequest& request);
 

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -13,6 +14,10 @@
 #include "src/core/escape.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/plot/plots.hpp"
+#include "src/plot/pmm_plot.hpp"
+#include "src/pmm/added_mass_assembly.hpp"
+#include "src/pmm/imposed_motion.hpp"
+#include "src/store/pmm_record.hpp"
 #include "src/surface/stored_surface.hpp"
 #include "src/surface/surface_builder.hpp"
 
@@ -231,7 +236,7 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
   h << "<h1>" << html_escape(title) << "</h1>\n";
   h << "<nav><a href=\"#runs\">Runs</a><a href=\"#fits\">Fits</a><a "
        "href=\"#surfaces\">Surfaces</a>"
-       "<a href=\"#simulations\">Simulations</a></nav>\n";
+       "<a href=\"#pmm\">Forced oscillation</a><a href=\"#simulations\">Simulations</a></nav>\n";
 
   // ---- summary
   h << "<section id=\"summary\"><h2>Summary</h2>\n<p>Database <code>" << html_escape(database.path().string())
@@ -353,6 +358,69 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
                     [&] { return plot::surface_figure(database, s.name, output); });
       }
     }
+  }
+  h << "</section>\n";
+
+  // ---- forced oscillation (virtual PMM)
+  h << "<section id=\"pmm\"><h2>Forced oscillation</h2>\n";
+  const auto pmm = database.pmm_records(options.body);
+  if (pmm.empty()) {
+    h << "<p>No forced-oscillation runs stored (hydrocoef pmm).</p>\n";
+  } else {
+    h << "<p>Added mass and damping in body axes from harmonic fits over whole periods after the start-up "
+         "transient; F = −M<sub>A</sub> ẍ − D ẋ on the body; ± standard errors from the period-to-period spread."
+         "</p>\n<div class=\"scroll\"><table><thead><tr><th>body</th><th>motion</th><th>medium</th>"
+         "<th>periods kept</th><th>KC</th><th>M<sub>A</sub> (diagonal entry)</th><th>D (diagonal entry)</th>"
+         "<th>variance explained</th><th>source</th></tr></thead><tbody>\n";
+    for (const auto& r : pmm) {
+      const PmmCoefficient* own = nullptr;
+      for (const auto& c : r.coefficients)
+        if (c.component == r.dof) own = &c;
+      h << "<tr><td>" << html_escape(r.body) << "</td><td>" << html_escape(std::string(dof_name(r.dof))) << " "
+        << num(r.amplitude, 4) << (r.dof < 3 ? " m" : " rad") << ", T = " << num(2.0 * std::numbers::pi / r.omega, 4)
+        << " s</td><td>" << html_escape(pmm_medium_name(r.medium)) << "</td><td class=\"num\">" << r.periods
+        << "</td><td class=\"num\">" << (r.keulegan_carpenter ? num(*r.keulegan_carpenter, 3) : "–") << "</td>";
+      if (own)
+        h << "<td class=\"num\">" << num(own->added_mass, 5) << " ± " << num(own->added_mass_se, 2)
+          << "</td><td class=\"num\">" << num(own->damping, 5) << " ± " << num(own->damping_se, 2)
+          << "</td><td class=\"num\">" << num(100.0 * own->explained, 5) << " %</td>";
+      else
+        h << "<td>–</td><td>–</td><td>–</td>";
+      h << "<td>" << html_escape(r.source_path) << "</td></tr>\n";
+    }
+    h << "</tbody></table></div>\n";
+    std::vector<std::string> pmm_bodies;
+    for (const auto& r : pmm)
+      if (std::find(pmm_bodies.begin(), pmm_bodies.end(), r.body) == pmm_bodies.end()) pmm_bodies.push_back(r.body);
+    for (const auto& body : pmm_bodies) {
+      const AddedMassAssembly a = assemble_added_mass(body, pmm);
+      h << "<h3>Added mass of " << html_escape(body) << "</h3>\n<div class=\"scroll\"><table><thead><tr><th></th>";
+      for (std::size_t j = 0; j < 6; ++j) h << "<th>" << dof_name(j) << "</th>";
+      h << "</tr></thead><tbody>\n";
+      for (std::size_t i = 0; i < 6; ++i) {
+        h << "<tr><th>" << dof_name(i) << "</th>";
+        for (std::size_t j = 0; j < 6; ++j) {
+          const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
+          h << "<td class=\"num\">"
+            << (a.known[i][j]
+                    ? num(a.added_mass(ii, jj), 5) +
+                          (a.added_mass_se(ii, jj) > 0.0 ? " ± " + num(a.added_mass_se(ii, jj), 2) : std::string())
+                    : std::string("missing"))
+            << "</td>";
+        }
+        h << "</tr>\n";
+      }
+      h << "</tbody></table></div>\n<p>kg, kg m, kg m² (hydrocoef added-mass " << html_escape(body) << "); "
+        << (a.positive_definite ? "positive definite" : "not positive definite")
+        << " over the measured degrees of freedom";
+      if (!a.missing.empty()) h << "; " << a.missing.size() << " entries missing (no run of their DOF)";
+      h << ".</p>\n";
+    }
+    for (const auto& r : pmm)
+      page.figure(file_stem("pmm", r.body + "-" + std::string(dof_name(r.dof)) + "-" + std::to_string(r.id)),
+                  "force history and harmonic fit: " + r.body + ", " + std::string(dof_name(r.dof)) + " run " +
+                      std::to_string(r.id),
+                  [&] { return plot::pmm_figure(r); });
   }
   h << "</section>\n";
 

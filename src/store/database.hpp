@@ -221,6 +221,9 @@ struct SurfaceRecord {
   std::string database;  ///< the file it was read from, for messages ("" when not read from one)
 };
 
+struct PmmRecord;
+struct PmmSaved;
+
 class Database {
  public:
   /// CreateIfMissing and MustExist open for writing; ReadOnly never writes
@@ -294,6 +297,15 @@ class Database {
   /// The stored mesh-study results of a body (all bodies when empty), by key and component.
   std::vector<NumericalUncertaintyRecord> numerical_uncertainties(
       const std::optional<std::string>& body = std::nullopt);
+
+  /// Stores forced-oscillation analyses in one transaction (all or none);
+  /// the same file analysed with the same motion replaces its earlier rows.
+  /// The bodies are created when missing. (PmmRecord: src/store/pmm_record.hpp.)
+  std::vector<PmmSaved> save_pmm(const std::vector<PmmRecord>& records);
+  /// The stored forced-oscillation analyses of a body (all bodies when
+  /// empty), by body, degree of freedom, frequency and amplitude; with
+  /// `with_history` false their history blobs are left empty.
+  std::vector<PmmRecord> pmm_records(const std::optional<std::string>& body = std::nullopt, bool with_history = true);
 
   /// "ok", or SQLite's list of problems.
   std::string integrity_check();

@@ -46,7 +46,7 @@ const StoredRun& run_at(const std::vector<StoredRun>& runs, double mesh, double 
   throw std::runtime_error("no such run");
 }
 
-TEST(NumericalUncertainty, ADatabaseOfSchema10OpensAt11WithItsRuns) {
+TEST(NumericalUncertainty, ADatabaseOfSchema10OpensAtTheLatestWithItsRuns) {
   test::TempDir dir;
   const auto current = dir / "current.db";
   {
@@ -55,8 +55,8 @@ TEST(NumericalUncertainty, ADatabaseOfSchema10OpensAt11WithItsRuns) {
   }
   test::copy_as_schema_version(current, dir / "v10.db", 10);
   Database database(dir / "v10.db");
-  EXPECT_EQ(database.schema_version(), 11);
-  EXPECT_EQ(Database::latest_schema_version(), 11);
+  EXPECT_EQ(database.schema_version(), Database::latest_schema_version());
+  EXPECT_GE(Database::latest_schema_version(), 11);
   EXPECT_EQ(database.runs().size(), 6u);
   EXPECT_TRUE(database.numerical_uncertainties().empty());
   EXPECT_EQ(database.integrity_check(), "ok");

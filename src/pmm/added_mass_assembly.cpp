@@ -1,0 +1,203 @@
+#include "src/pmm/added_mass_assembly.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+#include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
+#include "src/pmm/imposed_motion.hpp"
+
+namespace hydrocoef {
+
+std::string added_mass_entry_name(std::size_t i, std::size_t j) {
+  return "M_A[" + std::string(dof_name(i)) + "][" + std::string(dof_name(j)) + "]";
+}
+
+namespace {
+
+std::string four_digits(double value) {
+  std::ostringstream text;
+  text << std::setprecision(4) << value;
+  return text.str();
+}
+
+/// Inverse-variance weighted mean and its standard error; the plain mean
+/// and the standard error of the spread when a standard error is zero.
+std::pair<double, double> combined(const std::vector<double>& values, const std::vector<double>& se) {
+  const std::size_t n = values.size();
+  if (n == 1) return {values[0], se[0]};
+  const bool weighted = std::all_of(se.begin(), se.end(), [](double s) { return s > 0.0; });
+  if (weighted) {
+    double sw = 0.0, swx = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double w = 1.0 / (se[k] * se[k]);
+      sw += w;
+      swx += w * values[k];
+    }
+    return {swx / sw, std::sqrt(1.0 / sw)};
+  }
+  double mean = 0.0;
+  for (const double v : values) mean += v / static_cast<double>(n);
+  double ss = 0.0;
+  for (const double v : values) ss += (v - mean) * (v - mean);
+  return {mean, std::sqrt(ss / static_cast<double>(n - 1) / static_cast<double>(n))};
+}
+
+}  // namespace
+
+AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector<PmmRecord>& records,
+                                      const AddedMassOptions& options) {
+  AddedMassAssembly out;
+  out.body = body;
+  struct Samples {
+    std::vector<double> m, m_se, d, d_se;
+  };
+  std::array<std::array<Samples, 6>, 6> samples;
+  std::map<std::pair<std::size_t, double>, std::vector<const PmmRecord*>> by_frequency;
+  for (const auto& record : records) {
+    if (record.body != body) continue;
+    ++out.records;
+    by_frequency[{record.dof, record.omega}].push_back(&record);
+    const std::size_t j = record.dof;
+    for (const auto& c : record.coefficients) {
+      const std::size_t i = c.component;
+      auto& s = samples[i][j];
+      s.m.push_back(c.added_mass);
+      s.m_se.push_back(c.added_mass_se);
+      s.d.push_back(c.damping);
+      s.d_se.push_back(c.damping_se);
+      PmmEntry& e = out.measured[i][j];
+      e.omega_min = e.runs == 0 ? record.omega : std::min(e.omega_min, record.omega);
+      e.omega_max = e.runs == 0 ? record.omega : std::max(e.omega_max, record.omega);
+      if (record.keulegan_carpenter) {
+        e.kc_min = std::min(e.kc_min.value_or(*record.keulegan_carpenter), *record.keulegan_carpenter);
+        e.kc_max = std::max(e.kc_max.value_or(*record.keulegan_carpenter), *record.keulegan_carpenter);
+      }
+      e.record_ids.push_back(record.id);
+      ++e.runs;
+    }
+  }
+  if (out.records == 0)
+    throw InputError("body '" + printable_text(body, 80) +
+                     "' has no stored forced-oscillation runs; expected some (hydrocoef pmm ... --body BODY)");
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = 0; j < 6; ++j) {
+      const auto& s = samples[i][j];
+      if (s.m.empty()) continue;
+      PmmEntry& e = out.measured[i][j];
+      std::tie(e.added_mass, e.added_mass_se) = combined(s.m, s.m_se);
+      std::tie(e.damping, e.damping_se) = combined(s.d, s.d_se);
+      double lo = s.m.front(), hi = s.m.front();
+      for (const double v : s.m) lo = std::min(lo, v), hi = std::max(hi, v);
+      e.added_mass_spread = hi - lo;
+      out.damping(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = e.damping;
+      out.damping_se(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = e.damping_se;
+    }
+  // Columns stated by the caller.
+  std::array<bool, 6> measured_column{};
+  for (std::size_t j = 0; j < 6; ++j)
+    for (std::size_t i = 0; i < 6; ++i) measured_column[j] = measured_column[j] || out.measured[i][j].runs > 0;
+  for (const std::size_t dof : options.zero)
+    if (measured_column[dof])
+      throw InputError("zero " + std::string(dof_name(dof)) + ": the runs measure that column; expected a DOF no run "
+                       "moves");
+  for (const auto& [dof, from] : options.same) {
+    if (measured_column[dof])
+      throw InputError("same " + std::string(dof_name(dof)) + "=" + std::string(dof_name(from)) +
+                       ": the runs measure " + std::string(dof_name(dof)) + " themselves; expected a DOF no run moves");
+    if (!measured_column[from])
+      throw InputError("same " + std::string(dof_name(dof)) + "=" + std::string(dof_name(from)) + ": no run moves " +
+                       std::string(dof_name(from)) + "; expected a measured DOF");
+  }
+  // Symmetric M_A from the measured entries.
+  const auto at = [](Matrix6& m, std::size_t i, std::size_t j) -> double& {
+    return m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+  };
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = i; j < 6; ++j) {
+      const PmmEntry& a = out.measured[i][j];
+      const PmmEntry& b = out.measured[j][i];
+      if (a.runs && b.runs && i != j) {
+        const double value = 0.5 * (a.added_mass + b.added_mass);
+        const double se = 0.5 * std::hypot(a.added_mass_se, b.added_mass_se);
+        at(out.added_mass, i, j) = at(out.added_mass, j, i) = value;
+        at(out.added_mass_se, i, j) = at(out.added_mass_se, j, i) = se;
+        const double difference = std::abs(a.added_mass - b.added_mass);
+        const double scale = std::hypot(a.added_mass_se, b.added_mass_se);
+        if (scale > 0.0 && difference > 3.0 * scale)
+          out.notes.push_back(added_mass_entry_name(i, j) + " = " + four_digits(a.added_mass) + " and " +
+                              added_mass_entry_name(j, i) + " = " + four_digits(b.added_mass) + " differ by " +
+                              four_digits(difference / scale) + " standard errors; their mean is used");
+        out.known[i][j] = out.known[j][i] = true;
+      } else if (a.runs || b.runs) {
+        const PmmEntry& e = a.runs ? a : b;
+        at(out.added_mass, i, j) = at(out.added_mass, j, i) = e.added_mass;
+        at(out.added_mass_se, i, j) = at(out.added_mass_se, j, i) = e.added_mass_se;
+        out.known[i][j] = out.known[j][i] = true;
+        if (i != j)
+          out.notes.push_back(a.runs ? added_mass_entry_name(j, i) + " taken from " + added_mass_entry_name(i, j) +
+                                           " (symmetry)"
+                                     : added_mass_entry_name(i, j) + " taken from " + added_mass_entry_name(j, i) +
+                                           " (symmetry)");
+      }
+    }
+  // Columns (and rows) copied from another DOF, and zero columns.
+  for (const auto& [dof, from] : options.same) {
+    at(out.added_mass, dof, dof) = at(out.added_mass, from, from);
+    at(out.added_mass_se, dof, dof) = at(out.added_mass_se, from, from);
+    for (std::size_t k = 0; k < 6; ++k) out.known[k][dof] = out.known[dof][k] = true;
+    out.notes.push_back(added_mass_entry_name(dof, dof) + " taken from " + added_mass_entry_name(from, from) +
+                        " (stated: same " + std::string(dof_name(dof)) + "=" + std::string(dof_name(from)) + ")");
+  }
+  for (const std::size_t dof : options.zero)
+    for (std::size_t k = 0; k < 6; ++k) out.known[k][dof] = out.known[dof][k] = true;
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = i; j < 6; ++j)
+      if (!out.known[i][j])
+        out.missing.push_back(added_mass_entry_name(i, j) +
+                              (i == j ? " (no " + std::string(dof_name(j)) + " run)"
+                                      : " (no " + std::string(dof_name(j)) + " or " + std::string(dof_name(i)) +
+                                            " run gives it)"));
+  // Positive definite over the DOFs with a non-zero diagonal.
+  std::vector<Eigen::Index> dofs;
+  for (Eigen::Index k = 0; k < 6; ++k)
+    if (out.added_mass(k, k) != 0.0) dofs.push_back(k);
+  if (!dofs.empty()) {
+    Eigen::MatrixXd sub(static_cast<Eigen::Index>(dofs.size()), static_cast<Eigen::Index>(dofs.size()));
+    for (std::size_t a = 0; a < dofs.size(); ++a)
+      for (std::size_t b = 0; b < dofs.size(); ++b)
+        sub(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = out.added_mass(dofs[a], dofs[b]);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(sub, Eigen::EigenvaluesOnly);
+    out.smallest_eigenvalue = eigen.eigenvalues().minCoeff();
+    out.positive_definite = out.smallest_eigenvalue > 0.0;
+  }
+  // Quadratic damping from the amplitude dependence at one frequency.
+  for (const auto& [dof_omega, group] : by_frequency) {
+    std::vector<double> amplitudes, damping, se;
+    for (const PmmRecord* record : group)
+      for (const auto& c : record->coefficients)
+        if (c.component == record->dof) {
+          amplitudes.push_back(record->amplitude);
+          damping.push_back(c.damping);
+          se.push_back(c.damping_se);
+        }
+    std::vector<double> distinct = amplitudes;
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    if (distinct.size() < 2) continue;
+    QuadraticDampingRow row;
+    row.dof = dof_omega.first;
+    row.omega = dof_omega.second;
+    row.amplitudes = amplitudes;
+    row.fit = fit_quadratic_damping(amplitudes, row.omega, damping, se);
+    out.quadratic.push_back(std::move(row));
+  }
+  return out;
+}
+
+}  // namespace hydrocoef

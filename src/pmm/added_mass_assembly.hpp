@@ -1,0 +1,87 @@
+// The 6x6 added-mass matrix M_A (and the linear damping D) of a body from
+// its stored forced-oscillation analyses (src/store/pmm_record.hpp). A run
+// that moves DOF j gives column j: M_A[i][j] for every force component i
+// its history holds.
+//
+// Assembly rules:
+// - Several runs of one entry (amplitudes, frequencies) are combined by
+//   their inverse-variance weighted mean (plain mean when a standard error is
+//   zero); the standard error of the mean and the spread of the runs are
+//   kept, with the range of frequencies and KC numbers that went in.
+// - Symmetry: M_A = M_A^T for a body in an ideal fluid. When both M_A[i][j]
+//   and M_A[j][i] are measured, both become their mean (and their
+//   difference, in standard errors, is reported); when only one is, it
+//   stands for both (said in the notes).
+// - Entries no run gives are missing, named, and zero. `same` fills a DOF's
+//   column from another's (a symmetric body: sway as surge), `zero` states
+//   that a DOF's column is zero (a sphere's rotations in potential flow).
+// - The matrix over the DOFs with a non-zero diagonal is checked positive
+//   definite (its smallest eigenvalue is reported).
+//
+// Quadratic damping: runs of one DOF at one frequency and two or more
+// amplitudes give the linear and quadratic parts of the diagonal damping
+// from D_eq(A) = b1 + b2 (8 / (3 pi)) A omega (fit_quadratic_damping).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/core/matrix6.hpp"
+#include "src/pmm/harmonic_analysis.hpp"
+#include "src/store/pmm_record.hpp"
+
+namespace hydrocoef {
+
+struct AddedMassOptions {
+  std::map<std::size_t, std::size_t> same;  ///< DOF -> the DOF whose column it takes
+  std::vector<std::size_t> zero;            ///< DOFs whose column is zero
+};
+
+/// One entry as measured, before symmetry.
+struct PmmEntry {
+  std::size_t runs = 0;  ///< 0: not measured
+  double added_mass = 0.0, added_mass_se = 0.0, added_mass_spread = 0.0;
+  double damping = 0.0, damping_se = 0.0;
+  double omega_min = 0.0, omega_max = 0.0;                          ///< rad/s
+  std::optional<double> kc_min, kc_max;                             ///< when the runs state a size
+  std::vector<std::int64_t> record_ids;                             ///< pmm_run ids
+};
+
+struct QuadraticDampingRow {
+  std::size_t dof = 0;
+  double omega = 0.0;
+  std::vector<double> amplitudes;
+  QuadraticDamping fit;
+};
+
+struct AddedMassAssembly {
+  std::string body;
+  Matrix6 added_mass = Matrix6::Zero();     ///< M_A, symmetric (kg, kg m, kg m^2)
+  Matrix6 added_mass_se = Matrix6::Zero();  ///< standard errors of the entries
+  Matrix6 damping = Matrix6::Zero();        ///< D, as measured (not symmetrised)
+  Matrix6 damping_se = Matrix6::Zero();
+  std::array<std::array<PmmEntry, 6>, 6> measured{};  ///< [i][j]
+  std::array<std::array<bool, 6>, 6> known{};          ///< measured, mirrored, or filled by same/zero
+  std::vector<std::string> missing;                    ///< "M_A[sway][sway] (Y from a sway run)"
+  std::vector<std::string> notes;
+  bool positive_definite = false;
+  double smallest_eigenvalue = 0.0;  ///< over the DOFs with a non-zero diagonal
+  std::vector<QuadraticDampingRow> quadratic;
+  std::size_t records = 0;
+};
+
+/// Assembles the body's matrices from its records (those of other bodies are
+/// ignored). InputError when there are none, naming the body, or for a
+/// `same`/`zero` DOF that the runs measure themselves.
+AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector<PmmRecord>& records,
+                                      const AddedMassOptions& options = {});
+
+/// "M_A[surge][sway]" for row i, column j.
+std::string added_mass_entry_name(std::size_t i, std::size_t j);
+
+}  // namespace hydrocoef

@@ -1,0 +1,339 @@
+// hydrocoef pmm and added-mass through the command line, on synthetic force
+// histories with a known answer: a 6x6 added-mass matrix and damping matrix
+// recovered from one run per DOF (CSV histories with a start-up transient),
+// an oscillating stream with its Froude-Krylov force removed, quadratic
+// damping from three amplitudes, the motion read from an OpenFOAM case's
+// dynamicMeshDict (and refused when the options contradict it), bad input
+// refused on one line with exit code 2 and the database unchanged, hostile
+// body names printed as data, and a vehicle whose added mass comes from the
+// database simulating.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "src/core/error.hpp"
+#include "src/core/names.hpp"
+#include "tests/support/hostile_names.hpp"
+#include "tests/support/run_cli.hpp"
+#include "tests/support/sqlite_dump.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace hydrocoef {
+namespace {
+
+using nlohmann::json;
+using test::run_cli;
+using test::TempDir;
+namespace fs = std::filesystem;
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kPeriod = 1.6, kOmega = 2.0 * kPi / kPeriod;
+constexpr const char* kDofs[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+
+/// A symmetric positive definite M_A and a damping matrix, entry (i, j).
+double true_added_mass(std::size_t i, std::size_t j) {
+  if (i == j) return 5.0 + 2.0 * static_cast<double>(i);
+  return 0.3 * std::cos(static_cast<double>(i + j));  // symmetric, diagonally dominant
+}
+double true_damping(std::size_t i, std::size_t j) {
+  return i == j ? 1.5 + 0.25 * static_cast<double>(i) : 0.05 * static_cast<double>(i + 1) - 0.02 * static_cast<double>(j);
+}
+
+/// A CSV history (time, body-axis X..N) of DOF j moved as A sin(omega t),
+/// the force F_i = mean_i - M[i][j] x'' - D[i][j] x' - c x'|x'| (c on the
+/// diagonal) plus a start-up transient that dies out within a few periods.
+fs::path write_history(const fs::path& dir, const std::string& name, std::size_t j, double amplitude,
+                       double quadratic = 0.0, bool stream = false, double froude_krylov = 0.0) {
+  const fs::path path = dir / name;
+  std::ofstream out(path);
+  out << std::setprecision(17) << "Time [s],X [N],Y [N],Z [N],K [N m],M [N m],N [N m]\n";
+  for (int k = 0; k <= 3200; ++k) {
+    const double t = 0.02 * k;
+    const double x_dot = amplitude * kOmega * std::cos(kOmega * t);
+    const double x_ddot = -amplitude * kOmega * kOmega * std::sin(kOmega * t);
+    const double transient = 2.0 * std::exp(-t / 1.5) + std::exp(-t / 2.0) * std::sin(5.3 * t);
+    out << t;
+    for (std::size_t i = 0; i < 6; ++i) {
+      double f = 0.1 * static_cast<double>(i) - true_added_mass(i, j) * x_ddot - true_damping(i, j) * x_dot;
+      if (i == j) f -= quadratic * x_dot * std::abs(x_dot);
+      if (stream) f = (i == j ? froude_krylov : 0.0) * x_ddot + true_added_mass(i, j) * x_ddot +
+                      true_damping(i, j) * x_dot;  // a held body in a stream x_s = A sin(omega t)
+      out << ',' << f + transient;
+    }
+    out << '\n';
+  }
+  return path;
+}
+
+std::vector<std::string> motion_options(std::size_t j, double amplitude) {
+  std::ostringstream a, p;
+  a << std::setprecision(17) << amplitude;
+  p << std::setprecision(17) << kPeriod;
+  return {"--motion", kDofs[j], "--amplitude", a.str(), "--period", p.str()};
+}
+
+int pmm(const TempDir& dir, const fs::path& history, std::size_t j, double amplitude, const std::string& body,
+        std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"pmm", history.string(), "--body", body, "--json"};
+  for (const auto& o : motion_options(j, amplitude)) args.push_back(o);
+  for (const auto& o : extra) args.push_back(o);
+  const auto result = run_cli(args, dir.path());
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  return result.exit_code;
+}
+
+TEST(Pmm, SixRunsGiveTheWholeAddedMassAndDampingMatrices) {
+  TempDir dir;
+  for (std::size_t j = 0; j < 6; ++j) {
+    const double amplitude = j < 3 ? 0.05 : 0.2;
+    ASSERT_EQ(pmm(dir, write_history(dir.path(), "run" + std::to_string(j) + ".csv", j, amplitude), j, amplitude,
+                  "hull"),
+              0);
+  }
+  const auto result = run_cli({"added-mass", "hull", "--json"}, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto assembly = json::parse(result.out);
+  EXPECT_EQ(assembly["records"], 6);
+  EXPECT_TRUE(assembly["missing"].empty());
+  EXPECT_TRUE(assembly["positive_definite"].get<bool>());
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = 0; j < 6; ++j) {
+      const double m = assembly["added_mass_b"][i][j].get<double>();
+      const double d = assembly["damping_b"][i][j].get<double>();
+      // To 1e-6 of the column's in-line coefficient: the start-up transient,
+      // the same in every component, leaves a few 1e-7 N s/m after MSER.
+      EXPECT_NEAR(m, true_added_mass(i, j), 1e-6 * true_added_mass(j, j)) << i << " " << j;
+      EXPECT_NEAR(d, true_damping(i, j), 1e-6 * true_damping(j, j)) << i << " " << j;
+    }
+  // The readable form names the matrix and its check.
+  const auto text = run_cli({"added-mass", "hull"}, dir.path());
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("positive definite"), std::string::npos) << text.out;
+}
+
+TEST(Pmm, OneRunLeavesTheOtherEntriesMissingUntilStated) {
+  TempDir dir;
+  ASSERT_EQ(pmm(dir, write_history(dir.path(), "surge.csv", 0, 0.05), 0, 0.05, "ball"), 0);
+  auto result = run_cli({"added-mass", "ball", "--json"}, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  auto assembly = json::parse(result.out);
+  // Column surge is measured; M_A[sway][sway] and the rest are missing.
+  EXPECT_FALSE(assembly["missing"].empty());
+  bool names_sway = false;
+  for (const auto& m : assembly["missing"]) names_sway = names_sway || m.get<std::string>().find("M_A[sway][sway]") == 0;
+  EXPECT_TRUE(names_sway) << result.out;
+  // A symmetric body: sway and heave as surge, no rotational added mass.
+  result = run_cli({"added-mass", "ball", "--same", "sway=surge", "--same", "heave=surge", "--zero", "roll,pitch,yaw",
+                    "--json"},
+                   dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  assembly = json::parse(result.out);
+  EXPECT_TRUE(assembly["missing"].empty()) << result.out;
+  EXPECT_NEAR(assembly["added_mass_b"][1][1].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));
+  EXPECT_NEAR(assembly["added_mass_b"][2][2].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));
+  EXPECT_EQ(assembly["added_mass_b"][3][3].get<double>(), 0.0);
+
+  // A vehicle whose added mass comes from the database simulates, and one
+  // that leaves entries missing is refused naming them.
+  const auto write_vehicle = [&](const std::string& added_mass) {
+    std::ofstream(dir / "vehicle.json") << R"({"mass": 14.0, "inertia": [0.13, 0.13, 0.13], "center_of_gravity": [0, 0, 0.02],
+      "neutrally_buoyant": true, "added_mass": )"
+                                        << added_mass << R"(,
+      "damping": {"X": {"law": {"u": -2.0, "u|u|": -10.0}, "sign": "on-body"}, "N": {"law": {"r": -0.05}, "sign": "on-body"}}})";
+  };
+  std::ofstream(dir / "scenario.json") << R"({"duration": 2.0, "integrator": {"method": "rk4", "step": 0.01},
+      "segments": [{"start": 0.0, "tau": {"X": 5.0}}]})";
+  write_vehicle(R"({"from_database": "ball", "same": {"sway": "surge", "heave": "surge"}, "zero": ["roll", "pitch", "yaw"]})");
+  const auto simulated = run_cli({"simulate", "--vehicle", "vehicle.json", "--scenario", "scenario.json", "--json"}, dir.path());
+  ASSERT_EQ(simulated.exit_code, 0) << simulated.err;
+  write_vehicle(R"({"from_database": "ball"})");
+  const auto refused = run_cli({"simulate", "--vehicle", "vehicle.json", "--scenario", "scenario.json"}, dir.path());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("M_A[sway][sway]"), std::string::npos) << refused.err;
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+}
+
+TEST(Pmm, QuadraticDampingFromThreeAmplitudes) {
+  TempDir dir;
+  const double b2 = 40.0;
+  for (const double amplitude : {0.02, 0.05, 0.1})
+    ASSERT_EQ(pmm(dir, write_history(dir.path(), "a" + std::to_string(amplitude) + ".csv", 0, amplitude, b2), 0,
+                  amplitude, "hull"),
+              0);
+  const auto result = run_cli({"added-mass", "hull", "--json"}, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto assembly = json::parse(result.out);
+  ASSERT_EQ(assembly["quadratic_damping"].size(), 1u) << result.out;
+  const auto& q = assembly["quadratic_damping"][0];
+  EXPECT_EQ(q["dof"], "surge");
+  EXPECT_NEAR(q["quadratic"].get<double>(), b2, 1e-6 * b2);
+  EXPECT_NEAR(q["linear"].get<double>(), true_damping(0, 0), 1e-6 * true_damping(0, 0));
+  // The added mass does not depend on the amplitude.
+  EXPECT_NEAR(assembly["added_mass_b"][0][0].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));
+}
+
+TEST(Pmm, AnOscillatingStreamHasItsFroudeKrylovForceRemoved) {
+  TempDir dir;
+  const double rho = 1000.0, volume = 0.004;  // rho V = 4 kg
+  const auto history = write_history(dir.path(), "stream.csv", 0, 0.05, 0.0, true, rho * volume);
+  const auto result = run_cli({"pmm", history.string(), "--body", "hull", "--motion", "surge", "--amplitude", "0.05",
+                               "--period", "1.6000000000000001", "--stream", "--rho", "1000", "--volume", "0.004",
+                               "--json", "--no-store"},
+                              dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto run = json::parse(result.out)["runs"][0];
+  EXPECT_EQ(run["medium"], "oscillating stream");
+  const auto& x = run["components"][0];
+  EXPECT_NEAR(x["added_mass"].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));
+  EXPECT_NEAR(x["damping"].get<double>(), true_damping(0, 0), 1e-6 * true_damping(0, 0));
+  EXPECT_NEAR(x["added_mass_coefficient"].get<double>(), true_added_mass(0, 0) / (rho * volume), 1e-6);
+  // Without the volume the Froude-Krylov force cannot be removed.
+  const auto refused = run_cli({"pmm", history.string(), "--motion", "surge", "--amplitude", "0.05", "--period",
+                                "1.6", "--stream", "--rho", "1000"},
+                               dir.path());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("displaced volume"), std::string::npos) << refused.err;
+}
+
+/// A case folder whose dynamicMeshDict moves the mesh and whose forces
+/// function object wrote force.dat and moment.dat (OpenFOAM v1912 layout).
+fs::path write_openfoam_case(const fs::path& root, double amplitude_x, double omega) {
+  const fs::path dir = root / "osc";
+  fs::create_directories(dir / "constant");
+  fs::create_directories(dir / "system");
+  fs::create_directories(dir / "postProcessing/forces/0");
+  std::ofstream(dir / "constant/dynamicMeshDict") << R"(FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }
+dynamicFvMesh   dynamicMotionSolverFvMesh;
+motionSolverLibs ("libfvMotionSolvers.so");
+motionSolver    solidBody;
+solidBodyCoeffs
+{
+    solidBodyMotionFunction oscillatingLinearMotion;
+    oscillatingLinearMotionCoeffs
+    {
+        amplitude       ()" << std::setprecision(17) << amplitude_x << R"( 0 0);
+        omega           )" << omega << R"(;
+    }
+}
+)";
+  std::ofstream(dir / "system/controlDict") << R"(FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application pimpleFoam;
+functions { forces { type forces; libs ("libforces.so"); patches (sphere); rho rhoInf; rhoInf 998.2; CofR (0 0 0); } }
+)";
+  std::ofstream force(dir / "postProcessing/forces/0/force.dat");
+  std::ofstream moment(dir / "postProcessing/forces/0/moment.dat");
+  force << "# Force\n# CofR                : (0.000000e+00 0.000000e+00 0.000000e+00)\n#\n"
+        << "# Time                    total_x      total_y      total_z      pressure_x   pressure_y   pressure_z   "
+           "viscous_x    viscous_y    viscous_z\n";
+  moment << "# Moment\n# CofR                : (0.000000e+00 0.000000e+00 0.000000e+00)\n#\n"
+         << "# Time                    total_x      total_y      total_z      pressure_x   pressure_y   pressure_z   "
+            "viscous_x    viscous_y    viscous_z\n";
+  force << std::setprecision(17);
+  moment << std::setprecision(17);
+  for (int k = 1; k <= 2000; ++k) {
+    const double t = 0.005 * k;
+    // The potential-flow sphere of added mass 7.0 kg: F = -7 x''.
+    const double fx = 7.0 * amplitude_x * omega * omega * std::sin(omega * t);
+    force << t << "\t(" << fx << " 0 0)\t(" << fx << " 0 0)\t(0 0 0)\n";
+    moment << t << "\t(0 0 0)\t(0 0 0)\t(0 0 0)\n";
+  }
+  return dir;
+}
+
+TEST(Pmm, TheMotionIsReadFromTheOpenFoamCaseAndCheckedAgainstTheOptions) {
+  TempDir dir;
+  const fs::path case_dir = write_openfoam_case(dir.path(), 0.02, kPi);
+  // Body axes with x forward: the case's +x is the body's -x (a phase of pi),
+  // which leaves the added mass as it is.
+  auto result = run_cli({"pmm", case_dir.string(), "--body", "ball", "--axes", "-x,-y,z", "--json"}, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  auto run = json::parse(result.out)["runs"][0];
+  EXPECT_EQ(run["motion"]["dof"], "surge");
+  EXPECT_NEAR(run["motion"]["amplitude"].get<double>(), 0.02, 1e-15);
+  EXPECT_NEAR(run["motion"]["period_s"].get<double>(), 2.0, 1e-12);
+  EXPECT_NE(run["motion"]["source"].get<std::string>().find("dynamicMeshDict"), std::string::npos);
+  EXPECT_NEAR(run["components"][0]["added_mass"].get<double>(), 7.0, 1e-6);
+  // Options that contradict the case are refused, naming both.
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  result = run_cli({"pmm", case_dir.string(), "--body", "ball", "--motion", "surge", "--amplitude", "0.03", "--period",
+                    "2"},
+                   dir.path());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("dynamicMeshDict"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("0.03"), std::string::npos) << result.err;
+  EXPECT_EQ(test::dump_database(dir / "hydrocoef.db"), before);
+  // The same analysis again replaces the stored one.
+  result = run_cli({"pmm", case_dir.string(), "--body", "ball", "--axes", "-x,-y,z", "--json"}, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(json::parse(result.out)["runs"][0]["stored"]["replaced"].get<bool>());
+  const auto assembled = json::parse(run_cli({"added-mass", "ball", "--json"}, dir.path()).out);
+  EXPECT_EQ(assembled["records"], 1);
+}
+
+TEST(Pmm, BadInputIsOneLineWithTheDatabaseUnchanged) {
+  TempDir dir;
+  ASSERT_EQ(pmm(dir, write_history(dir.path(), "surge.csv", 0, 0.05), 0, 0.05, "hull"), 0);
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  std::ofstream(dir / "short.csv") << "Time [s],X [N]\n0,1\n0.1,2\n0.2,1\n";
+  std::ofstream(dir / "steady.csv") << "Iteration,X [N]\n1,1\n2,2\n3,1\n";
+  const std::vector<std::vector<std::string>> cases = {
+      {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "0.05"},       // --period missing
+      {"pmm", "surge.csv"},                                                   // no motion anywhere
+      {"pmm", "surge.csv", "--motion", "twist", "--amplitude", "1", "--period", "1"},
+      {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "-1", "--period", "1"},
+      {"pmm", "short.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6"},  // < 3 periods
+      {"pmm", "steady.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6"},
+      {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6", "--harmonics", "11"},
+      {"added-mass", "nobody"},
+      {"added-mass", "hull", "--zero", "surge"},
+      {"added-mass", "hull", "--same", "sway=roll"},
+  };
+  for (const auto& args : cases) {
+    const auto result = run_cli(args, dir.path());
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    EXPECT_EQ(result.exit_code, 2) << joined << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << joined << result.err;
+    EXPECT_EQ(result.err.find("internal error"), std::string::npos) << joined << result.err;
+    EXPECT_EQ(test::dump_database(dir / "hydrocoef.db"), before) << joined;
+  }
+}
+
+TEST(Pmm, HostileBodyNamesAreDataInTheOutput) {
+  TempDir dir;
+  const auto history = write_history(dir.path(), "surge.csv", 0, 0.05);
+  std::size_t tried = 0;
+  for (const std::string& name : test::hostile_names()) {
+    try {
+      check_name(NameKind::Body, name, {}, "test");
+    } catch (const InputError&) {
+      continue;
+    }
+    if (++tried > 6) break;
+    ASSERT_EQ(pmm(dir, history, 0, 0.05, name), 0) << name;
+    const auto result = run_cli({"added-mass", name, "--json"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
+    EXPECT_EQ(json::parse(result.out)["body"], name);
+    for (const auto& args : {std::vector<std::string>{"added-mass", name}, std::vector<std::string>{"pmm", "surge.csv",
+                                                                                                      "--body", name,
+                                                                                                      "--motion", "surge",
+                                                                                                      "--amplitude",
+                                                                                                      "0.05", "--period",
+                                                                                                      "1.6", "--no-store"}}) {
+      const auto text = run_cli(args, dir.path());
+      ASSERT_EQ(text.exit_code, 0) << name << ": " << text.err;
+      for (const char c : text.out)
+        EXPECT_TRUE(c == '\n' || (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f))
+            << name << ": a control character in " << text.out;
+    }
+  }
+  EXPECT_GT(tried, 5u);
+}
+
+}  // namespace
+}  // namespace hydrocoef

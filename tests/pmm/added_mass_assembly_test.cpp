@@ -1,0 +1,83 @@
+// Assembling M_A from stored forced-oscillation records: runs of one entry
+// combined by their weighted mean, symmetric by construction (both halves
+// averaged, or one standing for both), missing entries named, same/zero for
+// DOFs no run moves, the positive-definite check, and other bodies ignored.
+#include "src/pmm/added_mass_assembly.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/expect_input_error.hpp"
+
+namespace hydrocoef {
+namespace {
+
+PmmRecord record(const std::string& body, std::size_t dof, double omega, double amplitude,
+                 const std::vector<std::pair<std::size_t, double>>& added_mass, double se = 0.0) {
+  PmmRecord r;
+  r.body = body;
+  r.dof = dof;
+  r.omega = omega;
+  r.amplitude = amplitude;
+  for (const auto& [component, value] : added_mass) {
+    PmmCoefficient c;
+    c.component = component;
+    c.added_mass = value;
+    c.added_mass_se = se;
+    c.damping = 0.1 * value;
+    r.coefficients.push_back(c);
+  }
+  return r;
+}
+
+TEST(AddedMassAssembly, WeightedMeanSymmetryAndMissingEntries) {
+  const std::vector<PmmRecord> records = {
+      record("hull", 0, 2.0, 0.01, {{0, 10.0}, {1, 1.0}}, 0.1),
+      record("hull", 0, 3.0, 0.01, {{0, 12.0}, {1, 1.0}}, 0.2),  // weight 1/4 of the first
+      record("hull", 1, 2.0, 0.01, {{0, 1.6}, {1, 20.0}}, 0.1),
+      record("other", 2, 2.0, 0.01, {{2, 99.0}}),
+  };
+  const AddedMassAssembly a = assemble_added_mass("hull", records);
+  EXPECT_EQ(a.records, 3u);
+  EXPECT_NEAR(a.added_mass(0, 0), (10.0 / 0.01 + 12.0 / 0.04) / (1.0 / 0.01 + 1.0 / 0.04), 1e-12);
+  EXPECT_NEAR(a.added_mass_se(0, 0), std::sqrt(1.0 / (1.0 / 0.01 + 1.0 / 0.04)), 1e-12);
+  EXPECT_EQ(a.measured[0][0].runs, 2u);
+  EXPECT_EQ(a.measured[0][0].omega_min, 2.0);
+  EXPECT_EQ(a.measured[0][0].omega_max, 3.0);
+  // Both halves measured: their mean on both sides, and a note when they differ.
+  EXPECT_NEAR(a.added_mass(0, 1), 0.5 * (1.0 + 1.6), 1e-12);
+  EXPECT_EQ(a.added_mass(0, 1), a.added_mass(1, 0));
+  EXPECT_EQ(a.added_mass(2, 2), 0.0);  // other bodies are not mixed in
+  bool noted = false;
+  for (const auto& n : a.notes) noted = noted || n.find("standard errors") != std::string::npos;
+  EXPECT_TRUE(noted);
+  EXPECT_TRUE(a.positive_definite);
+  // heave..yaw are missing, each named once (upper triangle).
+  EXPECT_EQ(a.missing.size(), 6u + 5u + 4u + 3u);
+  EXPECT_EQ(a.missing.front().rfind("M_A[surge][heave]", 0), 0u) << a.missing.front();
+}
+
+TEST(AddedMassAssembly, SameZeroAndPositiveDefiniteness) {
+  const std::vector<PmmRecord> records = {record("ball", 0, 2.0, 0.01, {{0, 7.0}})};
+  AddedMassOptions options;
+  options.same = {{1, 0}, {2, 0}};
+  options.zero = {3, 4, 5};
+  const AddedMassAssembly a = assemble_added_mass("ball", records, options);
+  EXPECT_TRUE(a.missing.empty());
+  EXPECT_EQ(a.added_mass(1, 1), 7.0);
+  EXPECT_EQ(a.added_mass(2, 2), 7.0);
+  EXPECT_TRUE(a.positive_definite);
+  EXPECT_NEAR(a.smallest_eigenvalue, 7.0, 1e-12);
+  // An indefinite matrix is reported as such.
+  const AddedMassAssembly bad =
+      assemble_added_mass("ball", {record("ball", 0, 2.0, 0.01, {{0, 1.0}, {1, 5.0}}),
+                                   record("ball", 1, 2.0, 0.01, {{0, 5.0}, {1, 1.0}})});
+  EXPECT_FALSE(bad.positive_definite);
+  EXPECT_NEAR(bad.smallest_eigenvalue, -4.0, 1e-12);
+  test::expect_input_error([&] { assemble_added_mass("nobody", records); }, {"nobody", "no stored"});
+  AddedMassOptions wrong;
+  wrong.zero = {0};
+  test::expect_input_error([&] { assemble_added_mass("ball", records, wrong); }, {"zero surge", "measure"});
+}
+
+}  // namespace
+}  // namespace hydrocoef
