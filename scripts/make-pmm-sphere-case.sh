@@ -19,7 +19,8 @@
 #
 # Environment: FOAM_DIR (default /usr/share/openfoam), KEEP_WORK=1 keeps the
 # scratch folder (mesh and time folders) and prints its path, FORCE=1
-# replaces an existing output folder.
+# replaces an existing output folder, OUT=DIR writes the case there instead
+# (for sensitivity runs that are not kept).
 set -euo pipefail
 
 usage="usage: make-pmm-sphere-case.sh AMPLITUDE PERIOD [PERIODS [STEPS_PER_PERIOD]]"
@@ -36,7 +37,7 @@ done
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 template="$root/examples/openfoam-sphere/pmm/template"
-out="$root/examples/openfoam-sphere/pmm/surge-A${amplitude}-T${period}"
+out=${OUT:-"$root/examples/openfoam-sphere/pmm/surge-A${amplitude}-T${period}"}
 if [[ -e $out && ${FORCE:-0} != 1 ]]; then
   echo "$out exists (FORCE=1 replaces it)" >&2
   exit 1
