@@ -31,13 +31,14 @@ void add_added_mass_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--same", args->same,
                       "DOF=DOF: take a DOF no run moves from another, e.g. sway=surge for a symmetric body "
                       "(repeatable)");
-  command->add_option("--zero", args->zero, "A DOF whose added mass is zero, e.g. roll (repeatable, or comma-separated)")
+  command
+      ->add_option("--zero", args->zero, "A DOF whose added mass is zero, e.g. roll (repeatable, or comma-separated)")
       ->delimiter(',');
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] {
     Database database(global.database, Database::OpenMode::ReadOnly);
-    const AddedMassAssembly assembly =
-        assemble_added_mass(args->body, database.pmm_records(args->body, false), parse_added_mass_options(args->same, args->zero));
+    const AddedMassAssembly assembly = assemble_added_mass(args->body, database.pmm_records(args->body, false),
+                                                           parse_added_mass_options(args->same, args->zero));
     print_added_mass(assembly, args->json);
   });
 }

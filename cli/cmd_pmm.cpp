@@ -86,7 +86,8 @@ void add_pmm_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--column", args->columns, "CSV histories: COMPONENT=HEADER (repeatable)");
   command->add_option("--unit", args->units, "CSV histories: unit of a column without one, NAME=UNIT (repeatable)");
   command->add_option("--sign", args->sign, "on-body (the default: the force of the fluid on the body) or opposing");
-  command->add_option("--motion", args->motion, "The oscillated DOF: surge, sway, heave, roll, pitch or yaw (body axes)");
+  command->add_option("--motion", args->motion,
+                      "The oscillated DOF: surge, sway, heave, roll, pitch or yaw (body axes)");
   command->add_option("--amplitude", args->amplitude, "Motion amplitude A [m, or rad for rotations]");
   command->add_option("--period", args->period, "Motion period T [s]");
   command->add_option("--phase", args->phase, "Motion phase [rad]: x(t) = A sin(2 pi t / T + phase)")

@@ -1,8 +1,8 @@
 #include "cli/pmm_output.hpp"
 
 #include <iomanip>
-#include <numbers>
 #include <iostream>
+#include <numbers>
 #include <sstream>
 
 #include "cli/common.hpp"
@@ -126,11 +126,12 @@ void print_pmm_runs(const std::vector<PmmRun>& runs, const std::vector<PmmSaved>
     std::cout << "\n" << escape::one_line(run.path.string()) << "  (body " << escape::one_line(r.body) << ")\n";
     std::cout << "  motion: " << dof_name(r.dof) << " " << significant(r.amplitude, 6) << (r.dof < 3 ? " m" : " rad")
               << " sin(" << significant(r.omega, 6) << " t + " << significant(r.phase, 4) << "), period "
-              << significant(2.0 * std::numbers::pi / r.omega, 6) << " s; from " << escape::one_line(r.motion_source) << "\n";
+              << significant(2.0 * std::numbers::pi / r.omega, 6) << " s; from " << escape::one_line(r.motion_source)
+              << "\n";
     std::cout << "  " << pmm_medium_name(r.medium) << "; window " << significant(r.window_start, 6) << " to "
-              << significant(r.window_end, 6) << " s: " << r.periods << " whole periods after "
-              << r.transient_periods << " start-up " << (r.transient_periods == 1 ? "period" : "periods") << ", "
-              << r.samples << " samples, " << r.harmonics << (r.harmonics == 1 ? " harmonic" : " harmonics") << "\n";
+              << significant(r.window_end, 6) << " s: " << r.periods << " whole periods after " << r.transient_periods
+              << " start-up " << (r.transient_periods == 1 ? "period" : "periods") << ", " << r.samples << " samples, "
+              << r.harmonics << (r.harmonics == 1 ? " harmonic" : " harmonics") << "\n";
     if (r.keulegan_carpenter || r.stokes_number) {
       std::cout << " ";
       if (r.keulegan_carpenter) std::cout << " KC = 2 pi A / D = " << significant(*r.keulegan_carpenter, 4) << ";";
@@ -152,13 +153,13 @@ void print_pmm_runs(const std::vector<PmmRun>& runs, const std::vector<PmmSaved>
                 << std::defaultfloat << std::setprecision(6);
       if (c.component == r.dof && r.rho && r.displaced_volume && r.dof < 3)
         std::cout << "       added-mass coefficient M_A / (rho V) = "
-                  << significant(c.added_mass / (*r.rho * *r.displaced_volume), 5) << " (rho V = "
-                  << significant(*r.rho * *r.displaced_volume, 5) << " kg)\n";
+                  << significant(c.added_mass / (*r.rho * *r.displaced_volume), 5)
+                  << " (rho V = " << significant(*r.rho * *r.displaced_volume, 5) << " kg)\n";
     }
     for (const auto& note : run.notes) std::cout << "  note: " << escape::one_line(note) << "\n";
     if (k < saved.size())
-      std::cout << "  stored as pmm run " << saved[k].id << (saved[k].replaced ? " (replacing the earlier analysis)" : "")
-                << "\n";
+      std::cout << "  stored as pmm run " << saved[k].id
+                << (saved[k].replaced ? " (replacing the earlier analysis)" : "") << "\n";
   }
   if (!saved.empty()) std::cout << "\nStored in " << escape::one_line(database) << "\n";
 }
@@ -249,8 +250,8 @@ void print_added_mass(const AddedMassAssembly& a, bool json) {
     std::cout << "\nQuadratic damping from the amplitude dependence, D_eq(A) = b1 + b2 (8/(3 pi)) A omega:\n";
     for (const auto& q : a.quadratic)
       std::cout << "  " << std::left << std::setw(6) << dof_name(q.dof) << std::right << " omega "
-                << significant(q.omega, 4) << " rad/s, " << q.amplitudes.size() << " runs: b1 = "
-                << significant(q.fit.linear, 5) << " +- " << significant(q.fit.linear_se, 2) << " "
+                << significant(q.omega, 4) << " rad/s, " << q.amplitudes.size()
+                << " runs: b1 = " << significant(q.fit.linear, 5) << " +- " << significant(q.fit.linear_se, 2) << " "
                 << pmm_damping_unit(q.dof, q.dof) << ", b2 = " << significant(q.fit.quadratic, 5) << " +- "
                 << significant(q.fit.quadratic_se, 2) << (q.dof < 3 ? " N s^2/m^2" : " N m s^2") << "\n";
   }

@@ -45,14 +45,16 @@ std::optional<CaseOscillation> read_openfoam_motion(const fs::path& case_dir) {
   if (dictionaries.empty()) {
     const FoamValue* mesh = root.value("dynamicFvMesh");
     if (!mesh || foam_word(mesh).value_or("") == "staticFvMesh") return std::nullopt;
-    throw InputError(at(*mesh), "found no solidBodyMotionFunction; expected a solidBody motion "
-                                "(oscillatingLinearMotion or oscillatingRotatingMotion), or give the motion with "
-                                "--motion, --amplitude and --period");
+    throw InputError(at(*mesh),
+                     "found no solidBodyMotionFunction; expected a solidBody motion "
+                     "(oscillatingLinearMotion or oscillatingRotatingMotion), or give the motion with "
+                     "--motion, --amplitude and --period");
   }
   if (dictionaries.size() > 1) {
     const FoamValue& second = *dictionaries[1]->value("solidBodyMotionFunction");
-    throw InputError(at(second), "found a second solidBodyMotionFunction (several moving bodies); expected one "
-                                 "oscillating body");
+    throw InputError(at(second),
+                     "found a second solidBodyMotionFunction (several moving bodies); expected one "
+                     "oscillating body");
   }
   const FoamDictionary& d = *dictionaries.front();
   const FoamValue& function_entry = *d.value("solidBodyMotionFunction");
@@ -67,16 +69,16 @@ std::optional<CaseOscillation> read_openfoam_motion(const fs::path& case_dir) {
   const auto entry = [&](const char* key) -> const FoamValue& {
     const FoamValue* value = coefficients->value(key);
     if (!value)
-      throw InputError(at(function_entry),
-                       function + ": found no '" + key + "' entry; expected it in " + function + "Coeffs or beside " +
-                           "solidBodyMotionFunction");
+      throw InputError(at(function_entry), function + ": found no '" + key + "' entry; expected it in " + function +
+                                               "Coeffs or beside " + "solidBodyMotionFunction");
     return *value;
   };
   CaseOscillation out;
   out.rotation = function == "oscillatingRotatingMotion";
   out.amplitude = foam_vector(entry("amplitude"), "amplitude");
   out.omega = foam_scalar(entry("omega"), "omega");
-  if (!(out.omega > 0.0)) throw InputError(at(entry("omega")), "omega " + shortest_number(out.omega) + ": expected > 0");
+  if (!(out.omega > 0.0))
+    throw InputError(at(entry("omega")), "omega " + shortest_number(out.omega) + ": expected > 0");
   if (out.rotation) {
     out.origin = foam_vector(entry("origin"), "origin");
     for (double& a : out.amplitude) a *= std::numbers::pi / 180.0;  // OpenFOAM reads degrees
@@ -107,8 +109,8 @@ std::string replace_identifiers(std::string_view text, Replace&& replace) {
       const std::size_t stop = end == std::string_view::npos ? text.size() : end + 1;
       out.append(text.substr(i, stop - i));
       i = stop;
-    } else if (identifier_start(c) && (i == 0 || !(std::isdigit(static_cast<unsigned char>(text[i - 1])) ||
-                                                    text[i - 1] == '.'))) {
+    } else if (identifier_start(c) &&
+               (i == 0 || !(std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.'))) {
       std::size_t j = i;
       while (j < text.size() && identifier_char(text[j])) ++j;
       const std::string name(text.substr(i, j - i));
@@ -187,14 +189,15 @@ Component displacement_component(const CelEvaluator& cel, const CclDocument& doc
   try {
     const CelValue a = cel.evaluate("(" + prefix + ")*(" + suffix + ")", parameter.line);
     if (!(a.dimension == Dimension{} || a.dimension == parse_unit("m").dimension))
-      throw InputError(location, "the amplitude of '" + printable_text(parameter.value, 120) +
-                                     "' is not a length; expected metres");
+      throw InputError(
+          location, "the amplitude of '" + printable_text(parameter.value, 120) + "' is not a length; expected metres");
     amplitude = a.value;
     for (int k = 0; k < 3; ++k) {
-      const std::string at_time = replace_identifiers(argument, [&](const std::string& name) -> std::optional<std::string> {
-        if (name == "t") return "(" + std::to_string(k) + " [s])";
-        return std::nullopt;
-      });
+      const std::string at_time =
+          replace_identifiers(argument, [&](const std::string& name) -> std::optional<std::string> {
+            if (name == "t") return "(" + std::to_string(k) + " [s])";
+            return std::nullopt;
+          });
       values[static_cast<std::size_t>(k)] = cel.evaluate(at_time, parameter.line).value;
     }
   } catch (const CelNotConstant& e) {
@@ -264,9 +267,9 @@ std::optional<CaseOscillation> cfx_motion(const CclDocument& document) {
     here.phase = frequency_phase->second;
     here.where = document.where(line);
     const std::string owner_title = owner ? owner->title() : object->title();
-    here.description = "specified displacement of " + owner_title + ", amplitude " +
-                       vector_text(here.amplitude) + " m, omega " + shortest_number(here.omega) + " rad/s, phase " +
-                       shortest_number(here.phase) + " rad";
+    here.description = "specified displacement of " + owner_title + ", amplitude " + vector_text(here.amplitude) +
+                       " m, omega " + shortest_number(here.omega) + " rad/s, phase " + shortest_number(here.phase) +
+                       " rad";
     if (!motion) {
       motion = here;
       motion_owner = owner_title;

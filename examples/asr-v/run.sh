@@ -8,7 +8,9 @@
 # Then coefficient surfaces over the surge speed and the yaw rate are built
 # from the runs, queried with their gradients, and exported (JSON, a C header,
 # MATLAB) into asr-v-export/ beside the database; the pool test is simulated,
-# and with the fits' covariances drawn, given a band and an interval.
+# and with the fits' covariances drawn, given a band and an interval; the
+# added mass is taken from forced-oscillation CFD runs (virtual PMM) of the
+# same 0.15 m shell (examples/openfoam-sphere/pmm).
 #
 # What to expect (paper eq. 5 and 6, sign as in each table):
 #   surge  X(u) = c + 0.01551 u + 11.0364 u|u|      (positive opposes motion)
@@ -87,6 +89,16 @@ h equilibrium --vehicle "$here/vehicle-fits.json" --tau N=0.0027 --samples 2000 
 echo "   the yaw-rate band of the constant-torque test (200 trajectories, 5/50/95 %):"
 h simulate --vehicle "$here/vehicle-fits.json" --scenario "$here/scenario-yaw-0.0027.json" --samples 200 --seed 1 \
   --out "$out/yaw-0.0027-band.csv"
+
+echo
+echo "== added mass from a virtual PMM: OpenFOAM runs of the 0.15 m shell oscillated in surge at two amplitudes"
+echo "   (examples/openfoam-sphere/pmm; potential flow: rho V / 2 = 7.056 kg, a coefficient of 0.5)"
+pmm_cases="$here/../openfoam-sphere/pmm"
+h pmm "$pmm_cases/surge-A0.015-T2" "$pmm_cases/surge-A0.045-T2" --body asr-v --axes=-x,y,-z --rho 998.2 \
+  --nu 1.004e-6 --volume 0.014137166941154 --size 0.3
+h added-mass asr-v --same sway=surge --same heave=surge --zero roll,pitch,yaw
+echo "   the pool test with that added mass (vehicle-pmm.json: added_mass from_database):"
+h simulate --vehicle "$here/vehicle-pmm.json" --scenario "$here/scenario-yaw-0.0027.json" --out "$out/yaw-0.0027-pmm.csv"
 
 echo
 echo "== plots (gnuplot) and a shareable report into $out"

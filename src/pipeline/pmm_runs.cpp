@@ -117,9 +117,11 @@ PmmRun analyse_one(const PlannedInput& input, const PmmRequest& request) {
   run.notes = read.notes;
   const std::string where = input.path.string();
   if (read.history.abscissa != HistoryAbscissa::Time)
-    throw InputError(SourceLocation{where}, "the history counts iterations (a steady run); expected time in seconds "
-                                            "of a transient forced-oscillation run");
-  if (const auto sign = read.settings.text("sign"); sign && parse_sign_convention(*sign) == SignConvention::OpposingMotion)
+    throw InputError(SourceLocation{where},
+                     "the history counts iterations (a steady run); expected time in seconds "
+                     "of a transient forced-oscillation run");
+  if (const auto sign = read.settings.text("sign");
+      sign && parse_sign_convention(*sign) == SignConvention::OpposingMotion)
     for (auto& part : read.history.series)
       for (auto& values : part)
         for (double& v : values) v = -v;

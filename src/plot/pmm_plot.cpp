@@ -29,7 +29,8 @@ Figure pmm_figure(const PmmRecord& record) {
     const double phase = record.omega * t + record.phase;
     for (std::size_t k = 0; 2 * k + 1 < coefficient->harmonics.size(); ++k) {
       const double n = static_cast<double>(k + 1);
-      f += coefficient->harmonics[2 * k] * std::sin(n * phase) + coefficient->harmonics[2 * k + 1] * std::cos(n * phase);
+      f +=
+          coefficient->harmonics[2 * k] * std::sin(n * phase) + coefficient->harmonics[2 * k + 1] * std::cos(n * phase);
     }
     fit.x.push_back(t);
     fit.y.push_back(f);

@@ -104,7 +104,8 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
     for (std::size_t i = 0; i < 6; ++i) measured_column[j] = measured_column[j] || out.measured[i][j].runs > 0;
   for (const std::size_t dof : options.zero)
     if (measured_column[dof])
-      throw InputError("zero " + std::string(dof_name(dof)) + ": the runs measure that column; expected a DOF no run "
+      throw InputError("zero " + std::string(dof_name(dof)) +
+                       ": the runs measure that column; expected a DOF no run "
                        "moves");
   for (const auto& [dof, from] : options.same) {
     if (measured_column[dof])
@@ -140,10 +141,9 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
         at(out.added_mass_se, i, j) = at(out.added_mass_se, j, i) = e.added_mass_se;
         out.known[i][j] = out.known[j][i] = true;
         if (i != j)
-          out.notes.push_back(a.runs ? added_mass_entry_name(j, i) + " taken from " + added_mass_entry_name(i, j) +
-                                           " (symmetry)"
-                                     : added_mass_entry_name(i, j) + " taken from " + added_mass_entry_name(j, i) +
-                                           " (symmetry)");
+          out.notes.push_back(
+              a.runs ? added_mass_entry_name(j, i) + " taken from " + added_mass_entry_name(i, j) + " (symmetry)"
+                     : added_mass_entry_name(i, j) + " taken from " + added_mass_entry_name(j, i) + " (symmetry)");
       }
     }
   // Columns (and rows) copied from another DOF, and zero columns.
@@ -159,11 +159,12 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
   for (std::size_t i = 0; i < 6; ++i)
     for (std::size_t j = i; j < 6; ++j)
       if (!out.known[i][j])
-        out.missing.push_back(added_mass_entry_name(i, j) +
-                              (i == j ? " (no " + std::string(dof_name(j)) + " run)"
-                                      : " (no " + std::string(dof_name(j)) + " or " + std::string(dof_name(i)) +
-                                            " run gives it)"));
-  // Positive definite over the DOFs with a non-zero diagonal.
+        out.missing.push_back(added_mass_entry_name(i, j) + (i == j ? " (no " + std::string(dof_name(j)) + " run)"
+                                                                    : " (no " + std::string(dof_name(j)) + " or " +
+                                                                          std::string(dof_name(i)) + " run gives it)"));
+  // Positive definite over the DOFs with a non-zero diagonal, and no
+  // negative eigenvalue beyond round-off in the whole matrix (a DOF stated
+  // zero whose row holds measured couplings of weight makes it indefinite).
   std::vector<Eigen::Index> dofs;
   for (Eigen::Index k = 0; k < 6; ++k)
     if (out.added_mass(k, k) != 0.0) dofs.push_back(k);
@@ -174,7 +175,12 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
         sub(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = out.added_mass(dofs[a], dofs[b]);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(sub, Eigen::EigenvaluesOnly);
     out.smallest_eigenvalue = eigen.eigenvalues().minCoeff();
-    out.positive_definite = out.smallest_eigenvalue > 0.0;
+    const Eigen::SelfAdjointEigenSolver<Matrix6> whole(out.added_mass, Eigen::EigenvaluesOnly);
+    const double scale = out.added_mass.cwiseAbs().maxCoeff();
+    out.positive_definite = out.smallest_eigenvalue > 0.0 && whole.eigenvalues().minCoeff() >= -1e-9 * scale;
+    if (out.smallest_eigenvalue > 0.0 && !out.positive_definite)
+      out.notes.push_back("the whole matrix has eigenvalue " + four_digits(whole.eigenvalues().minCoeff()) +
+                          ": a DOF with no added mass of its own has couplings to the others");
   }
   // Quadratic damping from the amplitude dependence at one frequency.
   for (const auto& [dof_omega, group] : by_frequency) {

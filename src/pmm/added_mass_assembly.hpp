@@ -16,7 +16,9 @@
 //   column from another's (a symmetric body: sway as surge), `zero` states
 //   that a DOF's column is zero (a sphere's rotations in potential flow).
 // - The matrix over the DOFs with a non-zero diagonal is checked positive
-//   definite (its smallest eigenvalue is reported).
+//   definite (its smallest eigenvalue is reported), and the whole matrix for
+//   no eigenvalue below -1e-9 of its largest entry: a DOF stated zero whose
+//   row holds measured couplings of weight fails it.
 //
 // Quadratic damping: runs of one DOF at one frequency and two or more
 // amplitudes give the linear and quadratic parts of the diagonal damping
@@ -47,9 +49,9 @@ struct PmmEntry {
   std::size_t runs = 0;  ///< 0: not measured
   double added_mass = 0.0, added_mass_se = 0.0, added_mass_spread = 0.0;
   double damping = 0.0, damping_se = 0.0;
-  double omega_min = 0.0, omega_max = 0.0;                          ///< rad/s
-  std::optional<double> kc_min, kc_max;                             ///< when the runs state a size
-  std::vector<std::int64_t> record_ids;                             ///< pmm_run ids
+  double omega_min = 0.0, omega_max = 0.0;  ///< rad/s
+  std::optional<double> kc_min, kc_max;     ///< when the runs state a size
+  std::vector<std::int64_t> record_ids;     ///< pmm_run ids
 };
 
 struct QuadraticDampingRow {
@@ -66,8 +68,8 @@ struct AddedMassAssembly {
   Matrix6 damping = Matrix6::Zero();        ///< D, as measured (not symmetrised)
   Matrix6 damping_se = Matrix6::Zero();
   std::array<std::array<PmmEntry, 6>, 6> measured{};  ///< [i][j]
-  std::array<std::array<bool, 6>, 6> known{};          ///< measured, mirrored, or filled by same/zero
-  std::vector<std::string> missing;                    ///< "M_A[sway][sway] (Y from a sway run)"
+  std::array<std::array<bool, 6>, 6> known{};         ///< measured, mirrored, or filled by same/zero
+  std::vector<std::string> missing;                   ///< "M_A[sway][sway] (Y from a sway run)"
   std::vector<std::string> notes;
   bool positive_definite = false;
   double smallest_eigenvalue = 0.0;  ///< over the DOFs with a non-zero diagonal

@@ -46,9 +46,9 @@ HarmonicMotion body_motion(const CaseOscillation& oscillation, const FrameTransf
   for (std::size_t i = 0; i < 3; ++i) {
     if (body[i] == 0.0) continue;
     if (axis != 3)
-      throw InputError(SourceLocation{oscillation.where},
-                       "the motion moves along several body axes (" + oscillation.description +
-                           "); expected one degree of freedom per run");
+      throw InputError(SourceLocation{oscillation.where}, "the motion moves along several body axes (" +
+                                                              oscillation.description +
+                                                              "); expected one degree of freedom per run");
     axis = i;
   }
   if (axis == 3) throw InputError(SourceLocation{oscillation.where}, "the motion's amplitude is zero; expected > 0");

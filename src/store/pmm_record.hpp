@@ -34,7 +34,7 @@ struct PmmCoefficient {
   double added_mass_se = 0.0;
   double damping = 0.0;  ///< D[component][dof]: N s/m, N s or N m s
   double damping_se = 0.0;
-  double explained = 0.0;        ///< fraction of the variance about the mean the fit explains
+  double explained = 0.0;         ///< fraction of the variance about the mean the fit explains
   std::vector<double> harmonics;  ///< s1, c1, s2, c2, ... (N or N m)
 };
 

@@ -41,28 +41,33 @@ double true_added_mass(std::size_t i, std::size_t j) {
   return 0.3 * std::cos(static_cast<double>(i + j));  // symmetric, diagonally dominant
 }
 double true_damping(std::size_t i, std::size_t j) {
-  return i == j ? 1.5 + 0.25 * static_cast<double>(i) : 0.05 * static_cast<double>(i + 1) - 0.02 * static_cast<double>(j);
+  return i == j ? 1.5 + 0.25 * static_cast<double>(i)
+                : 0.05 * static_cast<double>(i + 1) - 0.02 * static_cast<double>(j);
 }
 
 /// A CSV history (time, body-axis X..N) of DOF j moved as A sin(omega t),
 /// the force F_i = mean_i - M[i][j] x'' - D[i][j] x' - c x'|x'| (c on the
 /// diagonal) plus a start-up transient that dies out within a few periods.
 fs::path write_history(const fs::path& dir, const std::string& name, std::size_t j, double amplitude,
-                       double quadratic = 0.0, bool stream = false, double froude_krylov = 0.0) {
+                       double quadratic = 0.0, bool stream = false, double froude_krylov = 0.0,
+                       std::size_t components = 6) {
   const fs::path path = dir / name;
   std::ofstream out(path);
-  out << std::setprecision(17) << "Time [s],X [N],Y [N],Z [N],K [N m],M [N m],N [N m]\n";
+  // All six components, or (components == 1) the in-line X alone.
+  out << std::setprecision(17)
+      << (components == 1 ? "Time [s],X [N]\n" : "Time [s],X [N],Y [N],Z [N],K [N m],M [N m],N [N m]\n");
   for (int k = 0; k <= 3200; ++k) {
     const double t = 0.02 * k;
     const double x_dot = amplitude * kOmega * std::cos(kOmega * t);
     const double x_ddot = -amplitude * kOmega * kOmega * std::sin(kOmega * t);
     const double transient = 2.0 * std::exp(-t / 1.5) + std::exp(-t / 2.0) * std::sin(5.3 * t);
     out << t;
-    for (std::size_t i = 0; i < 6; ++i) {
+    for (std::size_t i = 0; i < components; ++i) {
       double f = 0.1 * static_cast<double>(i) - true_added_mass(i, j) * x_ddot - true_damping(i, j) * x_dot;
       if (i == j) f -= quadratic * x_dot * std::abs(x_dot);
-      if (stream) f = (i == j ? froude_krylov : 0.0) * x_ddot + true_added_mass(i, j) * x_ddot +
-                      true_damping(i, j) * x_dot;  // a held body in a stream x_s = A sin(omega t)
+      if (stream)
+        f = (i == j ? froude_krylov : 0.0) * x_ddot + true_added_mass(i, j) * x_ddot +
+            true_damping(i, j) * x_dot;  // a held body in a stream x_s = A sin(omega t)
       out << ',' << f + transient;
     }
     out << '\n';
@@ -91,9 +96,8 @@ TEST(Pmm, SixRunsGiveTheWholeAddedMassAndDampingMatrices) {
   TempDir dir;
   for (std::size_t j = 0; j < 6; ++j) {
     const double amplitude = j < 3 ? 0.05 : 0.2;
-    ASSERT_EQ(pmm(dir, write_history(dir.path(), "run" + std::to_string(j) + ".csv", j, amplitude), j, amplitude,
-                  "hull"),
-              0);
+    ASSERT_EQ(
+        pmm(dir, write_history(dir.path(), "run" + std::to_string(j) + ".csv", j, amplitude), j, amplitude, "hull"), 0);
   }
   const auto result = run_cli({"added-mass", "hull", "--json"}, dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -125,12 +129,13 @@ TEST(Pmm, OneRunLeavesTheOtherEntriesMissingUntilStated) {
   // Column surge is measured; M_A[sway][sway] and the rest are missing.
   EXPECT_FALSE(assembly["missing"].empty());
   bool names_sway = false;
-  for (const auto& m : assembly["missing"]) names_sway = names_sway || m.get<std::string>().find("M_A[sway][sway]") == 0;
+  for (const auto& m : assembly["missing"])
+    names_sway = names_sway || m.get<std::string>().find("M_A[sway][sway]") == 0;
   EXPECT_TRUE(names_sway) << result.out;
   // A symmetric body: sway and heave as surge, no rotational added mass.
-  result = run_cli({"added-mass", "ball", "--same", "sway=surge", "--same", "heave=surge", "--zero", "roll,pitch,yaw",
-                    "--json"},
-                   dir.path());
+  result = run_cli(
+      {"added-mass", "ball", "--same", "sway=surge", "--same", "heave=surge", "--zero", "roll,pitch,yaw", "--json"},
+      dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   assembly = json::parse(result.out);
   EXPECT_TRUE(assembly["missing"].empty()) << result.out;
@@ -140,22 +145,52 @@ TEST(Pmm, OneRunLeavesTheOtherEntriesMissingUntilStated) {
 
   // A vehicle whose added mass comes from the database simulates, and one
   // that leaves entries missing is refused naming them.
-  const auto write_vehicle = [&](const std::string& added_mass) {
-    std::ofstream(dir / "vehicle.json") << R"({"mass": 14.0, "inertia": [0.13, 0.13, 0.13], "center_of_gravity": [0, 0, 0.02],
+  const auto write_vehicle =
+      [&](const std::string& added_mass) {
+        std::ofstream(dir / "vehicle.json")
+            << R"({"mass": 14.0, "inertia": [0.13, 0.13, 0.13], "center_of_gravity": [0, 0, 0.02],
       "neutrally_buoyant": true, "added_mass": )"
-                                        << added_mass << R"(,
+            << added_mass << R"(,
       "damping": {"X": {"law": {"u": -2.0, "u|u|": -10.0}, "sign": "on-body"}, "N": {"law": {"r": -0.05}, "sign": "on-body"}}})";
-  };
+      };
   std::ofstream(dir / "scenario.json") << R"({"duration": 2.0, "integrator": {"method": "rk4", "step": 0.01},
       "segments": [{"start": 0.0, "tau": {"X": 5.0}}]})";
-  write_vehicle(R"({"from_database": "ball", "same": {"sway": "surge", "heave": "surge"}, "zero": ["roll", "pitch", "yaw"]})");
-  const auto simulated = run_cli({"simulate", "--vehicle", "vehicle.json", "--scenario", "scenario.json", "--json"}, dir.path());
+  write_vehicle(
+      R"({"from_database": "ball", "same": {"sway": "surge", "heave": "surge"}, "zero": ["roll", "pitch", "yaw"]})");
+  const auto simulated =
+      run_cli({"simulate", "--vehicle", "vehicle.json", "--scenario", "scenario.json", "--json"}, dir.path());
   ASSERT_EQ(simulated.exit_code, 0) << simulated.err;
   write_vehicle(R"({"from_database": "ball"})");
   const auto refused = run_cli({"simulate", "--vehicle", "vehicle.json", "--scenario", "scenario.json"}, dir.path());
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("M_A[sway][sway]"), std::string::npos) << refused.err;
   EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+}
+
+TEST(Pmm, GazeboExportTakesTheAssembledAddedMass) {
+  TempDir dir;
+  const std::string surge = HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-surge-damping.csv";
+  ASSERT_EQ(run_cli({"import", surge, "--body", "asr-v", "--sign", "opposing", "--quiet"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(pmm(dir, write_history(dir.path(), "surge.csv", 0, 0.05, 0.0, false, 0.0, 1), 0, 0.05, "asr-v"), 0);
+  const std::vector<std::string> args = {
+      "export-gazebo", "asr-v", "--flavor", "uuv", "-o", "asr-v.xml", "--allow-missing", "--added-mass-from-database",
+      "asr-v"};
+  // Entries no run gives are refused, named.
+  const auto refused = run_cli(args, dir.path());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("M_A[sway][sway]"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "asr-v.xml"));
+  auto stated = args;
+  for (const char* a : {"--same", "sway=surge", "--same", "heave=surge", "--zero", "roll,pitch,yaw", "--json"})
+    stated.push_back(a);
+  const auto result = run_cli(stated, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto exported = json::parse(result.out);
+  const auto& m = exported.at("added_mass_b");
+  EXPECT_NEAR(m[0].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));  // row-major (0, 0)
+  EXPECT_NEAR(m[7].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));  // (1, 1)
+  EXPECT_NE(exported.at("added_mass_source").get<std::string>().find("forced-oscillation"), std::string::npos);
 }
 
 TEST(Pmm, QuadraticDampingFromThreeAmplitudes) {
@@ -181,10 +216,10 @@ TEST(Pmm, AnOscillatingStreamHasItsFroudeKrylovForceRemoved) {
   TempDir dir;
   const double rho = 1000.0, volume = 0.004;  // rho V = 4 kg
   const auto history = write_history(dir.path(), "stream.csv", 0, 0.05, 0.0, true, rho * volume);
-  const auto result = run_cli({"pmm", history.string(), "--body", "hull", "--motion", "surge", "--amplitude", "0.05",
-                               "--period", "1.6000000000000001", "--stream", "--rho", "1000", "--volume", "0.004",
-                               "--json", "--no-store"},
-                              dir.path());
+  const auto result =
+      run_cli({"pmm", history.string(), "--body", "hull", "--motion", "surge", "--amplitude", "0.05", "--period",
+               "1.6000000000000001", "--stream", "--rho", "1000", "--volume", "0.004", "--json", "--no-store"},
+              dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto run = json::parse(result.out)["runs"][0];
   EXPECT_EQ(run["medium"], "oscillating stream");
@@ -193,8 +228,8 @@ TEST(Pmm, AnOscillatingStreamHasItsFroudeKrylovForceRemoved) {
   EXPECT_NEAR(x["damping"].get<double>(), true_damping(0, 0), 1e-6 * true_damping(0, 0));
   EXPECT_NEAR(x["added_mass_coefficient"].get<double>(), true_added_mass(0, 0) / (rho * volume), 1e-6);
   // Without the volume the Froude-Krylov force cannot be removed.
-  const auto refused = run_cli({"pmm", history.string(), "--motion", "surge", "--amplitude", "0.05", "--period",
-                                "1.6", "--stream", "--rho", "1000"},
+  const auto refused = run_cli({"pmm", history.string(), "--motion", "surge", "--amplitude", "0.05", "--period", "1.6",
+                                "--stream", "--rho", "1000"},
                                dir.path());
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("displaced volume"), std::string::npos) << refused.err;
@@ -207,7 +242,8 @@ fs::path write_openfoam_case(const fs::path& root, double amplitude_x, double om
   fs::create_directories(dir / "constant");
   fs::create_directories(dir / "system");
   fs::create_directories(dir / "postProcessing/forces/0");
-  std::ofstream(dir / "constant/dynamicMeshDict") << R"(FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }
+  std::ofstream(dir / "constant/dynamicMeshDict")
+      << R"(FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }
 dynamicFvMesh   dynamicMotionSolverFvMesh;
 motionSolverLibs ("libfvMotionSolvers.so");
 motionSolver    solidBody;
@@ -216,12 +252,15 @@ solidBodyCoeffs
     solidBodyMotionFunction oscillatingLinearMotion;
     oscillatingLinearMotionCoeffs
     {
-        amplitude       ()" << std::setprecision(17) << amplitude_x << R"( 0 0);
-        omega           )" << omega << R"(;
+        amplitude       ()"
+      << std::setprecision(17) << amplitude_x << R"( 0 0);
+        omega           )"
+      << omega << R"(;
     }
 }
 )";
-  std::ofstream(dir / "system/controlDict") << R"(FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+  std::ofstream(dir / "system/controlDict")
+      << R"(FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
 application pimpleFoam;
 functions { forces { type forces; libs ("libforces.so"); patches (sphere); rho rhoInf; rhoInf 998.2; CofR (0 0 0); } }
 )";
@@ -260,9 +299,9 @@ TEST(Pmm, TheMotionIsReadFromTheOpenFoamCaseAndCheckedAgainstTheOptions) {
   EXPECT_NEAR(run["components"][0]["added_mass"].get<double>(), 7.0, 1e-6);
   // Options that contradict the case are refused, naming both.
   const std::string before = test::dump_database(dir / "hydrocoef.db");
-  result = run_cli({"pmm", case_dir.string(), "--body", "ball", "--motion", "surge", "--amplitude", "0.03", "--period",
-                    "2"},
-                   dir.path());
+  result =
+      run_cli({"pmm", case_dir.string(), "--body", "ball", "--motion", "surge", "--amplitude", "0.03", "--period", "2"},
+              dir.path());
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("dynamicMeshDict"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("0.03"), std::string::npos) << result.err;
@@ -275,6 +314,47 @@ TEST(Pmm, TheMotionIsReadFromTheOpenFoamCaseAndCheckedAgainstTheOptions) {
   EXPECT_EQ(assembled["records"], 1);
 }
 
+TEST(Pmm, TheOpenFoamSphereRunGivesHalfTheDisplacedMass) {
+  // examples/openfoam-sphere/pmm: OpenFOAM v1912, the whole mesh of a
+  // R = 0.15 m sphere moved as x = A sin(pi t) (PROVENANCE.md there). In
+  // potential flow M_A = rho V / 2; the Stokes boundary layer adds 9 delta /
+  // (2 R) = 2.4 % at this frequency (delta = sqrt(2 nu / omega) = 0.8 mm).
+  TempDir dir;
+  const double rho = 998.2, radius = 0.15, volume = 4.0 / 3.0 * kPi * radius * radius * radius;
+  std::ostringstream v;
+  v << std::setprecision(17) << volume;
+  const std::string root = HYDROCOEF_SOURCE_DIR "/examples/openfoam-sphere/pmm/";
+  const auto result =
+      run_cli({"pmm", root + "surge-A0.015-T2", root + "surge-A0.045-T2", "--body", "sphere", "--axes=-x,y,-z", "--rho",
+               "998.2", "--nu", "1.004e-6", "--volume", v.str(), "--size", "0.3", "--json"},
+              dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto runs = json::parse(result.out)["runs"];
+  ASSERT_EQ(runs.size(), 2u);
+  for (const auto& run : runs) {
+    EXPECT_EQ(run["motion"]["dof"], "surge");
+    EXPECT_NEAR(run["motion"]["period_s"].get<double>(), 2.0, 1e-12);
+    EXPECT_GE(run["periods"].get<int>(), 3);
+    const auto& x = run["components"][0];
+    ASSERT_EQ(x["component"], "X");
+    const double coefficient = x["added_mass_coefficient"].get<double>();
+    EXPECT_NEAR(coefficient, 0.5, 0.05) << run["path"];  // within 10 %
+    EXPECT_NEAR(x["added_mass"].get<double>(), coefficient * rho * volume, 1e-9);
+    EXPECT_GE(x["explained"].get<double>(), 0.99) << run["path"];
+    EXPECT_GT(x["damping"].get<double>(), 0.0);  // the boundary layer dissipates
+  }
+  EXPECT_NEAR(runs[0]["keulegan_carpenter"].get<double>(), 2.0 * kPi * 0.015 / 0.3, 1e-12);
+  // The assembled matrix of a sphere: sway and heave as surge, no rotational added mass.
+  const auto assembled = run_cli(
+      {"added-mass", "sphere", "--same", "sway=surge", "--same", "heave=surge", "--zero", "roll,pitch,yaw", "--json"},
+      dir.path());
+  ASSERT_EQ(assembled.exit_code, 0) << assembled.err;
+  const auto a = json::parse(assembled.out);
+  EXPECT_TRUE(a["positive_definite"].get<bool>());
+  EXPECT_NEAR(a["added_mass_b"][0][0].get<double>() / (rho * volume), 0.5, 0.05);
+  EXPECT_EQ(a["quadratic_damping"].size(), 1u);  // two amplitudes at one frequency
+}
+
 TEST(Pmm, BadInputIsOneLineWithTheDatabaseUnchanged) {
   TempDir dir;
   ASSERT_EQ(pmm(dir, write_history(dir.path(), "surge.csv", 0, 0.05), 0, 0.05, "hull"), 0);
@@ -282,8 +362,8 @@ TEST(Pmm, BadInputIsOneLineWithTheDatabaseUnchanged) {
   std::ofstream(dir / "short.csv") << "Time [s],X [N]\n0,1\n0.1,2\n0.2,1\n";
   std::ofstream(dir / "steady.csv") << "Iteration,X [N]\n1,1\n2,2\n3,1\n";
   const std::vector<std::vector<std::string>> cases = {
-      {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "0.05"},       // --period missing
-      {"pmm", "surge.csv"},                                                   // no motion anywhere
+      {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "0.05"},  // --period missing
+      {"pmm", "surge.csv"},                                              // no motion anywhere
       {"pmm", "surge.csv", "--motion", "twist", "--amplitude", "1", "--period", "1"},
       {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "-1", "--period", "1"},
       {"pmm", "short.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6"},  // < 3 periods
@@ -319,12 +399,9 @@ TEST(Pmm, HostileBodyNamesAreDataInTheOutput) {
     const auto result = run_cli({"added-mass", name, "--json"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
     EXPECT_EQ(json::parse(result.out)["body"], name);
-    for (const auto& args : {std::vector<std::string>{"added-mass", name}, std::vector<std::string>{"pmm", "surge.csv",
-                                                                                                      "--body", name,
-                                                                                                      "--motion", "surge",
-                                                                                                      "--amplitude",
-                                                                                                      "0.05", "--period",
-                                                                                                      "1.6", "--no-store"}}) {
+    for (const auto& args : {std::vector<std::string>{"added-mass", name},
+                             std::vector<std::string>{"pmm", "surge.csv", "--body", name, "--motion", "surge",
+                                                      "--amplitude", "0.05", "--period", "1.6", "--no-store"}}) {
       const auto text = run_cli(args, dir.path());
       ASSERT_EQ(text.exit_code, 0) << name << ": " << text.err;
       for (const char c : text.out)

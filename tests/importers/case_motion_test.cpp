@@ -27,7 +27,7 @@ constexpr double kPi = std::numbers::pi;
 std::filesystem::path write_case(const test::TempDir& dir, const std::string& dynamic_mesh_dict) {
   std::filesystem::create_directories(dir / "case/constant");
   std::ofstream(dir / "case/constant/dynamicMeshDict") << "FoamFile { version 2.0; format ascii; class dictionary; }\n"
-                                                        << dynamic_mesh_dict;
+                                                       << dynamic_mesh_dict;
   return dir / "case";
 }
 
@@ -79,13 +79,18 @@ TEST(CaseMotion, OpenFoamRefusals) {
   test::TempDir dir;
   EXPECT_FALSE(read_openfoam_motion(dir.path()));  // no dynamicMeshDict
   EXPECT_FALSE(read_openfoam_motion(write_case(dir, "dynamicFvMesh staticFvMesh;\n")));
-  test::expect_input_error([&] { read_openfoam_motion(write_case(dir, "motionSolver solidBody;\nsolidBodyMotionFunction "
-                                                                "linearMotion;\nlinearMotionCoeffs { velocity (1 0 0); }\n")); },
-                     {"dynamicMeshDict:3", "linearMotion", "oscillatingLinearMotion"});
   test::expect_input_error(
       [&] {
-        read_openfoam_motion(write_case(dir, "a { solidBodyMotionFunction oscillatingLinearMotion; amplitude (1 0 0); "
-                                             "omega 1; }\nb { solidBodyMotionFunction oscillatingLinearMotion; }\n"));
+        read_openfoam_motion(write_case(dir,
+                                        "motionSolver solidBody;\nsolidBodyMotionFunction "
+                                        "linearMotion;\nlinearMotionCoeffs { velocity (1 0 0); }\n"));
+      },
+      {"dynamicMeshDict:3", "linearMotion", "oscillatingLinearMotion"});
+  test::expect_input_error(
+      [&] {
+        read_openfoam_motion(write_case(dir,
+                                        "a { solidBodyMotionFunction oscillatingLinearMotion; amplitude (1 0 0); "
+                                        "omega 1; }\nb { solidBodyMotionFunction oscillatingLinearMotion; }\n"));
       },
       {"dynamicMeshDict", "second solidBodyMotionFunction"});
   test::expect_input_error(
@@ -142,7 +147,7 @@ TEST(CaseMotion, CfxSpecifiedDisplacement) {
       [] { cfx_motion(ccl("", "            Displacement X Component = 0.02 [m] * sin(3 [s^-2] * t^2)\n")); },
       {"case.ccl:", "A*sin(omega*t + phi)"});
   test::expect_input_error([] { cfx_motion(ccl("", "            Displacement X Component = 0.02 [m]\n")); },
-                     {"case.ccl:", "constant offset"});
+                           {"case.ccl:", "constant offset"});
   EXPECT_FALSE(cfx_motion(parse_ccl("FLOW: f\nEND\n", "plain.ccl")));
 }
 

@@ -68,9 +68,8 @@ TEST(AddedMassAssembly, SameZeroAndPositiveDefiniteness) {
   EXPECT_TRUE(a.positive_definite);
   EXPECT_NEAR(a.smallest_eigenvalue, 7.0, 1e-12);
   // An indefinite matrix is reported as such.
-  const AddedMassAssembly bad =
-      assemble_added_mass("ball", {record("ball", 0, 2.0, 0.01, {{0, 1.0}, {1, 5.0}}),
-                                   record("ball", 1, 2.0, 0.01, {{0, 5.0}, {1, 1.0}})});
+  const AddedMassAssembly bad = assemble_added_mass(
+      "ball", {record("ball", 0, 2.0, 0.01, {{0, 1.0}, {1, 5.0}}), record("ball", 1, 2.0, 0.01, {{0, 5.0}, {1, 1.0}})});
   EXPECT_FALSE(bad.positive_definite);
   EXPECT_NEAR(bad.smallest_eigenvalue, -4.0, 1e-12);
   test::expect_input_error([&] { assemble_added_mass("nobody", records); }, {"nobody", "no stored"});
