@@ -79,6 +79,9 @@ std::optional<CaseOscillation> read_openfoam_motion(const fs::path& case_dir) {
   out.omega = foam_scalar(entry("omega"), "omega");
   if (!(out.omega > 0.0))
     throw InputError(at(entry("omega")), "omega " + shortest_number(out.omega) + ": expected > 0");
+  // Newer OpenFOAM releases read amplitude sin(omega t + phaseShift) + verticalShift;
+  // the offset does not change velocities or accelerations.
+  if (const FoamValue* shift = coefficients->value("phaseShift")) out.phase = foam_scalar(*shift, "phaseShift");
   if (out.rotation) {
     out.origin = foam_vector(entry("origin"), "origin");
     for (double& a : out.amplitude) a *= std::numbers::pi / 180.0;  // OpenFOAM reads degrees
@@ -86,7 +89,8 @@ std::optional<CaseOscillation> read_openfoam_motion(const fs::path& case_dir) {
   out.where = function_entry.file + ":" + std::to_string(function_entry.line);
   out.description = function + ", amplitude " + vector_text(foam_vector(entry("amplitude"), "amplitude")) +
                     (out.rotation ? " deg about " + vector_text(out.origin) : std::string(" m")) + ", omega " +
-                    shortest_number(out.omega) + " rad/s";
+                    shortest_number(out.omega) + " rad/s" +
+                    (out.phase != 0.0 ? ", phaseShift " + shortest_number(out.phase) + " rad" : std::string());
   return out;
 }
 

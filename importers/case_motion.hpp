@@ -11,7 +11,9 @@
 // gives the displacement amplitude sin(omega t) [m]; oscillatingRotatingMotion
 // (origin, amplitude, omega) gives the Euler angles amplitude sin(omega t),
 // with the amplitude in DEGREES (the function converts them to radians),
-// about `origin`. The entries may sit in a solidBodyCoeffs (or
+// about `origin`; releases after v1912 add phaseShift (rad, inside the sine)
+// and verticalShift (an offset, which changes no velocity), both read. The
+// entries may sit in a solidBodyCoeffs (or
 // solidBodyMotionFvMeshCoeffs) sub-dictionary, and the coefficients in a
 // <function>Coeffs sub-dictionary or beside the function's name, as
 // OpenFOAM's optionalSubDict reads them. Other motion functions (linear,

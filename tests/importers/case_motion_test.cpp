@@ -53,9 +53,12 @@ motionSolver solidBody;
 solidBodyMotionFunction oscillatingLinearMotion;
 amplitude (0.01 0 0);
 omega 2;
+phaseShift 0.25;
+verticalShift (0 0 1);
 )"));
   ASSERT_TRUE(flat);
   EXPECT_EQ(flat->amplitude[0], 0.01);
+  EXPECT_EQ(flat->phase, 0.25);
 }
 
 TEST(CaseMotion, OpenFoamRotationIsInDegrees) {
