@@ -30,7 +30,7 @@ void run_pmm(const PmmArgs& args, const GlobalOptions& global) {
   for (const auto& input : args.inputs) request.import.inputs.emplace_back(input);
   request.import.command_line = command_line_settings(args.settings);
   if (args.sign) request.import.command_line.set("sign", *args.sign, "--sign");
-  request.import.format = "history";
+  request.import.format = "auto";  // read_body_history refuses what is not a history
   for (const auto& text : args.columns) {
     auto [name, value] = parse_text_assignment(text, "--column");
     request.import.columns.columns[name] = value;

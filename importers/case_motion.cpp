@@ -134,7 +134,10 @@ std::string replace_identifiers(std::string_view text, Replace&& replace) {
 std::string expanded(const CelEvaluator& cel, const CclDocument& document, std::string_view text, std::size_t line,
                      int depth = 0) {
   if (depth > 64) throw InputError(document.location(line), "expressions nested more than 64 deep; expected fewer");
-  return replace_identifiers(text, [&](const std::string& name) -> std::optional<std::string> {
+  // Each level is bounded, so expressions that double at every level (A = B + B,
+  // B = C + C, ...) stop at the first level past the bound.
+  constexpr std::size_t kMaxExpandedBytes = 1 << 16;
+  std::string out = replace_identifiers(text, [&](const std::string& name) -> std::optional<std::string> {
     if (name == "pi") return "(" + shortest_number(std::numbers::pi) + ")";
     if (!cel.has_expression(name)) return std::nullopt;
     for (const auto* library : document.root.children_of_type("LIBRARY"))
@@ -145,6 +148,11 @@ std::string expanded(const CelEvaluator& cel, const CclDocument& document, std::
               return "(" + expanded(cel, document, parameter.value, parameter.line, depth + 1) + ")";
     return std::nullopt;
   });
+  if (out.size() > kMaxExpandedBytes)
+    throw InputError(document.location(line),
+                     "the expression expands to more than 64 kB of CEL; expected a displacement "
+                     "of the form A*sin(omega*t + phi)");
+  return out;
 }
 
 /// A * sin(omega t + phi) read from one displacement component.

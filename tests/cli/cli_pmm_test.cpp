@@ -361,6 +361,7 @@ TEST(Pmm, BadInputIsOneLineWithTheDatabaseUnchanged) {
   const std::string before = test::dump_database(dir / "hydrocoef.db");
   std::ofstream(dir / "short.csv") << "Time [s],X [N]\n0,1\n0.1,2\n0.2,1\n";
   std::ofstream(dir / "steady.csv") << "Iteration,X [N]\n1,1\n2,2\n3,1\n";
+  std::ofstream(dir / "table.csv") << "u [m s^-1],X [N]\n0.1,1\n0.2,2\n";
   const std::vector<std::vector<std::string>> cases = {
       {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "0.05"},  // --period missing
       {"pmm", "surge.csv"},                                              // no motion anywhere
@@ -368,6 +369,7 @@ TEST(Pmm, BadInputIsOneLineWithTheDatabaseUnchanged) {
       {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "-1", "--period", "1"},
       {"pmm", "short.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6"},  // < 3 periods
       {"pmm", "steady.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6"},
+      {"pmm", "table.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6"},  // not a history
       {"pmm", "surge.csv", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6", "--harmonics", "11"},
       {"added-mass", "nobody"},
       {"added-mass", "hull", "--zero", "surge"},

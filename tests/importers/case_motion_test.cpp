@@ -152,6 +152,14 @@ TEST(CaseMotion, CfxSpecifiedDisplacement) {
   test::expect_input_error([] { cfx_motion(ccl("", "            Displacement X Component = 0.02 [m]\n")); },
                            {"case.ccl:", "constant offset"});
   EXPECT_FALSE(cfx_motion(parse_ccl("FLOW: f\nEND\n", "plain.ccl")));
+  // Expressions that double at every level are refused, not expanded 2^40 times.
+  std::string doubling;
+  for (int k = 0; k < 40; ++k)
+    doubling += "      e" + std::to_string(k) + " = e" + std::to_string(k + 1) + " + e" + std::to_string(k + 1) + "\n";
+  doubling += "      e40 = 1 [m]\n";
+  test::expect_input_error(
+      [&] { cfx_motion(ccl(doubling, "            Displacement X Component = e0*sin(2 [s^-1]*t)\n")); },
+      {"case.ccl:", "64 kB"});
 }
 
 }  // namespace
