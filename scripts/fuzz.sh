@@ -43,6 +43,7 @@ seed_files() {
     scenario_fuzz) ls "$root"/examples/asr-v/scenario*.json 2>/dev/null || true ;;
     vtp_fuzz) ls "$root"/tests/data/vtp-encodings/*.vtp "$root"/tests/data/bad/vtp-*.vtp ;;
     stored_record_fuzz) ls "$root"/tests/data/fuzz-seeds/stored-record-* ;;
+    case_motion_fuzz) ls "$root"/tests/data/fuzz-seeds/case-motion.ccl "$root"/tests/data/cfx/*.ccl 2>/dev/null || true ;;
   esac
 }
 write_seeds() {  # target seed-dir
