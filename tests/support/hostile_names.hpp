@@ -71,4 +71,12 @@ inline std::vector<std::string> hostile_names() {
   return names;
 }
 
+/// True when a terminal shows `text` as it is: no control characters but
+/// line ends, no DEL (what a hostile name must not bring into a readable output).
+inline bool terminal_safe(const std::string& text) {
+  for (const char c : text)
+    if (!(c == '\n' || (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f))) return false;
+  return true;
+}
+
 }  // namespace hydrocoef::test
