@@ -26,8 +26,11 @@ std::string four_digits(double value) {
   return text.str();
 }
 
-/// Inverse-variance weighted mean and its standard error; the plain mean
-/// and the standard error of the spread when a standard error is zero.
+/// Inverse-variance weighted mean and its standard error, scaled up by the
+/// Birge ratio sqrt(chi^2 / (n - 1)) when the runs scatter more than their
+/// standard errors say (runs at other amplitudes or frequencies differ by
+/// more than their period-to-period spread); the plain mean and the standard
+/// error of the spread when a standard error is zero.
 std::pair<double, double> combined(const std::vector<double>& values, const std::vector<double>& se) {
   const std::size_t n = values.size();
   if (n == 1) return {values[0], se[0]};
@@ -39,7 +42,11 @@ std::pair<double, double> combined(const std::vector<double>& values, const std:
       sw += w;
       swx += w * values[k];
     }
-    return {swx / sw, std::sqrt(1.0 / sw)};
+    const double mean = swx / sw;
+    double chi2 = 0.0;
+    for (std::size_t k = 0; k < n; ++k) chi2 += (values[k] - mean) * (values[k] - mean) / (se[k] * se[k]);
+    const double birge = std::max(1.0, chi2 / static_cast<double>(n - 1));
+    return {mean, std::sqrt(birge / sw)};
   }
   double mean = 0.0;
   for (const double v : values) mean += v / static_cast<double>(n);

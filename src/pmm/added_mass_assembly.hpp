@@ -6,8 +6,10 @@
 // Assembly rules:
 // - Several runs of one entry (amplitudes, frequencies) are combined by
 //   their inverse-variance weighted mean (plain mean when a standard error is
-//   zero); the standard error of the mean and the spread of the runs are
-//   kept, with the range of frequencies and KC numbers that went in.
+//   zero); its standard error is scaled by the Birge ratio
+//   sqrt(chi^2 / (n - 1)) when the runs scatter more than their own standard
+//   errors say. The spread of the runs is kept, with the range of
+//   frequencies and KC numbers that went in.
 // - Symmetry: M_A = M_A^T for a body in an ideal fluid. When both M_A[i][j]
 //   and M_A[j][i] are measured, both become their mean (and their
 //   difference, in standard errors, is reported); when only one is, it
