@@ -1,6 +1,9 @@
 // hydrocoef pmm: forced-oscillation runs (a virtual planar motion mechanism)
 // into added mass and damping, printed and stored. The logic is in
 // src/pipeline/pmm_runs, the output in cli/pmm_output.
+#include <unistd.h>
+
+#include <iostream>
 #include <memory>
 #include <optional>
 
@@ -51,9 +54,15 @@ void run_pmm(const PmmArgs& args, const GlobalOptions& global) {
   request.medium = args.stream ? PmmMedium::OscillatingStream : PmmMedium::StillWater;
   request.size = args.size;
   request.displaced_volume = args.volume;
+  const bool progress = isatty(STDERR_FILENO) != 0;
+  if (progress)
+    request.import.progress = [](std::size_t done, std::size_t total, const std::filesystem::path& path) {
+      std::cerr << "\r\033[K[" << done << "/" << total << "] " << path.filename().string() << std::flush;
+    };
   // Everything is read and analysed before the database is opened: a bad
   // input leaves it as it was.
   const std::vector<PmmRun> runs = analyse_pmm_runs(request);
+  if (progress) std::cerr << "\r\033[K" << std::flush;
   std::vector<PmmSaved> saved;
   if (args.store) {
     Database database(global.database);

@@ -1,8 +1,10 @@
 #include "src/pipeline/pmm_runs.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
+#include <mutex>
 #include <numbers>
 #include <sstream>
 #include <system_error>
@@ -211,7 +213,16 @@ std::vector<PmmRun> analyse_pmm_runs(const PmmRequest& request) {
   const ImportPlan plan = plan_request(request.import);
   const std::size_t count = plan.inputs.size();
   std::vector<std::optional<PmmRun>> results(count);
-  parallel_for(count, request.import.jobs, [&](std::size_t i) { results[i] = analyse_one(plan.inputs[i], request); });
+  std::atomic<std::size_t> done{0};
+  std::mutex progress_mutex;
+  parallel_for(count, request.import.jobs, [&](std::size_t i) {
+    results[i] = analyse_one(plan.inputs[i], request);
+    const std::size_t finished = ++done;
+    if (request.import.progress) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      request.import.progress(finished, count, plan.inputs[i].path);
+    }
+  });
   std::vector<PmmRun> out;
   for (auto& result : results) out.push_back(std::move(*result));
   return out;

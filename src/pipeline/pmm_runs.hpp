@@ -34,7 +34,7 @@
 namespace hydrocoef {
 
 struct PmmRequest {
-  ImportRequest import;                  ///< inputs, settings (--body, --axes, rho, nu ...), format, jobs
+  ImportRequest import;                  ///< inputs, settings (--body, --axes, rho, nu ...), format, jobs, progress
   std::optional<HarmonicMotion> motion;  ///< body axes; none: from each case
   /// A CFX case's CCL (.ccl, .def text export, or solver output .out) to read the motion from.
   std::optional<std::filesystem::path> ccl;
