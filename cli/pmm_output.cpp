@@ -101,6 +101,9 @@ nlohmann::json run_json(const PmmRun& run, const PmmSaved* saved) {
                             {"harmonics_sin_cos", c.harmonics}};
     if (c.component == r.dof && r.rho && r.displaced_volume && r.dof < 3)
       entry["added_mass_coefficient"] = c.added_mass / (*r.rho * *r.displaced_volume);
+    // The cycle-to-cycle spread: standard deviations of s1 and c1 fitted period by period.
+    const HarmonicComponent& fit = run.analysis.components[c.component];
+    entry["cycle_spread"] = {{"in_phase", fit.in_phase_spread}, {"quadrature", fit.quadrature_spread}};
     out["components"].push_back(entry);
   }
   return out;
