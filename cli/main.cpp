@@ -19,7 +19,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.fallthrough();
   cli::GlobalOptions global;
-  app.add_option("--db", global.database, "Run database (SQLite file)")->capture_default_str();
+  app.add_option("--db", global.database,
+                 "Run database: a file path or sqlite:PATH (SQLite), or postgresql://[user@]host[:port]/name[?...] "
+                 "(a PostgreSQL server; its password from ~/.pgpass or $PGPASSFILE, never in the URL). Default: "
+                 "$HYDROCOEF_DB, else hydrocoef.db")
+      ->envname("HYDROCOEF_DB")
+      ->capture_default_str();
   cli::add_import_command(app, global);
   cli::add_runs_command(app, global);
   cli::add_fit_command(app, global);
@@ -32,6 +37,7 @@ int main(int argc, char** argv) {
   cli::add_gci_command(app, global);
   cli::add_pmm_command(app, global);
   cli::add_added_mass_command(app, global);
+  cli::add_merge_command(app, global);
   cli::add_export_command(app, global);
   cli::add_export_gazebo_command(app, global);
   cli::add_plot_command(app, global);

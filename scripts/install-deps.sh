@@ -10,6 +10,8 @@ packages=(
   libeigen3-dev         # linear algebra
   libceres-dev          # damping-law fitting and covariance
   libsqlite3-dev        # run database
+  libpq-dev             # run database on a PostgreSQL server (src/store/postgresql_backend.cpp)
+  postgresql-15         # tests: a throw-away server (scripts/postgresql-test-server.sh)
   sqlite3               # tests: tests/data/tampered/make-tampered.sh edits copies of a database
   libxml2-utils         # tests: xmllint --noout checks the DAVE-ML export is well-formed
   libssl-dev            # SHA-256 of imported files (libcrypto)

@@ -14,9 +14,17 @@ phase_done() {
   echo "[test.sh] $1: $((SECONDS - phase_start)) s"
   phase_start=$SECONDS
 }
-trap 'printf "[test.sh] %s\n" "${timings[@]}" "total $((SECONDS - started)) s"' EXIT
+pg_dir=""
+trap '[[ -n "$pg_dir" ]] && bash "$root/scripts/postgresql-test-server.sh" stop "$pg_dir"; printf "[test.sh] %s\n" "${timings[@]}" "total $((SECONDS - started)) s"' EXIT
 bash "$root/scripts/build.sh" test
 phase_done "sanitizer build (with packages)"
+# A throw-away PostgreSQL server for the store, CLI and reliability tests that
+# run on both backends (tests/support/test_database.hpp); stopped, and its
+# folder removed, however this script ends.
+pg_dir=$(mktemp -d "${TMPDIR:-/tmp}/hydrocoef-pg.XXXXXX")
+eval "$(bash "$root/scripts/postgresql-test-server.sh" start "$pg_dir")"
+export HYDROCOEF_TEST_POSTGRESQL_REQUIRED=1
+phase_done "PostgreSQL test server start"
 bash "$root/scripts/fuzz.sh" --build-only
 phase_done "fuzz targets build"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1}

@@ -4,7 +4,7 @@
 // src/surface/surface_build_spec.hpp).
 #pragma once
 
-#include "src/store/sqlite.hpp"
+#include "src/store/connection.hpp"
 
 namespace hydrocoef::store {
 

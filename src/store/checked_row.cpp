@@ -1,7 +1,5 @@
 #include "src/store/checked_row.hpp"
 
-#include <sqlite3.h>
-
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -11,20 +9,21 @@ namespace hydrocoef::store {
 
 std::string CheckedRow::found(int column) const {
   switch (statement_.column_type(column)) {
-    case SQLITE_NULL: return "NULL";
-    case SQLITE_INTEGER: return "the integer " + std::to_string(statement_.get_int(column));
-    case SQLITE_FLOAT: {
+    case ColumnType::Null: return "NULL";
+    case ColumnType::Integer: return "the integer " + std::to_string(statement_.get_int(column));
+    case ColumnType::Float: {
       const double value = statement_.get_double(column);
       if (std::isnan(value)) return "NaN";
       if (std::isinf(value)) return value > 0 ? "+infinity" : "-infinity";
       return "the number " + std::to_string(value);
     }
-    case SQLITE_TEXT:
+    case ColumnType::Text:
       return "the text '" + printable_text(statement_.get_text(column), 40) + "'" +
              (statement_.column_bytes(column) > 40 ? " (" + std::to_string(statement_.column_bytes(column)) + " bytes)"
                                                    : std::string());
-    default: return "a blob of " + std::to_string(statement_.column_bytes(column)) + " bytes";
+    case ColumnType::Blob: break;
   }
+  return "a blob of " + std::to_string(statement_.column_bytes(column)) + " bytes";
 }
 
 void CheckedRow::fail(int column, std::string_view expected) const {
@@ -40,8 +39,8 @@ void CheckedRow::fail_row(std::string_view message) const {
 }
 
 double CheckedRow::real(int column) const {
-  const int type = statement_.column_type(column);
-  if (type != SQLITE_FLOAT && type != SQLITE_INTEGER) fail(column, "a finite number");
+  const ColumnType type = statement_.column_type(column);
+  if (type != ColumnType::Float && type != ColumnType::Integer) fail(column, "a finite number");
   const double value = statement_.get_double(column);
   if (!std::isfinite(value)) fail(column, "a finite number");
   return value;
@@ -60,22 +59,22 @@ double CheckedRow::positive(int column) const {
 }
 
 std::optional<double> CheckedRow::optional_real(int column) const {
-  if (statement_.column_type(column) == SQLITE_NULL) return std::nullopt;
+  if (statement_.column_type(column) == ColumnType::Null) return std::nullopt;
   return real(column);
 }
 
 std::optional<double> CheckedRow::optional_positive(int column) const {
-  if (statement_.column_type(column) == SQLITE_NULL) return std::nullopt;
+  if (statement_.column_type(column) == ColumnType::Null) return std::nullopt;
   return positive(column);
 }
 
 std::optional<double> CheckedRow::optional_non_negative(int column) const {
-  if (statement_.column_type(column) == SQLITE_NULL) return std::nullopt;
+  if (statement_.column_type(column) == ColumnType::Null) return std::nullopt;
   return non_negative(column);
 }
 
 std::int64_t CheckedRow::integer(int column, std::int64_t min, std::int64_t max) const {
-  if (statement_.column_type(column) != SQLITE_INTEGER)
+  if (statement_.column_type(column) != ColumnType::Integer)
     fail(column, "an integer from " + std::to_string(min) + " to " + std::to_string(max));
   const std::int64_t value = statement_.get_int(column);
   if (value < min || value > max) fail(column, "an integer from " + std::to_string(min) + " to " + std::to_string(max));
@@ -83,7 +82,7 @@ std::int64_t CheckedRow::integer(int column, std::int64_t min, std::int64_t max)
 }
 
 std::string CheckedRow::text(int column, std::size_t max_bytes) const {
-  if (statement_.column_type(column) != SQLITE_TEXT || statement_.column_bytes(column) > max_bytes)
+  if (statement_.column_type(column) != ColumnType::Text || statement_.column_bytes(column) > max_bytes)
     fail(column, "text of at most " + std::to_string(max_bytes) + " bytes");
   return statement_.get_text(column);
 }
@@ -91,7 +90,7 @@ std::string CheckedRow::text(int column, std::size_t max_bytes) const {
 std::string CheckedRow::one_of(int column, const std::vector<std::string_view>& allowed) const {
   std::string list;
   for (const auto& option : allowed) list += (list.empty() ? "'" : ", '") + std::string(option) + "'";
-  if (statement_.column_type(column) == SQLITE_TEXT && statement_.column_bytes(column) <= 64) {
+  if (statement_.column_type(column) == ColumnType::Text && statement_.column_bytes(column) <= 64) {
     const std::string value = statement_.get_text(column);
     for (const auto& option : allowed)
       if (value == option) return value;
@@ -109,7 +108,7 @@ std::string CheckedRow::name(int column, NameKind kind) const {
 }
 
 std::vector<double> CheckedRow::doubles(int column, std::size_t max_count) const {
-  if (statement_.column_type(column) != SQLITE_BLOB) fail(column, "a blob of float64 values");
+  if (statement_.column_type(column) != ColumnType::Blob) fail(column, "a blob of float64 values");
   const std::size_t bytes = statement_.column_bytes(column);
   if (bytes % sizeof(double) != 0 || bytes / sizeof(double) > max_count)
     fail(column, "a blob of at most " + std::to_string(max_count) + " float64 values (a multiple of 8 bytes)");

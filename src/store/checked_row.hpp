@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "src/core/names.hpp"
-#include "src/store/sqlite.hpp"
+#include "src/store/connection.hpp"
 
 namespace hydrocoef::store {
 

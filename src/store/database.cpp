@@ -1,6 +1,5 @@
 #include "src/store/database.hpp"
 
-#include <sqlite3.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,8 +18,11 @@
 #include "src/core/numbers.hpp"
 #include "src/core/text.hpp"
 #include "src/core/version.hpp"
+#include "src/store/backend.hpp"
 #include "src/store/build_spec_migration.hpp"
 #include "src/store/checked_row.hpp"
+#include "src/store/dialect.hpp"
+#include "src/store/location.hpp"
 #include "src/store/migrations.hpp"
 #include "src/store/schema_check.hpp"
 
@@ -81,7 +83,12 @@ std::string utc_timestamp_now() {
 
 namespace {
 
-store::Connection open_connection(const std::filesystem::path& path, Database::OpenMode mode) {
+store::Connection open_connection(const store::DatabaseLocation& location, Database::OpenMode mode) {
+  if (location.backend == store::Backend::PostgreSQL)
+    return store::Connection::postgresql(
+        location.target, location.display,
+        mode == Database::OpenMode::ReadOnly ? store::Access::ReadOnly : store::Access::ReadWrite);
+  const std::filesystem::path path(location.target);
   if (mode != Database::OpenMode::CreateIfMissing && !std::filesystem::exists(path))
     throw InputError(SourceLocation{path.string()},
                      "no database here; create one with 'hydrocoef import' or give --db PATH");
@@ -101,6 +108,7 @@ store::Connection open_connection(const std::filesystem::path& path, Database::O
 
 /// What every connection of a Database runs first.
 void configure(store::Connection& connection) {
+  if (connection.backend() != store::Backend::SQLite) return;
   connection.execute("PRAGMA foreign_keys = ON");
   // FULL: the WAL is synced at every commit, so a committed import survives a
   // power loss as well as a killed process. NORMAL would already keep it after
@@ -109,8 +117,22 @@ void configure(store::Connection& connection) {
   connection.execute("PRAGMA synchronous = FULL");
 }
 
-/// PRAGMA user_version as stored (any 64-bit value in a received file).
+/// The schema version as stored (any 64-bit value in a received file):
+/// SQLite's PRAGMA user_version; on PostgreSQL the one row of table
+/// hydrocoef_schema, or 0 when there is no such table.
 std::int64_t stored_schema_version(store::Connection& connection) {
+  if (connection.backend() == store::Backend::PostgreSQL) {
+    // A query of the catalog (not to_regclass, whose cache may miss a table
+    // another session has just committed): what is committed now.
+    auto exists = connection.prepare(
+        "SELECT count(*) FROM pg_catalog.pg_tables WHERE schemaname = current_schema() AND "
+        "tablename = 'hydrocoef_schema'");
+    exists.step();
+    if (exists.get_int(0) == 0) return 0;
+    auto version = connection.prepare("SELECT version FROM hydrocoef_schema");
+    if (!version.step()) return -1;
+    return version.get_int(0);
+  }
   auto statement = connection.prepare("PRAGMA user_version");
   statement.step();
   return statement.get_int(0);
@@ -119,8 +141,11 @@ std::int64_t stored_schema_version(store::Connection& connection) {
 }  // namespace
 
 Database::Database(const std::filesystem::path& path, OpenMode mode)
-    : path_(path), connection_(open_connection(path, mode)), read_only_(mode == OpenMode::ReadOnly) {
-  if (read_only_) {
+    : Database(store::parse_database_location(path.string()), mode) {}
+
+Database::Database(const store::DatabaseLocation& location, OpenMode mode)
+    : path_(location.display), connection_(open_connection(location, mode)), read_only_(mode == OpenMode::ReadOnly) {
+  if (read_only_ && connection_.backend() == store::Backend::SQLite) {
     // A WAL database in a folder where the -shm file cannot be made (a
     // read-only share) cannot be opened normally: read it as immutable.
     try {
@@ -134,7 +159,7 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
   // damaged file fails here with SQLite's "file is not a database".
   const std::string check = integrity_check();
   if (check != "ok")
-    throw InputError(SourceLocation{path.string()},
+    throw InputError(SourceLocation{path_.string()},
                      "database fails its integrity check: " + printable_text(check, 200));
   const int version = checked_schema_version();
   if (read_only_ && version == 0) {
@@ -147,10 +172,10 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
       // Reading needs the current schema: upgrade in place when the file can
       // be written, as a writing command would.
       try {
-        connection_ = store::Connection(path_.string(), store::Access::ReadWrite);
+        connection_ = open_connection(location, OpenMode::MustExist);
         configure(connection_);
       } catch (const InputError&) {}
-      if (sqlite3_db_readonly(connection_.handle(), "main"))
+      if (connection_.read_only())
         throw InputError(
             SourceLocation{path_.string()},
             "database is at schema version " + std::to_string(version) +
@@ -171,25 +196,9 @@ Database::Database(const std::filesystem::path& path, OpenMode mode)
 // write that fails, leaves the file byte for byte as it was (the switch
 // rewrites the header): readers never wait for an import and never see part
 // of one, and a killed import leaves only an uncommitted WAL tail that the
-// next open discards. The mode is stored in the file.
+// next open discards. The mode is stored in the file. (PostgreSQL: nothing.)
 void Database::use_wal() {
-  if (read_only_ || sqlite3_db_readonly(connection_.handle(), "main")) return;
-  auto mode_now = connection_.prepare("PRAGMA journal_mode");
-  mode_now.step();
-  const bool wal = mode_now.get_text(0) == "wal";
-  mode_now.reset();
-  if (wal) return;
-  // The switch needs every other connection to let go of the file, and SQLite
-  // answers "busy" at once (without its busy handler) while one reads it. The
-  // write before has committed, so the switch is tried for up to 2 s and
-  // otherwise left to the next writer: the file is whole in either mode, and
-  // the command that wrote it must not fail saying nothing was changed.
-  for (int attempt = 0; attempt < 200; ++attempt) {
-    const int rc = sqlite3_exec(connection_.handle(), "PRAGMA journal_mode = WAL", nullptr, nullptr, nullptr);
-    if (rc == SQLITE_OK) return;
-    if ((rc & 0xff) != SQLITE_BUSY && (rc & 0xff) != SQLITE_LOCKED) connection_.fail(rc, "switching to WAL");
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  if (!read_only_) connection_.use_wal();
 }
 
 int Database::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
@@ -197,6 +206,9 @@ int Database::latest_schema_version() { return static_cast<int>(store::migration
 int Database::schema_version() { return static_cast<int>(stored_schema_version(connection_)); }
 
 std::string Database::integrity_check() {
+  // A PostgreSQL server keeps its own pages whole; what it holds is checked
+  // by the schema check and by every row read.
+  if (connection_.backend() == store::Backend::PostgreSQL) return "ok";
   auto statement = connection_.prepare("PRAGMA quick_check");
   std::string out;
   while (statement.step()) {
@@ -224,6 +236,14 @@ int Database::checked_schema_version() {
 }
 
 void Database::check_schema(int version) {
+  if (connection_.backend() == store::Backend::PostgreSQL) {
+    if (const auto difference = store::postgresql_schema_difference(connection_, version))
+      throw InputError(SourceLocation{path_.string()},
+                       "database (schema version " + std::to_string(version) + ") " + *difference +
+                           "; expected exactly the schema hydrocoef creates, so a database changed by another "
+                           "program is refused");
+    return;
+  }
   const auto found = store::schema_of(connection_);
   if (version == 0) {
     if (!found.empty())
@@ -240,10 +260,12 @@ void Database::check_schema(int version) {
 }
 
 void Database::migrate() {
-  // Migrations may rebuild tables, which needs foreign keys off; they are
-  // checked before the commit instead. The pragma cannot change inside a
-  // transaction, so it is set around it.
-  connection_.execute("PRAGMA foreign_keys = OFF");
+  const bool sqlite = connection_.backend() == store::Backend::SQLite;
+  // SQLite migrations may rebuild tables, which needs foreign keys off; they
+  // are checked before the commit instead. The pragma cannot change inside a
+  // transaction, so it is set around it. (PostgreSQL checks every reference
+  // as it is made.)
+  if (sqlite) connection_.execute("PRAGMA foreign_keys = OFF");
   {
     store::Transaction transaction(connection_);
     // Read again under the write lock: another process may have created or
@@ -251,21 +273,31 @@ void Database::migrate() {
     const int version = checked_schema_version();
     check_schema(version);
     const int latest = latest_schema_version();
+    if (!sqlite && version == 0) connection_.execute("CREATE TABLE hydrocoef_schema (version BIGINT NOT NULL)");
     for (int next = version + 1; next <= latest; ++next) {
-      connection_.execute(store::migrations()[static_cast<std::size_t>(next - 1)].sql);
+      const store::Migration& migration = store::migrations()[static_cast<std::size_t>(next - 1)];
+      connection_.execute(sqlite ? std::string(migration.sql)
+                                 : store::postgresql_migration(migration.postgresql_sql()));
       if (next == store::kBuildSpecMigration) store::convert_surface_build_options(connection_, path_.string());
-      connection_.execute("PRAGMA user_version = " + std::to_string(next));
+      if (sqlite) {
+        connection_.execute("PRAGMA user_version = " + std::to_string(next));
+      } else {
+        connection_.execute("DELETE FROM hydrocoef_schema; INSERT INTO hydrocoef_schema VALUES (" +
+                            std::to_string(next) + ")");
+      }
     }
-    auto foreign = connection_.prepare("PRAGMA foreign_key_check");
-    if (foreign.step())
-      throw InputError(SourceLocation{path_.string()},
-                       "database: table '" + printable_text(foreign.get_text(0), 60) + "', row " +
-                           std::to_string(foreign.get_int(1)) + " refers to a missing row of table '" +
-                           printable_text(foreign.get_text(2), 60) + "'; expected every reference to hold");
-    foreign.reset();
+    if (sqlite) {
+      auto foreign = connection_.prepare("PRAGMA foreign_key_check");
+      if (foreign.step())
+        throw InputError(SourceLocation{path_.string()},
+                         "database: table '" + printable_text(foreign.get_text(0), 60) + "', row " +
+                             std::to_string(foreign.get_int(1)) + " refers to a missing row of table '" +
+                             printable_text(foreign.get_text(2), 60) + "'; expected every reference to hold");
+      foreign.reset();
+    }
     transaction.commit();
   }
-  connection_.execute("PRAGMA foreign_keys = ON");
+  if (sqlite) connection_.execute("PRAGMA foreign_keys = ON");
   use_wal();
 }
 
@@ -274,9 +306,9 @@ std::int64_t Database::body_id(const std::string& name, bool create) {
   find.bind(1, name);
   if (find.step()) return find.get_int(0);
   if (!create) return -1;
-  auto insert = connection_.prepare("INSERT INTO body(name) VALUES (?)");
-  insert.bind(1, name).run();
-  return connection_.last_insert_id();
+  auto insert = connection_.prepare("INSERT INTO body(name) VALUES (?) RETURNING id");
+  insert.bind(1, name);
+  return store::returned_id(insert);
 }
 
 double StoredForce::standard_uncertainty() const {
@@ -324,13 +356,13 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       "SELECT id, settings_key, settings, path, imported_at FROM import WHERE source_id = ? AND reading = ?");
   auto insert_import = connection_.prepare(
       "INSERT INTO import(source_id, reading, settings_key, settings, path, resolved_path, importer, importer_version, "
-      "hydrocoef_version, imported_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "hydrocoef_version, imported_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
   auto insert_source = connection_.prepare(
       "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
-      "VALUES (?, ?, ?, ?, ?, ?)");
+      "VALUES (?, ?, ?, ?, ?, ?) RETURNING id");
   auto insert_run = connection_.prepare(
       "INSERT INTO run(body_id, u, v, w, p, q, r, disturbance_key, density, kinematic_viscosity, ref_x, ref_y, "
-      "ref_z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "ref_z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
   auto insert_disturbance = connection_.prepare("INSERT INTO run_disturbance(run_id, name, value) VALUES (?, ?, ?)");
   auto run_details =
       connection_.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?");
@@ -341,8 +373,11 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       "SELECT s.path, f.source_line, s.imported_at FROM run_force f JOIN source_file s ON s.id = f.source_id "
       "WHERE f.run_id = ? AND f.component = ?");
   auto write_force = connection_.prepare(
-      "INSERT OR REPLACE INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, "
-      "source_line, import_id, uncertainty) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "INSERT INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, source_line, "
+      "import_id, uncertainty) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (run_id, component) DO UPDATE SET "
+      "total = excluded.total, pressure = excluded.pressure, viscous = excluded.viscous, "
+      "sign_convention = excluded.sign_convention, source_id = excluded.source_id, "
+      "source_line = excluded.source_line, import_id = excluded.import_id, uncertainty = excluded.uncertainty");
 
   // A component's statistics go with it: a value written without
   // statistics leaves none of an earlier value behind.
@@ -352,10 +387,18 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       "samples, flags, standard_error, spread, drift, effective_samples) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
 
   auto write_surface = connection_.prepare(
-      "INSERT OR REPLACE INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
+      "INSERT INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
       "degenerate_faces, normals_flipped, n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, "
       "reference_pressure, pressure_array, shear_array, pressure_kind, shear_convention, axes) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (run_id) DO UPDATE SET "
+      "source_id = excluded.source_id, faces = excluded.faces, area = excluded.area, "
+      "signed_volume = excluded.signed_volume, closed = excluded.closed, boundary_edges = excluded.boundary_edges, "
+      "degenerate_faces = excluded.degenerate_faces, normals_flipped = excluded.normals_flipped, "
+      "n_dA_x = excluded.n_dA_x, n_dA_y = excluded.n_dA_y, n_dA_z = excluded.n_dA_z, "
+      "x_cross_n_dA_x = excluded.x_cross_n_dA_x, x_cross_n_dA_y = excluded.x_cross_n_dA_y, "
+      "x_cross_n_dA_z = excluded.x_cross_n_dA_z, reference_pressure = excluded.reference_pressure, "
+      "pressure_array = excluded.pressure_array, shear_array = excluded.shear_array, "
+      "pressure_kind = excluded.pressure_kind, shear_convention = excluded.shear_convention, axes = excluded.axes");
 
   for (const auto& batch : batches) {
     ImportOutcome outcome;
@@ -375,9 +418,8 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
           .bind(3, static_cast<std::int64_t>(batch.source.size_bytes))
           .bind(4, batch.source.importer)
           .bind(5, batch.source.importer_version)
-          .bind(6, now)
-          .run();
-      source_id = connection_.last_insert_id();
+          .bind(6, now);
+      source_id = store::returned_id(insert_source);
     }
     // The import: those bytes read with these settings.
     find_import.bind(1, source_id).bind(2, options.also);
@@ -417,9 +459,8 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
         .bind(7, batch.source.importer)
         .bind(8, batch.source.importer_version)
         .bind(9, std::string_view(kVersion))
-        .bind(10, now)
-        .run();
-    const std::int64_t import_id = connection_.last_insert_id();
+        .bind(10, now);
+    const std::int64_t import_id = store::returned_id(insert_import);
     outcome.import_id = import_id;
 
     for (const auto& run : batch.runs) {
@@ -464,9 +505,8 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
             .bind(10, run.fluid.kinematic_viscosity_m2_s)
             .bind(11, run.reference_point_b[0])
             .bind(12, run.reference_point_b[1])
-            .bind(13, run.reference_point_b[2])
-            .run();
-        run_id = connection_.last_insert_id();
+            .bind(13, run.reference_point_b[2]);
+        run_id = store::returned_id(insert_run);
         for (const auto& [name, value] : run.key.disturbances)
           insert_disturbance.bind(1, run_id).bind(2, name).bind(3, canonical(value)).run();
         created = true;
@@ -555,9 +595,11 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
 }
 
 std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run) {
+  // One state of the database for all the statements below.
+  const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
       "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z, body.id "
-      "FROM run JOIN body ON body.id = run.body_id WHERE 1";
+      "FROM run JOIN body ON body.id = run.body_id WHERE TRUE";
   if (body) sql += " AND run.body_id = ?1";
   if (run) sql += " AND run.id = ?2";
   sql += " ORDER BY body.name, u, v, w, p, q, r, disturbance_key";
@@ -779,6 +821,8 @@ void Database::save_numerical_uncertainties(const std::vector<NumericalUncertain
 }
 
 std::vector<NumericalUncertaintyRecord> Database::numerical_uncertainties(const std::optional<std::string>& body) {
+  // One state of the database for all the statements below.
+  const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
       "SELECT n.body_id, body.name, u, v, w, p, q, r, disturbance_key, component, mesh_parameter, fine_level, "
       "levels, h1, h2, h3, phi1, phi2, phi3, convergence, apparent_order, extrapolated, relative_error, "
@@ -931,7 +975,7 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
   auto insert = connection_.prepare(
       "INSERT INTO fit(name, body_id, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
       "created_at, mirror, weighting, chi2_reduced, covariance) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-      "?)");
+      "?) RETURNING id");
   insert.bind(1, fit.name)
       .bind(2, body)
       .bind(3, fit.dof)
@@ -947,9 +991,8 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
       .bind(13, fit.mirror)
       .bind(14, fit.weighting)
       .bind(15, fit.chi2_reduced)
-      .bind(16, fit.covariance.empty() ? std::string() : escape::json_text(nlohmann::json(fit.covariance)))
-      .run();
-  const std::int64_t id = connection_.last_insert_id();
+      .bind(16, fit.covariance.empty() ? std::string() : escape::json_text(nlohmann::json(fit.covariance)));
+  const std::int64_t id = store::returned_id(insert);
   auto coefficient = connection_.prepare(
       "INSERT INTO fit_coefficient(fit_id, position, term, value, std_error) VALUES (?, ?, ?, ?, ?)");
   for (std::size_t i = 0; i < fit.coefficients.size(); ++i) {
@@ -962,6 +1005,8 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
 }
 
 std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
+  // One state of the database for all the statements below.
+  const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
       "SELECT fit.id, fit.name, body.name, dof, variable, terms, loss, run_filter, sign_convention, n, rmse, r2, "
       "created_at, stale, mirror, weighting, chi2_reduced, covariance FROM fit JOIN body ON body.id = fit.body_id";
@@ -1044,7 +1089,7 @@ std::int64_t Database::save_surface(const SurfaceRecord& surface) {
   connection_.prepare("DELETE FROM surface WHERE name = ?").bind(1, surface.name).run();
   auto insert = connection_.prepare(
       "INSERT INTO surface(name, body_id, kind, method, definition, data, quality, created_at, stale) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, 0)");
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, 0) RETURNING id");
   insert.bind(1, surface.name)
       .bind(2, body)
       .bind(3, surface.kind)
@@ -1052,9 +1097,8 @@ std::int64_t Database::save_surface(const SurfaceRecord& surface) {
       .bind(5, surface.definition)
       .bind_doubles(6, surface.data)
       .bind(7, surface.quality)
-      .bind(8, utc_timestamp_now())
-      .run();
-  const std::int64_t id = connection_.last_insert_id();
+      .bind(8, utc_timestamp_now());
+  const std::int64_t id = store::returned_id(insert);
   link_runs("surface_run", "surface_id", id, surface.run_ids);
   transaction.commit();
   use_wal();
@@ -1063,9 +1107,11 @@ std::int64_t Database::save_surface(const SurfaceRecord& surface) {
 
 std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::string>& body,
                                                    const std::optional<std::string>& name) {
+  // One state of the database for all the statements below.
+  const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
       "SELECT surface.id, surface.name, body.name, kind, method, definition, data, quality, created_at, stale "
-      "FROM surface JOIN body ON body.id = surface.body_id WHERE 1";
+      "FROM surface JOIN body ON body.id = surface.body_id WHERE TRUE";
   if (body) sql += " AND body.name = ?1";
   if (name) sql += " AND surface.name = ?2";
   sql += " ORDER BY surface.name";

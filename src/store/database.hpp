@@ -7,14 +7,17 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "src/core/run.hpp"
-#include "src/store/sqlite.hpp"
+#include "src/store/connection.hpp"
+#include "src/store/location.hpp"
 
 namespace hydrocoef {
 
@@ -224,6 +227,20 @@ struct SurfaceRecord {
 struct PmmRecord;
 struct PmmSaved;
 
+/// What merging one shard did (Database::merge).
+struct MergeOutcome {
+  std::string shard;                ///< its location
+  std::size_t imports_added = 0;    ///< imports (a file's bytes with its settings) new here
+  std::size_t imports_already = 0;  ///< imports here before: nothing of them added
+  std::size_t runs_created = 0;
+  std::size_t runs_extended = 0;  ///< runs here before that gained components
+  std::size_t components = 0;     ///< force components added
+  std::size_t fits_added = 0, fits_already = 0;
+  std::size_t surfaces_added = 0, surfaces_already = 0;
+  std::size_t mesh_studies_added = 0, mesh_studies_already = 0;  ///< rows of numerical uncertainty
+  std::size_t pmm_added = 0, pmm_already = 0;                    ///< forced-oscillation analyses
+};
+
 class Database {
  public:
   /// CreateIfMissing and MustExist open for writing; ReadOnly never writes
@@ -240,7 +257,13 @@ class Database {
   /// version (an added trigger, view or index, a dropped column), or was
   /// written by a newer hydrocoef. Several processes may open a new file at
   /// once: the migration re-reads the version inside its transaction.
+  ///
+  /// `path` may also be a location (src/store/location.hpp): "sqlite:PATH",
+  /// or a "postgresql://" URL. A PostgreSQL database is checked the same way
+  /// (its schema, every value read) and behaves the same: each write is one
+  /// transaction, writers wait for each other (HYDROCOEF_DB_TIMEOUT).
   explicit Database(const std::filesystem::path& path, OpenMode mode = OpenMode::CreateIfMissing);
+  Database(const store::DatabaseLocation& location, OpenMode mode);
 
   /// The migration number the database is at.
   int schema_version();
@@ -307,14 +330,36 @@ class Database {
   /// `with_history` false their history blobs are left empty.
   std::vector<PmmRecord> pmm_records(const std::optional<std::string>& body = std::nullopt, bool with_history = true);
 
-  /// "ok", or SQLite's list of problems.
+  /// Merges shard databases (any locations: SQLite files made by cluster
+  /// jobs, or PostgreSQL databases) into this one, in one transaction: their
+  /// files, imports (with their provenance as recorded: paths, settings,
+  /// times, versions), runs, force components with statistics, surface
+  /// integrals, mesh studies, forced-oscillation analyses, fits and surfaces
+  /// (their run ids mapped to the runs here). What is here already adds
+  /// nothing, so merging twice changes nothing. A conflict is refused as an
+  /// import would refuse it (a component of a run from two files, a file
+  /// imported with other settings, a fit or surface of one name that
+  /// differs), with InputError naming the shard; nothing is then merged.
+  /// `progress` (may be empty) is called after each shard.
+  std::vector<MergeOutcome> merge(const std::vector<std::string>& shards,
+                                  const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+  /// Copies every row of `source` into this database, which must be empty
+  /// (InputError otherwise), ids and flags as they are, in one transaction;
+  /// returns the rows copied per table. Between backends, a copy and a copy
+  /// back hold the same rows as the original.
+  std::vector<std::pair<std::string, std::size_t>> copy_from(Database& source);
+
+  /// "ok", or SQLite's list of problems ("ok" on PostgreSQL, whose server keeps its pages whole).
   std::string integrity_check();
   /// True when the database was opened read-only (OpenMode::ReadOnly).
   bool read_only() const { return read_only_; }
+  /// The file, or the PostgreSQL URL (how messages name the database).
   const std::filesystem::path& path() const { return path_; }
+  store::Backend backend() const { return connection_.backend(); }
 
  private:
   void migrate();
+  MergeOutcome merge_one(Database& shard);
   /// Switches the file to WAL mode, after a write has committed.
   void use_wal();
   /// The stored schema version, refused unless 0..latest.

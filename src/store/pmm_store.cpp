@@ -9,6 +9,7 @@
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
 #include "src/core/numbers.hpp"
+#include "src/store/backend.hpp"
 #include "src/store/checked_row.hpp"
 #include "src/store/database.hpp"
 #include "src/store/pmm_record.hpp"
@@ -45,7 +46,8 @@ std::vector<PmmSaved> Database::save_pmm(const std::vector<PmmRecord>& records) 
       "INSERT INTO pmm_run(body_id, u, v, w, p, q, r, dof, amplitude, omega, phase, medium, motion_source, "
       "window_start, window_end, periods, transient_periods, samples, harmonics, size, keulegan_carpenter, "
       "kinematic_viscosity, stokes_number, rho, displaced_volume, source_path, source_sha256, importer, history, "
-      "created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) "
+      "RETURNING id");
   auto insert_coefficient = connection_.prepare(
       "INSERT INTO pmm_coefficient(pmm_run_id, component, mean, added_mass, added_mass_se, damping, damping_se, "
       "explained, harmonics) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
@@ -91,9 +93,7 @@ std::vector<PmmSaved> Database::save_pmm(const std::vector<PmmRecord>& records) 
     insert.bind(c++, record.importer);
     insert.bind_doubles(c++, record.history);
     insert.bind(c++, record.created_at.empty() ? utc_timestamp_now() : record.created_at);
-    insert.run();
-    insert.reset();
-    saved.id = connection_.last_insert_id();
+    saved.id = store::returned_id(insert);
     for (const auto& coefficient : record.coefficients) {
       insert_coefficient.bind(1, saved.id).bind(2, kForceNames[coefficient.component]);
       insert_coefficient.bind(3, coefficient.mean).bind(4, coefficient.added_mass);
@@ -110,6 +110,8 @@ std::vector<PmmSaved> Database::save_pmm(const std::vector<PmmRecord>& records) 
 }
 
 std::vector<PmmRecord> Database::pmm_records(const std::optional<std::string>& body, bool with_history) {
+  // One state of the database for all the statements below.
+  const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
       "SELECT pmm_run.id, body.name, u, v, w, p, q, r, dof, amplitude, omega, phase, medium, motion_source, "
       "window_start, window_end, periods, transient_periods, samples, harmonics, size, keulegan_carpenter, "

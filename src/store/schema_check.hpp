@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "src/store/sqlite.hpp"
+#include "src/store/connection.hpp"
 
 namespace hydrocoef::store {
 
@@ -33,5 +33,12 @@ const std::vector<SchemaEntry>& expected_schema(int version);
 /// hydrocoef does not create"), or nullopt when the schemas are the same.
 std::optional<std::string> schema_difference(const std::vector<SchemaEntry>& expected,
                                              const std::vector<SchemaEntry>& found);
+
+/// The same check for a PostgreSQL database at `version`, in its current
+/// schema (search_path): its tables and their columns (name, type, NOT
+/// NULL), its triggers and rules, and no views, against what the migrations
+/// create (each SQLite type as the dialect layer turns it). Indexes and
+/// constraints are left to PostgreSQL, which enforces them.
+std::optional<std::string> postgresql_schema_difference(Connection& connection, int version);
 
 }  // namespace hydrocoef::store

@@ -10,7 +10,7 @@
 #include <random>
 #include <sstream>
 
-#include "src/store/sqlite.hpp"
+#include "src/store/connection.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sphere_cases.hpp"
 #include "tests/support/temp_dir.hpp"

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
-#include "src/store/sqlite.hpp"
+#include "src/store/connection.hpp"
 #include "tests/support/expect_input_error.hpp"
 #include "tests/support/import_batch.hpp"
 #include "tests/support/older_database.hpp"

@@ -30,6 +30,7 @@
 
 #include "src/core/error.hpp"
 #include "src/store/database.hpp"
+#include "tests/support/process_group.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -136,25 +137,6 @@ Census census(const fs::path& db_path) {
   return out;
 }
 
-/// The /proc entries of the live (not zombie) processes of a process group.
-std::vector<fs::path> live_processes(pid_t group) {
-  std::vector<fs::path> out;
-  std::error_code ec;
-  for (const auto& proc : fs::directory_iterator("/proc", ec)) {
-    const std::string pid = proc.path().filename().string();
-    if (pid.empty() || !std::isdigit(static_cast<unsigned char>(pid[0]))) continue;
-    std::ifstream stat(proc.path() / "stat");
-    std::string line;
-    if (!std::getline(stat, line) || line.rfind(')') == std::string::npos) continue;
-    // pid (comm) state ppid pgrp ...; comm may hold spaces, so count from ')'.
-    std::istringstream fields(line.substr(line.rfind(')') + 1));
-    std::string state;
-    long ppid = 0, pgrp = 0;
-    if (fields >> state >> ppid >> pgrp && pgrp == group && state != "Z" && state != "X") out.push_back(proc.path());
-  }
-  return out;
-}
-
 /// True when a process of the group has the database file open (the
 /// hydrocoef the shell runs is between opening and closing its Database).
 bool database_open_in_group(pid_t group) {
@@ -166,39 +148,6 @@ bool database_open_in_group(pid_t group) {
     }
   }
   return false;
-}
-
-/// Starts `script` under /bin/sh in a process group of its own.
-pid_t start_group(const std::string& script, const fs::path& cwd) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    setpgid(0, 0);
-    if (chdir(cwd.c_str()) != 0) _exit(127);
-    execl("/bin/sh", "sh", "-c", script.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  setpgid(pid,
-          pid);  // also from here, so that the kill cannot race the child's setpgid
-  return pid;
-}
-
-/// SIGKILLs the whole group (the shell and the hydrocoef it runs) and waits
-/// until none of it is left.
-void kill_group(pid_t pid) {
-  kill(-pid, SIGKILL);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  const auto deadline = Clock::now() + std::chrono::seconds(10);
-  while (!live_processes(pid).empty() && Clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-}
-
-std::set<std::string> lines_of(const fs::path& path) {
-  std::set<std::string> out;
-  std::ifstream in(path);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) out.insert(line);
-  return out;
 }
 
 /// Reader: opens the database through the library and lists the runs, again

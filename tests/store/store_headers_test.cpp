@@ -1,13 +1,11 @@
-// What including the store costs its users: database.hpp (and the sqlite.hpp
-// it includes) declare SQLite's handles themselves and leave <sqlite3.h> to
-// src/store's sources, so code that only uses a Database never sees SQLite's
-// C API. This file includes nothing else before the store's header.
+// What including the store costs its users: database.hpp (and the
+// connection.hpp it includes) leave both backends' C headers (<sqlite3.h>,
+// <libpq-fe.h>) to src/store's sources, so code that only uses a Database
+// never sees SQLite's or libpq's C API. This file includes nothing else
+// before the store's header.
 #include "src/store/database.hpp"
 
 #include <gtest/gtest.h>
-
-#include <type_traits>
-#include <utility>
 
 namespace hydrocoef {
 namespace {
@@ -17,11 +15,15 @@ constexpr bool kSqliteHeaderIncluded = true;
 #else
 constexpr bool kSqliteHeaderIncluded = false;
 #endif
+#ifdef LIBPQ_FE_H
+constexpr bool kLibpqHeaderIncluded = true;
+#else
+constexpr bool kLibpqHeaderIncluded = false;
+#endif
 
-TEST(StoreHeaders, DatabaseHeaderDoesNotIncludeSqlite) {
+TEST(StoreHeaders, DatabaseHeaderIncludesNeitherBackendsHeader) {
   EXPECT_FALSE(kSqliteHeaderIncluded) << "src/store/database.hpp pulls in <sqlite3.h>";
-  // The connection still holds SQLite's handle type, only declared.
-  EXPECT_TRUE((std::is_same_v<decltype(std::declval<store::Connection&>().handle()), sqlite3*>));
+  EXPECT_FALSE(kLibpqHeaderIncluded) << "src/store/database.hpp pulls in <libpq-fe.h>";
 }
 
 }  // namespace

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "src/store/connection.hpp"
 #include "src/store/migrations.hpp"
-#include "src/store/sqlite.hpp"
 
 namespace hydrocoef::test {
 

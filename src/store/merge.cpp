@@ -1,0 +1,411 @@
+// Database::merge and Database::copy_from: shards made by cluster jobs into
+// one database, and a whole database from one backend to another.
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "src/core/error.hpp"
+#include "src/core/names.hpp"
+#include "src/core/numbers.hpp"
+#include "src/store/checked_row.hpp"
+#include "src/store/database.hpp"
+#include "src/store/pmm_record.hpp"
+
+namespace hydrocoef {
+namespace {
+
+double canonical(double value) { return value == 0.0 ? 0.0 : value; }  // folds -0 into 0
+
+bool same_value(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+bool same_fit(const FitRecord& a, const FitRecord& b) {
+  if (std::tie(a.body, a.dof, a.variable, a.terms, a.loss, a.run_filter, a.mirror, a.weighting, a.n) !=
+          std::tie(b.body, b.dof, b.variable, b.terms, b.loss, b.run_filter, b.mirror, b.weighting, b.n) ||
+      a.sign != b.sign || a.coefficients.size() != b.coefficients.size() || a.covariance != b.covariance)
+    return false;
+  for (std::size_t i = 0; i < a.coefficients.size(); ++i)
+    if (a.coefficients[i].term != b.coefficients[i].term || a.coefficients[i].value != b.coefficients[i].value ||
+        a.coefficients[i].std_error != b.coefficients[i].std_error)
+      return false;
+  return true;
+}
+
+bool same_surface(const SurfaceRecord& a, const SurfaceRecord& b) {
+  return std::tie(a.body, a.kind, a.method, a.definition, a.quality, a.data) ==
+         std::tie(b.body, b.kind, b.method, b.definition, b.quality, b.data);
+}
+
+std::string pmm_identity(const PmmRecord& r) {
+  return r.body + "\n" + r.source_sha256 + "\n" + std::to_string(r.dof) + "\n" + shortest_number(r.amplitude) + "\n" +
+         shortest_number(r.omega) + "\n" + shortest_number(canonical(r.phase)) + "\n" + pmm_medium_name(r.medium);
+}
+
+}  // namespace
+
+std::vector<MergeOutcome> Database::merge(const std::vector<std::string>& shards,
+                                          const std::function<void(std::size_t, std::size_t)>& progress) {
+  if (read_only_) throw InputError(SourceLocation{path_.string()}, "database opened read-only; cannot merge into it");
+  std::vector<MergeOutcome> out;
+  store::Transaction transaction(connection_);
+  for (std::size_t i = 0; i < shards.size(); ++i) {
+    Database shard(shards[i], OpenMode::ReadOnly);
+    out.push_back(merge_one(shard));
+    if (progress) progress(i + 1, shards.size());
+  }
+  transaction.commit();
+  use_wal();
+  return out;
+}
+
+MergeOutcome Database::merge_one(Database& shard) {
+  MergeOutcome outcome;
+  outcome.shard = shard.path().string();
+  const SourceLocation where{outcome.shard};
+  constexpr std::int64_t kMost = std::numeric_limits<std::int64_t>::max();
+
+  // The files, by the SHA-256 of their bytes.
+  std::map<std::int64_t, std::int64_t> source_of;  // shard id -> id here
+  {
+    auto find = connection_.prepare("SELECT id FROM source_file WHERE sha256 = ?");
+    auto insert = connection_.prepare(
+        "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
+        "VALUES (?, ?, ?, ?, ?, ?) RETURNING id");
+    for (const SourceRecord& source : shard.sources()) {
+      find.bind(1, source.provenance.sha256);
+      if (find.step()) {
+        source_of[source.id] = find.get_int(0);
+        find.reset();
+        continue;
+      }
+      find.reset();
+      insert.bind(1, source.provenance.path)
+          .bind(2, source.provenance.sha256)
+          .bind(3, static_cast<std::int64_t>(source.provenance.size_bytes))
+          .bind(4, source.provenance.importer)
+          .bind(5, source.provenance.importer_version)
+          .bind(6, source.imported_at);
+      source_of[source.id] = store::returned_id(insert);
+    }
+  }
+  const auto mapped_source = [&](std::int64_t id) {
+    const auto found = source_of.find(id);
+    if (found == source_of.end())
+      throw InputError(where, "a force refers to source file " + std::to_string(id) +
+                                  ", which the shard does not have; expected every reference to hold");
+    return found->second;
+  };
+
+  // The imports: a file's bytes read with one set of settings. One already
+  // here with the same settings adds nothing; with other settings it is
+  // refused, as a second import would be.
+  std::map<std::int64_t, std::int64_t> import_of;
+  std::set<std::int64_t> imports_here;  // shard imports that were here before
+  {
+    std::vector<std::int64_t> ids;
+    auto list = shard.connection_.prepare("SELECT id FROM import ORDER BY id");
+    while (list.step()) ids.push_back(store::CheckedRow(list, outcome.shard, "import", 0).integer(0, 1, kMost));
+    auto find = connection_.prepare(
+        "SELECT id, settings_key, path, imported_at FROM import WHERE source_id = ? AND reading = ?");
+    auto insert = connection_.prepare(
+        "INSERT INTO import(source_id, reading, settings_key, settings, path, resolved_path, importer, "
+        "importer_version, hydrocoef_version, imported_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
+    for (const std::int64_t id : ids) {
+      const auto record = shard.import_record(id);
+      if (!record) continue;
+      const std::int64_t source = mapped_source(record->source_id);
+      find.bind(1, source).bind(2, record->reading);
+      if (find.step()) {
+        const std::int64_t here = find.get_int(0);
+        const std::string key = find.get_text(1), path = find.get_text(2), at = find.get_text(3);
+        find.reset();
+        if (key != record->settings_key)
+          throw InputError(where, "'" + printable_text(record->path, 80) + "' (SHA-256 " +
+                                      record->sha256.substr(0, 12) + "...) is imported here already, on " + at +
+                                      " from '" + printable_text(path, 80) +
+                                      "', with other settings; expected the same settings, or the runs of one of "
+                                      "the two imports deleted first (hydrocoef runs delete)");
+        import_of[id] = here;
+        imports_here.insert(id);
+        ++outcome.imports_already;
+        continue;
+      }
+      find.reset();
+      insert.bind(1, source)
+          .bind(2, record->reading)
+          .bind(3, record->settings_key)
+          .bind(4, record->settings)
+          .bind(5, record->path)
+          .bind(6, record->resolved_path)
+          .bind(7, record->importer)
+          .bind(8, record->importer_version)
+          .bind(9, record->hydrocoef_version)
+          .bind(10, record->imported_at);
+      import_of[id] = store::returned_id(insert);
+      ++outcome.imports_added;
+    }
+  }
+
+  // The runs, by body and key, and their force components.
+  std::map<std::int64_t, std::int64_t> run_of;
+  std::map<std::int64_t, std::int64_t> surface_source;  // shard run id -> shard source id
+  {
+    auto list = shard.connection_.prepare("SELECT run_id, source_id FROM run_surface");
+    while (list.step()) {
+      const store::CheckedRow row(list, outcome.shard, "run_surface", list.get_int(0));
+      surface_source[row.integer(0, 1, kMost)] = row.integer(1, 1, kMost);
+    }
+  }
+  auto run_details =
+      connection_.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?");
+  auto update_fluid = connection_.prepare(
+      "UPDATE run SET density = coalesce(density, ?), kinematic_viscosity = coalesce(kinematic_viscosity, ?) "
+      "WHERE id = ?");
+  auto insert_run = connection_.prepare(
+      "INSERT INTO run(body_id, u, v, w, p, q, r, disturbance_key, density, kinematic_viscosity, ref_x, ref_y, "
+      "ref_z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
+  auto insert_disturbance = connection_.prepare("INSERT INTO run_disturbance(run_id, name, value) VALUES (?, ?, ?)");
+  auto existing_force = connection_.prepare(
+      "SELECT s.path, f.source_line, f.import_id FROM run_force f JOIN source_file s ON s.id = f.source_id "
+      "WHERE f.run_id = ? AND f.component = ?");
+  auto insert_force = connection_.prepare(
+      "INSERT INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, source_line, "
+      "import_id, uncertainty) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  auto insert_statistics = connection_.prepare(
+      "INSERT INTO run_force_statistics(run_id, component, abscissa, window_method, window_first, window_last, "
+      "samples, flags, standard_error, spread, drift, effective_samples) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  auto has_surface = connection_.prepare("SELECT count(*) FROM run_surface WHERE run_id = ?");
+  auto insert_surface = connection_.prepare(
+      "INSERT INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
+      "degenerate_faces, normals_flipped, n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, "
+      "reference_pressure, pressure_array, shear_array, pressure_kind, shear_convention, axes) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  for (const StoredRun& run : shard.runs()) {
+    const std::int64_t body = body_id(run.key.body, true);
+    std::int64_t here = 0;
+    bool created = false;
+    if (const auto existing = find_run_id(body, run.key)) {
+      here = *existing;
+      run_details.bind(1, here);
+      run_details.step();
+      const auto density = run_details.get_optional_double(0);
+      const auto viscosity = run_details.get_optional_double(1);
+      const std::array<double, 3> ref{run_details.get_double(2), run_details.get_double(3), run_details.get_double(4)};
+      run_details.reset();
+      for (std::size_t i = 0; i < 3; ++i)
+        if (!same_value(ref[i], run.reference_point_b[i]))
+          throw InputError(where, "run " + describe(run.key) +
+                                      " is here already with another moment reference point; expected the same "
+                                      "reference point for every source of one run");
+      if ((density && run.fluid.density_kg_m3 && !same_value(*density, *run.fluid.density_kg_m3)) ||
+          (viscosity && run.fluid.kinematic_viscosity_m2_s &&
+           !same_value(*viscosity, *run.fluid.kinematic_viscosity_m2_s)))
+        throw InputError(
+            where, "run " + describe(run.key) + " is here already with other fluid properties (density or viscosity)");
+      update_fluid.bind(1, run.fluid.density_kg_m3).bind(2, run.fluid.kinematic_viscosity_m2_s).bind(3, here).run();
+    } else {
+      insert_run.bind(1, body);
+      for (int i = 0; i < 6; ++i) insert_run.bind(2 + i, canonical(run.key.nu_b[static_cast<std::size_t>(i)]));
+      insert_run.bind(8, disturbance_signature(run.key.disturbances))
+          .bind(9, run.fluid.density_kg_m3)
+          .bind(10, run.fluid.kinematic_viscosity_m2_s)
+          .bind(11, run.reference_point_b[0])
+          .bind(12, run.reference_point_b[1])
+          .bind(13, run.reference_point_b[2]);
+      here = store::returned_id(insert_run);
+      for (const auto& [name, value] : run.key.disturbances)
+        insert_disturbance.bind(1, here).bind(2, name).bind(3, canonical(value)).run();
+      created = true;
+      ++outcome.runs_created;
+    }
+    run_of[run.id] = here;
+
+    bool extended = false;
+    for (std::size_t i = 0; i < 6; ++i) {
+      const auto& force = run.tau_b[i];
+      if (!force) continue;
+      const std::string component(kForceNames[i]);
+      existing_force.bind(1, here).bind(2, component);
+      if (existing_force.step()) {
+        const std::string previous = existing_force.get_text(0) + ":" + existing_force.get_text(1);
+        const std::int64_t previous_import = existing_force.is_null(2) ? 0 : existing_force.get_int(2);
+        existing_force.reset();
+        // The same import, here before: the same value.
+        if (force->import_id != 0 && imports_here.count(force->import_id) &&
+            import_of.at(force->import_id) == previous_import)
+          continue;
+        throw InputError(where, "run " + describe(run.key) + " has " + component + " from '" +
+                                    printable_text(force->source_path, 80) + "' and here from " +
+                                    printable_text(previous, 80) +
+                                    "; expected each component of a run from one file (delete one of them first)");
+      }
+      existing_force.reset();
+      insert_force.bind(1, here)
+          .bind(2, component)
+          .bind(3, force->value.total)
+          .bind(4, force->value.pressure)
+          .bind(5, force->value.viscous)
+          .bind(6, to_string(force->sign))
+          .bind(7, mapped_source(force->source_id))
+          .bind(8, static_cast<std::int64_t>(force->source_line));
+      if (force->import_id != 0 && import_of.count(force->import_id))
+        insert_force.bind(9, import_of.at(force->import_id));
+      else
+        insert_force.bind_null(9);
+      insert_force.bind(10, force->value.uncertainty).run();
+      if (force->statistics) {
+        const StoredStatistics& s = *force->statistics;
+        std::string flags;
+        for (const auto& flag : s.flags) flags += (flags.empty() ? "" : ",") + flag;
+        insert_statistics.bind(1, here)
+            .bind(2, component)
+            .bind(3, s.abscissa)
+            .bind(4, s.window_method)
+            .bind(5, s.window_first)
+            .bind(6, s.window_last)
+            .bind(7, static_cast<std::int64_t>(s.samples))
+            .bind(8, flags)
+            .bind(9, s.values.standard_error)
+            .bind(10, s.values.spread)
+            .bind(11, s.values.drift)
+            .bind(12, s.values.effective_samples)
+            .run();
+      }
+      ++outcome.components;
+      extended = true;
+    }
+    if (extended && !created) ++outcome.runs_extended;
+    if (run.surface && surface_source.count(run.id)) {
+      has_surface.bind(1, here);
+      has_surface.step();
+      const bool present = has_surface.get_int(0) > 0;
+      has_surface.reset();
+      if (!present) {
+        const auto& g = *run.surface;
+        insert_surface.bind(1, here)
+            .bind(2, mapped_source(surface_source.at(run.id)))
+            .bind(3, static_cast<std::int64_t>(g.faces))
+            .bind(4, g.area)
+            .bind(5, g.signed_volume)
+            .bind(6, static_cast<std::int64_t>(g.closed))
+            .bind(7, static_cast<std::int64_t>(g.boundary_edges))
+            .bind(8, static_cast<std::int64_t>(g.degenerate_faces))
+            .bind(9, static_cast<std::int64_t>(g.normals_flipped));
+        for (int i = 0; i < 3; ++i) {
+          insert_surface.bind(10 + i, g.integral_n_dA_b[static_cast<std::size_t>(i)]);
+          insert_surface.bind(13 + i, g.integral_x_cross_n_dA_b[static_cast<std::size_t>(i)]);
+        }
+        insert_surface.bind(16, g.reference_pressure)
+            .bind(17, g.pressure_array)
+            .bind(18, g.shear_array)
+            .bind(19, g.pressure_kind)
+            .bind(20, g.shear_convention)
+            .bind(21, g.axes)
+            .run();
+      }
+    }
+  }
+  const auto mapped_runs = [&](const std::vector<std::int64_t>& ids) {
+    std::vector<std::int64_t> out;
+    for (const auto id : ids)
+      if (const auto found = run_of.find(id); found != run_of.end()) out.push_back(found->second);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+
+  // Mesh studies, by body and physical key: the same rows, or none here.
+  {
+    const auto key_of = [](const NumericalUncertaintyRecord& r) {
+      return r.key.body + "\n" + shortest_number(r.key.nu_b[0]) + "," + shortest_number(r.key.nu_b[1]) + "," +
+             shortest_number(r.key.nu_b[2]) + "," + shortest_number(r.key.nu_b[3]) + "," +
+             shortest_number(r.key.nu_b[4]) + "," + shortest_number(r.key.nu_b[5]) + "\n" +
+             disturbance_signature(r.key.disturbances);
+    };
+    std::map<std::string, std::vector<NumericalUncertaintyRecord>> here, theirs;
+    for (auto& r : numerical_uncertainties()) here[key_of(r)].push_back(std::move(r));
+    for (auto& r : shard.numerical_uncertainties()) theirs[key_of(r)].push_back(std::move(r));
+    std::vector<NumericalUncertaintyRecord> added;
+    for (auto& [key, records] : theirs) {
+      const auto found = here.find(key);
+      if (found == here.end()) {
+        outcome.mesh_studies_added += records.size();
+        for (auto& r : records) added.push_back(std::move(r));
+        continue;
+      }
+      bool same = found->second.size() == records.size();
+      for (std::size_t i = 0; same && i < records.size(); ++i)
+        same = found->second[i].component == records[i].component && found->second[i].phi == records[i].phi &&
+               found->second[i].h == records[i].h && found->second[i].fine_level == records[i].fine_level;
+      if (!same)
+        throw InputError(where, "the mesh study of run " + describe(records.front().key) +
+                                    " differs from the one here; expected the same study (hydrocoef gci)");
+      outcome.mesh_studies_already += records.size();
+    }
+    if (!added.empty()) save_numerical_uncertainties(added);
+  }
+
+  // Forced-oscillation analyses, by body, file and motion.
+  {
+    std::set<std::string> here;
+    for (const auto& r : pmm_records(std::nullopt, false)) here.insert(pmm_identity(r));
+    std::vector<PmmRecord> added;
+    for (auto& r : shard.pmm_records(std::nullopt, true)) {
+      if (here.count(pmm_identity(r))) {
+        ++outcome.pmm_already;
+        continue;
+      }
+      added.push_back(std::move(r));
+    }
+    outcome.pmm_added = added.size();
+    if (!added.empty()) save_pmm(added);
+  }
+  // Fits and surfaces by name: one of the same name here must be the same.
+  auto keep_record = [&](const char* table, std::int64_t id, const std::string& created_at, bool stale) {
+    connection_.prepare(std::string("UPDATE ") + table + " SET created_at = ?, stale = ? WHERE id = ?")
+        .bind(1, created_at)
+        .bind(2, static_cast<std::int64_t>(stale))
+        .bind(3, id)
+        .run();
+  };
+  {
+    std::map<std::string, FitRecord> here;
+    for (auto& fit : fits()) here.emplace(fit.name, std::move(fit));
+    for (FitRecord fit : shard.fits()) {
+      if (const auto found = here.find(fit.name); found != here.end()) {
+        if (!same_fit(found->second, fit))
+          throw InputError(where, "fit '" + fit.name +
+                                      "' is here already with other terms or coefficients; expected the same fit, "
+                                      "or one of them renamed or deleted first");
+        ++outcome.fits_already;
+        continue;
+      }
+      fit.run_ids = mapped_runs(fit.run_ids);
+      const std::int64_t id = insert_fit(fit);
+      keep_record("fit", id, fit.created_at, fit.stale);
+      ++outcome.fits_added;
+    }
+  }
+  {
+    std::map<std::string, SurfaceRecord> here;
+    for (auto& surface : surfaces()) here.emplace(surface.name, std::move(surface));
+    for (SurfaceRecord surface : shard.surfaces()) {
+      if (const auto found = here.find(surface.name); found != here.end()) {
+        if (!same_surface(found->second, surface))
+          throw InputError(where, "surface '" + surface.name +
+                                      "' is here already with other values; expected the same surface, or one of "
+                                      "them renamed first");
+        ++outcome.surfaces_already;
+        continue;
+      }
+      surface.run_ids = mapped_runs(surface.run_ids);
+      const std::int64_t id = save_surface(surface);
+      keep_record("surface", id, surface.created_at, surface.stale);
+      ++outcome.surfaces_added;
+    }
+  }
+
+  return outcome;
+}
+
+}  // namespace hydrocoef

@@ -1,0 +1,444 @@
+// The store's promises on both backends (src/store/connection.hpp): the same
+// Database calls give the same rows on an SQLite file and on a PostgreSQL
+// server (started by scripts/postgresql-test-server.sh): migrations, exact
+// doubles and blobs, one transaction per write, no-op re-imports, refused
+// conflicts that change nothing, staleness triggers, deletes, forced-
+// oscillation records, the schema check, and writers that wait for each
+// other.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <thread>
+
+#include "src/core/error.hpp"
+#include "src/store/database.hpp"
+#include "src/store/pmm_record.hpp"
+#include "tests/support/import_batch.hpp"
+#include "tests/support/test_database.hpp"
+
+namespace hydrocoef {
+namespace {
+
+using test::TestDatabase;
+
+ImportedRun make_run(std::array<double, 6> nu, std::size_t component, double value, std::size_t line = 1) {
+  ImportedRun run;
+  run.key.body = "sphere";
+  run.key.nu_b = nu;
+  run.tau_b[component] = ForceComponent{value, std::nullopt, std::nullopt};
+  run.source_line = line;
+  return run;
+}
+
+class StoreBackends : public testing::TestWithParam<store::Backend> {
+ protected:
+  TestDatabase db_{GetParam()};
+};
+
+TEST_P(StoreBackends, NewDatabaseGetsEveryMigrationAndOpeningAgainChangesNothing) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  {
+    Database db(db_.location());
+    EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+    EXPECT_EQ(db.backend(), GetParam());
+  }
+  const std::string before = db_.dump();
+  Database again(db_.location());
+  EXPECT_EQ(again.schema_version(), Database::latest_schema_version());
+  EXPECT_EQ(db_.dump(), before);
+}
+
+TEST_P(StoreBackends, DoublesComeBackBitForBit) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  Database db(db_.location());
+  // Values whose shortest decimal form needs 17 digits, subnormals, extremes.
+  const std::vector<double> values = {
+      0.1 + 0.2,           1.0 / 3.0,    4.9406564584124654e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+      -123456.78901234567, 6.02214076e23};
+  std::vector<ImportBatch> batches;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    ImportedRun run = make_run({static_cast<double>(i) * 0.1 + 1e-17, 0, 0, 0, 0, 0}, 0, values[i]);
+    run.fluid.density_kg_m3 = 998.2071234567891;
+    batches.push_back(test::one_run_batch(static_cast<int>(i) + 1, run));
+  }
+  db.import(batches, ConflictPolicy::Error);
+  const auto runs = db.runs();
+  ASSERT_EQ(runs.size(), values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto found = db.find_run(batches[i].runs[0].key);
+    ASSERT_TRUE(found) << i;
+    EXPECT_EQ(found->key.nu_b[0], batches[i].runs[0].key.nu_b[0]) << i;
+    ASSERT_TRUE(found->tau_b[0]);
+    EXPECT_EQ(found->tau_b[0]->value.total, values[i]) << i;  // exact, not near
+    EXPECT_EQ(*found->fluid.density_kg_m3, 998.2071234567891);
+  }
+}
+
+TEST_P(StoreBackends, ReimportIsANoOpAndAConflictChangesNothing) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  Database db(db_.location());
+  const ImportBatch first = test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5, 3));
+  const auto outcome = db.import({first}, ConflictPolicy::Error);
+  ASSERT_EQ(outcome.size(), 1u);
+  EXPECT_EQ(outcome[0].runs_created, 1u);
+  const std::string before = db_.dump();
+
+  const auto again = db.import({first}, ConflictPolicy::Error);
+  EXPECT_TRUE(again[0].already_imported);
+  EXPECT_EQ(db_.dump(), before);
+
+  // Another file with X of the same run: refused, nothing of it stored (its
+  // second run, which would be new, neither).
+  ImportBatch conflicting = test::one_run_batch(2, make_run({0.7, 0, 0, 0, 0, 0}, 0, 1.0));
+  conflicting.runs.push_back(make_run({0.5, 0, 0, 0, 0, 0}, 0, -13.0, 9));
+  EXPECT_THROW(db.import({conflicting}, ConflictPolicy::Error), InputError);
+  EXPECT_EQ(db_.dump(), before);
+  // With Replace it supersedes the component.
+  db.import({conflicting}, ConflictPolicy::Replace);
+  const auto run = db.find_run(first.runs[0].key);
+  ASSERT_TRUE(run && run->tau_b[0]);
+  EXPECT_EQ(run->tau_b[0]->value.total, -13.0);
+  EXPECT_EQ(run->tau_b[0]->source_path, "case-2.csv");
+  EXPECT_EQ(db.runs().size(), 2u);
+}
+
+TEST_P(StoreBackends, FitsAndSurfacesBecomeStaleWhenTheirForcesChange) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  Database db(db_.location());
+  db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
+  const auto run_id = db.runs().at(0).id;
+
+  FitRecord fit;
+  fit.name = "X(u)";
+  fit.body = "sphere";
+  fit.dof = "X";
+  fit.variable = "u";
+  fit.terms = "u|u|";
+  fit.loss = "squared";
+  fit.n = 1;
+  fit.rmse = 0.0;
+  fit.r2 = 1.0;
+  fit.covariance = {0.25};
+  fit.coefficients = {{"u|u|", -50.0, 0.5}};
+  fit.run_ids = {run_id};
+  db.save_fit(fit);
+  EXPECT_THROW(db.save_fit(fit), InputError);  // the name is taken
+  fit.coefficients[0].value = -49.0;
+  db.save_fit(fit, Database::NameTaken::Replace);
+
+  SurfaceRecord surface;
+  surface.name = "X-surface";
+  surface.body = "sphere";
+  surface.kind = "grid";
+  surface.method = "linear";
+  surface.definition = "{}";
+  surface.data = {1.5, -0.0, std::nextafter(1.0, 2.0), 1e-310};
+  surface.quality = "{}";
+  surface.run_ids = {run_id};
+  db.save_surface(surface);
+  SurfaceRecord empty = surface;
+  empty.name = "empty";
+  empty.data.clear();
+  db.save_surface(empty);
+
+  auto fits = db.fits();
+  ASSERT_EQ(fits.size(), 1u);
+  EXPECT_FALSE(fits[0].stale);
+  EXPECT_EQ(fits[0].coefficients.at(0).value, -49.0);
+  EXPECT_EQ(fits[0].covariance, std::vector<double>{0.25});
+  EXPECT_EQ(fits[0].run_ids, std::vector<std::int64_t>{run_id});
+  const SurfaceRecord back = db.surface("X-surface");
+  ASSERT_EQ(back.data.size(), surface.data.size());
+  for (std::size_t i = 0; i < surface.data.size(); ++i)
+    EXPECT_EQ(std::signbit(back.data[i]), std::signbit(surface.data[i])) << i;
+  EXPECT_EQ(back.data, surface.data);
+  EXPECT_TRUE(db.surface("empty").data.empty());
+  EXPECT_FALSE(back.stale);
+
+  // A new component of the run: the triggers mark both stale.
+  db.import({test::one_run_batch(2, make_run({0.5, 0, 0, 0, 0, 0}, 1, 3.0))}, ConflictPolicy::Error);
+  EXPECT_TRUE(db.fits().at(0).stale);
+  EXPECT_TRUE(db.surface("X-surface").stale);
+}
+
+TEST_P(StoreBackends, DeletingRunsRemovesTheirImportsAndStalesTheirFits) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  Database db(db_.location());
+  db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5)),
+             test::one_run_batch(2, make_run({0.9, 0, 0, 0, 0, 0}, 0, -40.0))},
+            ConflictPolicy::Error);
+  const auto runs = db.runs();
+  ASSERT_EQ(runs.size(), 2u);
+  const std::string before = db_.dump();
+  EXPECT_THROW(db.delete_runs({runs[0].id, 999999}), InputError);
+  EXPECT_EQ(db_.dump(), before);
+  const DeleteOutcome outcome = db.delete_runs({runs[0].id});
+  EXPECT_EQ(outcome.runs, 1u);
+  EXPECT_EQ(outcome.imports_removed, 1u);
+  EXPECT_EQ(db.runs().size(), 1u);
+  EXPECT_EQ(db.sources().size(), 1u);
+}
+
+TEST_P(StoreBackends, ForcedOscillationRecordsComeBackWithTheirHistory) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  Database db(db_.location());
+  PmmRecord r;
+  r.body = "ball";
+  r.dof = 0;
+  r.amplitude = 0.015;
+  r.omega = M_PI;
+  r.phase = 0.0;
+  r.motion_source = "--motion";
+  r.window_start = 2.0;
+  r.window_end = 12.0;
+  r.periods = 5;
+  r.samples = 500;
+  r.size = 0.3;
+  r.source_path = "case";
+  r.source_sha256 = std::string(64, 'b');
+  r.importer = "openfoam-forces";
+  r.history = {0.0, 1.0, 0, 0, 0, 0, 0, 0.01, 0.9999, 0, 0, 0, 0, 0};
+  r.coefficients.push_back({0, 0.001, 7.2525, 3.7e-6, 0.686, 1e-4, 0.99999, {-1.0, 2.0}});
+  const auto saved = db.save_pmm({r});
+  ASSERT_EQ(saved.size(), 1u);
+  EXPECT_FALSE(saved[0].replaced);
+  EXPECT_TRUE(db.save_pmm({r}).at(0).replaced);
+  const auto back = db.pmm_records("ball");
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].history, r.history);
+  EXPECT_EQ(back[0].omega, M_PI);
+  ASSERT_EQ(back[0].coefficients.size(), 1u);
+  EXPECT_EQ(back[0].coefficients[0].added_mass, 7.2525);
+  EXPECT_EQ(back[0].coefficients[0].harmonics, (std::vector<double>{-1.0, 2.0}));
+}
+
+TEST_P(StoreBackends, ASchemaChangedByAnotherProgramIsRefused) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  { Database db(db_.location()); }
+  {
+    auto connection = db_.connect();
+    connection.execute("ALTER TABLE run ADD COLUMN note TEXT");
+  }
+  try {
+    Database db(db_.location());
+    FAIL() << "a database with an added column was opened";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run"), std::string::npos) << e.what();
+  }
+}
+
+TEST_P(StoreBackends, ASecondWriterWaitsThenSaysTheDatabaseIsBusy) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  { Database db(db_.location()); }
+  auto holder = db_.connect();
+  holder.begin_write();
+  holder.execute("INSERT INTO body(name) VALUES ('held')");
+  setenv("HYDROCOEF_DB_TIMEOUT", "1", 1);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    Database db(db_.location());
+    db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
+    ADD_FAILURE() << "an import ran beside another writer's transaction";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("busy"), std::string::npos) << e.what();
+  }
+  unsetenv("HYDROCOEF_DB_TIMEOUT");
+  EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(900));
+  holder.rollback();
+  // Once the other writer has finished, the import goes through.
+  Database db(db_.location());
+  db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
+  EXPECT_EQ(db.runs().size(), 1u);
+  EXPECT_EQ(db.bodies(), std::vector<std::string>{"sphere"});
+}
+
+TEST_P(StoreBackends, TwoProcessesCreatingOneDatabaseAtOnceBothSucceed) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  std::vector<std::thread> threads;
+  std::atomic<int> failures{0};
+  for (int i = 0; i < 4; ++i)
+    threads.emplace_back([&, i] {
+      try {
+        Database db(db_.location());
+        db.import({test::one_run_batch(i + 1, make_run({0.1 * (i + 1), 0, 0, 0, 0, 0}, 0, 1.0))},
+                  ConflictPolicy::Error);
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << e.what();
+        ++failures;
+      }
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(failures.load(), 0);
+  Database db(db_.location());
+  EXPECT_EQ(db.runs().size(), 4u);
+}
+
+/// Runs of 20 files, one per shard as 20 cluster jobs would write them.
+std::vector<ImportBatch> sweep_batches() {
+  std::vector<ImportBatch> out;
+  for (int i = 0; i < 20; ++i) {
+    ImportedRun run = make_run({0.05 * (i % 10), i < 10 ? 0.0 : 0.1, 0, 0, 0, 0}, i % 3 == 0 ? 5 : 0, -3.0 * i - 0.1,
+                               static_cast<std::size_t>(i + 2));
+    run.fluid.density_kg_m3 = 998.2;
+    run.key.disturbances["mesh"] = 1.0 + (i % 2);
+    RunStatistics statistics;
+    statistics.abscissa = "iteration";
+    statistics.window_method = "MSER-5 (White 1997)";
+    statistics.window_first = 500;
+    statistics.window_last = 1000;
+    statistics.samples = 501;
+    statistics.components[i % 3 == 0 ? 5 : 0] = ComponentStatistics{0.01 * i, 0.2, 1e-4, 40.0};
+    run.statistics = statistics;
+    ImportBatch batch = test::one_run_batch(i + 1, run);
+    batch.source.settings = "{\"rho\":{\"value\":998.2,\"source\":\"command line\"}}";
+    out.push_back(batch);
+  }
+  return out;
+}
+
+const std::set<std::string> kTimes = {"imported_at", "created_at"};
+
+TEST_P(StoreBackends, MergingShardsEqualsImportingTheirFilesAndTwiceAddsNothing) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  const auto batches = sweep_batches();
+  std::vector<std::string> shards;
+  for (std::size_t i = 0; i < batches.size(); ++i) {
+    shards.push_back((db_.dir() / ("shard-" + std::to_string(i) + ".db")).string());
+    Database shard(shards.back());
+    shard.import({batches[i]}, ConflictPolicy::Error);
+  }
+  TestDatabase direct(store::Backend::SQLite);
+  {
+    Database db(direct.location());
+    for (const auto& batch : batches) db.import({batch}, ConflictPolicy::Error);
+  }
+  Database db(db_.location());
+  std::size_t seen = 0;
+  const auto outcomes = db.merge(shards, [&](std::size_t done, std::size_t total) {
+    EXPECT_EQ(done, ++seen);
+    EXPECT_EQ(total, shards.size());
+  });
+  ASSERT_EQ(outcomes.size(), 20u);
+  for (const auto& o : outcomes) {
+    EXPECT_EQ(o.imports_added, 1u);
+    EXPECT_EQ(o.components, 1u);
+  }
+  EXPECT_EQ(db_.dump(kTimes), direct.dump(kTimes));
+  // Provenance as recorded, time included: the shard's import time.
+  const auto run = db.find_run(batches[7].runs[0].key);
+  ASSERT_TRUE(run && run->tau_b[0] && run->tau_b[0]->statistics);
+  EXPECT_EQ(run->tau_b[0]->source_line, 9u);
+  EXPECT_EQ(db.import_record(run->tau_b[0]->import_id)->imported_at,
+            Database(shards[7], Database::OpenMode::ReadOnly).import_record(1)->imported_at);
+
+  const std::string before = db_.dump();
+  const auto again = db.merge(shards);
+  for (const auto& o : again) {
+    EXPECT_EQ(o.imports_added, 0u);
+    EXPECT_EQ(o.imports_already, 1u);
+  }
+  EXPECT_EQ(db_.dump(), before);
+}
+
+TEST_P(StoreBackends, AMergeConflictIsRefusedAndNothingOfAnyShardIsMerged) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  const std::string good = (db_.dir() / "good.db").string(), bad = (db_.dir() / "bad.db").string();
+  Database(good).import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
+  // Another file with X of the same run: a conflict once both are merged.
+  Database(bad).import({test::one_run_batch(2, make_run({0.5, 0, 0, 0, 0, 0}, 0, -13.0))}, ConflictPolicy::Error);
+  Database db(db_.location());
+  db.import({test::one_run_batch(3, make_run({0.9, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
+  const std::string before = db_.dump();
+  try {
+    db.merge({good, bad});
+    FAIL() << "a conflicting shard was merged";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("bad.db"), std::string::npos) << message;
+    EXPECT_NE(message.find("case-1.csv"), std::string::npos) << message;
+  }
+  EXPECT_EQ(db_.dump(), before);
+  // A fit of one name with other coefficients is a conflict too.
+  FitRecord fit;
+  fit.name = "X(u)";
+  fit.body = "sphere";
+  fit.dof = "X";
+  fit.variable = "u";
+  fit.terms = "u";
+  fit.loss = "squared";
+  fit.n = 1;
+  fit.coefficients = {{"u", -25.0, std::nullopt}};
+  db.save_fit(fit);
+  fit.coefficients[0].value = -26.0;
+  Database(good).save_fit(fit);
+  const std::string with_fit = db_.dump();
+  EXPECT_THROW(db.merge({good}), InputError);
+  EXPECT_EQ(db_.dump(), with_fit);
+}
+
+TEST_P(StoreBackends, ACopyAndACopyBackHoldTheOriginalsRows) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  TestDatabase original(store::Backend::SQLite);
+  {
+    Database db(original.location());
+    db.import(sweep_batches(), ConflictPolicy::Error);
+    const auto runs = db.runs();
+    db.delete_runs({runs.at(3).id});  // a gap in the ids
+    FitRecord fit;
+    fit.name = "N(r)";
+    fit.body = "sphere";
+    fit.dof = "N";
+    fit.variable = "r";
+    fit.terms = "r";
+    fit.loss = "squared";
+    fit.n = 2;
+    fit.coefficients = {{"r", -0.5, 0.01}};
+    fit.run_ids = {runs.at(0).id, runs.at(5).id};
+    db.save_fit(fit);
+    SurfaceRecord surface;
+    surface.name = "s";
+    surface.body = "sphere";
+    surface.kind = "grid";
+    surface.method = "linear";
+    surface.definition = "{\"axes\":[]}";
+    surface.data = {0.1, 0.2, -0.0};
+    surface.quality = "{}";
+    surface.run_ids = {runs.at(1).id};
+    db.save_surface(surface);
+    // A new component after the surface: it becomes stale.
+    db.import({test::one_run_batch(99, make_run(runs.at(1).key.nu_b, 1, 7.0))}, ConflictPolicy::Error);
+  }
+  const std::string rows = original.dump();
+  {
+    Database source(original.location(), Database::OpenMode::ReadOnly);
+    Database target(db_.location());
+    const auto copied = target.copy_from(source);
+    EXPECT_FALSE(copied.empty());
+  }
+  EXPECT_EQ(db_.dump(), rows);
+  TestDatabase back(store::Backend::SQLite);
+  {
+    Database source(db_.location(), Database::OpenMode::ReadOnly);
+    Database target(back.location());
+    target.copy_from(source);
+    // Not into a database that holds data.
+    EXPECT_THROW(target.copy_from(source), InputError);
+    // A new run gets the next id after the copied ones.
+    target.import({test::one_run_batch(500, make_run({3, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
+  }
+  {
+    Database copy(db_.location());
+    copy.import({test::one_run_batch(500, make_run({3, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
+  }
+  EXPECT_EQ(back.dump(kTimes), db_.dump(kTimes));
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, StoreBackends, testing::Values(store::Backend::SQLite, store::Backend::PostgreSQL),
+                         [](const testing::TestParamInfo<store::Backend>& param) {
+                           return std::string(test::backend_name(param.param));
+                         });
+
+}  // namespace
+}  // namespace hydrocoef
