@@ -16,8 +16,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 hydrocoef=$(realpath "${1:-$root/build/release/hydrocoef}")
 files=${2:-400}
 work=$(mktemp -d)
-pg="$work/pg"
-trap 'bash "$root/scripts/postgresql-test-server.sh" stop "$pg" >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
+pg=$(mktemp -d) # its own folder: the server (user nobody under root) cannot enter $work
+trap 'bash "$root/scripts/postgresql-test-server.sh" stop "$pg" >/dev/null 2>&1 || true; rm -rf "$work" "$pg"' EXIT
 for ((i = 0; i < files; i++)); do
   {
     echo "u [m s^-1],X [N]"
@@ -27,7 +27,8 @@ for ((i = 0; i < files; i++)); do
     done
   } >"$work/t$i.csv"
 done
-eval "$(HYDROCOEF_PG_FSYNC=on bash "$root/scripts/postgresql-test-server.sh" start "$pg")"
+server=$(HYDROCOEF_PG_FSYNC=on bash "$root/scripts/postgresql-test-server.sh" start "$pg")
+eval "$server"
 url=$HYDROCOEF_TEST_POSTGRESQL
 export HYDROCOEF_DB_TIMEOUT=600
 
@@ -37,7 +38,7 @@ run() {
   local start=$(date +%s.%N)
   for ((w = 0; w < writers; w++)); do
     (for ((i = w; i < files; i += writers)); do
-      "$hydrocoef" --db "$db" import "$work/t$i.csv" --body b --quiet
+      "$hydrocoef" --db "$db" import "$work/t$i.csv" --body b --quiet >/dev/null
     done) &
   done
   wait

@@ -22,7 +22,8 @@ phase_done "sanitizer build (with packages)"
 # run on both backends (tests/support/test_database.hpp); stopped, and its
 # folder removed, however this script ends.
 pg_dir=$(mktemp -d "${TMPDIR:-/tmp}/hydrocoef-pg.XXXXXX")
-eval "$(bash "$root/scripts/postgresql-test-server.sh" start "$pg_dir")"
+server=$(bash "$root/scripts/postgresql-test-server.sh" start "$pg_dir") # fails the script when it fails
+eval "$server"
 export HYDROCOEF_TEST_POSTGRESQL_REQUIRED=1
 phase_done "PostgreSQL test server start"
 bash "$root/scripts/fuzz.sh" --build-only

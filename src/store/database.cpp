@@ -24,16 +24,16 @@
 #include "src/store/dialect.hpp"
 #include "src/store/location.hpp"
 #include "src/store/migrations.hpp"
+#include "src/store/run_rows.hpp"
 #include "src/store/schema_check.hpp"
 
 namespace hydrocoef {
 namespace {
 
+using store::canonical;
+using store::same_value;
+
 constexpr double kFilterTolerance = 1e-9;
-
-double canonical(double value) { return value == 0.0 ? 0.0 : value; }  // folds -0 into 0
-
-bool same_value(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max({1.0, std::abs(a), std::abs(b)}); }
 
 std::string force_name(std::size_t i) { return std::string(kForceNames[i]); }
 
@@ -360,45 +360,14 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
   auto insert_source = connection_.prepare(
       "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
       "VALUES (?, ?, ?, ?, ?, ?) RETURNING id");
-  auto insert_run = connection_.prepare(
-      "INSERT INTO run(body_id, u, v, w, p, q, r, disturbance_key, density, kinematic_viscosity, ref_x, ref_y, "
-      "ref_z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
-  auto insert_disturbance = connection_.prepare("INSERT INTO run_disturbance(run_id, name, value) VALUES (?, ?, ?)");
-  auto run_details =
-      connection_.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?");
-  auto update_fluid = connection_.prepare(
-      "UPDATE run SET density = coalesce(density, ?), "
-      "kinematic_viscosity = coalesce(kinematic_viscosity, ?) WHERE id = ?");
+  store::RunRows rows(connection_);
   auto existing_force = connection_.prepare(
       "SELECT s.path, f.source_line, s.imported_at FROM run_force f JOIN source_file s ON s.id = f.source_id "
       "WHERE f.run_id = ? AND f.component = ?");
-  auto write_force = connection_.prepare(
-      "INSERT INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, source_line, "
-      "import_id, uncertainty) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (run_id, component) DO UPDATE SET "
-      "total = excluded.total, pressure = excluded.pressure, viscous = excluded.viscous, "
-      "sign_convention = excluded.sign_convention, source_id = excluded.source_id, "
-      "source_line = excluded.source_line, import_id = excluded.import_id, uncertainty = excluded.uncertainty");
 
   // A component's statistics go with it: a value written without
   // statistics leaves none of an earlier value behind.
   auto drop_statistics = connection_.prepare("DELETE FROM run_force_statistics WHERE run_id = ? AND component = ?");
-  auto write_statistics = connection_.prepare(
-      "INSERT INTO run_force_statistics(run_id, component, abscissa, window_method, window_first, window_last, "
-      "samples, flags, standard_error, spread, drift, effective_samples) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-
-  auto write_surface = connection_.prepare(
-      "INSERT INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
-      "degenerate_faces, normals_flipped, n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, "
-      "reference_pressure, pressure_array, shear_array, pressure_kind, shear_convention, axes) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (run_id) DO UPDATE SET "
-      "source_id = excluded.source_id, faces = excluded.faces, area = excluded.area, "
-      "signed_volume = excluded.signed_volume, closed = excluded.closed, boundary_edges = excluded.boundary_edges, "
-      "degenerate_faces = excluded.degenerate_faces, normals_flipped = excluded.normals_flipped, "
-      "n_dA_x = excluded.n_dA_x, n_dA_y = excluded.n_dA_y, n_dA_z = excluded.n_dA_z, "
-      "x_cross_n_dA_x = excluded.x_cross_n_dA_x, x_cross_n_dA_y = excluded.x_cross_n_dA_y, "
-      "x_cross_n_dA_z = excluded.x_cross_n_dA_z, reference_pressure = excluded.reference_pressure, "
-      "pressure_array = excluded.pressure_array, shear_array = excluded.shear_array, "
-      "pressure_kind = excluded.pressure_kind, shear_convention = excluded.shear_convention, axes = excluded.axes");
 
   for (const auto& batch : batches) {
     ImportOutcome outcome;
@@ -478,37 +447,9 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       bool created = false;
       if (const auto existing = find_run_id(body, run.key)) {
         run_id = *existing;
-        run_details.bind(1, run_id);
-        run_details.step();
-        const auto density = run_details.get_optional_double(0);
-        const auto viscosity = run_details.get_optional_double(1);
-        const std::array<double, 3> ref{run_details.get_double(2), run_details.get_double(3),
-                                        run_details.get_double(4)};
-        run_details.reset();
-        for (std::size_t i = 0; i < 3; ++i)
-          if (!same_value(ref[i], run.reference_point_b[i]))
-            throw InputError(where, "run " + describe(run.key) +
-                                        " already exists with another moment reference point; expected the same "
-                                        "reference point for every source of one run");
-        if ((density && run.fluid.density_kg_m3 && !same_value(*density, *run.fluid.density_kg_m3)) ||
-            (viscosity && run.fluid.kinematic_viscosity_m2_s &&
-             !same_value(*viscosity, *run.fluid.kinematic_viscosity_m2_s)))
-          throw InputError(
-              where, "run " + describe(run.key) + " already exists with other fluid properties (density or viscosity)");
-        update_fluid.bind(1, run.fluid.density_kg_m3).bind(2, run.fluid.kinematic_viscosity_m2_s).bind(3, run_id);
-        update_fluid.run();
+        rows.check_and_fill(run_id, run.key, run.fluid, run.reference_point_b, where);
       } else {
-        insert_run.bind(1, body);
-        for (int i = 0; i < 6; ++i) insert_run.bind(2 + i, canonical(run.key.nu_b[static_cast<std::size_t>(i)]));
-        insert_run.bind(8, disturbance_signature(run.key.disturbances))
-            .bind(9, run.fluid.density_kg_m3)
-            .bind(10, run.fluid.kinematic_viscosity_m2_s)
-            .bind(11, run.reference_point_b[0])
-            .bind(12, run.reference_point_b[1])
-            .bind(13, run.reference_point_b[2]);
-        run_id = store::returned_id(insert_run);
-        for (const auto& [name, value] : run.key.disturbances)
-          insert_disturbance.bind(1, run_id).bind(2, name).bind(3, canonical(value)).run();
+        run_id = rows.insert(body, run.key, run.fluid, run.reference_point_b);
         created = true;
         ++outcome.runs_created;
       }
@@ -528,64 +469,19 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
           existing_force.reset();
         }
         const auto& force = *run.tau_b[i];
-        write_force.bind(1, run_id)
-            .bind(2, force_name(i))
-            .bind(3, force.total)
-            .bind(4, force.pressure)
-            .bind(5, force.viscous)
-            .bind(6, to_string(run.sign))
-            .bind(7, source_id)
-            .bind(8, static_cast<std::int64_t>(run.source_line))
-            .bind(9, import_id)
-            .bind(10, force.uncertainty)
-            .run();
+        rows.write_force(run_id, i, force, run.sign, source_id, run.source_line, import_id);
         drop_statistics.bind(1, run_id).bind(2, force_name(i)).run();
         if (run.statistics && run.statistics->components[i]) {
           const RunStatistics& statistics = *run.statistics;
-          const ComponentStatistics& values = *statistics.components[i];
-          std::string flags;
-          for (const auto& flag : statistics.flags) flags += (flags.empty() ? "" : ",") + flag;
-          write_statistics.bind(1, run_id)
-              .bind(2, force_name(i))
-              .bind(3, statistics.abscissa)
-              .bind(4, statistics.window_method)
-              .bind(5, statistics.window_first)
-              .bind(6, statistics.window_last)
-              .bind(7, static_cast<std::int64_t>(statistics.samples))
-              .bind(8, flags)
-              .bind(9, values.standard_error)
-              .bind(10, values.spread)
-              .bind(11, values.drift)
-              .bind(12, values.effective_samples)
-              .run();
+          rows.write_statistics(run_id, i, statistics.abscissa, statistics.window_method, statistics.window_first,
+                                statistics.window_last, statistics.samples, statistics.flags,
+                                *statistics.components[i]);
         }
         ++outcome.components_written;
         extended = true;
       }
       if (extended && !created) ++outcome.runs_extended;
-      if (run.surface) {
-        const auto& g = *run.surface;
-        write_surface.bind(1, run_id)
-            .bind(2, source_id)
-            .bind(3, static_cast<std::int64_t>(g.faces))
-            .bind(4, g.area)
-            .bind(5, g.signed_volume)
-            .bind(6, static_cast<std::int64_t>(g.closed))
-            .bind(7, static_cast<std::int64_t>(g.boundary_edges))
-            .bind(8, static_cast<std::int64_t>(g.degenerate_faces))
-            .bind(9, static_cast<std::int64_t>(g.normals_flipped));
-        for (int i = 0; i < 3; ++i) {
-          write_surface.bind(10 + i, g.integral_n_dA_b[static_cast<std::size_t>(i)]);
-          write_surface.bind(13 + i, g.integral_x_cross_n_dA_b[static_cast<std::size_t>(i)]);
-        }
-        write_surface.bind(16, g.reference_pressure)
-            .bind(17, g.pressure_array)
-            .bind(18, g.shear_array)
-            .bind(19, g.pressure_kind)
-            .bind(20, g.shear_convention)
-            .bind(21, g.axes)
-            .run();
-      }
+      if (run.surface) rows.write_surface(run_id, source_id, *run.surface);
     }
     outcomes.push_back(outcome);
   }

@@ -12,13 +12,12 @@
 #include "src/store/checked_row.hpp"
 #include "src/store/database.hpp"
 #include "src/store/pmm_record.hpp"
+#include "src/store/run_rows.hpp"
 
 namespace hydrocoef {
 namespace {
 
-double canonical(double value) { return value == 0.0 ? 0.0 : value; }  // folds -0 into 0
-
-bool same_value(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max({1.0, std::abs(a), std::abs(b)}); }
+using store::canonical;
 
 bool same_fit(const FitRecord& a, const FitRecord& b) {
   if (std::tie(a.body, a.dof, a.variable, a.terms, a.loss, a.run_filter, a.mirror, a.weighting, a.n) !=
@@ -157,65 +156,20 @@ MergeOutcome Database::merge_one(Database& shard) {
       surface_source[row.integer(0, 1, kMost)] = row.integer(1, 1, kMost);
     }
   }
-  auto run_details =
-      connection_.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?");
-  auto update_fluid = connection_.prepare(
-      "UPDATE run SET density = coalesce(density, ?), kinematic_viscosity = coalesce(kinematic_viscosity, ?) "
-      "WHERE id = ?");
-  auto insert_run = connection_.prepare(
-      "INSERT INTO run(body_id, u, v, w, p, q, r, disturbance_key, density, kinematic_viscosity, ref_x, ref_y, "
-      "ref_z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
-  auto insert_disturbance = connection_.prepare("INSERT INTO run_disturbance(run_id, name, value) VALUES (?, ?, ?)");
+  store::RunRows rows(connection_);
   auto existing_force = connection_.prepare(
       "SELECT s.path, f.source_line, f.import_id FROM run_force f JOIN source_file s ON s.id = f.source_id "
       "WHERE f.run_id = ? AND f.component = ?");
-  auto insert_force = connection_.prepare(
-      "INSERT INTO run_force(run_id, component, total, pressure, viscous, sign_convention, source_id, source_line, "
-      "import_id, uncertainty) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  auto insert_statistics = connection_.prepare(
-      "INSERT INTO run_force_statistics(run_id, component, abscissa, window_method, window_first, window_last, "
-      "samples, flags, standard_error, spread, drift, effective_samples) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   auto has_surface = connection_.prepare("SELECT count(*) FROM run_surface WHERE run_id = ?");
-  auto insert_surface = connection_.prepare(
-      "INSERT INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
-      "degenerate_faces, normals_flipped, n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, x_cross_n_dA_z, "
-      "reference_pressure, pressure_array, shear_array, pressure_kind, shear_convention, axes) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   for (const StoredRun& run : shard.runs()) {
     const std::int64_t body = body_id(run.key.body, true);
     std::int64_t here = 0;
     bool created = false;
     if (const auto existing = find_run_id(body, run.key)) {
       here = *existing;
-      run_details.bind(1, here);
-      run_details.step();
-      const auto density = run_details.get_optional_double(0);
-      const auto viscosity = run_details.get_optional_double(1);
-      const std::array<double, 3> ref{run_details.get_double(2), run_details.get_double(3), run_details.get_double(4)};
-      run_details.reset();
-      for (std::size_t i = 0; i < 3; ++i)
-        if (!same_value(ref[i], run.reference_point_b[i]))
-          throw InputError(where, "run " + describe(run.key) +
-                                      " is here already with another moment reference point; expected the same "
-                                      "reference point for every source of one run");
-      if ((density && run.fluid.density_kg_m3 && !same_value(*density, *run.fluid.density_kg_m3)) ||
-          (viscosity && run.fluid.kinematic_viscosity_m2_s &&
-           !same_value(*viscosity, *run.fluid.kinematic_viscosity_m2_s)))
-        throw InputError(
-            where, "run " + describe(run.key) + " is here already with other fluid properties (density or viscosity)");
-      update_fluid.bind(1, run.fluid.density_kg_m3).bind(2, run.fluid.kinematic_viscosity_m2_s).bind(3, here).run();
+      rows.check_and_fill(here, run.key, run.fluid, run.reference_point_b, where);
     } else {
-      insert_run.bind(1, body);
-      for (int i = 0; i < 6; ++i) insert_run.bind(2 + i, canonical(run.key.nu_b[static_cast<std::size_t>(i)]));
-      insert_run.bind(8, disturbance_signature(run.key.disturbances))
-          .bind(9, run.fluid.density_kg_m3)
-          .bind(10, run.fluid.kinematic_viscosity_m2_s)
-          .bind(11, run.reference_point_b[0])
-          .bind(12, run.reference_point_b[1])
-          .bind(13, run.reference_point_b[2]);
-      here = store::returned_id(insert_run);
-      for (const auto& [name, value] : run.key.disturbances)
-        insert_disturbance.bind(1, here).bind(2, name).bind(3, canonical(value)).run();
+      here = rows.insert(body, run.key, run.fluid, run.reference_point_b);
       created = true;
       ++outcome.runs_created;
     }
@@ -241,36 +195,14 @@ MergeOutcome Database::merge_one(Database& shard) {
                                     "; expected each component of a run from one file (delete one of them first)");
       }
       existing_force.reset();
-      insert_force.bind(1, here)
-          .bind(2, component)
-          .bind(3, force->value.total)
-          .bind(4, force->value.pressure)
-          .bind(5, force->value.viscous)
-          .bind(6, to_string(force->sign))
-          .bind(7, mapped_source(force->source_id))
-          .bind(8, static_cast<std::int64_t>(force->source_line));
-      if (force->import_id != 0 && import_of.count(force->import_id))
-        insert_force.bind(9, import_of.at(force->import_id));
-      else
-        insert_force.bind_null(9);
-      insert_force.bind(10, force->value.uncertainty).run();
+      std::optional<std::int64_t> import_id;
+      if (force->import_id != 0 && import_of.count(force->import_id)) import_id = import_of.at(force->import_id);
+      rows.write_force(here, i, force->value, force->sign, mapped_source(force->source_id), force->source_line,
+                       import_id);
       if (force->statistics) {
         const StoredStatistics& s = *force->statistics;
-        std::string flags;
-        for (const auto& flag : s.flags) flags += (flags.empty() ? "" : ",") + flag;
-        insert_statistics.bind(1, here)
-            .bind(2, component)
-            .bind(3, s.abscissa)
-            .bind(4, s.window_method)
-            .bind(5, s.window_first)
-            .bind(6, s.window_last)
-            .bind(7, static_cast<std::int64_t>(s.samples))
-            .bind(8, flags)
-            .bind(9, s.values.standard_error)
-            .bind(10, s.values.spread)
-            .bind(11, s.values.drift)
-            .bind(12, s.values.effective_samples)
-            .run();
+        rows.write_statistics(here, i, s.abscissa, s.window_method, s.window_first, s.window_last, s.samples, s.flags,
+                              s.values);
       }
       ++outcome.components;
       extended = true;
@@ -281,29 +213,7 @@ MergeOutcome Database::merge_one(Database& shard) {
       has_surface.step();
       const bool present = has_surface.get_int(0) > 0;
       has_surface.reset();
-      if (!present) {
-        const auto& g = *run.surface;
-        insert_surface.bind(1, here)
-            .bind(2, mapped_source(surface_source.at(run.id)))
-            .bind(3, static_cast<std::int64_t>(g.faces))
-            .bind(4, g.area)
-            .bind(5, g.signed_volume)
-            .bind(6, static_cast<std::int64_t>(g.closed))
-            .bind(7, static_cast<std::int64_t>(g.boundary_edges))
-            .bind(8, static_cast<std::int64_t>(g.degenerate_faces))
-            .bind(9, static_cast<std::int64_t>(g.normals_flipped));
-        for (int i = 0; i < 3; ++i) {
-          insert_surface.bind(10 + i, g.integral_n_dA_b[static_cast<std::size_t>(i)]);
-          insert_surface.bind(13 + i, g.integral_x_cross_n_dA_b[static_cast<std::size_t>(i)]);
-        }
-        insert_surface.bind(16, g.reference_pressure)
-            .bind(17, g.pressure_array)
-            .bind(18, g.shear_array)
-            .bind(19, g.pressure_kind)
-            .bind(20, g.shear_convention)
-            .bind(21, g.axes)
-            .run();
-      }
+      if (!present) rows.write_surface(here, mapped_source(surface_source.at(run.id)), *run.surface);
     }
   }
   const auto mapped_runs = [&](const std::vector<std::int64_t>& ids) {

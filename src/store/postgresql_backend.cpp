@@ -23,9 +23,11 @@ namespace {
 constexpr Oid kBool = 16, kBytea = 17, kInt8 = 20, kInt2 = 21, kInt4 = 23, kText = 25, kOid = 26, kFloat4 = 700,
               kFloat8 = 701, kNumeric = 1700;
 
-/// Writers of one database take this transaction-scoped advisory lock, so
-/// that they run one after another as SQLite's writers do.
-constexpr long long kWriteLock = 0x6879647263'6f6566;  // "hydrcoef"
+/// Writers of one hydrocoef database (a PostgreSQL database and schema) take
+/// a transaction-scoped advisory lock, so that they run one after another as
+/// SQLite's writers do: the pair (kWriteLock, a hash of the schema's name),
+/// so that databases in other schemas of the server do not wait for them.
+constexpr int kWriteLock = 0x68796472;  // "hydr"
 
 /// The first line of a libpq message, without its trailing newline.
 std::string first_line(const char* message) {
@@ -322,7 +324,8 @@ void PgConnection::begin_write() {
   }
   execute("BEGIN");
   try {
-    execute("SELECT pg_advisory_xact_lock(" + std::to_string(kWriteLock) + ")");
+    execute("SELECT pg_advisory_xact_lock(" + std::to_string(kWriteLock) +
+            ", hashtext(current_schema()) & 2147483647)");
   } catch (...) {
     rollback();
     throw;

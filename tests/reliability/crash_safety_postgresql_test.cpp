@@ -55,9 +55,13 @@ std::set<std::string> whole_files(const std::string& location, std::string& prob
   return out;
 }
 
-/// True while some session holds hydrocoef's write lock (a transaction-scoped advisory lock).
+/// True while some session holds the database's write lock (a
+/// transaction-scoped advisory lock on the key pair src/store/postgresql_backend.cpp takes).
 bool write_lock_held(store::Connection& connection) {
-  auto held = connection.prepare("SELECT count(*) FROM pg_locks WHERE locktype = 'advisory' AND granted");
+  auto held = connection.prepare(
+      "SELECT count(*) FROM pg_locks WHERE locktype = 'advisory' AND granted AND classid = 1752786034 AND "
+      "objid = (hashtext(current_schema()) & 2147483647)::oid AND database = (SELECT oid FROM pg_database WHERE "
+      "datname = current_database())");
   held.step();
   return held.get_int(0) > 0;
 }

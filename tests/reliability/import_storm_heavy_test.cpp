@@ -30,7 +30,11 @@ constexpr int kFilesEach = 50;
 constexpr int kRunsPerFile = 3;
 
 std::filesystem::path table(const std::filesystem::path& dir, int writer, int file) {
-  return dir / ("w" + std::to_string(writer) + "-" + std::to_string(file) + ".csv");
+  // Appended piece by piece: GCC 12 at -O3 warns falsely (stringop-overflow)
+  // on "literal" + std::string temporaries.
+  std::string name = "w";
+  name.append(std::to_string(writer)).append("-").append(std::to_string(file)).append(".csv");
+  return dir / name;
 }
 
 /// Three surge runs of one file, at speeds no other file has.
@@ -41,6 +45,12 @@ void write_table(const std::filesystem::path& path, int writer, int file) {
     const double u = 0.001 * (writer * kFilesEach * kRunsPerFile + file * kRunsPerFile + i) + 0.01;
     out << u << "," << -(11.0 * u * u) << "\n";
   }
+}
+
+std::filesystem::path log_path(const std::filesystem::path& dir, int writer) {
+  std::string name = "writer";
+  name.append(std::to_string(writer)).append(".log");
+  return dir / name;
 }
 
 pid_t start(const std::string& script, const std::filesystem::path& log) {
@@ -79,7 +89,7 @@ TEST_P(ImportStorm, EightWritersLoseNothingAndReadersSeeOnlyWholeImports) {
                 " --body b --quiet || status=1; ";
     }
     script += "exit $status";
-    writers.push_back(start(script, dir / ("writer" + std::to_string(w) + ".log")));
+    writers.push_back(start(script, log_path(dir, static_cast<int>(w))));
   }
   // Readers while the writers run: each listing must hold whole imports.
   int listings = 0, builds = 0;
@@ -87,16 +97,20 @@ TEST_P(ImportStorm, EightWritersLoseNothingAndReadersSeeOnlyWholeImports) {
   bool writing = true;
   while (writing) {
     const auto runs = test::run_cli({"--db", db.location(), "runs", "--json"}, dir);
-    ASSERT_EQ(runs.exit_code, 0) << runs.err;
-    const auto listed = nlohmann::json::parse(runs.out);
-    EXPECT_EQ(listed.size() % kRunsPerFile, 0u) << "a listing saw part of an import: " << listed.size() << " runs";
+    // EXPECT, not ASSERT: the writers are always waited for.
+    EXPECT_EQ(runs.exit_code, 0) << runs.err;
+    if (runs.exit_code == 0) {
+      const auto listed = nlohmann::json::parse(runs.out);
+      EXPECT_EQ(listed.size() % kRunsPerFile, 0u) << "a listing saw part of an import: " << listed.size() << " runs";
+    }
     ++listings;
     const auto build = test::run_cli({"--db", db.location(), "surface", "build", "s", "--body", "b", "--outputs", "X",
-                                      "--axes", "u", "--method", "linear", "--extrapolate", "clamp", "--json"},
+                                      "--axes", "u", "--method", "linear", "--extrapolate", "clamp", "--replace", "--json"},
                                      dir);
-    ASSERT_EQ(build.exit_code, 0) << build.err;
-    const auto built = nlohmann::json::parse(build.out);
-    EXPECT_EQ(built.at("runs").size() % kRunsPerFile, 0u) << build.out;
+    EXPECT_EQ(build.exit_code, 0) << build.err;
+    if (build.exit_code == 0) {
+      EXPECT_EQ(nlohmann::json::parse(build.out).at("runs").size() % kRunsPerFile, 0u) << build.out;
+    }
     ++builds;
     writing = false;
     for (std::size_t w = 0; w < writers.size(); ++w) {
@@ -109,7 +123,7 @@ TEST_P(ImportStorm, EightWritersLoseNothingAndReadersSeeOnlyWholeImports) {
     }
   }
   for (std::size_t w = 0; w < writers.size(); ++w) {
-    const std::string log = test::read_text(dir / ("writer" + std::to_string(w) + ".log"));
+    const std::string log = test::read_text(log_path(dir, static_cast<int>(w)));
     EXPECT_EQ(exit_codes[w], 0) << log;
     EXPECT_EQ(log.find("busy"), std::string::npos) << log;
     EXPECT_EQ(log.find("error"), std::string::npos) << log;
