@@ -104,9 +104,10 @@ TEST_P(ImportStorm, EightWritersLoseNothingAndReadersSeeOnlyWholeImports) {
       EXPECT_EQ(listed.size() % kRunsPerFile, 0u) << "a listing saw part of an import: " << listed.size() << " runs";
     }
     ++listings;
-    const auto build = test::run_cli({"--db", db.location(), "surface", "build", "s", "--body", "b", "--outputs", "X",
-                                      "--axes", "u", "--method", "linear", "--extrapolate", "clamp", "--replace", "--json"},
-                                     dir);
+    const auto build =
+        test::run_cli({"--db", db.location(), "surface", "build", "s", "--body", "b", "--outputs", "X", "--axes", "u",
+                       "--method", "linear", "--extrapolate", "clamp", "--replace", "--json"},
+                      dir);
     EXPECT_EQ(build.exit_code, 0) << build.err;
     if (build.exit_code == 0) {
       EXPECT_EQ(nlohmann::json::parse(build.out).at("runs").size() % kRunsPerFile, 0u) << build.out;
