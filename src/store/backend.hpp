@@ -16,6 +16,8 @@ namespace hydrocoef::store::detail {
 class StatementBackend {
  public:
   virtual ~StatementBackend() = default;
+  /// NaN binds as NULL (SQLite's own rule, kept on PostgreSQL); infinities as
+  /// themselves.
   virtual void bind_double(int index, double value) = 0;
   virtual void bind_int(int index, std::int64_t value) = 0;
   virtual void bind_text(int index, std::string_view value) = 0;
@@ -40,7 +42,6 @@ class ConnectionBackend {
   virtual Backend kind() const = 0;
   virtual void execute(std::string_view sql) = 0;
   virtual std::unique_ptr<StatementBackend> prepare(std::string_view sql) = 0;
-  virtual std::int64_t changes() const = 0;
   virtual bool read_only() const = 0;
   virtual void begin_write() = 0;
   virtual void commit() = 0;

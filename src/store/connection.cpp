@@ -40,7 +40,6 @@ Connection& Connection::operator=(Connection&& other) noexcept = default;
 Backend Connection::backend() const { return backend_->kind(); }
 void Connection::execute(std::string_view sql) { backend_->execute(sql); }
 Statement Connection::prepare(std::string_view sql) { return Statement(backend_->prepare(sql)); }
-std::int64_t Connection::changes() const { return backend_->changes(); }
 bool Connection::read_only() const { return backend_->read_only(); }
 void Connection::begin_write() { backend_->begin_write(); }
 void Connection::commit() { backend_->commit(); }

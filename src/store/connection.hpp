@@ -67,8 +67,6 @@ class Connection {
   /// dialect: the schema's migrations, PRAGMAs, SET).
   void execute(std::string_view sql);
   Statement prepare(std::string_view sql);
-  /// Rows the last INSERT, UPDATE or DELETE changed.
-  std::int64_t changes() const;
   /// The file's path, or the server URL without credentials.
   const std::string& path() const { return name_; }
   /// True when the database cannot be written through this connection (an

@@ -162,7 +162,11 @@ Database::Database(const store::DatabaseLocation& location, OpenMode mode)
     throw InputError(SourceLocation{path_.string()},
                      "database fails its integrity check: " + printable_text(check, 200));
   const int version = checked_schema_version();
-  if (read_only_ && version == 0) {
+  // A server's schema is always there: one that must hold a database and has
+  // no hydrocoef tables yet is refused as a missing SQLite file is.
+  const bool must_hold_data =
+      read_only_ || (mode == OpenMode::MustExist && connection_.backend() == store::Backend::PostgreSQL);
+  if (must_hold_data && version == 0) {
     check_schema(0);
     throw InputError(SourceLocation{path_.string()},
                      "an empty database (no hydrocoef data yet); expected one made by 'hydrocoef import'");

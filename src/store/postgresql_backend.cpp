@@ -49,10 +49,11 @@ class PgStatement final : public StatementBackend {
   PgStatement(PgConnection& connection, std::string_view sql);
 
   void bind_double(int index, double value) override {
+    // NaN is stored as NULL, as SQLite stores it: a value left undefined (a
+    // fit's R^2 of a constant) reads back as absent on both backends.
+    if (std::isnan(value)) return bind_null(index);
     std::string text;
-    if (std::isnan(value)) {
-      text = "NaN";
-    } else if (std::isinf(value)) {
+    if (std::isinf(value)) {
       text = value > 0 ? "Infinity" : "-Infinity";
     } else {
       char buffer[32];
@@ -176,7 +177,6 @@ class PgConnection final : public ConnectionBackend {
   std::unique_ptr<StatementBackend> prepare(std::string_view sql) override {
     return std::make_unique<PgStatement>(*this, sql);
   }
-  std::int64_t changes() const override { return changes_; }
   bool read_only() const override { return read_only_; }
   void begin_write() override;
   void commit() override {
@@ -200,7 +200,6 @@ class PgConnection final : public ConnectionBackend {
   PGconn* connection_ = nullptr;
   std::string display_;
   bool read_only_ = false;
-  std::int64_t changes_ = 0;
   int depth_ = 0;         ///< transactions open, the outermost one real
   bool reading_ = false;  ///< the outermost one is a read snapshot
 };
@@ -335,11 +334,7 @@ void PgConnection::begin_write() {
 
 void PgConnection::check(PGresult* result, const std::string& what) {
   const ExecStatusType status = result ? PQresultStatus(result) : PGRES_FATAL_ERROR;
-  if (status == PGRES_COMMAND_OK || status == PGRES_TUPLES_OK) {
-    const char* rows = PQcmdTuples(result);
-    changes_ = rows && *rows ? std::stoll(rows) : 0;
-    return;
-  }
+  if (status == PGRES_COMMAND_OK || status == PGRES_TUPLES_OK) return;
   const SourceLocation where{display_};
   const char* code_text = result ? PQresultErrorField(result, PG_DIAG_SQLSTATE) : nullptr;
   const std::string code = code_text ? code_text : "";

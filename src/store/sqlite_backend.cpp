@@ -87,7 +87,6 @@ class SqliteConnection final : public ConnectionBackend {
   std::unique_ptr<StatementBackend> prepare(std::string_view sql) override {
     return std::make_unique<SqliteStatement>(*this, sql);
   }
-  std::int64_t changes() const override { return sqlite3_changes64(db_); }
   bool read_only() const override { return sqlite3_db_readonly(db_, "main") == 1; }
   // A write transaction begun inside another joins it (see Transaction).
   void begin_write() override {
