@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -101,7 +102,7 @@ TEST(CliCfxRun, ACaseFileWithoutItsMonitorsIsRefused) {
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("no monitor file beside it"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("cfx5mondata"), std::string::npos) << result.err;
-  EXPECT_FALSE(std::filesystem::exists(dir / "hydrocoef.db") &&
+  EXPECT_FALSE(test::database_exists(dir / "hydrocoef.db") &&
                nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out).size() > 0);
 }
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -72,7 +73,7 @@ TEST(CliDynamics, EquilibriumOfThePapersTorques) {
   const auto text = run_cli({"equilibrium", "--vehicle", kVehicle, "--tau", "N=0.0027"}, dir.path());
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("rad/s"), std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(dir / "hydrocoef.db"));  // laws only: no database needed
+  EXPECT_FALSE(test::database_exists(dir / "hydrocoef.db"));  // laws only: no database needed
 }
 
 TEST(CliDynamics, SimulateWritesTheTrajectoryAndSettlesAtTheRoot) {

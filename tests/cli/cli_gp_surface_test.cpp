@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "src/store/connection.hpp"
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sphere_cases.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -147,8 +148,12 @@ TEST_F(GpSurfaceCli, QueriesStateTheStandardDeviation) {
                 .exit_code,
             0);
   {
-    store::Connection connection((dir_ / "runs.db").string(), store::Access::ReadWrite);
-    connection.execute("UPDATE surface SET definition = json_remove(definition, '$.uncertainty') WHERE name = 'rbfx'");
+    auto connection = test::connect_database(dir_ / "runs.db");
+    connection.execute(test::on_postgresql()
+                           ? "UPDATE surface SET definition = (definition::jsonb - 'uncertainty')::text WHERE name = "
+                             "'rbfx'"
+                           : "UPDATE surface SET definition = json_remove(definition, '$.uncertainty') WHERE name = "
+                             "'rbfx'");
   }
   const auto refused = cli({"query", "rbfx", "--input", "points.csv", "--output", "out.csv", "--uncertainty"});
   EXPECT_EQ(refused.exit_code, 2);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "src/store/database.hpp"
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -131,7 +132,7 @@ TEST_F(CliPlot, BadInputIsOneLineAndExitCode2) {
   EXPECT_EQ(curves.exit_code, 2);
   EXPECT_TRUE(one_line(curves.err)) << curves.err;
 
-  { Database empty(dir / "empty.db"); }
+  { Database empty(test::database_location(dir / "empty.db")); }
   const auto empty = run_cli({"--db", "empty.db", "plot", "fit", "x"}, dir.path());
   EXPECT_EQ(empty.exit_code, 2);
   EXPECT_NE(empty.err.find("has no runs"), std::string::npos) << empty.err;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sqlite_dump.hpp"
 
@@ -42,7 +43,7 @@ TEST(CliSurface, IntegrateReproducesOpenFoamForcesInItsOwnAxes) {
   EXPECT_EQ(out["pressure_kind"], "kinematic");
   EXPECT_EQ(out["shear_convention"], "on-fluid");
   EXPECT_NEAR(out["area"].get<double>(), 4 * 3.14159265358979 * 0.15 * 0.15, 0.03 * 0.2827);
-  EXPECT_FALSE(std::filesystem::exists(dir / "hydrocoef.db"));  // integrate stores nothing
+  EXPECT_FALSE(test::database_exists(dir / "hydrocoef.db"));  // integrate stores nothing
 
   const auto text = run_cli({"integrate", file, "--rho", "998.2"}, dir.path());
   EXPECT_EQ(text.exit_code, 0);
@@ -123,7 +124,7 @@ TEST(CliSurface, AFolderWithSidecarsImportsInParallelInOneTransaction) {
   const auto bad = run_cli({"import", (other / "sweep").string(), "--rho", "998.2"}, other.path());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("b.vtp"), std::string::npos) << bad.err;
-  EXPECT_FALSE(std::filesystem::exists(other / "hydrocoef.db"));
+  EXPECT_FALSE(test::database_exists(other / "hydrocoef.db"));
 }
 
 TEST(CliSurface, SameFileTwiceIsANoOpAndBadOptionsAreNamed) {

@@ -41,7 +41,7 @@ TEST(Cli, VersionAndHelpExitZero) {
     EXPECT_EQ(help.exit_code, 0) << command;
     EXPECT_NE(help.out.find("--json"), std::string::npos) << command;
   }
-  EXPECT_FALSE(std::filesystem::exists(dir / "hydrocoef.db"));
+  EXPECT_FALSE(test::database_exists(dir / "hydrocoef.db"));
 }
 
 TEST(Cli, UsageErrorsExitTwoWithOneLine) {
@@ -58,7 +58,7 @@ TEST(Cli, AsrVPipelineReproducesThePapersLaws) {
   TempDir dir;
   ASSERT_EQ(run_cli({"import", kSurge, "--body", "asr-v", "--sign", "opposing"}, dir.path()).exit_code, 0);
   ASSERT_EQ(run_cli({"import", kYaw, "--body", "asr-v"}, dir.path()).exit_code, 0);
-  EXPECT_TRUE(std::filesystem::exists(dir / "hydrocoef.db"));  // the default database
+  EXPECT_TRUE(test::database_exists(dir / "hydrocoef.db"));  // the default database
 
   const auto runs = run_cli({"runs", "--body", "asr-v", "--json"}, dir.path());
   ASSERT_EQ(runs.exit_code, 0) << runs.err;
@@ -168,11 +168,14 @@ TEST(Cli, ReadingCommandsDoNotCreateADatabase) {
   TempDir dir;
   const auto result = run_cli({"runs"}, dir.path());
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_NE(result.err.find("hydrocoef.db"), std::string::npos) << result.err;
-  EXPECT_FALSE(std::filesystem::exists(dir / "hydrocoef.db"));
+  // Named as given: the default file name, or the server's URL.
+  const std::string name = test::on_postgresql() ? test::database_display(dir / "hydrocoef.db") : "hydrocoef.db";
+  EXPECT_NE(result.err.find(name), std::string::npos) << result.err;
+  EXPECT_FALSE(test::database_exists(dir / "hydrocoef.db"));
 }
 
 TEST(Cli, CorruptDatabaseIsReportedNotOverwritten) {
+  HYDROCOEF_SQLITE_FILE_ONLY("an SQLite file that is not a database");
   TempDir dir;
   write(dir / "hydrocoef.db", std::string(8192, 'x'));
   const auto result = run_cli({"import", kSurge}, dir.path());

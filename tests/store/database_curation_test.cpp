@@ -11,6 +11,7 @@
 
 #include "src/core/error.hpp"
 #include "src/store/database.hpp"
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/sqlite_dump.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -40,7 +41,10 @@ ImportBatch reading(char hash, double u, double x, const std::string& settings_v
   return batch;
 }
 
+// Rows whose foreign keys point nowhere. (PostgreSQL checks every foreign key
+// at each write: none can be there.)
 std::string foreign_key_problems(const std::filesystem::path& path) {
+  if (test::on_postgresql()) return "";
   sqlite3* db = nullptr;
   sqlite3_open(path.c_str(), &db);
   sqlite3_stmt* statement = nullptr;
@@ -70,7 +74,7 @@ FitRecord fit_of(const std::vector<StoredRun>& runs) {
 
 TEST(DatabaseCuration, TheSameBytesAndSettingsAreANoOpOtherSettingsAreRefused) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   db.import({reading('a', 0.1, -0.11)}, ImportOptions{});
   const auto again = db.import({reading('a', 0.1, -0.11)}, ImportOptions{});
   ASSERT_EQ(again.size(), 1u);
@@ -93,7 +97,7 @@ TEST(DatabaseCuration, TheSameBytesAndSettingsAreANoOpOtherSettingsAreRefused) {
 // run and 199 silent no-ops. Without --also they are refused, clearly.
 TEST(DatabaseCuration, TwoHundredIdenticalFilesWithDifferentKeysAreNeverDroppedSilently) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   std::vector<ImportBatch> batches;
   for (int i = 0; i < 200; ++i) batches.push_back(reading('c', 0.01 * (i + 1), -1.0 * i));
   const auto before = dump_database(dir / "db");
@@ -104,7 +108,7 @@ TEST(DatabaseCuration, TwoHundredIdenticalFilesWithDifferentKeysAreNeverDroppedS
 
 TEST(DatabaseCuration, ReplaceCorrectsAnImportAndMakesItsFitsAndSurfacesStale) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   db.import({reading('a', 0.1, -0.11), reading('b', 0.2, -0.44)}, ImportOptions{});
   db.save_fit(fit_of(db.runs()));
   SurfaceRecord surface;
@@ -142,7 +146,7 @@ TEST(DatabaseCuration, ReplaceCorrectsAnImportAndMakesItsFitsAndSurfacesStale) {
 
 TEST(DatabaseCuration, AlsoKeepsASecondReadingOfTheSameFile) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   db.import({reading('a', 0.1, -0.11)}, ImportOptions{});
   ImportOptions also;
   also.also = "mean";
@@ -156,7 +160,7 @@ TEST(DatabaseCuration, AlsoKeepsASecondReadingOfTheSameFile) {
 
 TEST(DatabaseCuration, DeletingRunsLeavesNoOrphansAndMakesFitsStale) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   db.import({reading('a', 0.1, -0.11), reading('b', 0.2, -0.44), reading('c', 0.3, -0.99)}, ImportOptions{});
   db.save_fit(fit_of(db.runs()));
   const auto before = dump_database(dir / "db");
@@ -202,7 +206,7 @@ ImportBatch averaged_reading(char hash, double u, double x, double standard_erro
 
 TEST(DatabaseCuration, ForceStatisticsAreStoredWithTheirComponentAndGoWithIt) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   db.import({averaged_reading('a', 0.1, -0.11, 0.002, {}), averaged_reading('b', 0.2, -0.44, 0.01, {"drifting"}),
              reading('c', 0.3, -0.99)},
             ImportOptions{});
@@ -236,33 +240,27 @@ TEST(DatabaseCuration, ForceStatisticsAreStoredWithTheirComponentAndGoWithIt) {
 
   // Deleted with their run: no orphan rows.
   db.delete_runs({runs[0].id});
-  sqlite3* raw = nullptr;
-  ASSERT_EQ(sqlite3_open((dir / "db").c_str(), &raw), SQLITE_OK);
-  sqlite3_stmt* count = nullptr;
-  sqlite3_prepare_v2(raw, "SELECT count(*) FROM run_force_statistics", -1, &count, nullptr);
-  ASSERT_EQ(sqlite3_step(count), SQLITE_ROW);
-  EXPECT_EQ(sqlite3_column_int(count, 0), 0);
-  sqlite3_finalize(count);
-  sqlite3_close(raw);
+  {
+    auto raw = test::connect_database(dir / "db");
+    auto count = raw.prepare("SELECT count(*) FROM run_force_statistics");
+    ASSERT_TRUE(count.step());
+    EXPECT_EQ(count.get_int(0), 0);
+  }
   EXPECT_EQ(foreign_key_problems(dir / "db"), "");
 }
 
 TEST(DatabaseCuration, StatisticsOfAComponentTheRunLacksAreRefusedOnRead) {
   TempDir dir;
   {
-    Database db(dir / "db");
+    Database db(test::database_location(dir / "db"));
     db.import({averaged_reading('a', 0.1, -0.11, 0.002, {})}, ImportOptions{});
   }
-  sqlite3* raw = nullptr;
-  ASSERT_EQ(sqlite3_open((dir / "db").c_str(), &raw), SQLITE_OK);
-  ASSERT_EQ(sqlite3_exec(raw,
-                         "INSERT INTO run_force_statistics SELECT run_id, 'Y', abscissa, window_method, window_first, "
-                         "window_last, samples, flags, standard_error, spread, drift, effective_samples FROM "
-                         "run_force_statistics",
-                         nullptr, nullptr, nullptr),
-            SQLITE_OK);
-  sqlite3_close(raw);
-  Database db(dir / "db", Database::OpenMode::ReadOnly);
+  test::connect_database(dir / "db")
+      .execute(
+          "INSERT INTO run_force_statistics SELECT run_id, 'Y', abscissa, window_method, window_first, "
+          "window_last, samples, flags, standard_error, spread, drift, effective_samples FROM "
+          "run_force_statistics");
+  Database db(test::database_location(dir / "db"), Database::OpenMode::ReadOnly);
   try {
     (void)db.runs();
     FAIL() << "statistics of a missing component were read";

@@ -10,6 +10,7 @@
 
 #include "src/core/error.hpp"
 #include "src/store/migrations.hpp"
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/sqlite_dump.hpp"
 
 namespace hydrocoef {
@@ -44,25 +45,25 @@ constexpr std::size_t kX = 0, kY = 1, kN = 5;
 
 TEST(Database, NewFileGetsEveryMigrationRecordedInUserVersion) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   EXPECT_EQ(db.schema_version(), static_cast<int>(store::migrations().size()));
   EXPECT_GE(db.schema_version(), 1);
   EXPECT_EQ(db.integrity_check(), "ok");
   // Opening again applies nothing and keeps the content.
   const auto before = dump_database(dir / "runs.db");
-  Database again(dir / "runs.db");
+  Database again(test::database_location(dir / "runs.db"));
   EXPECT_EQ(dump_database(dir / "runs.db"), before);
 }
 
 TEST(Database, MustExistRefusesAMissingFileWithoutCreatingIt) {
   TempDir dir;
-  EXPECT_THROW(Database(dir / "absent.db", Database::OpenMode::MustExist), InputError);
-  EXPECT_FALSE(std::filesystem::exists(dir / "absent.db"));
+  EXPECT_THROW(Database(test::database_location(dir / "absent.db"), Database::OpenMode::MustExist), InputError);
+  EXPECT_FALSE(test::database_exists(dir / "absent.db"));
 }
 
 TEST(Database, ImportsRunsAndFindsThemByKey) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   auto run = make_run({0.1, 0, 0, 0, 0, 0.2}, kX, -1.5, 3, {{"current_v", 0.05}});
   run.fluid.density_kg_m3 = 998.2;
   run.reference_point_b = {0.0, 0.0, 0.01};
@@ -107,7 +108,7 @@ TEST(Database, ImportsRunsAndFindsThemByKey) {
 
 TEST(Database, SourceProvenanceIsKept) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   db.import({make_batch("tables/a.csv", 'b', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);
   const auto sources = db.sources();
   ASSERT_EQ(sources.size(), 1u);
@@ -121,7 +122,7 @@ TEST(Database, SourceProvenanceIsKept) {
 
 TEST(Database, SameBytesTwiceIsANoOpThatSaysSo) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   const auto batch = make_batch("a.csv", 'c', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)});
   db.import({batch}, ConflictPolicy::Error);
   const auto before = dump_database(dir / "runs.db");
@@ -135,7 +136,7 @@ TEST(Database, SameBytesTwiceIsANoOpThatSaysSo) {
   EXPECT_EQ(dump_database(dir / "runs.db"), before);
   // The same file twice in one call is imported once.
   TempDir other_dir;
-  Database other(other_dir / "runs.db");
+  Database other(test::database_location(other_dir / "runs.db"));
   const auto both = other.import({batch, batch}, ConflictPolicy::Error);
   EXPECT_FALSE(both[0].already_imported);
   EXPECT_TRUE(both[1].already_imported);
@@ -144,7 +145,7 @@ TEST(Database, SameBytesTwiceIsANoOpThatSaysSo) {
 
 TEST(Database, TwoFilesMayGiveDifferentComponentsOfOneRun) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   db.import({make_batch("surge.csv", 'd', {make_run({}, kX, -0.0002, 2)})}, ConflictPolicy::Error);
   const auto outcomes = db.import({make_batch("yaw.csv", 'e', {make_run({}, kN, -0.00006, 2)})}, ConflictPolicy::Error);
   EXPECT_EQ(outcomes[0].runs_created, 0u);
@@ -157,7 +158,7 @@ TEST(Database, TwoFilesMayGiveDifferentComponentsOfOneRun) {
 
 TEST(Database, ConflictingComponentFailsAndLeavesEverythingAsItWas) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   db.import({make_batch("first.csv", '1', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1.0, 2)})}, ConflictPolicy::Error);
   const auto before = dump_database(dir / "runs.db");
   // The batch list holds a good new file first and a conflicting one second:
@@ -187,7 +188,7 @@ TEST(Database, ConflictingComponentFailsAndLeavesEverythingAsItWas) {
 
 TEST(Database, DifferentFluidOrReferencePointForOneRunIsRefused) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   auto first = make_run({0.1, 0, 0, 0, 0, 0}, kX, 1.0, 2);
   first.fluid.density_kg_m3 = 998.2;
   db.import({make_batch("a.csv", 'a', {first})}, ConflictPolicy::Error);
@@ -212,7 +213,7 @@ TEST(Database, DifferentFluidOrReferencePointForOneRunIsRefused) {
 
 TEST(Database, FiltersByBodyComponentValueAndDisturbance) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   std::vector<ImportedRun> runs;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 3; ++j)
@@ -233,7 +234,7 @@ TEST(Database, FiltersByBodyComponentValueAndDisturbance) {
 
 TEST(Database, FitsAreStoredWithTheirRunsAndReplacedByName) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   db.import(
       {make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
       ConflictPolicy::Error);
@@ -276,13 +277,14 @@ TEST(Database, FitsAreStoredWithTheirRunsAndReplacedByName) {
 }
 
 TEST(Database, RefusesFilesThatAreNotItsDatabases) {
+  HYDROCOEF_SQLITE_FILE_ONLY("an SQLite file that is not a database, or of another program");
   TempDir dir;
   {
     std::ofstream garbage(dir / "garbage.db", std::ios::binary);
     for (int i = 0; i < 4096; ++i) garbage.put(static_cast<char>((i * 131 + 7) % 256));
   }
   try {
-    Database db(dir / "garbage.db");
+    Database db(test::database_location(dir / "garbage.db"));
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("garbage.db"), std::string::npos) << error.what();
@@ -294,17 +296,17 @@ TEST(Database, RefusesFilesThatAreNotItsDatabases) {
   sqlite3_exec(foreign, "CREATE TABLE t(x); INSERT INTO t VALUES (1);", nullptr, nullptr, nullptr);
   sqlite3_close(foreign);
   const auto foreign_before = dump_database(dir / "foreign.db");
-  EXPECT_THROW(Database(dir / "foreign.db"), InputError);
+  EXPECT_THROW(Database(test::database_location(dir / "foreign.db")), InputError);
   EXPECT_EQ(dump_database(dir / "foreign.db"), foreign_before);
 
   // A database from a newer hydrocoef.
-  { Database db(dir / "newer.db"); }
+  { Database db(test::database_location(dir / "newer.db")); }
   sqlite3* newer = nullptr;
   ASSERT_EQ(sqlite3_open((dir / "newer.db").c_str(), &newer), SQLITE_OK);
   sqlite3_exec(newer, "PRAGMA user_version = 999", nullptr, nullptr, nullptr);
   sqlite3_close(newer);
   try {
-    Database db(dir / "newer.db");
+    Database db(test::database_location(dir / "newer.db"));
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("999"), std::string::npos) << error.what();
@@ -312,9 +314,10 @@ TEST(Database, RefusesFilesThatAreNotItsDatabases) {
 }
 
 TEST(Database, DetectsACorruptedPage) {
+  HYDROCOEF_SQLITE_FILE_ONLY("a damaged page of an SQLite file");
   TempDir dir;
   {
-    Database db(dir / "runs.db");
+    Database db(test::database_location(dir / "runs.db"));
     std::vector<ImportedRun> runs;
     for (int i = 0; i < 400; ++i)
       runs.push_back(make_run({0.001 * i, 0, 0, 0, 0, 0}, kX, i, 2 + static_cast<std::size_t>(i)));
@@ -328,7 +331,7 @@ TEST(Database, DetectsACorruptedPage) {
     file.seekp(static_cast<std::streamoff>(size / 2));
     for (int i = 0; i < 4096; ++i) file.put(static_cast<char>(0xA5));
   }
-  EXPECT_THROW(Database(dir / "runs.db"), InputError);
+  EXPECT_THROW(Database(test::database_location(dir / "runs.db")), InputError);
 }
 
 }  // namespace
@@ -352,7 +355,7 @@ SurfaceRecord make_surface(const std::string& name, const std::string& body, std
 
 TEST(DatabaseSurfaces, RoundTripBitForBitWithTheirRuns) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   db.import(
       {make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
       ConflictPolicy::Error);
@@ -376,7 +379,7 @@ TEST(DatabaseSurfaces, RoundTripBitForBitWithTheirRuns) {
 
 TEST(DatabaseSurfaces, AChangeToTheBodysForcesMarksItsSurfacesStale) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   auto other = make_run({0.1, 0, 0, 0, 0, 0}, kX, 5, 2);
   other.key.body = "cube";
   db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)}), make_batch("c.csv", 'c', {other})},
@@ -400,7 +403,7 @@ TEST(DatabaseSurfaces, AChangeToTheBodysForcesMarksItsSurfacesStale) {
 
 TEST(DatabaseSurfaces, MissingNamesAndBodiesAreInputErrorsThatChangeNothing) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  Database db(test::database_location(dir / "runs.db"));
   db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);
   db.save_surface(make_surface("sphere-X", "sphere", {}));
   try {
@@ -415,6 +418,7 @@ TEST(DatabaseSurfaces, MissingNamesAndBodiesAreInputErrorsThatChangeNothing) {
 }
 
 TEST(DatabaseSurfaces, AnOlderDatabaseIsMigratedOnOpen) {
+  HYDROCOEF_SQLITE_FILE_ONLY("an SQLite file of schema version 2 (PostgreSQL support starts at the latest)");
   TempDir dir;
   // A database as an earlier hydrocoef left it: migrations 1 and 2 only.
   sqlite3* raw = nullptr;
@@ -425,7 +429,7 @@ TEST(DatabaseSurfaces, AnOlderDatabaseIsMigratedOnOpen) {
   }
   sqlite3_exec(raw, "PRAGMA user_version = 2", nullptr, nullptr, nullptr);
   sqlite3_close(raw);
-  Database db(dir / "old.db");
+  Database db(test::database_location(dir / "old.db"));
   EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
   EXPECT_GE(Database::latest_schema_version(), 3);
   db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);

@@ -9,6 +9,7 @@
 #include "src/core/error.hpp"
 #include "src/store/database.hpp"
 #include "src/store/pmm_record.hpp"
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/expect_input_error.hpp"
 #include "tests/support/older_database.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -55,7 +56,7 @@ PmmRecord sample_record() {
 
 TEST(PmmStore, RoundTripAndReplacement) {
   test::TempDir dir;
-  Database db(dir / "a.db");
+  Database db(test::database_location(dir / "a.db"));
   const PmmRecord r = sample_record();
   const auto saved = db.save_pmm({r});
   ASSERT_EQ(saved.size(), 1u);
@@ -87,13 +88,15 @@ TEST(PmmStore, RoundTripAndReplacement) {
 }
 
 TEST(PmmStore, ASchema11DatabaseOpensAtTheLatestWithNoRecords) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
   test::TempDir dir;
   {
-    Database db(dir / "current.db");
+    Database db(test::database_location(dir / "current.db"));
     db.save_pmm({sample_record()});
   }
   test::copy_as_schema_version(dir / "current.db", dir / "v11.db", 11);
-  Database db(dir / "v11.db");
+  Database db(test::database_location(dir / "v11.db"));
   EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
   EXPECT_TRUE(db.pmm_records().empty());
   db.save_pmm({sample_record()});
@@ -101,6 +104,7 @@ TEST(PmmStore, ASchema11DatabaseOpensAtTheLatestWithNoRecords) {
 }
 
 TEST(PmmStore, DamagedValuesAreRefusedNamingTheTableRowAndColumn) {
+  HYDROCOEF_SQLITE_FILE_ONLY("values that break CHECK constraints and column types, which PostgreSQL always enforces");
   const std::vector<std::pair<std::string, std::vector<std::string>>> damage = {
       {"UPDATE pmm_coefficient SET added_mass = 'heavy'", {"pmm_coefficient", "added_mass"}},
       {"UPDATE pmm_coefficient SET harmonics = '[1, 2]'", {"pmm_coefficient", "harmonics"}},
@@ -111,7 +115,7 @@ TEST(PmmStore, DamagedValuesAreRefusedNamingTheTableRowAndColumn) {
   for (const auto& [sql, expected] : damage) {
     test::TempDir dir;
     {
-      Database db(dir / "a.db");
+      Database db(test::database_location(dir / "a.db"));
       db.save_pmm({sample_record()});
     }
     sqlite3* raw = nullptr;
@@ -121,7 +125,7 @@ TEST(PmmStore, DamagedValuesAreRefusedNamingTheTableRowAndColumn) {
               SQLITE_OK)
         << sql;
     sqlite3_close(raw);
-    Database db(dir / "a.db", Database::OpenMode::ReadOnly);
+    Database db(test::database_location(dir / "a.db"), Database::OpenMode::ReadOnly);
     test::expect_input_error([&] { db.pmm_records(); }, expected);
   }
 }

@@ -19,6 +19,7 @@
 #include "src/store/database.hpp"
 #include "src/store/migrations.hpp"
 #include "src/store/schema_check.hpp"
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/sqlite_dump.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -116,6 +117,9 @@ void expect_refused(const std::filesystem::path& path, const std::vector<std::st
 }
 
 TEST(ReceivedDatabase, SchemaVersionsOutsideTheKnownRangeAreRefused) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a received SQLite file, whose bytes must stay as they were (PostgreSQL schema checks: "
+      "tests/store/store_backends_test.cpp)");
   TempDir dir;
   const auto path = good_database(dir);
   exec(path, "PRAGMA user_version = -1");
@@ -128,6 +132,9 @@ TEST(ReceivedDatabase, SchemaVersionsOutsideTheKnownRangeAreRefused) {
 }
 
 TEST(ReceivedDatabase, AForeignTriggerViewOrIndexIsRefusedAndNeverRuns) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a received SQLite file, whose bytes must stay as they were (PostgreSQL schema checks: "
+      "tests/store/store_backends_test.cpp)");
   TempDir dir;
   const auto path = good_database(dir);
   exec(path, "CREATE TRIGGER evil AFTER INSERT ON run_force BEGIN DELETE FROM fit; END;");
@@ -143,6 +150,9 @@ TEST(ReceivedDatabase, AForeignTriggerViewOrIndexIsRefusedAndNeverRuns) {
 }
 
 TEST(ReceivedDatabase, ADroppedOrAddedColumnOrTableIsRefused) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a received SQLite file, whose bytes must stay as they were (PostgreSQL schema checks: "
+      "tests/store/store_backends_test.cpp)");
   TempDir dir;
   const auto path = good_database(dir);
   exec(path, "ALTER TABLE run DROP COLUMN ref_z");
@@ -154,6 +164,9 @@ TEST(ReceivedDatabase, ADroppedOrAddedColumnOrTableIsRefused) {
 }
 
 TEST(ReceivedDatabase, ValuesOfTheWrongTypeOrRangeNameTheTableRowAndColumn) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a received SQLite file, whose bytes must stay as they were (PostgreSQL schema checks: "
+      "tests/store/store_backends_test.cpp)");
   TempDir dir;
   const auto path = good_database(dir);
   exec(path, "UPDATE run SET u = 'fast'");
@@ -167,6 +180,9 @@ TEST(ReceivedDatabase, ValuesOfTheWrongTypeOrRangeNameTheTableRowAndColumn) {
 }
 
 TEST(ReceivedDatabase, NamesThatBreakTheNameRuleAreRefusedOnRead) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a received SQLite file, whose bytes must stay as they were (PostgreSQL schema checks: "
+      "tests/store/store_backends_test.cpp)");
   TempDir dir;
   const auto path = good_database(dir);
   exec(path, "UPDATE body SET name = 'a' || char(10) || 'system(\"touch x\")'");
@@ -177,7 +193,7 @@ TEST(ReceivedDatabase, NamesThatBreakTheNameRuleAreRefusedOnRead) {
 
 TEST(ReceivedDatabase, TheLibraryRefusesToStoreNamesThatBreakTheRule) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   db.import({one_run_batch()}, ConflictPolicy::Error);
   const auto before = test::dump_database(dir / "db");
   EXPECT_THROW(db.import({one_run_batch("a\nb", 'b')}, ConflictPolicy::Error), InputError);
@@ -186,6 +202,8 @@ TEST(ReceivedDatabase, TheLibraryRefusesToStoreNamesThatBreakTheRule) {
 }
 
 TEST(ReceivedDatabase, AVersion3DatabaseMigratesKeepingItsFitsAndR2BecomesOptional) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
   TempDir dir;
   const auto path = dir / "v3.db";
   sqlite3* raw = nullptr;
@@ -225,13 +243,14 @@ TEST(ReceivedDatabase, AVersion3DatabaseMigratesKeepingItsFitsAndR2BecomesOption
     }
   }
   // The migrated schema is exactly what a new database gets.
-  Database fresh(dir / "fresh.db");
+  Database fresh(test::database_location(dir / "fresh.db"));
   store::Connection a(path.string(), store::Access::ReadOnly);
   store::Connection b((dir / "fresh.db").string(), store::Access::ReadOnly);
   EXPECT_FALSE(store::schema_difference(store::schema_of(b), store::schema_of(a)).has_value());
 }
 
 TEST(ReceivedDatabase, ReadOnlyOpeningNeverWritesAndReadsWhereNoShmFileCanBeMade) {
+  HYDROCOEF_SQLITE_FILE_ONLY("SQLite's WAL and -shm files");
   TempDir dir;
   const auto path = dir / "wal.db";
   {
@@ -256,7 +275,7 @@ TEST(ReceivedDatabase, AnEmptyFileIsNotReadAsADatabaseAndStaysEmpty) {
   TempDir dir;
   { std::ofstream(dir / "empty.db"); }
   try {
-    Database db(dir / "empty.db", Database::OpenMode::ReadOnly);
+    Database db(test::database_location(dir / "empty.db"), Database::OpenMode::ReadOnly);
     FAIL() << "opened";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("empty database"), std::string::npos) << e.what();
@@ -266,7 +285,7 @@ TEST(ReceivedDatabase, AnEmptyFileIsNotReadAsADatabaseAndStaysEmpty) {
 
 TEST(ReceivedDatabase, SeveralFitsAreStoredAllOrNone) {
   TempDir dir;
-  Database db(dir / "db");
+  Database db(test::database_location(dir / "db"));
   db.import({one_run_batch()}, ConflictPolicy::Error);
   const auto run = db.runs().front().id;
   FitRecord bad = a_fit("second", run);

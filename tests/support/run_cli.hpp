@@ -1,5 +1,8 @@
 // Test support: runs the hydrocoef binary with arguments and captures its
-// exit code, standard output and standard error.
+// exit code, standard output and standard error. When the binary runs on
+// PostgreSQL (tests/support/backend_under_test.hpp), the database file names
+// given to --db, and the default hydrocoef.db of the working folder, stand for
+// schemas on the test server.
 #pragma once
 
 #include <sys/wait.h>
@@ -10,6 +13,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/support/backend_under_test.hpp"
 
 namespace hydrocoef::test {
 
@@ -42,8 +47,19 @@ inline std::string read_text(const std::filesystem::path& path) {
 /// before the program in the same shell (e.g. "ulimit -v 3000000 && ").
 inline CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                          const std::filesystem::path& stdin_path = "/dev/null", const std::string& shell_prefix = "") {
-  std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_prefix + shell_quote(HYDROCOEF_CLI);
-  for (const auto& arg : args) command.append(" ").append(shell_quote(arg));
+  std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_prefix;
+  std::vector<std::string> arguments = args;
+  if (on_postgresql()) {
+    command.append("HYDROCOEF_DB=").append(shell_quote(database_location(cwd / "hydrocoef.db"))).append(" ");
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+      if (arguments[i] == "--db" && i + 1 < arguments.size())
+        arguments[i + 1] = database_location(cwd / arguments[i + 1]);
+      else if (arguments[i].rfind("--db=", 0) == 0)
+        arguments[i] = "--db=" + database_location(cwd / arguments[i].substr(5));
+    }
+  }
+  command.append(shell_quote(HYDROCOEF_CLI));
+  for (const auto& arg : arguments) command.append(" ").append(shell_quote(arg));
   const auto out_path = cwd / ".cli-stdout";
   const auto err_path = cwd / ".cli-stderr";
   // Appended piece by piece: GCC 12 at -O3 warns falsely (stringop-overflow)

@@ -1,6 +1,8 @@
-// Test support: the whole content of an SQLite file as text (schema, user
-// version and every row of every table, sorted), so a test
-// can assert that a failed operation left a database exactly as it was.
+// Test support: the whole content of a test database as text, so a test can
+// assert that a failed operation left a database exactly as it was. On
+// SQLite: the file's schema, user version and every row of every table,
+// sorted. On PostgreSQL (tests/support/backend_under_test.hpp): the schema
+// version and every row of the schema standing for the file name.
 #pragma once
 
 #include <sqlite3.h>
@@ -11,11 +13,21 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/backend_under_test.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef::test {
 
 inline std::string dump_database(const std::filesystem::path& path) {
+  if (on_postgresql()) {
+    auto connection = connect_database(path, store::Access::ReadOnly);
+    std::string version = "none";
+    if (database_exists(path)) {
+      auto row = connection.prepare("SELECT version FROM hydrocoef_schema");
+      version = row.step() ? std::to_string(row.get_int(0)) : "no row";
+    }
+    return "version=" + version + "\n" + dump_rows(connection);
+  }
   sqlite3* db = nullptr;
   if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
     sqlite3_close(db);

@@ -38,6 +38,75 @@ inline const char* backend_name(store::Backend backend) {
   return backend == store::Backend::SQLite ? "SQLite" : "PostgreSQL";
 }
 
+namespace detail {
+
+inline std::string dump_value(const store::Statement& row, int c) {
+  switch (row.column_type(c)) {
+    case store::ColumnType::Null: return "NULL";
+    case store::ColumnType::Integer: return std::to_string(row.get_int(c));
+    case store::ColumnType::Float: {
+      char buffer[32];
+      const auto end = std::to_chars(buffer, buffer + sizeof buffer, row.get_double(c)).ptr;
+      return std::string(buffer, end);
+    }
+    case store::ColumnType::Text: return "'" + row.get_text(c) + "'";
+    case store::ColumnType::Blob: {
+      const auto values = row.get_doubles(c);
+      std::string text = "blob:";
+      for (const double v : values) {
+        char buffer[32];
+        text += std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr) + ",";
+      }
+      return text;
+    }
+  }
+  return "?";
+}
+
+}  // namespace detail
+
+/// Every row of every table, as text, tables by name and rows sorted: two
+/// dumps are equal when the databases hold the same rows, on either backend.
+/// Doubles are written exactly (shortest round-trip form), blobs in hex.
+/// `ignored` columns (e.g. imported_at) are left out.
+inline std::string dump_rows(store::Connection& connection, const std::set<std::string>& ignored = {}) {
+  const bool sqlite = connection.backend() == store::Backend::SQLite;
+  std::vector<std::string> tables;
+  {
+    auto list = connection.prepare(
+        sqlite ? "SELECT name FROM sqlite_schema WHERE type = 'table' AND name NOT LIKE 'sqlite%' ORDER BY name"
+               : "SELECT table_name FROM information_schema.tables WHERE table_schema = current_schema() AND "
+                 "table_name <> 'hydrocoef_schema' ORDER BY table_name");
+    while (list.step()) tables.push_back(list.get_text(0));
+  }
+  std::string out;
+  for (const auto& table : tables) {
+    std::vector<std::string> columns;
+    {
+      auto info = connection.prepare(sqlite ? "SELECT name FROM pragma_table_info(?) ORDER BY cid"
+                                            : "SELECT column_name FROM information_schema.columns WHERE table_schema "
+                                              "= current_schema() AND table_name = ? ORDER BY column_name");
+      info.bind(1, table);
+      while (info.step())
+        if (!ignored.count(info.get_text(0))) columns.push_back(info.get_text(0));
+    }
+    std::sort(columns.begin(), columns.end());
+    std::string select;
+    for (const auto& c : columns) select += (select.empty() ? "" : ", ") + ("\"" + c + "\"");
+    auto rows = connection.prepare("SELECT " + select + " FROM \"" + table + "\"");
+    std::vector<std::string> lines;
+    while (rows.step()) {
+      std::string line;
+      for (std::size_t c = 0; c < columns.size(); ++c) line += "|" + detail::dump_value(rows, static_cast<int>(c));
+      lines.push_back(std::move(line));
+    }
+    std::sort(lines.begin(), lines.end());
+    out += "== " + table + "\n";
+    for (const auto& line : lines) out += line + "\n";
+  }
+  return out;
+}
+
 class TestDatabase {
  public:
   /// An SQLite file in a temporary folder, or a new schema on the test
@@ -81,75 +150,14 @@ class TestDatabase {
     return store::Connection::postgresql(location_, location_, store::Access::ReadWrite);
   }
 
-  /// Every row of every table, as text, tables by name and rows sorted: two
-  /// dumps are equal when the databases hold the same rows. Doubles are
-  /// written exactly (shortest round-trip form), blobs in hex.
-  /// `ignored` columns (e.g. imported_at) are left out.
+  /// Every row of every table (dump_rows), `ignored` columns left out.
   std::string dump(const std::set<std::string>& ignored = {}) const {
     store::Connection connection = connect();
-    std::vector<std::string> tables;
-    {
-      auto list = connection.prepare(
-          backend_ == store::Backend::SQLite
-              ? "SELECT name FROM sqlite_schema WHERE type = 'table' AND name NOT LIKE 'sqlite%' ORDER BY name"
-              : "SELECT table_name FROM information_schema.tables WHERE table_schema = current_schema() AND "
-                "table_name <> 'hydrocoef_schema' ORDER BY table_name");
-      while (list.step()) tables.push_back(list.get_text(0));
-    }
-    std::string out;
-    for (const auto& table : tables) {
-      std::vector<std::string> columns;
-      {
-        auto info = connection.prepare(backend_ == store::Backend::SQLite
-                                           ? "SELECT name FROM pragma_table_info(?) ORDER BY cid"
-                                           : "SELECT column_name FROM information_schema.columns WHERE table_schema "
-                                             "= current_schema() AND table_name = ? ORDER BY column_name");
-        info.bind(1, table);
-        while (info.step())
-          if (!ignored.count(info.get_text(0))) columns.push_back(info.get_text(0));
-      }
-      std::sort(columns.begin(), columns.end());
-      std::string select;
-      for (const auto& c : columns) select += (select.empty() ? "" : ", ") + ("\"" + c + "\"");
-      auto rows = connection.prepare("SELECT " + select + " FROM \"" + table + "\"");
-      std::vector<std::string> lines;
-      while (rows.step()) {
-        std::string line;
-        for (std::size_t c = 0; c < columns.size(); ++c) line += "|" + value(rows, static_cast<int>(c));
-        lines.push_back(std::move(line));
-      }
-      std::sort(lines.begin(), lines.end());
-      out += "== " + table + "\n";
-      for (const auto& line : lines) out += line + "\n";
-    }
-    return out;
+    return dump_rows(connection, ignored);
   }
 
  private:
   store::Connection admin() const { return store::Connection::postgresql(server_, server_, store::Access::ReadWrite); }
-
-  static std::string value(const store::Statement& row, int c) {
-    switch (row.column_type(c)) {
-      case store::ColumnType::Null: return "NULL";
-      case store::ColumnType::Integer: return std::to_string(row.get_int(c));
-      case store::ColumnType::Float: {
-        char buffer[32];
-        const auto end = std::to_chars(buffer, buffer + sizeof buffer, row.get_double(c)).ptr;
-        return std::string(buffer, end);
-      }
-      case store::ColumnType::Text: return "'" + row.get_text(c) + "'";
-      case store::ColumnType::Blob: {
-        const auto values = row.get_doubles(c);
-        std::string text = "blob:";
-        for (const double v : values) {
-          char buffer[32];
-          text += std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr) + ",";
-        }
-        return text;
-      }
-    }
-    return "?";
-  }
 
   store::Backend backend_;
   TempDir dir_;
