@@ -7,7 +7,8 @@
 #
 # Then coefficient surfaces over the surge speed and the yaw rate are built
 # from the runs, queried with their gradients, and exported (JSON, a C header,
-# MATLAB) into asr-v-export/ beside the database; the pool test is simulated,
+# MATLAB) into asr-v-export/ beside the database (in the current folder for a
+# postgresql:// URL); the pool test is simulated,
 # and with the fits' covariances drawn, given a band and an interval; the
 # added mass is taken from forced-oscillation CFD runs (virtual PMM) of the
 # same 0.15 m shell (examples/openfoam-sphere/pmm).
@@ -19,7 +20,13 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 hydrocoef=${1:?usage: run.sh HYDROCOEF_BINARY DATABASE}
 db=${2:?usage: run.sh HYDROCOEF_BINARY DATABASE}
-rm -f "$db"
+case "$db" in
+*://*) out=asr-v-export ;; # a database server: the files go into the current folder
+*)
+  rm -f "$db"
+  out=$(dirname "$db")/asr-v-export
+  ;;
+esac
 h() { "$hydrocoef" --db "$db" "$@"; }
 
 echo "== import: paper Table I (surge) and the yaw table, body asr-v, into $db"
@@ -62,7 +69,6 @@ h query asr-v-yaw r=0.15 --gradient
 echo "   a point no axis of the surface names is refused:"
 h query asr-v-surge v=0.1 || true
 
-out=$(dirname "$db")/asr-v-export
 mkdir -p "$out"
 echo
 echo "== export into $out"
