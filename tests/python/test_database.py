@@ -1,6 +1,8 @@
 """Database: runs as numpy columns, imports, fits, as the CLI gives them."""
 
 import json
+import os
+import subprocess
 
 import numpy as np
 import pytest
@@ -125,3 +127,37 @@ def test_build_and_rebuild_surface_are_the_cli_ones(tmp_path):
         rebuilt = db.rebuild_surfaces(stale_only=True)
         assert [r.name for r in rebuilt] == ["surge"] and not rebuilt[0].stale
         assert db.surface("surge")(u=np.array([0.04]))["X"][0] == -1.5
+
+
+def test_a_team_database_on_postgresql_gives_what_an_sqlite_file_gives(tmp_path):
+    """hydrocoef.Database takes a postgresql:// URL as --db does: on a schema of
+    its own on the test server (scripts/postgresql-test-server.sh), the same
+    import, runs, fit and surface as in an SQLite file."""
+    server = os.environ.get("HYDROCOEF_TEST_POSTGRESQL")
+    if not server:
+        if os.environ.get("HYDROCOEF_TEST_POSTGRESQL_REQUIRED"):
+            pytest.fail("HYDROCOEF_TEST_POSTGRESQL is not set (scripts/postgresql-test-server.sh starts one)")
+        pytest.skip("no PostgreSQL test server: HYDROCOEF_TEST_POSTGRESQL is not set")
+    schema = f"py_{os.getpid()}"
+    psql = ["psql", "-q", "-v", "ON_ERROR_STOP=1", server, "-c"]
+    subprocess.run(psql + [f"DROP SCHEMA IF EXISTS {schema} CASCADE; CREATE SCHEMA {schema}"], check=True)
+    url = server + ("&" if "?" in server else "?") + f"options=-csearch_path%3D{schema}"
+    try:
+        results = []
+        for location in (url, tmp_path / "same.db"):
+            with hydrocoef.Database(location) as db:
+                summary = db.import_files([ASR_V / "asr-v-yaw-damping.csv"], body="asr-v", settings={"sign": "on-body"})
+                assert summary.runs_created == 20
+                fit = db.fit(body="asr-v", output="N", terms="1,r,r|r|")
+                runs = db.runs(body="asr-v")
+                results.append((runs["r"], runs["N"], fit.coefficients, fit.std_errors, [f.name for f in db.fits()]))
+            # The CLI reads what the module wrote.
+            assert len(cli_json(location, "runs", "--body", "asr-v")) == 20
+        (r_pg, n_pg, c_pg, se_pg, names_pg), (r_sq, n_sq, c_sq, se_sq, names_sq) = results
+        np.testing.assert_array_equal(r_pg, r_sq)
+        np.testing.assert_array_equal(n_pg, n_sq)
+        assert c_pg == c_sq and se_pg == se_sq and names_pg == names_sq == ["asr-v:N(1,r,r|r|)"]
+        with pytest.raises(hydrocoef.InputError, match="password"):
+            hydrocoef.Database("postgresql://cfd:secret@localhost/team")
+    finally:
+        subprocess.run(psql + [f"DROP SCHEMA IF EXISTS {schema} CASCADE"], check=False)

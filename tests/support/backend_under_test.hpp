@@ -133,8 +133,8 @@ inline bool database_exists(const std::filesystem::path& path) {
 /// In a test body: the test is about the SQLite file itself (its bytes,
 /// header, WAL or file system rights) and has no PostgreSQL counterpart here
 /// (tests/store/store_backends_test.cpp holds PostgreSQL's own).
-#define HYDROCOEF_SQLITE_FILE_ONLY(why)                             \
-  do {                                                              \
+#define HYDROCOEF_SQLITE_FILE_ONLY(why)                            \
+  do {                                                             \
     if (::hydrocoef::test::on_postgresql()) GTEST_SKIP() << (why); \
   } while (false)
 
