@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "src/core/error.hpp"
+#include "src/store/backend.hpp"
 #include "src/store/database.hpp"
 #include "src/store/migrations.hpp"
 
@@ -66,6 +67,8 @@ std::vector<TableColumns> tables_in_reference_order() {
 std::vector<std::pair<std::string, std::size_t>> Database::copy_from(Database& source) {
   if (read_only_) throw InputError(SourceLocation{path_.string()}, "database opened read-only; cannot copy into it");
   const auto tables = tables_in_reference_order();
+  // Every read of the source sees one state of it, even while a job writes it.
+  const store::detail::ReadSnapshot source_snapshot(source.connection_.backend_impl());
   store::Transaction transaction(connection_);
   for (const auto& table : tables) {
     auto count = connection_.prepare("SELECT count(*) FROM " + table.table);

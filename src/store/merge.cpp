@@ -9,6 +9,7 @@
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
 #include "src/core/numbers.hpp"
+#include "src/store/backend.hpp"
 #include "src/store/checked_row.hpp"
 #include "src/store/database.hpp"
 #include "src/store/pmm_record.hpp"
@@ -59,6 +60,8 @@ std::vector<MergeOutcome> Database::merge(const std::vector<std::string>& shards
 }
 
 MergeOutcome Database::merge_one(Database& shard) {
+  // Every read of the shard sees one state of it, even while a job writes it.
+  const store::detail::ReadSnapshot shard_snapshot(shard.connection_.backend_impl());
   MergeOutcome outcome;
   outcome.shard = shard.path().string();
   const SourceLocation where{outcome.shard};
@@ -112,7 +115,9 @@ MergeOutcome Database::merge_one(Database& shard) {
         "importer_version, hydrocoef_version, imported_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
     for (const std::int64_t id : ids) {
       const auto record = shard.import_record(id);
-      if (!record) continue;
+      if (!record)
+        throw InputError(where, "table 'import', row " + std::to_string(id) +
+                                    ": its file is not in table 'source_file'; expected the file of each import");
       const std::int64_t source = mapped_source(record->source_id);
       find.bind(1, source).bind(2, record->reading);
       if (find.step()) {
@@ -196,7 +201,13 @@ MergeOutcome Database::merge_one(Database& shard) {
       }
       existing_force.reset();
       std::optional<std::int64_t> import_id;
-      if (force->import_id != 0 && import_of.count(force->import_id)) import_id = import_of.at(force->import_id);
+      if (force->import_id != 0) {
+        if (!import_of.count(force->import_id))
+          throw InputError(where, "run " + describe(run.key) + ": " + component + " names import " +
+                                      std::to_string(force->import_id) +
+                                      ", which table 'import' does not hold; expected the import of each force");
+        import_id = import_of.at(force->import_id);
+      }
       rows.write_force(here, i, force->value, force->sign, mapped_source(force->source_id), force->source_line,
                        import_id);
       if (force->statistics) {

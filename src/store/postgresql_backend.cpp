@@ -1,7 +1,8 @@
 // The PostgreSQL backend of store::Connection: one session with a server
 // through libpq. Statements are sent with their parameters (text, and bytea
 // as binary) and read back as text: float8 in PostgreSQL's shortest exact
-// form (extra_float_digits = 1), so a double read back is the double sent.
+// form (extra_float_digits > 0, PostgreSQL 12 and newer), so a double read
+// back is the double sent.
 #include <libpq-fe.h>
 
 #include <algorithm>
@@ -63,7 +64,7 @@ class PgStatement final : public StatementBackend {
     set(index, std::move(text), kFloat8, 0);
   }
   void bind_int(int index, std::int64_t value) override { set(index, std::to_string(value), kInt8, 0); }
-  void bind_text(int index, std::string_view value) override { set(index, std::string(value), kText, 0); }
+  void bind_text(int index, std::string_view value) override;
   void bind_blob(int index, const void* data, std::size_t size) override {
     set(index, std::string(static_cast<const char*>(data), size), kBytea, 1);
   }
@@ -193,7 +194,8 @@ class PgConnection final : public ConnectionBackend {
   void use_wal() override {}
 
   PGconn* handle() const { return connection_; }
-  /// Throws unless `result` is a success; records the rows a command changed.
+  const std::string& display() const { return display_; }
+  /// Throws unless `result` is a success.
   void check(PGresult* result, const std::string& what);
 
  private:
@@ -268,6 +270,15 @@ std::string_view PgStatement::get_blob(int column) const {
   return out;
 }
 
+void PgStatement::bind_text(int index, std::string_view value) {
+  // Text parameters travel as C strings: a NUL would cut the value short.
+  if (value.find('\0') != std::string_view::npos)
+    throw InputError(SourceLocation{connection_.display()},
+                     "a text value holds a NUL byte ('" + printable_text(value, 60) +
+                         "'), which PostgreSQL cannot store; expected text without NUL bytes");
+  set(index, std::string(value), kText, 0);
+}
+
 void ignore_notice(void*, const char*) {}
 
 PgConnection::PgConnection(const std::string& url, std::string display, Access access)
@@ -285,11 +296,28 @@ PgConnection::PgConnection(const std::string& url, std::string display, Access a
   // lock_timeout 0 would wait for ever; HYDROCOEF_DB_TIMEOUT=0 means "do not wait".
   const std::string wait = timeout == 0 ? "1ms" : std::to_string(timeout) + "s";
   try {
+    // Doubles in their shortest exact form need PostgreSQL 12 (on 11 and
+    // older extra_float_digits gives 17 digits, not always the same double
+    // back through a shorter print).
+    if (PQserverVersion(connection_) < 120000)
+      throw InputError(SourceLocation{display_}, "the server is PostgreSQL " +
+                                                     std::to_string(PQserverVersion(connection_) / 10000) +
+                                                     "; expected PostgreSQL 12 or newer");
     execute(
-        "SET client_min_messages = warning; SET extra_float_digits = 1; SET bytea_output = 'hex'; "
-        "SET standard_conforming_strings = on; SET lock_timeout = '" +
+        "SET client_min_messages = warning; SET extra_float_digits = 3; SET bytea_output = 'hex'; "
+        "SET client_encoding = 'UTF8'; SET standard_conforming_strings = on; SET lock_timeout = '" +
         wait + "'");
     if (read_only_) execute("SET default_transaction_read_only = on");
+    // A search_path that names no existing schema leaves nowhere to read or
+    // write (and no schema to key the writers' lock by).
+    PGresult* schema = PQexec(connection_, "SELECT current_schema()");
+    const bool none =
+        PQresultStatus(schema) == PGRES_TUPLES_OK && PQntuples(schema) == 1 && PQgetisnull(schema, 0, 0) == 1;
+    PQclear(schema);
+    if (none)
+      throw InputError(SourceLocation{display_},
+                       "the search_path names no schema that exists on the server; expected an existing schema "
+                       "(CREATE SCHEMA, or options=-csearch_path%3DNAME in the URL)");
   } catch (...) {
     PQfinish(connection_);
     connection_ = nullptr;
@@ -342,6 +370,9 @@ void PgConnection::check(PGresult* result, const std::string& what) {
       printable_text(first_line(result ? PQresultErrorMessage(result) : PQerrorMessage(connection_)), 200);
   // What a user can cause (another process, the server, the data) is said in
   // words and is exit 2; anything else is a bug in hydrocoef.
+  if (code == "57014")
+    throw InputError(where, "database: the server cancelled the statement while " + what + " (" + detail +
+                                "; statement_timeout or an administrator); nothing was changed");
   if (PQstatus(connection_) != CONNECTION_OK || code.rfind("08", 0) == 0 || code.rfind("57", 0) == 0)
     throw InputError(where, "database: lost the connection to the PostgreSQL server while " + what + " (" + detail +
                                 "); the transaction was not committed");
@@ -357,6 +388,14 @@ void PgConnection::check(PGresult* result, const std::string& what) {
     throw InputError(where, "database is read-only here (" + detail + "); expected a writable database for " + what);
   if (code.rfind("53", 0) == 0 || code == "42501" || code.rfind("28", 0) == 0 || code == "22021" || code == "54000")
     throw InputError(where, "database: " + what + ": " + detail);
+  // hydrocoef's statements are fixed and tested against the schema it makes:
+  // a value or constraint the server refuses, or a missing table, column or
+  // constraint, comes from a schema or rows another program changed.
+  if (code.rfind("22", 0) == 0 || code.rfind("23", 0) == 0 || code == "42P10" || code == "42804" || code == "42703" ||
+      code == "42P01")
+    throw InputError(where, "database: " + what + ": " + detail + " (SQLSTATE " + code +
+                                "); expected a schema and rows as hydrocoef makes them: was it changed by another "
+                                "program?");
   throw std::runtime_error(display_ + ": database: " + what + ": " + detail);
 }
 

@@ -129,10 +129,19 @@ std::set<std::string> postgresql_objects(Connection& connection) {
   auto views =
       connection.prepare("SELECT table_name FROM information_schema.views WHERE table_schema = current_schema()");
   while (views.step()) out.insert("view " + views.get_text(0));
+  // A trigger counts as hydrocoef's only when it is enabled and calls a
+  // function of this schema (whose body is compared below): a disabled one
+  // would let fits stay fresh after their forces change, and one calling a
+  // function elsewhere would run someone else's code.
   auto triggers = connection.prepare(
-      "SELECT t.tgname, c.relname FROM pg_trigger t JOIN pg_class c ON c.oid = t.tgrelid "
-      "JOIN pg_namespace n ON n.oid = c.relnamespace WHERE n.nspname = current_schema() AND NOT t.tgisinternal");
-  while (triggers.step()) out.insert("trigger " + triggers.get_text(0) + " on " + triggers.get_text(1));
+      "SELECT t.tgname, c.relname, (t.tgenabled = 'O')::int, (pn.nspname = current_schema())::int "
+      "FROM pg_trigger t JOIN pg_class c ON c.oid = t.tgrelid JOIN pg_namespace n ON n.oid = c.relnamespace "
+      "JOIN pg_proc p ON p.oid = t.tgfoid JOIN pg_namespace pn ON pn.oid = p.pronamespace "
+      "WHERE n.nspname = current_schema() AND NOT t.tgisinternal");
+  while (triggers.step())
+    out.insert("trigger " + triggers.get_text(0) + " on " + triggers.get_text(1) +
+               (triggers.get_int(2) != 0 ? "" : " (disabled)") +
+               (triggers.get_int(3) != 0 ? "" : " (calling a function of another schema)"));
   auto functions = connection.prepare(
       "SELECT p.proname, p.prosrc FROM pg_proc p JOIN pg_namespace n ON n.oid = p.pronamespace "
       "WHERE n.nspname = current_schema()");

@@ -32,6 +32,15 @@ TEST(DatabaseLocation, APasswordInTheUrlIsRefused) {
   test::expect_input_error([] { (void)parse_database_location("postgresql:///team?user=cfd&password=secret"); },
                            {".pgpass"});
   test::expect_input_error([] { (void)parse_database_location("postgresql:///team?PassWord=secret"); }, {".pgpass"});
+  // As libpq reads them: user information up to the '@' before the first '/'
+  // ('?' included), percent-encoded parameter names, a key's passphrase.
+  test::expect_input_error([] { (void)parse_database_location("postgresql://alice:pa?ss@db/team"); }, {".pgpass"});
+  test::expect_input_error([] { (void)parse_database_location("postgresql:///team?pass%77ord=secret"); }, {".pgpass"});
+  test::expect_input_error([] { (void)parse_database_location("postgresql://db?sslpassword=secret"); }, {".pgpass"});
+  test::expect_input_error([] { (void)parse_database_location("postgresql://db?password=secret"); }, {".pgpass"});
+  // A user without a password, and an '@' in a parameter, are no password.
+  EXPECT_EQ(parse_database_location("postgresql://alice@db/team?application_name=a:b").backend, Backend::PostgreSQL);
+  EXPECT_EQ(parse_database_location("postgresql:///team?host=/run/postgresql&user=a").backend, Backend::PostgreSQL);
 }
 
 TEST(DatabaseLocation, UnknownSchemesAndEmptyPathsAreRefused) {

@@ -15,6 +15,7 @@
 #include "src/core/error.hpp"
 #include "src/store/database.hpp"
 #include "src/store/pmm_record.hpp"
+#include "tests/support/expect_input_error.hpp"
 #include "tests/support/import_batch.hpp"
 #include "tests/support/test_database.hpp"
 
@@ -227,6 +228,35 @@ TEST_P(StoreBackends, ASchemaChangedByAnotherProgramIsRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("run"), std::string::npos) << e.what();
   }
+  if (GetParam() != store::Backend::PostgreSQL) return;
+  // A trigger switched off (fits would stay fresh after their forces change),
+  // or calling a function of another schema (someone else's code), is
+  // refused too.
+  db_.connect().execute("ALTER TABLE run DROP COLUMN note");
+  { Database db(db_.location()); }
+  db_.connect().execute("ALTER TABLE run_force DISABLE TRIGGER run_force_insert_stales_fits");
+  test::expect_input_error([&] { Database db(db_.location()); }, {"run_force_insert_stales_fits", "(disabled)"});
+  db_.connect().execute(
+      "ALTER TABLE run_force ENABLE TRIGGER run_force_insert_stales_fits; CREATE SCHEMA IF NOT EXISTS "
+      "hc_elsewhere; CREATE OR REPLACE FUNCTION hc_elsewhere.f() RETURNS trigger LANGUAGE plpgsql AS $$ BEGIN "
+      "RETURN NEW; END $$; DROP TRIGGER run_force_insert_stales_fits ON run_force; CREATE TRIGGER "
+      "run_force_insert_stales_fits AFTER INSERT ON run_force FOR EACH ROW EXECUTE FUNCTION hc_elsewhere.f()");
+  test::expect_input_error([&] { Database db(db_.location()); }, {"another schema"});
+  db_.connect().execute("DROP SCHEMA hc_elsewhere CASCADE");
+  // A constraint another program dropped (the schema check does not compare
+  // constraints): the write that needs it is refused in one line, nothing
+  // changed.
+  TestDatabase other(GetParam());
+  { Database db(other.location()); }
+  other.connect().execute("ALTER TABLE run_force DROP CONSTRAINT run_force_pkey CASCADE");
+  Database db(other.location());
+  const std::string before = other.dump();
+  test::expect_input_error(
+      [&] {
+        db.import({test::one_run_batch(7, make_run({0.7, 0, 0, 0, 0, 0}, 0, -3.0))}, ConflictPolicy::Error);
+      },
+      {"SQLSTATE 42P10", "another program"});
+  EXPECT_EQ(other.dump(), before);
 }
 
 TEST_P(StoreBackends, ASecondWriterWaitsThenSaysTheDatabaseIsBusy) {
@@ -376,6 +406,42 @@ TEST_P(StoreBackends, AMergeConflictIsRefusedAndNothingOfAnyShardIsMerged) {
   const std::string with_fit = db_.dump();
   EXPECT_THROW(db.merge({good}), InputError);
   EXPECT_EQ(db_.dump(), with_fit);
+}
+
+TEST_P(StoreBackends, AShardWithATextItCannotHoldOrABrokenLinkIsRefusedWhole) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  const std::string shard = (db_.dir() / "shard.db").string();
+  Database(shard).import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
+  Database db(db_.location());
+  const std::string before = db_.dump();
+  {
+    // A settings key with a NUL byte (SQLite holds it; PostgreSQL cannot).
+    store::Connection raw(shard, store::Access::ReadWrite);
+    raw.execute("UPDATE import SET settings_key = 'k' || char(0) || 'x'");
+  }
+  if (GetParam() == store::Backend::PostgreSQL) {
+    test::expect_input_error([&] { db.merge({shard}); }, {"NUL byte"});
+    EXPECT_EQ(db_.dump(), before);
+  }
+  {
+    // A force that names an import the shard does not hold.
+    store::Connection raw(shard, store::Access::ReadWrite);
+    raw.execute("UPDATE import SET settings_key = 'k'; PRAGMA foreign_keys = OFF; UPDATE run_force SET import_id = 99");
+  }
+  test::expect_input_error([&] { db.merge({shard}); }, {"shard.db", "import 99"});
+  EXPECT_EQ(db_.dump(), before);
+}
+
+TEST_P(StoreBackends, ASearchPathNamingNoSchemaIsRefusedInOneLine) {
+  if (GetParam() != store::Backend::PostgreSQL) GTEST_SKIP() << "a PostgreSQL URL's search_path";
+  const auto server = test::postgresql_test_server();
+  if (!server) {
+    if (std::getenv("HYDROCOEF_TEST_POSTGRESQL_REQUIRED")) FAIL() << "HYDROCOEF_TEST_POSTGRESQL is not set";
+    GTEST_SKIP() << "no PostgreSQL test server";
+  }
+  const std::string url =
+      *server + (server->find('?') == std::string::npos ? "?" : "&") + "options=-csearch_path%3Dno_such_schema";
+  test::expect_input_error([&] { Database db(url); }, {"no schema that exists", "CREATE SCHEMA"});
 }
 
 TEST_P(StoreBackends, ACopyAndACopyBackHoldTheOriginalsRows) {

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -129,6 +130,28 @@ inline bool database_exists(const std::filesystem::path& path) {
   query.step();
   return query.get_int(0) > 0;
 }
+
+namespace detail {
+
+/// Skips every test of a binary run on PostgreSQL when no test server is
+/// configured (a developer's plain `ctest`). With
+/// $HYDROCOEF_TEST_POSTGRESQL_REQUIRED set (scripts/test.sh) nothing is
+/// skipped: the tests fail at their first database (database_location).
+class PostgresqlServerCheck : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    if (!on_postgresql() || postgresql_test_server() || std::getenv("HYDROCOEF_TEST_POSTGRESQL_REQUIRED")) return;
+    // The line ctest's skip pattern (gtest_discover_tests) looks for: a
+    // skip in the environment prints none of its own.
+    std::printf("[  SKIPPED ] the PostgreSQL run: HYDROCOEF_TEST_POSTGRESQL is not set\n");
+    GTEST_SKIP() << "HYDROCOEF_TEST_BACKEND=postgresql but no test server: HYDROCOEF_TEST_POSTGRESQL is not set";
+  }
+};
+
+inline const bool kPostgresqlServerCheckRegistered =
+    (::testing::AddGlobalTestEnvironment(new PostgresqlServerCheck), true);
+
+}  // namespace detail
 
 /// In a test body: the test is about the SQLite file itself (its bytes,
 /// header, WAL or file system rights) and has no PostgreSQL counterpart here
