@@ -165,7 +165,8 @@ MergeOutcome Database::merge_one(Database& shard) {
   auto existing_force = connection_.prepare(
       "SELECT s.path, f.source_line, f.import_id FROM run_force f JOIN source_file s ON s.id = f.source_id "
       "WHERE f.run_id = ? AND f.component = ?");
-  auto has_surface = connection_.prepare("SELECT count(*) FROM run_surface WHERE run_id = ?");
+  auto surface_here = connection_.prepare(
+      "SELECT s.path, r.source_id FROM run_surface r JOIN source_file s ON s.id = r.source_id WHERE r.run_id = ?");
   for (const StoredRun& run : shard.runs()) {
     const std::int64_t body = body_id(run.key.body, true);
     std::int64_t here = 0;
@@ -220,11 +221,21 @@ MergeOutcome Database::merge_one(Database& shard) {
     }
     if (extended && !created) ++outcome.runs_extended;
     if (run.surface && surface_source.count(run.id)) {
-      has_surface.bind(1, here);
-      has_surface.step();
-      const bool present = has_surface.get_int(0) > 0;
-      has_surface.reset();
-      if (!present) rows.write_surface(here, mapped_source(surface_source.at(run.id)), *run.surface);
+      // A run's surface integrals come from one file, as its forces do.
+      const std::int64_t source = mapped_source(surface_source.at(run.id));
+      surface_here.bind(1, here);
+      if (surface_here.step()) {
+        const std::string previous = surface_here.get_text(0);
+        const std::int64_t previous_source = surface_here.get_int(1);
+        surface_here.reset();
+        if (previous_source != source)
+          throw InputError(where, "run " + describe(run.key) + " has its surface integrals from another file than " +
+                                      "here ('" + printable_text(previous, 80) +
+                                      "'); expected a run's surface from one file (delete one of them first)");
+      } else {
+        surface_here.reset();
+        rows.write_surface(here, source, *run.surface);
+      }
     }
   }
   const auto mapped_runs = [&](const std::vector<std::int64_t>& ids) {

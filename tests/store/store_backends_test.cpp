@@ -432,6 +432,31 @@ TEST_P(StoreBackends, AShardWithATextItCannotHoldOrABrokenLinkIsRefusedWhole) {
   EXPECT_EQ(db_.dump(), before);
 }
 
+TEST_P(StoreBackends, ARunsSurfaceIntegralsFromAnotherFileAreAMergeConflict) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  const auto with_surface = [](int file, std::size_t component, double value, double area) {
+    ImportedRun run = make_run({0.4, 0, 0, 0, 0, 0}, component, value);
+    SurfaceIntegrals g;
+    g.faces = 100;
+    g.area = area;
+    g.pressure_array = "p";
+    g.pressure_kind = "static";
+    g.shear_convention = "on-wall";
+    g.axes = "x,y,z";
+    run.surface = g;
+    return test::one_run_batch(file, run);
+  };
+  Database db(db_.location());
+  db.import({with_surface(1, 0, -2.0, 0.28)}, ConflictPolicy::Error);
+  // The shard's file gives another component of the same run (no force
+  // conflict) with other surface integrals.
+  const std::string shard = (db_.dir() / "shard.db").string();
+  Database(shard).import({with_surface(2, 1, 0.5, 0.31)}, ConflictPolicy::Error);
+  const std::string before = db_.dump();
+  test::expect_input_error([&] { db.merge({shard}); }, {"shard.db", "surface integrals from another file"});
+  EXPECT_EQ(db_.dump(), before);
+}
+
 TEST_P(StoreBackends, ASearchPathNamingNoSchemaIsRefusedInOneLine) {
   if (GetParam() != store::Backend::PostgreSQL) GTEST_SKIP() << "a PostgreSQL URL's search_path";
   const auto server = test::postgresql_test_server();
