@@ -10,6 +10,7 @@
 #include "src/store/backend.hpp"
 #include "src/store/database.hpp"
 #include "src/store/migrations.hpp"
+#include "src/store/pmm_record.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -77,6 +78,21 @@ std::vector<std::pair<std::string, std::size_t>> Database::copy_from(Database& s
       throw InputError(SourceLocation{path_.string()},
                        "holds data already (" + std::to_string(count.get_int(0)) + " rows in table " + table.table +
                            "); expected an empty database to copy into (hydrocoef merge adds to one that has data)");
+  }
+  // Every record of the source is read through the checked readers first, as
+  // merge and every command read it: a value of the wrong type or range is
+  // refused naming its table, row and column before a row is copied.
+  (void)source.sources();
+  (void)source.runs();
+  (void)source.fits();
+  (void)source.surfaces();
+  (void)source.numerical_uncertainties();
+  (void)source.pmm_records();
+  {
+    std::vector<std::int64_t> imports;
+    auto list = source.connection_.prepare("SELECT id FROM import");
+    while (list.step()) imports.push_back(list.get_int(0));
+    for (const std::int64_t id : imports) (void)source.import_record(id);
   }
   std::vector<std::pair<std::string, std::size_t>> copied;
   std::vector<std::tuple<std::string, std::int64_t, std::int64_t>> stale_flags;  // table, id, stale

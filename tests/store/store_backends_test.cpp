@@ -457,6 +457,21 @@ TEST_P(StoreBackends, ARunsSurfaceIntegralsFromAnotherFileAreAMergeConflict) {
   EXPECT_EQ(db_.dump(), before);
 }
 
+TEST_P(StoreBackends, ACopyOfASourceWithAValueOfTheWrongTypeIsRefusedBeforeARowIsCopied) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  TestDatabase original(store::Backend::SQLite);
+  Database(original.location()).import(sweep_batches(), ConflictPolicy::Error);
+  original.connect().execute("UPDATE run SET u = 'fast' WHERE id = 2");
+  { Database target(db_.location()); }
+  const std::string before = db_.dump();
+  {
+    Database source(original.location(), Database::OpenMode::ReadOnly);
+    Database target(db_.location());
+    test::expect_input_error([&] { target.copy_from(source); }, {"table 'run', row 2, column 'u'", "'fast'"});
+  }
+  EXPECT_EQ(db_.dump(), before);
+}
+
 TEST_P(StoreBackends, ASearchPathNamingNoSchemaIsRefusedInOneLine) {
   if (GetParam() != store::Backend::PostgreSQL) GTEST_SKIP() << "a PostgreSQL URL's search_path";
   const auto server = test::postgresql_test_server();
