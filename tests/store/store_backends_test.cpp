@@ -479,8 +479,7 @@ TEST_P(StoreBackends, ASearchPathNamingNoSchemaIsRefusedInOneLine) {
     if (std::getenv("HYDROCOEF_TEST_POSTGRESQL_REQUIRED")) FAIL() << "HYDROCOEF_TEST_POSTGRESQL is not set";
     GTEST_SKIP() << "no PostgreSQL test server";
   }
-  const std::string url =
-      *server + (server->find('?') == std::string::npos ? "?" : "&") + "options=-csearch_path%3Dno_such_schema";
+  const std::string url = test::url_with_schema(*server, "no_such_schema");
   test::expect_input_error([&] { Database db(url); }, {"no schema that exists", "CREATE SCHEMA"});
 }
 

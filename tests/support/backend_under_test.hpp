@@ -102,7 +102,7 @@ inline std::string database_location(const std::filesystem::path& path) {
   if (!on_postgresql()) return path.string();
   const std::string server = detail::SchemaRegistry::server();
   const std::string schema = detail::SchemaRegistry::instance().schema_for(path);
-  return server + (server.find('?') == std::string::npos ? "?" : "&") + "options=-csearch_path%3D" + schema;
+  return url_with_schema(server, schema);
 }
 
 /// How the store names that database in its messages.

@@ -34,6 +34,11 @@ inline std::optional<std::string> postgresql_test_server() {
   return std::string(url);
 }
 
+/// The server's URL with a search_path of `schema` (which it does not create).
+inline std::string url_with_schema(const std::string& server, const std::string& schema) {
+  return server + (server.find('?') == std::string::npos ? "?" : "&") + "options=-csearch_path%3D" + schema;
+}
+
 inline const char* backend_name(store::Backend backend) {
   return backend == store::Backend::SQLite ? "SQLite" : "PostgreSQL";
 }
@@ -123,7 +128,7 @@ class TestDatabase {
     schema_ = "hc_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
     server_ = *server;
     admin().execute("DROP SCHEMA IF EXISTS " + schema_ + " CASCADE; CREATE SCHEMA " + schema_);
-    location_ = *server + (server->find('?') == std::string::npos ? "?" : "&") + "options=-csearch_path%3D" + schema_;
+    location_ = url_with_schema(*server, schema_);
   }
   ~TestDatabase() {
     if (schema_.empty()) return;
