@@ -148,8 +148,13 @@ Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> di
   for (const Lookup& l : lookups_) {
     for (std::size_t a = 0; a < l.axis_count; ++a)
       point[a] = l.source[a] < 6 ? nu_r_b[static_cast<Eigen::Index>(l.source[a])] : disturbances[l.source[a] - 6];
-    l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),
-                       std::span<double>(out.data(), l.surface.output_count()));
+    // A table of one axis (a draw of a GP surface, a 1-D CFD table) skips the span checks.
+    const GridTable* grid = l.surface.grid();
+    if (grid && l.axis_count == 1)
+      grid->evaluate_one_axis(point[0], out.data());
+    else
+      l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),
+                         std::span<double>(out.data(), l.surface.output_count()));
     for (std::size_t k = 0; k < l.used; ++k) tau[static_cast<Eigen::Index>(l.dof[k])] += l.sign[k] * out[l.output[k]];
   }
   return tau;

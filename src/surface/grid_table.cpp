@@ -424,6 +424,31 @@ void GridTable::throw_outside(std::size_t axis, double value) const {
                    "]; expected a value in range (or an extrapolation policy)");
 }
 
+// The cell [x[cell], x[cell + 1]] of a value inside the axis's range: the
+// last breakpoint <= value among x[0 .. count-2].
+inline std::size_t GridTable::cell_inside(const AxisLookup& axis, const double* x, double value) {
+  const std::size_t last_cell = axis.count - 2;
+  if (axis.even) {
+    std::size_t cell = std::min(static_cast<std::size_t>((value - axis.lo) * axis.inv_step), last_cell);
+    // Rounding in the breakpoints or the product can put the index one cell off.
+    if (value < x[cell]) {
+      --cell;
+    } else if (cell < last_cell && value >= x[cell + 1]) {
+      ++cell;
+    }
+    return cell;
+  }
+  // Branch-free binary search.
+  const double* first = x;
+  std::size_t length = axis.count - 1;
+  while (length > 1) {
+    const std::size_t half = length / 2;
+    first = first[half] <= value ? first + half : first;
+    length -= half;
+  }
+  return static_cast<std::size_t>(first - x);
+}
+
 template <std::size_t K, bool WithGradient>
 void GridTable::locate(std::span<const double> point, Location& location) const {
   std::size_t base_node = 0;
@@ -437,25 +462,7 @@ void GridTable::locate(std::span<const double> point, Location& location) const 
     double value = point[a];
     std::size_t cell = 0;
     if (value >= axis.lo && value <= axis.hi) [[likely]] {
-      if (axis.even) {
-        cell = std::min(static_cast<std::size_t>((value - axis.lo) * axis.inv_step), last_cell);
-        // Rounding in the breakpoints or the product can put the index one cell off.
-        if (value < x[cell]) {
-          --cell;
-        } else if (cell < last_cell && value >= x[cell + 1]) {
-          ++cell;
-        }
-      } else {
-        // Branch-free binary search for the last breakpoint <= value among x[0 .. count-2].
-        const double* first = x;
-        std::size_t length = axis.count - 1;
-        while (length > 1) {
-          const std::size_t half = length / 2;
-          first = first[half] <= value ? first + half : first;
-          length -= half;
-        }
-        cell = static_cast<std::size_t>(first - x);
-      }
+      cell = cell_inside(axis, x, value);
     } else {
       // NaN, infinite or outside the breakpoints.
       if (!std::isfinite(value) || axis.extrapolation == Extrapolation::Error) throw_outside(a, value);
@@ -548,6 +555,42 @@ void GridTable::evaluate_with_gradient(std::span<const double> point, std::span<
   for (std::size_t a = 0; a < n; ++a) {
     sum_(location.weights.data(), a, location.derivative_weights.data() + 4 * a, term_offsets_.data(), data, n_out,
          gradient.data() + a, n);
+  }
+}
+
+void GridTable::evaluate_one_axis(double value, double* out) const {
+  const AxisLookup& axis = lookup_[0];
+  if (axes_.size() != 1 || !(value >= axis.lo && value <= axis.hi)) [[unlikely]] {
+    // Another axis count (evaluate says so), or outside: the general path.
+    evaluate(std::span<const double>(&value, 1), std::span<double>(out, outputs_.size()));
+    return;
+  }
+  // What locate and sum_terms<1, K> compute, term for term and in the same order.
+  const double* x = breakpoints_.data() + axis.offset;
+  const std::size_t cell = cell_inside(axis, x, value);
+  const double t = (value - x[cell]) / (x[cell + 1] - x[cell]);
+  const std::size_t n_out = outputs_.size();
+  if (terms_per_axis_ == 1) {
+    const double* data = values_.data() + (t >= 0.5 ? cell + 1 : cell) * node_block_;
+    for (std::size_t k = 0; k < n_out; ++k) out[k] = 0.0 + 1.0 * (0.0 + 1.0 * data[k]);
+    return;
+  }
+  double w[4];
+  std::size_t terms = 2;
+  const double* data = nullptr;
+  if (terms_per_axis_ == 2) {
+    w[0] = 1.0 - t;
+    w[1] = t;
+    data = values_.data() + cell * node_block_;
+  } else {
+    hermite_weights(t, x[cell + 1] - x[cell], w);
+    terms = 4;
+    data = hermite_.data() + cell * node_block_;
+  }
+  for (std::size_t k = 0; k < n_out; ++k) {
+    double total = 0.0;
+    for (std::size_t e = 0; e < terms; ++e) total += w[e] * (0.0 + 1.0 * data[term_offsets_[e] + k]);
+    out[k] = total;
   }
 }
 

@@ -169,6 +169,12 @@ class GridTable {
   /// the last breakpoint); Nearest gives 0, and so does a clamped axis.
   void evaluate_with_gradient(std::span<const double> point, std::span<double> out, std::span<double> gradient) const;
 
+  /// evaluate() of a one-axis table at `value`, without the span checks:
+  /// `out` receives output_count() values, the same numbers evaluate gives.
+  /// The dynamics model's hot path (src/dynamics/damping.cpp). Throws as
+  /// evaluate, and InputError for a table of more than one axis.
+  void evaluate_one_axis(double value, double* out) const;
+
   /// One output at a point (the same number evaluate gives). Throws as
   /// evaluate; std::out_of_range if output >= output_count().
   double evaluate_one(std::span<const double> point, std::size_t output) const;
@@ -199,6 +205,7 @@ class GridTable {
   void locate(std::span<const double> point, Location& location) const;
   template <bool WithGradient>
   void locate_any(std::span<const double> point, Location& location) const;
+  static std::size_t cell_inside(const AxisLookup& axis, const double* x, double value);
   void check_point(std::span<const double> point) const;
   [[noreturn]] void throw_outside(std::size_t axis, double value) const;
 

@@ -25,7 +25,9 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <limits>
@@ -1090,6 +1092,49 @@ TEST(GridTable, EvenSpacingIsDetected) {
   EXPECT_TRUE(table.evenly_spaced(0));
   EXPECT_FALSE(table.evenly_spaced(1));
   EXPECT_TRUE(table.evenly_spaced(2));
+}
+
+// The dynamics' one-axis path gives evaluate()'s numbers bit for bit: every
+// method, even and uneven breakpoints, several outputs, inside, on
+// breakpoints and beyond the ends under every policy; a NaN or a point
+// outside an `error` axis throws as evaluate does, and so does a table of two axes.
+TEST(GridTable, OneAxisPathGivesEvaluatesNumbers) {
+  std::mt19937_64 rng(11);
+  const auto f = [](const Point& p) {
+    return std::vector<double>{std::sin(3.0 * p[0]) - 0.2 * p[0], p[0] * std::abs(p[0]), -0.0 * p[0], 2.0};
+  };
+  for (const bool even : {true, false}) {
+    const std::vector<double> x = even ? evenly_spaced(-1.0, 2.0, 13) : unevenly_spaced(-1.0, 2.0, 13, rng);
+    for (Interpolation method : kAllMethods) {
+      for (Extrapolation policy :
+           {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
+        SCOPED_TRACE(method_label(method) + (even ? " even" : " uneven"));
+        const GridTable table = make_table({x}, 4, f, method, policy);
+        std::vector<double> points = x;  // every breakpoint, then random points inside and beyond
+        for (int i = 0; i < 200; ++i) points.push_back(std::uniform_real_distribution<double>(-1.5, 2.5)(rng));
+        for (const double p : points) {
+          std::array<double, 4> fast{};
+          if (policy == Extrapolation::Error && (p < x.front() || p > x.back())) {
+            EXPECT_THROW(table.evaluate_one_axis(p, fast.data()), InputError);
+            continue;
+          }
+          table.evaluate_one_axis(p, fast.data());
+          const std::vector<double> general = evaluate(table, {p});
+          for (std::size_t k = 0; k < 4; ++k) {
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(fast[k]), std::bit_cast<std::uint64_t>(general[k]))
+                << "x = " << p << ", output " << k << ": " << fast[k] << " vs " << general[k];
+          }
+        }
+        std::array<double, 4> out{};
+        EXPECT_THROW(table.evaluate_one_axis(std::numeric_limits<double>::quiet_NaN(), out.data()), InputError);
+      }
+    }
+  }
+  const GridTable two_axes = make_table(
+      {{0.0, 1.0}, {0.0, 1.0}}, 1, [](const Point& p) { return std::vector<double>{p[0] + p[1]}; },
+      Interpolation::Linear);
+  double out = 0.0;
+  EXPECT_THROW(two_axes.evaluate_one_axis(0.5, &out), InputError);
 }
 
 }  // namespace
