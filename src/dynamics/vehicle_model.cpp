@@ -71,7 +71,7 @@ Vector6 VehicleModel::hydrostatic_force(const Quaternion4& q_nb) const {
   return hydrostatic_from_rotation(rotation_body_to_ned(q_nb));
 }
 
-Vector6 VehicleModel::hydrostatic_from_rotation(const Matrix3& rotation) const {
+inline Vector6 VehicleModel::hydrostatic_from_rotation(const Matrix3& rotation) const {
   // R^T e_z: the NED down direction in body axes (third row of R).
   const Vector3 down_b = rotation.row(2).transpose();
   const Vector3 weight_b = weight_N_ * down_b;
@@ -82,28 +82,29 @@ Vector6 VehicleModel::hydrostatic_from_rotation(const Matrix3& rotation) const {
   return tau;
 }
 
-ForceBreakdown VehicleModel::evaluate(const StateVector& x, const ModelInputs& inputs, Matrix3& rotation) const {
-  rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
-  const Vector6 nu = velocity_b(x);
-  const Vector3 omega = nu.tail<3>();
-  const Vector3 current_b = rotation.transpose() * inputs.current_n;
-
-  ForceBreakdown f;
-  f.nu_r_b = nu;
-  f.nu_r_b.head<3>() -= current_b;
-  f.control_b = inputs.tau_b;
-  f.damping_b = damping_.evaluate(f.nu_r_b, inputs.disturbances);
-
-  f.hydrostatic_b = hydrostatic_from_rotation(rotation);
-
+inline void VehicleModel::add_motion_forces(const Matrix3& rotation, const Vector6& nu, const ModelInputs& inputs,
+                                            Vector6& nu_r, Vector6& damping, Vector6& coriolis) const {
   if (inputs.current_n.isZero()) {
     // nu_r = nu: C(nu) is linear in M, so C_RB(nu) nu + C_A(nu) nu = C(M) nu.
-    f.coriolis_b = -coriolis_force(m_, nu);
-  } else {
-    Vector6 current_rate_b = Vector6::Zero();  // nu_c' for a current constant in NED
-    current_rate_b.head<3>() = -omega.cross(current_b);
-    f.coriolis_b = -coriolis_force(m_rb_, nu) - coriolis_force(m_a_, f.nu_r_b) + m_a_ * current_rate_b;
+    damping += damping_.evaluate(nu, inputs.disturbances);
+    coriolis -= coriolis_force(m_, nu);
+    return;
   }
+  const Vector3 current_b = rotation.transpose() * inputs.current_n;
+  nu_r.head<3>() -= current_b;
+  damping += damping_.evaluate(nu_r, inputs.disturbances);
+  Vector6 current_rate_b = Vector6::Zero();  // nu_c' for a current constant in NED
+  current_rate_b.head<3>() = -nu.tail<3>().cross(current_b);
+  coriolis += -coriolis_force(m_rb_, nu) - coriolis_force(m_a_, nu_r) + m_a_ * current_rate_b;
+}
+
+ForceBreakdown VehicleModel::evaluate(const StateVector& x, const ModelInputs& inputs, Matrix3& rotation) const {
+  rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
+  ForceBreakdown f;
+  f.nu_r_b = velocity_b(x);
+  f.control_b = inputs.tau_b;
+  f.hydrostatic_b = hydrostatic_from_rotation(rotation);
+  add_motion_forces(rotation, velocity_b(x), inputs, f.nu_r_b, f.damping_b, f.coriolis_b);
   return f;
 }
 
@@ -113,12 +114,15 @@ ForceBreakdown VehicleModel::forces(const StateVector& x, const ModelInputs& inp
 }
 
 void VehicleModel::derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const {
-  Matrix3 rotation;
-  const ForceBreakdown f = evaluate(x, inputs, rotation);
+  // The terms of evaluate() summed as they come: the integrators' hot path
+  // keeps no breakdown.
+  const Matrix3 rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
   const Vector6 nu = velocity_b(x);
+  Vector6 nu_r = nu, total = inputs.tau_b + hydrostatic_from_rotation(rotation);
+  add_motion_forces(rotation, nu, inputs, nu_r, total, total);
   x_dot.segment<3>(state_index::kPosition) = rotation * nu.head<3>();
   x_dot.segment<4>(state_index::kAttitude) = quaternion_rate(attitude_nb(x), nu.tail<3>(), kQuaternionNormGain);
-  x_dot.segment<6>(state_index::kVelocity) = m_inv_ * f.total();
+  x_dot.segment<6>(state_index::kVelocity) = m_inv_ * total;
 }
 
 }  // namespace hydrocoef

@@ -114,6 +114,11 @@ class VehicleModel {
  private:
   ForceBreakdown evaluate(const StateVector& x, const ModelInputs& inputs, Matrix3& rotation) const;
   Vector6 hydrostatic_from_rotation(const Matrix3& rotation) const;
+  /// Adds the damping and Coriolis terms at velocity nu_b (rotation: body to
+  /// NED) to `damping` and `coriolis` (which may be one vector) and sets nu_r
+  /// (holding nu_b on entry) to the velocity relative to the water.
+  void add_motion_forces(const Matrix3& rotation, const Vector6& nu, const ModelInputs& inputs, Vector6& nu_r,
+                         Vector6& damping, Vector6& coriolis) const;
 
   VehicleDescription description_;
   Matrix6 m_rb_;

@@ -180,6 +180,43 @@ TEST(VehicleModel, HThrustersMakeAPureYawMoment) {
   EXPECT_EQ(model.clamp_thrust(0, -3.0), -1.0);
 }
 
+// derivative() sums the terms as it goes; forces() keeps them apart. Both
+// are one equation of motion: nu' = M^-1 (control + damping + hydrostatic +
+// coriolis), p' = R nu1, q' the quaternion rate, with and without a current
+// (which changes the damping's velocity and the Coriolis terms).
+TEST(VehicleModel, DerivativeIsTheBreakdownsTotal) {
+  VehicleDescription d = tumbling_body();
+  d.gravity_m_s2 = 9.81;
+  d.buoyancy_N = 0.9 * d.mass_kg * 9.81;
+  for (std::size_t k = 0; k < 6; ++k) {
+    const std::string v(1, "uvwpqr"[k]);
+    d.damping[k].kind = DofDamping::Kind::Law;
+    d.damping[k].law = parse_damping_terms(v + "," + v + "|" + v + "|");
+    d.damping[k].coefficients = {-0.1 * static_cast<double>(k + 1), -1.0};
+  }
+  const VehicleModel model(d);
+  Vector6 nu;
+  nu << 0.3, -0.2, 0.1, 0.5, -0.4, 0.6;
+  const StateVector x = make_state(Vector3(1.0, 2.0, 3.0), quaternion_from_euler(Vector3(0.3, -0.2, 1.1)), nu);
+  for (const Vector3& current : {Vector3::Zero().eval(), Vector3(0.2, -0.1, 0.05)}) {
+    ModelInputs inputs;
+    inputs.current_n = current;
+    inputs.tau_b << 1.0, -2.0, 0.5, 0.1, -0.2, 0.3;
+    StateVector dx;
+    model.derivative(x, inputs, dx);
+    const ForceBreakdown f = model.forces(x, inputs);
+    const Vector6 nu_dot = model.mass_matrix_inverse() * f.total();
+    EXPECT_LT((dx.segment<6>(state_index::kVelocity) - nu_dot).cwiseAbs().maxCoeff(), 1e-12 * nu_dot.norm());
+    const Matrix3 r = rotation_body_to_ned(attitude_nb(x));
+    EXPECT_LT((dx.segment<3>(state_index::kPosition) - r * nu.head<3>()).norm(), 1e-14);
+    EXPECT_LT((dx.segment<4>(state_index::kAttitude) - quaternion_rate(attitude_nb(x), nu.tail<3>(), 1.0)).norm(),
+              1e-15);
+    // The relative velocity: nu minus the current in body axes.
+    EXPECT_LT((f.nu_r_b.head<3>() - (nu.head<3>() - r.transpose() * current)).norm(), 1e-15);
+    EXPECT_GT(f.damping_b.cwiseAbs().minCoeff(), 0.0);
+  }
+}
+
 TEST(VehicleModel, DerivativeAllocatesNothing) {
   VehicleDescription d = tumbling_body();
   for (std::size_t k = 0; k < 6; ++k) {
