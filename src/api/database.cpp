@@ -10,7 +10,8 @@
 #include <limits>
 #include <set>
 
-namespace hydrocoef::api {
+namespace hydrocoef {
+inline namespace api {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -215,4 +216,5 @@ Surface Database::surface(const std::string& name) const {
       std::move(stored.surface), stored.record.name, stored.record.body, std::move(method), stored.record.stale}));
 }
 
-}  // namespace hydrocoef::api
+}  // namespace api
+}  // namespace hydrocoef

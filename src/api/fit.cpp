@@ -6,7 +6,8 @@
 #include <cmath>
 #include <limits>
 
-namespace hydrocoef::api {
+namespace hydrocoef {
+inline namespace api {
 std::vector<std::string> coefficient_units(const std::string& terms, const std::string& output,
                                            const std::string& variable) {
   const auto dof = force_index(output);
@@ -64,4 +65,5 @@ FitSummary Database::fit(const api::FitOptions& options) {
   return out;
 }
 
-}  // namespace hydrocoef::api
+}  // namespace api
+}  // namespace hydrocoef

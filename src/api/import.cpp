@@ -6,7 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-namespace hydrocoef::api {
+namespace hydrocoef {
+inline namespace api {
 namespace {
 
 /// The caller's settings as the command line's layer: each value is JSON, or
@@ -83,4 +84,5 @@ ImportSummary Database::import_files(const std::vector<std::string>& paths, cons
   return summary;
 }
 
-}  // namespace hydrocoef::api
+}  // namespace api
+}  // namespace hydrocoef

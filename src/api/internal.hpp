@@ -47,7 +47,8 @@ using LawFitOptions = ::hydrocoef::FitOptions;
 #include "hydrocoef/surface.hpp"
 #include "hydrocoef/version.hpp"
 
-namespace hydrocoef::api {
+namespace hydrocoef {
+inline namespace api {
 
 struct Surface::Impl {
   CoefficientSurface surface;
@@ -77,4 +78,5 @@ struct Database::Impl {
 std::vector<std::string> coefficient_units(const std::string& terms, const std::string& output,
                                            const std::string& variable);
 
-}  // namespace hydrocoef::api
+}  // namespace api
+}  // namespace hydrocoef

@@ -6,7 +6,8 @@
 
 #include <stdexcept>
 
-namespace hydrocoef::api {
+namespace hydrocoef {
+inline namespace api {
 namespace {
 
 /// JSON text rather than a path: it starts with '{' (after blanks) or spans lines.
@@ -81,4 +82,5 @@ Trajectory simulate(const std::string& vehicle_json, const std::string& scenario
   return out;
 }
 
-}  // namespace hydrocoef::api
+}  // namespace api
+}  // namespace hydrocoef

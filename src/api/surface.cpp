@@ -5,7 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-namespace hydrocoef::api {
+namespace hydrocoef {
+inline namespace api {
 
 Surface::Surface(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {
   if (!impl_) throw std::invalid_argument("hydrocoef::Surface: no surface");
@@ -68,4 +69,5 @@ void Surface::evaluate_batch(std::size_t count, const std::vector<ConstColumn>& 
   hydrocoef::evaluate_batch(impl_->surface, count, in, out, grad, threads, sd);
 }
 
-}  // namespace hydrocoef::api
+}  // namespace api
+}  // namespace hydrocoef
