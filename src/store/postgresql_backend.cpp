@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <system_error>
@@ -284,7 +285,17 @@ void ignore_notice(void*, const char*) {}
 PgConnection::PgConnection(const std::string& url, std::string display, Access access)
     : display_(std::move(display)), read_only_(access == Access::ReadOnly || access == Access::Immutable) {
   const int timeout = busy_timeout_seconds();
-  connection_ = PQconnectdb(url.c_str());
+  // A server that does not answer would hold libpq for as long as the
+  // operating system keeps trying (minutes): without a connect_timeout of
+  // the URL's own or $PGCONNECT_TIMEOUT, the connection waits
+  // HYDROCOEF_DB_TIMEOUT (at least libpq's 2 s). The URL is expanded after
+  // the default, so that its own connect_timeout wins.
+  const std::string connect_timeout = std::to_string(std::max(timeout, 2));
+  const char* environment_timeout = std::getenv("PGCONNECT_TIMEOUT");
+  const bool use_default = !environment_timeout || !*environment_timeout;
+  const char* const keywords[] = {"connect_timeout", "dbname", nullptr};
+  const char* const values[] = {use_default ? connect_timeout.c_str() : environment_timeout, url.c_str(), nullptr};
+  connection_ = PQconnectdbParams(keywords, values, 1);
   if (!connection_ || PQstatus(connection_) != CONNECTION_OK) {
     const std::string message = first_line(connection_ ? PQerrorMessage(connection_) : "out of memory");
     PQfinish(connection_);  // the destructor does not run for an object whose constructor throws

@@ -5,8 +5,13 @@
 // conflicts that change nothing, staleness triggers, deletes, forced-
 // oscillation records, the schema check, and writers that wait for each
 // other.
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -538,6 +543,37 @@ TEST_P(StoreBackends, ACopyAndACopyBackHoldTheOriginalsRows) {
     copy.import({test::one_run_batch(500, make_run({3, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
   }
   EXPECT_EQ(back.dump(kTimes), db_.dump(kTimes));
+}
+
+// A server that takes the connection but never answers (here a socket that
+// listens and reads nothing) is given up after HYDROCOEF_DB_TIMEOUT (libpq's
+// minimum, 2 s, here) in one line, instead of waiting for ever; a
+// connect_timeout in the URL, or $PGCONNECT_TIMEOUT, still decides.
+TEST(PostgreSqlConnection, AServerThatDoesNotAnswerIsGivenUpAfterTheTimeout) {
+  const int listener = socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_GE(listener, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  ASSERT_EQ(listen(listener, 4), 0);
+  socklen_t length = sizeof address;
+  ASSERT_EQ(getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length), 0);
+  const std::string url = "postgresql://127.0.0.1:" + std::to_string(ntohs(address.sin_port)) + "/silent";
+  unsetenv("PGCONNECT_TIMEOUT");
+  setenv("HYDROCOEF_DB_TIMEOUT", "1", 1);
+  const auto start = std::chrono::steady_clock::now();
+  test::expect_input_error([&] { Database db(url); }, {"cannot connect to the PostgreSQL server", "timeout"});
+  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(waited, 1.5);
+  EXPECT_LT(waited, 20.0);
+  // The URL's own value is read after the default, so it wins (here: refused as not a number).
+  test::expect_input_error([&] { Database db(url + "?connect_timeout=soon"); }, {"connect_timeout", "soon"});
+  setenv("PGCONNECT_TIMEOUT", "later", 1);
+  test::expect_input_error([&] { Database db(url); }, {"connect_timeout", "later"});
+  unsetenv("PGCONNECT_TIMEOUT");
+  unsetenv("HYDROCOEF_DB_TIMEOUT");
+  close(listener);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, StoreBackends, testing::Values(store::Backend::SQLite, store::Backend::PostgreSQL),
