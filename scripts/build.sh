@@ -2,8 +2,8 @@
 # Configures and builds hydrocoef in a build directory.
 #   scripts/build.sh [release|test|heavy]
 # release: optimized, in build/release (the CLI, examples and benchmarks).
-# test:    AddressSanitizer + UBSan at -O1, in build/test (the test suite but
-#          its heavy tests).
+# test:    AddressSanitizer + UBSan at -O1 with Clang, in build/test (the test
+#          suite but its heavy tests, and the libFuzzer targets of its smoke run).
 # heavy:   optimized, no sanitizers, in build/heavy: the heavy tests alone
 #          (*_heavy_test.cpp: statistical checks with hundreds of fits).
 set -euo pipefail
@@ -18,8 +18,12 @@ case "$kind" in
   # tables only, enough for the sanitizers' stack traces (file:line), and a
   # fifth less compile time than -g; the gold linker links the test programs
   # in half the time of ld.bfd.
+  # Clang: the libFuzzer targets of the fuzz smoke run link this build's own
+  # library (HYDROCOEF_FUZZ_SMOKE), so no second sanitizer build of the
+  # parsers is needed; and Clang compiles this configuration faster than GCC.
   test)    dir="$root/build/test"; flags=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g1 -O1" "-DCMAKE_C_FLAGS_DEBUG=-g1 -O1"
-                                          -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold
+                                          -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
+                                          -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold -DHYDROCOEF_FUZZ_SMOKE=ON
                                           -DHYDROCOEF_SANITIZE=ON -DHYDROCOEF_BUILD_BENCH=OFF -DHYDROCOEF_TEST_SET=fast) ;;
   # -O2: what Debian builds its packages with (the .deb is made from this
   # build), and an eighth less compile time than CMake's Release -O3.
@@ -32,6 +36,10 @@ esac
 bash "$root/scripts/install-deps.sh"
 generator=()
 if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+# A test build configured before it was a Clang build with the fuzz targets is made again.
+if [[ $kind == test && -f "$dir/CMakeCache.txt" ]] && ! grep -q '^HYDROCOEF_FUZZ_SMOKE:BOOL=ON' "$dir/CMakeCache.txt"; then
+  rm -rf "$dir"
+fi
 if [[ ! -f "$dir/CMakeCache.txt" ]]; then
   cmake -S "$root" -B "$dir" "${generator[@]}" "${flags[@]}" >/dev/null
 fi

@@ -25,7 +25,7 @@ packages=(
   libdeflate-dev        # zlib blocks of .vtp files, decompressed in parallel
   gnuplot-nox           # hydrocoef plot / report: PNG and SVG (pngcairo, svg terminals)
   chromium              # tests: the HTML report rendered headless
-  clang libclang-rt-14-dev  # libFuzzer targets in tests/fuzz (scripts/fuzz.sh)
+  clang libclang-rt-14-dev  # the sanitizer test build and the libFuzzer targets in tests/fuzz
   clang-format          # scripts/format.sh: the code style of .clang-format
   dpkg-dev              # cpack -G DEB: dpkg-shlibdeps finds the package's runtime dependencies (scripts/package-test.sh)
   pybind11-dev python3-dev python3-numpy  # the Python module (python/)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, builds the test
-# configuration (AddressSanitizer + UBSan) and the libFuzzer targets (Clang),
+# configuration (AddressSanitizer + UBSan, Clang, with the libFuzzer targets),
 # runs the GoogleTest suite through ctest (the fuzz smoke run of every target
 # included), then builds and runs the heavy tests in an optimized build, and
 # from that build installs hydrocoef, builds programs against it and makes,
@@ -26,8 +26,6 @@ server=$(bash "$root/scripts/postgresql-test-server.sh" start "$pg_dir") # fails
 eval "$server"
 export HYDROCOEF_TEST_POSTGRESQL_REQUIRED=1
 phase_done "PostgreSQL test server start"
-bash "$root/scripts/fuzz.sh" --build-only
-phase_done "fuzz targets build"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 jobs=$(nproc 2>/dev/null || echo 2)

@@ -1,6 +1,7 @@
-// Smoke run of the libFuzzer targets (tests/fuzz), when scripts/fuzz.sh has
-// built them in build/fuzz (they need Clang; this suite may be built with
-// GCC): each target replays its regression files in
+// Smoke run of the libFuzzer targets (tests/fuzz), which the sanitizer build
+// makes against its own library (HYDROCOEF_FUZZ_SMOKE; they need Clang, and
+// a GCC build finds those of scripts/fuzz.sh in build/fuzz instead): each
+// target replays its regression files in
 // tests/data/bad/fuzz-regressions/TARGET/ (every crash a fuzzer ever found)
 // and then fuzzes for a few seconds from the malformed-input corpus. Without
 // the fuzz build the test is skipped, saying so.
@@ -23,9 +24,16 @@ namespace fs = std::filesystem;
 
 const fs::path kSource(HYDROCOEF_SOURCE_DIR);
 
+// $HYDROCOEF_FUZZ_DIR; else the targets this build made (the sanitizer build
+// with HYDROCOEF_FUZZ_SMOKE, as scripts/build.sh test configures it); else
+// those of a fuzzing session's build/fuzz.
 fs::path fuzz_dir() {
   if (const char* dir = std::getenv("HYDROCOEF_FUZZ_DIR")) return dir;
+#ifdef HYDROCOEF_FUZZ_SMOKE_DIR
+  return HYDROCOEF_FUZZ_SMOKE_DIR;
+#else
   return kSource / "build" / "fuzz" / "tests" / "fuzz";
+#endif
 }
 
 struct Run {
@@ -44,8 +52,8 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
   const fs::path exe = fuzz_dir() / GetParam();
   if (!fs::exists(exe))
     GTEST_SKIP() << exe
-                 << " is not built (it needs Clang): run scripts/fuzz.sh "
-                    "--build-only, which scripts/test.sh runs before ctest";
+                 << " is not built (it needs Clang): the sanitizer build of scripts/build.sh test makes it, "
+                    "or scripts/fuzz.sh --build-only";
   TempDir dir;
   const fs::path regressions = kSource / "tests" / "data" / "bad" / "fuzz-regressions" / GetParam();
   if (fs::is_directory(regressions) && !fs::is_empty(regressions)) {
