@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets (tests/fuzz) with Clang in build/fuzz and runs
 # each for SECONDS (default 60), printing the executions per target.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]      e.g. scripts/fuzz.sh 600 cfdpost_export_fuzz
-#   scripts/fuzz.sh --build-only               build them for the test suite's smoke run
+#   scripts/fuzz.sh --build-only               build them only (the test command's sanitizer build makes
+#                                              its own for the smoke run: HYDROCOEF_FUZZ_SMOKE)
 # Each target first replays its regression files (tests/data/bad/fuzz-regressions/
 # TARGET/) and its seeds, then fuzzes with a fixed seed from a working corpus
 # kept in build/fuzz/corpus/TARGET. An input that crashes, leaks or hangs is
