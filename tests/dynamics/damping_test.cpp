@@ -60,6 +60,35 @@ TEST(DampingModel, LawsGiveForcesOnTheBody) {
   EXPECT_TRUE(model.disturbance_names().empty());
 }
 
+// The model evaluates a law term by term as damping_law_value does, for
+// every term kind, both signs of the velocity and zero: the same numbers.
+TEST(DampingModel, EveryTermKindIsTheLawsOwnValue) {
+  const DampingLawSpec all = parse_damping_terms("1,r,r|r|,r^2,r^3,|r|");
+  ASSERT_EQ(all.terms.size(), 6u);
+  // One term at a time (the others' coefficients 0), then all of them.
+  std::vector<std::vector<double>> coefficient_sets;
+  for (std::size_t t = 0; t < 6; ++t) {
+    std::vector<double> c(6, 0.0);
+    c[t] = -0.37;
+    coefficient_sets.push_back(c);
+  }
+  coefficient_sets.push_back({1e-5, -0.006, -0.077, 0.01, -0.002, 0.003});
+  for (std::size_t set = 0; set < coefficient_sets.size(); ++set) {
+    DampingSpec spec;
+    spec[5].kind = DofDamping::Kind::Law;
+    spec[5].law = all;
+    spec[5].coefficients = coefficient_sets[set];
+    const DampingModel model(spec, {});
+    for (const double r : {-1.3, -0.2, 0.0, 0.45, 2.0}) {
+      Vector6 nu = Vector6::Zero();
+      nu[5] = r;
+      const double expected = damping_law_value(all.terms, spec[5].coefficients, r);
+      EXPECT_EQ(model.evaluate(nu, {})[5], expected) << "set " << set << " at r = " << r;
+      if (set < 6) EXPECT_EQ(expected, -0.37 * basis_value(all.terms[set], r)) << "term " << set;
+    }
+  }
+}
+
 TEST(DampingModel, SurfaceAxesBindToVelocityOrDisturbance) {
   const std::map<std::string, CoefficientSurface> surfaces{{"s-ur", linear_surface("u", "r")},
                                                            {"s-dist", linear_surface("v", "current_v")}};
