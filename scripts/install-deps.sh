@@ -26,6 +26,7 @@ packages=(
   gnuplot-nox           # hydrocoef plot / report: PNG and SVG (pngcairo, svg terminals)
   chromium              # tests: the HTML report rendered headless
   clang libclang-rt-14-dev  # the sanitizer test build and the libFuzzer targets in tests/fuzz
+  lld                   # the sanitizer test build's linker
   clang-format          # scripts/format.sh: the code style of .clang-format
   dpkg-dev              # cpack -G DEB: dpkg-shlibdeps finds the package's runtime dependencies (scripts/package-test.sh)
   pybind11-dev python3-dev python3-numpy  # the Python module (python/)
