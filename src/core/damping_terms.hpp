@@ -12,6 +12,7 @@
 // (src/core/sign_convention.hpp converts).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -64,27 +65,34 @@ int term_power(DampingTerm term);
 /// std::invalid_argument for a DampingTerm outside the enumeration.
 [[noreturn]] void throw_unknown_damping_term();
 
-/// The basis term's value at x (x in m/s or rad/s; result in x's unit to the
-/// term's power, 1 for Constant). Inline: the dynamics' hot path.
+/// Every basis term's value at x, indexed by DampingTerm (x in m/s or rad/s;
+/// each in x's unit to the term's power, 1 for Constant).
+static_assert(static_cast<int>(DampingTerm::AbsLinear) == 5, "basis_values lists every DampingTerm in order");
+inline std::array<double, 6> basis_values(double x) {
+  const double magnitude = std::abs(x);
+  return {1.0, x, x * magnitude, x * x, x * x * x, magnitude};
+}
+
+/// The basis term's value at x; std::invalid_argument for a DampingTerm
+/// outside the enumeration.
 inline double basis_value(DampingTerm term, double x) {
-  switch (term) {
-    case DampingTerm::Constant: return 1.0;
-    case DampingTerm::Linear: return x;
-    case DampingTerm::SignedQuadratic: return x * std::abs(x);
-    case DampingTerm::Quadratic: return x * x;
-    case DampingTerm::Cubic: return x * x * x;
-    case DampingTerm::AbsLinear: return std::abs(x);
-  }
-  throw_unknown_damping_term();
+  const auto index = static_cast<std::size_t>(term);
+  if (index >= 6) throw_unknown_damping_term();
+  return basis_values(x)[index];
 }
 
 /// The law's value sum_k coefficients[k] basis_value(terms[k], x), summed in
 /// term order [force unit]; terms without a coefficient (or coefficients
-/// without a term) are left out. Allocates nothing (the dynamics' hot path).
+/// without a term) are left out. The basis values are computed once, not per
+/// term. Allocates nothing (the dynamics' hot path).
 inline double damping_law_value(std::span<const DampingTerm> terms, std::span<const double> coefficients, double x) {
+  const std::array<double, 6> basis = basis_values(x);
   double value = 0.0;
-  for (std::size_t k = 0; k < terms.size() && k < coefficients.size(); ++k)
-    value += coefficients[k] * basis_value(terms[k], x);
+  for (std::size_t k = 0; k < terms.size() && k < coefficients.size(); ++k) {
+    const auto index = static_cast<std::size_t>(terms[k]);
+    if (index >= 6) throw_unknown_damping_term();
+    value += coefficients[k] * basis[index];
+  }
   return value;
 }
 

@@ -138,14 +138,9 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
 Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> disturbances) const {
   Vector6 tau = Vector6::Zero();
   for (const Law& law : laws_) {
-    // damping_law_value without its switch per term: every basis value
-    // (src/core/damping_terms.hpp, in DampingTerm order), then the same sum.
     const double x = nu_r_b[static_cast<Eigen::Index>(law.variable)];
-    const double basis[6] = {1.0, x, x * std::abs(x), x * x, x * x * x, std::abs(x)};
-    double value = 0.0;
-    for (std::size_t k = 0; k < law.count; ++k)
-      value += law.coefficients[k] * basis[static_cast<std::size_t>(law.terms[k])];
-    tau[static_cast<Eigen::Index>(law.dof)] += value;
+    tau[static_cast<Eigen::Index>(law.dof)] +=
+        damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
   }
   // Written before they are read; left uninitialised on purpose (hot path).
   std::array<double, kMaxAxes> point;

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,12 @@ TEST(DampingLawTerms, NamesAndBasisValues) {
   EXPECT_EQ(basis_value(DampingTerm::Quadratic, -3.0), 9.0);
   EXPECT_EQ(basis_value(DampingTerm::Cubic, -3.0), -27.0);
   EXPECT_EQ(basis_value(DampingTerm::AbsLinear, -3.0), 3.0);
+  // A value outside the enumeration (memory gone wrong) is an error, never a read past the basis.
+  const auto unknown = static_cast<DampingTerm>(6);
+  EXPECT_THROW(basis_value(unknown, 1.0), std::invalid_argument);
+  const std::array<DampingTerm, 2> terms = {DampingTerm::Linear, unknown};
+  const std::array<double, 2> c = {1.0, 2.0};
+  EXPECT_THROW(damping_law_value(terms, c, 1.0), std::invalid_argument);
 }
 
 TEST(DampingLawTerms, RejectsBadLists) {
