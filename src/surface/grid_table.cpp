@@ -565,33 +565,22 @@ void GridTable::evaluate_one_axis(double value, double* out) const {
     evaluate(std::span<const double>(&value, 1), std::span<double>(out, outputs_.size()));
     return;
   }
-  // What locate and sum_terms<1, K> compute, term for term and in the same order.
+  // locate's work for one axis inside its range, then the table's own sum.
   const double* x = breakpoints_.data() + axis.offset;
-  const std::size_t cell = cell_inside(axis, x, value);
-  const double t = (value - x[cell]) / (x[cell + 1] - x[cell]);
-  const std::size_t n_out = outputs_.size();
+  std::size_t node = cell_inside(axis, x, value);
+  const double h = x[node + 1] - x[node];
+  const double t = (value - x[node]) / h;
+  std::array<double, 4> w{1.0, 0.0, 0.0, 0.0};
   if (terms_per_axis_ == 1) {
-    const double* data = values_.data() + (t >= 0.5 ? cell + 1 : cell) * node_block_;
-    for (std::size_t k = 0; k < n_out; ++k) out[k] = 0.0 + 1.0 * (0.0 + 1.0 * data[k]);
-    return;
-  }
-  double w[4];
-  std::size_t terms = 2;
-  const double* data = nullptr;
-  if (terms_per_axis_ == 2) {
+    if (t >= 0.5) ++node;
+  } else if (terms_per_axis_ == 2) {
     w[0] = 1.0 - t;
     w[1] = t;
-    data = values_.data() + cell * node_block_;
   } else {
-    hermite_weights(t, x[cell + 1] - x[cell], w);
-    terms = 4;
-    data = hermite_.data() + cell * node_block_;
+    hermite_weights(t, h, w.data());
   }
-  for (std::size_t k = 0; k < n_out; ++k) {
-    double total = 0.0;
-    for (std::size_t e = 0; e < terms; ++e) total += w[e] * (0.0 + 1.0 * data[term_offsets_[e] + k]);
-    out[k] = total;
-  }
+  const double* data = (hermite_.empty() ? values_.data() : hermite_.data()) + node * node_block_;
+  sum_(w.data(), kMaxGridAxes, nullptr, term_offsets_.data(), data, outputs_.size(), out, 1);
 }
 
 double GridTable::evaluate_one(std::span<const double> point, std::size_t output) const {
