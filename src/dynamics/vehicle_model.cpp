@@ -98,8 +98,8 @@ inline void VehicleModel::add_motion_forces(const Matrix3& rotation, const Vecto
   coriolis += -coriolis_force(m_rb_, nu) - coriolis_force(m_a_, nu_r) + m_a_ * current_rate_b;
 }
 
-ForceBreakdown VehicleModel::evaluate(const StateVector& x, const ModelInputs& inputs, Matrix3& rotation) const {
-  rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
+ForceBreakdown VehicleModel::forces(const StateVector& x, const ModelInputs& inputs) const {
+  const Matrix3 rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
   ForceBreakdown f;
   f.nu_r_b = velocity_b(x);
   f.control_b = inputs.tau_b;
@@ -108,13 +108,8 @@ ForceBreakdown VehicleModel::evaluate(const StateVector& x, const ModelInputs& i
   return f;
 }
 
-ForceBreakdown VehicleModel::forces(const StateVector& x, const ModelInputs& inputs) const {
-  Matrix3 rotation;
-  return evaluate(x, inputs, rotation);
-}
-
 void VehicleModel::derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const {
-  // The terms of evaluate() summed as they come: the integrators' hot path
+  // The terms of forces() summed as they come: the integrators' hot path
   // keeps no breakdown.
   const Matrix3 rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
   const Vector6 nu = velocity_b(x);

@@ -112,7 +112,6 @@ class VehicleModel {
   void derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const;
 
  private:
-  ForceBreakdown evaluate(const StateVector& x, const ModelInputs& inputs, Matrix3& rotation) const;
   Vector6 hydrostatic_from_rotation(const Matrix3& rotation) const;
   /// Adds the damping and Coriolis terms at velocity nu_b (rotation: body to
   /// NED) to `damping` and `coriolis` (which may be one vector) and sets nu_r
