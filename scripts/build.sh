@@ -38,13 +38,11 @@ bash "$root/scripts/install-deps.sh"
 generator=()
 if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
 # A test build configured before it was a Clang build with the fuzz targets
-# is made again (a build cannot change its compiler); one linked by gold is
-# configured again with the flags above.
+# is made again (a build cannot change its compiler).
 if [[ $kind == test && -f "$dir/CMakeCache.txt" ]] && ! grep -q '^HYDROCOEF_FUZZ_SMOKE:BOOL=ON' "$dir/CMakeCache.txt"; then
   rm -rf "$dir"
 fi
-if [[ ! -f "$dir/CMakeCache.txt" ]] ||
-  { [[ $kind == test ]] && ! grep -q '^CMAKE_EXE_LINKER_FLAGS:.*-fuse-ld=lld' "$dir/CMakeCache.txt"; }; then
+if [[ ! -f "$dir/CMakeCache.txt" ]]; then
   cmake -S "$root" -B "$dir" "${generator[@]}" "${flags[@]}" >/dev/null
 fi
 cmake --build "$dir" -j "$jobs"
