@@ -1,6 +1,8 @@
 #include "src/store/schema_check.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <map>
 #include <mutex>
 #include <set>
@@ -71,7 +73,92 @@ std::string lower_case(std::string text) {
   return text;
 }
 
-/// "table run: column u double precision not null", "trigger x on run", ...
+/// Every comma-separated name of a column list, in order: "(a, b)".
+std::string column_list(const std::vector<std::string>& columns) {
+  std::string out = "(";
+  for (const auto& c : columns) out += (out.size() > 1 ? ", " : "") + c;
+  return out + ")";
+}
+
+/// SQLite's and PostgreSQL's words for a foreign key action.
+std::string action_name(std::string text) {
+  text = lower_case(std::move(text));
+  return text == "a" ? "no action"
+         : text == "r" ? "restrict"
+         : text == "c" ? "cascade"
+         : text == "n" ? "set null"
+         : text == "d" ? "set default"
+                       : text;
+}
+
+/// The keys, indexes, foreign keys and CHECK constraints of one table of the
+/// in-memory SQLite database, as postgresql_objects describes them.
+void add_expected_constraints(Connection& memory, const std::string& table, std::set<std::string>& out) {
+  const std::string prefix = "table " + lower_case(table) + ": ";
+  std::vector<std::pair<int, std::string>> key;
+  std::map<std::string, std::string> declared;
+  auto columns = memory.prepare("SELECT name, type, pk FROM pragma_table_info(?)");
+  columns.bind(1, table);
+  while (columns.step()) {
+    declared[columns.get_text(0)] = columns.get_text(1);
+    if (columns.get_int(2) > 0) key.emplace_back(columns.get_int(2), lower_case(columns.get_text(0)));
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::string> key_columns;
+  for (const auto& k : key) key_columns.push_back(k.second);
+  if (!key_columns.empty()) out.insert(prefix + "primary key " + column_list(key_columns));
+
+  auto indexes = memory.prepare("SELECT name, \"unique\", origin, partial FROM pragma_index_list(?)");
+  indexes.bind(1, table);
+  while (indexes.step()) {
+    if (indexes.get_text(2) == "pk") continue;  // the primary key, above
+    std::vector<std::string> names;
+    auto info = memory.prepare("SELECT coalesce(name, '(expression)') FROM pragma_index_info(?) ORDER BY seqno");
+    info.bind(1, indexes.get_text(0));
+    while (info.step()) names.push_back(lower_case(info.get_text(0)));
+    out.insert(prefix + (indexes.get_int(1) != 0 ? "unique index " : "index ") + column_list(names) +
+               (indexes.get_int(3) != 0 ? " (partial)" : ""));
+  }
+
+  auto foreign = memory.prepare(
+      "SELECT id, \"table\", \"from\", \"to\", on_update, on_delete FROM pragma_foreign_key_list(?) "
+      "ORDER BY id, seq");
+  foreign.bind(1, table);
+  std::map<std::int64_t, std::array<std::string, 5>> keys;  // id: from, table, to, on update, on delete
+  while (foreign.step()) {
+    auto& k = keys[foreign.get_int(0)];
+    const std::string referenced = lower_case(foreign.get_text(1));
+    k[0] += (k[0].empty() ? "" : ", ") + lower_case(foreign.get_text(2));
+    k[1] = referenced;
+    // No column named: the referenced table's primary key.
+    std::string to = lower_case(foreign.get_text(3));
+    if (to.empty()) {
+      auto pk = memory.prepare("SELECT name FROM pragma_table_info(?) WHERE pk > 0 ORDER BY pk");
+      pk.bind(1, foreign.get_text(1));
+      while (pk.step()) to += (to.empty() ? "" : ", ") + lower_case(pk.get_text(0));
+    }
+    k[2] += (k[2].empty() ? "" : ", ") + to;
+    k[3] = action_name(foreign.get_text(4));
+    k[4] = action_name(foreign.get_text(5));
+  }
+  for (const auto& [id, k] : keys)
+    out.insert(prefix + "foreign key (" + k[0] + ") references " + k[1] + " (" + k[2] + ") on update " + k[3] +
+               " on delete " + k[4]);
+
+  // CHECK constraints by count: SQLite keeps them only in the CREATE TABLE
+  // text, and PostgreSQL rewrites their expressions its own way.
+  auto sql = memory.prepare("SELECT sql FROM sqlite_schema WHERE type = 'table' AND name = ?");
+  sql.bind(1, table);
+  std::size_t checks = 0;
+  if (sql.step()) {
+    const std::string text = sql.get_text(0);
+    for (std::size_t at = text.find("CHECK"); at != std::string::npos; at = text.find("CHECK", at + 5)) ++checks;
+  }
+  if (checks > 0) out.insert(prefix + std::to_string(checks) + " check constraints");
+}
+
+/// "table run: column u double precision not null default", "trigger x on
+/// run", "table run: primary key (id)", ...
 std::set<std::string> expected_postgresql_objects(int version) {
   static std::mutex mutex;
   static std::map<int, std::set<std::string>> cache;
@@ -100,32 +187,92 @@ std::set<std::string> expected_postgresql_objects(int version) {
       out.insert("view " + name);
       continue;
     }
-    auto columns = memory.prepare("SELECT name, type, \"notnull\", pk FROM pragma_table_info(?)");
+    auto columns = memory.prepare("SELECT name, type, \"notnull\", pk, dflt_value IS NOT NULL FROM pragma_table_info(?)");
     columns.bind(1, name);
+    std::size_t key_columns = 0;
+    std::vector<std::string> lines;
     while (columns.step()) {
       const std::string declared = columns.get_text(1);
       const std::string pg = declared == "INTEGER" ? "bigint"
                              : declared == "REAL"  ? "double precision"
                              : declared == "BLOB"  ? "bytea"
-                                                   : "text";
+                                                   : "text collate C";
       const bool not_null = columns.get_int(2) != 0 || columns.get_int(3) != 0;
+      if (columns.get_int(3) > 0) ++key_columns;
+      // An INTEGER PRIMARY KEY is an identity column there (dialect.cpp).
+      const bool identity = declared == "INTEGER" && columns.get_int(3) == 1;
       // PostgreSQL folds unquoted names to lower case (n_dA_x is n_da_x there).
-      out.insert("table " + lower_case(name) + ": column " + lower_case(columns.get_text(0)) + " " + pg +
-                 (not_null ? " not null" : ""));
+      lines.push_back("table " + lower_case(name) + ": column " + lower_case(columns.get_text(0)) + " " + pg +
+                      (not_null ? " not null" : "") + (columns.get_int(4) != 0 ? " default" : "") +
+                      (identity ? " identity" : ""));
     }
+    // Only a key of one INTEGER column is an identity.
+    for (auto& line : lines) {
+      const std::string mark = " identity";
+      if (key_columns != 1 && line.ends_with(mark)) line.erase(line.size() - mark.size());
+      out.insert(line);
+    }
+    add_expected_constraints(memory, name, out);
   }
   return cache.emplace(version, out).first->second;
+}
+
+/// The column names of attribute numbers `numbers` ("{1,3}") of a relation.
+std::string pg_columns(Connection& connection, const std::string& relation, const std::string& numbers) {
+  auto names = connection.prepare(
+      "SELECT string_agg(coalesce(a.attname, '(expression)'), ', ' ORDER BY k.n) "
+      "FROM unnest(?2::int2[]) WITH ORDINALITY AS k(attnum, n) "
+      "LEFT JOIN pg_attribute a ON a.attrelid = ?1::oid AND a.attnum = k.attnum AND k.attnum > 0");
+  names.bind(1, relation);
+  names.bind(2, numbers);
+  return names.step() ? names.get_text(0) : "";
 }
 
 std::set<std::string> postgresql_objects(Connection& connection) {
   std::set<std::string> out;
   auto columns = connection.prepare(
-      "SELECT c.table_name, c.column_name, c.data_type, c.is_nullable FROM information_schema.columns c "
+      "SELECT c.table_name, c.column_name, c.data_type, c.is_nullable, coalesce(c.collation_name, ''), "
+      "(c.column_default IS NOT NULL)::int, (c.is_identity = 'YES')::int FROM information_schema.columns c "
       "JOIN information_schema.tables t ON t.table_schema = c.table_schema AND t.table_name = c.table_name "
       "WHERE c.table_schema = current_schema() AND t.table_type = 'BASE TABLE'");
-  while (columns.step())
+  while (columns.step()) {
+    const std::string collation = columns.get_text(4);
     out.insert("table " + columns.get_text(0) + ": column " + columns.get_text(1) + " " + columns.get_text(2) +
-               (columns.get_text(3) == "NO" ? " not null" : ""));
+               (collation.empty() ? "" : " collate " + collation) + (columns.get_text(3) == "NO" ? " not null" : "") +
+               (columns.get_int(5) != 0 ? " default" : "") + (columns.get_int(6) != 0 ? " identity" : ""));
+  }
+  // Keys and indexes, by their columns (their names are each database's own).
+  auto indexes = connection.prepare(
+      "SELECT t.relname, i.indrelid::text, i.indkey::int2[]::text, i.indisprimary::int, i.indisunique::int, "
+      "(i.indpred IS NOT NULL)::int FROM pg_index i JOIN pg_class t ON t.oid = i.indrelid "
+      "JOIN pg_namespace n ON n.oid = t.relnamespace WHERE n.nspname = current_schema()");
+  while (indexes.step()) {
+    const std::string columns_of = column_list({pg_columns(connection, indexes.get_text(1), indexes.get_text(2))});
+    const std::string kind = indexes.get_int(3) != 0 ? "primary key "
+                             : indexes.get_int(4) != 0 ? "unique index "
+                                                       : "index ";
+    out.insert("table " + indexes.get_text(0) + ": " + kind + columns_of +
+               (indexes.get_int(5) != 0 ? " (partial)" : ""));
+  }
+  auto constraints = connection.prepare(
+      "SELECT t.relname, c.contype::text, c.conrelid::text, c.conkey::text, c.confrelid::text, c.confkey::text, "
+      "coalesce(r.relname, ''), c.confupdtype::text, c.confdeltype::text FROM pg_constraint c "
+      "JOIN pg_class t ON t.oid = c.conrelid JOIN pg_namespace n ON n.oid = t.relnamespace "
+      "LEFT JOIN pg_class r ON r.oid = c.confrelid WHERE n.nspname = current_schema() AND c.contype IN ('f', 'c')");
+  std::map<std::string, std::size_t> checks;
+  while (constraints.step()) {
+    const std::string table = constraints.get_text(0);
+    if (constraints.get_text(1) == "c") {
+      ++checks[table];
+      continue;
+    }
+    out.insert("table " + table + ": foreign key (" +
+               pg_columns(connection, constraints.get_text(2), constraints.get_text(3)) + ") references " +
+               constraints.get_text(6) + " (" +
+               pg_columns(connection, constraints.get_text(4), constraints.get_text(5)) + ") on update " +
+               action_name(constraints.get_text(7)) + " on delete " + action_name(constraints.get_text(8)));
+  }
+  for (const auto& [table, count] : checks) out.insert("table " + table + ": " + std::to_string(count) + " check constraints");
   auto views =
       connection.prepare("SELECT table_name FROM information_schema.views WHERE table_schema = current_schema()");
   while (views.step()) out.insert("view " + views.get_text(0));
@@ -162,8 +309,22 @@ std::optional<std::string> postgresql_schema_difference(Connection& connection, 
     return std::nullopt;
   }
   const std::set<std::string> expected = expected_postgresql_objects(version);
-  for (const auto& object : found)
-    if (!expected.count(object)) return "has " + printable_text(object, 120) + " that hydrocoef does not create";
+  // What a line describes: a column, a table's CHECK count, a foreign key's
+  // columns; the same subject on both sides is a change, said as one.
+  const auto subject = [](const std::string& line) {
+    if (const std::size_t at = line.find(": column "); at != std::string::npos)
+      return line.substr(0, line.find(' ', at + 9));
+    if (line.ends_with(" check constraints")) return line.substr(0, line.find(": ")) + ": checks";
+    if (const std::size_t at = line.find(" on update "); at != std::string::npos) return line.substr(0, at);
+    return line;
+  };
+  for (const auto& object : found) {
+    if (expected.count(object)) continue;
+    for (const auto& wanted : expected)
+      if (!found.count(wanted) && subject(wanted) == subject(object))
+        return "has " + printable_text(object, 120) + " where hydrocoef creates " + printable_text(wanted, 120);
+    return "has " + printable_text(object, 120) + " that hydrocoef does not create";
+  }
   for (const auto& object : expected)
     if (!found.count(object)) return "lacks " + printable_text(object, 120);
   return std::nullopt;

@@ -35,10 +35,15 @@ std::optional<std::string> schema_difference(const std::vector<SchemaEntry>& exp
                                              const std::vector<SchemaEntry>& found);
 
 /// The same check for a PostgreSQL database at `version`, in its current
-/// schema (search_path): its tables and their columns (name, type, NOT
-/// NULL), its triggers and rules, and no views, against what the migrations
-/// create (each SQLite type as the dialect layer turns it). Indexes and
-/// constraints are left to PostgreSQL, which enforces them.
+/// schema (search_path), against what the migrations create (each SQLite type
+/// as the dialect layer turns it): its tables and their columns (name, type,
+/// collation, NOT NULL, whether a default or an identity fills them), primary
+/// keys, unique and other indexes (by their columns: their names are each
+/// database's own), foreign keys with their ON UPDATE / ON DELETE actions, the
+/// number of CHECK constraints of each table (PostgreSQL rewrites their
+/// expressions its own way), triggers with their functions, rules, and no
+/// views. A dropped unique key would let a sweep store one key twice, a
+/// dropped foreign key or cascade leave rows of deleted runs behind.
 std::optional<std::string> postgresql_schema_difference(Connection& connection, int version);
 
 }  // namespace hydrocoef::store

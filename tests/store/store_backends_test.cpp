@@ -248,20 +248,61 @@ TEST_P(StoreBackends, ASchemaChangedByAnotherProgramIsRefused) {
       "run_force_insert_stales_fits AFTER INSERT ON run_force FOR EACH ROW EXECUTE FUNCTION hc_elsewhere.f()");
   test::expect_input_error([&] { Database db(db_.location()); }, {"another schema"});
   db_.connect().execute("DROP SCHEMA hc_elsewhere CASCADE");
-  // A constraint another program dropped (the schema check does not compare
-  // constraints): the write that needs it is refused in one line, nothing
-  // changed.
-  TestDatabase other(GetParam());
-  { Database db(other.location()); }
-  other.connect().execute("ALTER TABLE run_force DROP CONSTRAINT run_force_pkey CASCADE");
-  Database db(other.location());
-  const std::string before = other.dump();
-  test::expect_input_error(
-      [&] {
-        db.import({test::one_run_batch(7, make_run({0.7, 0, 0, 0, 0, 0}, 0, -3.0))}, ConflictPolicy::Error);
-      },
-      {"SQLSTATE 42P10", "another program"});
-  EXPECT_EQ(other.dump(), before);
+}
+
+// Keys, indexes, foreign keys, CHECK constraints, defaults, identities and
+// collations are compared too: each change below is refused when the
+// database is opened, in one line naming what differs, and the database is
+// left as it was.
+TEST_P(StoreBackends, AKeyIndexOrConstraintChangedByAnotherProgramIsRefused) {
+  HYDROCOEF_NEED_DATABASE(db_);
+  if (GetParam() != store::Backend::PostgreSQL) GTEST_SKIP() << "SQLite's schema is compared as its SQL text";
+  struct Change {
+    std::string sql;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Change> changes = {
+      // One sweep could store a key twice, or one run a force component twice.
+      {"ALTER TABLE run DROP CONSTRAINT %unique(run)%",
+       {"lacks table run: unique index (body_id, u, v, w, p, q, r, disturbance_key)"}},
+      {"ALTER TABLE run_force DROP CONSTRAINT run_force_pkey", {"lacks table run_force: primary key (run_id, component)"}},
+      // Deleting a run would leave its forces behind.
+      {"ALTER TABLE run_force DROP CONSTRAINT run_force_run_id_fkey; ALTER TABLE run_force ADD FOREIGN KEY (run_id) "
+       "REFERENCES run(id)",
+       {"has table run_force: foreign key (run_id) references run (id) on update no action on delete no action "
+        "where hydrocoef creates", "on delete cascade"}},
+      {"ALTER TABLE run_force DROP CONSTRAINT %check(run_force)%", {"check constraints where hydrocoef creates table run_force: "}},
+      {"CREATE INDEX extra ON run (u)", {"has table run: index (u)", "does not create"}},
+      {"CREATE UNIQUE INDEX extra ON run (body_id, u) WHERE u > 0", {"has table run: unique index (body_id, u) (partial)"}},
+      {"ALTER TABLE run ALTER COLUMN u DROP DEFAULT", {"has table run: column u double precision not null where hydrocoef creates", "not null default"}},
+      {"ALTER TABLE run ALTER COLUMN id DROP IDENTITY", {"has table run: column id bigint not null where hydrocoef creates", "id bigint not null identity"}},
+      // Another collation sorts and compares names otherwise.
+      {"ALTER TABLE body ALTER COLUMN name TYPE text COLLATE \"POSIX\"", {"has table body: column name text collate POSIX not null where hydrocoef creates"}},
+  };
+  for (const Change& change : changes) {
+    SCOPED_TRACE(change.sql);
+    TestDatabase db(GetParam());
+    { Database created(db.location()); }
+    auto connection = db.connect();
+    // Constraint names PostgreSQL chose: %kind(table)% is the table's first of that kind.
+    std::string sql = change.sql;
+    for (const auto& [marker, type] : {std::pair<std::string, std::string>{"%unique(", "u"}, {"%check(", "c"}}) {
+      const std::size_t at = sql.find(marker);
+      if (at == std::string::npos) continue;
+      const std::size_t end = sql.find(")%", at);
+      const std::string table = sql.substr(at + marker.size(), end - at - marker.size());
+      auto name = connection.prepare(
+          "SELECT conname FROM pg_constraint WHERE conrelid = ?1::regclass AND contype = ?2 ORDER BY conname");
+      name.bind(1, table);
+      name.bind(2, type);
+      ASSERT_TRUE(name.step()) << table << " has no constraint of type " << type;
+      sql.replace(at, end + 2 - at, name.get_text(0));
+    }
+    connection.execute(sql);
+    const std::string before = db.dump();
+    test::expect_input_error([&] { Database opened(db.location()); }, change.expected);
+    EXPECT_EQ(db.dump(), before);
+  }
 }
 
 TEST_P(StoreBackends, ASecondWriterWaitsThenSaysTheDatabaseIsBusy) {
