@@ -112,12 +112,13 @@ class VehicleModel {
   void derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const;
 
  private:
-  Vector6 hydrostatic_from_rotation(const Matrix3& rotation) const;
-  /// Adds the damping and Coriolis terms at velocity nu_b (rotation: body to
-  /// NED) to `damping` and `coriolis` (which may be one vector) and sets nu_r
-  /// (holding nu_b on entry) to the velocity relative to the water.
-  void add_motion_forces(const Matrix3& rotation, const Vector6& nu, const ModelInputs& inputs, Vector6& nu_r,
-                         Vector6& damping, Vector6& coriolis) const;
+  /// Adds -g(eta) at `rotation` (body to NED) to tau (6 numbers).
+  void add_hydrostatic(const Matrix3& rotation, double* tau) const;
+  /// Adds the damping and Coriolis terms at velocity nu (6 numbers; rotation:
+  /// body to NED) to `damping` and `coriolis` (which may be one array) and sets
+  /// nu_r (holding nu on entry) to the velocity relative to the water.
+  void add_motion_forces(const Matrix3& rotation, const double* nu, const ModelInputs& inputs, double* nu_r,
+                         double* damping, double* coriolis) const;
 
   VehicleDescription description_;
   Matrix6 m_rb_;

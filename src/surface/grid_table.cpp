@@ -580,7 +580,14 @@ void GridTable::evaluate_one_axis(double value, double* out) const {
     hermite_weights(t, h, w.data());
   }
   const double* data = (hermite_.empty() ? values_.data() : hermite_.data()) + node * node_block_;
-  sum_(w.data(), kMaxGridAxes, nullptr, term_offsets_.data(), data, outputs_.size(), out, 1);
+  // sum_terms<1, K>'s arithmetic, inlined: out[k] = sum_e w[e] data[offset_e + k],
+  // added in the same order from 0 (its inner weight is 1), so bit for bit.
+  const std::size_t* offsets = term_offsets_.data();
+  for (std::size_t k = 0; k < outputs_.size(); ++k) {
+    double total = 0.0;
+    for (std::size_t e = 0; e < terms_per_axis_; ++e) total += w[e] * data[offsets[e] + k];
+    out[k] = total;
+  }
 }
 
 double GridTable::evaluate_one(std::span<const double> point, std::size_t output) const {
