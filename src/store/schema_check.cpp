@@ -83,7 +83,7 @@ std::string column_list(const std::vector<std::string>& columns) {
 /// SQLite's and PostgreSQL's words for a foreign key action.
 std::string action_name(std::string text) {
   text = lower_case(std::move(text));
-  return text == "a" ? "no action"
+  return text == "a"   ? "no action"
          : text == "r" ? "restrict"
          : text == "c" ? "cascade"
          : text == "n" ? "set null"
@@ -187,7 +187,8 @@ std::set<std::string> expected_postgresql_objects(int version) {
       out.insert("view " + name);
       continue;
     }
-    auto columns = memory.prepare("SELECT name, type, \"notnull\", pk, dflt_value IS NOT NULL FROM pragma_table_info(?)");
+    auto columns =
+        memory.prepare("SELECT name, type, \"notnull\", pk, dflt_value IS NOT NULL FROM pragma_table_info(?)");
     columns.bind(1, name);
     std::size_t key_columns = 0;
     std::vector<std::string> lines;
@@ -248,7 +249,7 @@ std::set<std::string> postgresql_objects(Connection& connection) {
       "JOIN pg_namespace n ON n.oid = t.relnamespace WHERE n.nspname = current_schema()");
   while (indexes.step()) {
     const std::string columns_of = column_list({pg_columns(connection, indexes.get_text(1), indexes.get_text(2))});
-    const std::string kind = indexes.get_int(3) != 0 ? "primary key "
+    const std::string kind = indexes.get_int(3) != 0   ? "primary key "
                              : indexes.get_int(4) != 0 ? "unique index "
                                                        : "index ";
     out.insert("table " + indexes.get_text(0) + ": " + kind + columns_of +
@@ -272,7 +273,8 @@ std::set<std::string> postgresql_objects(Connection& connection) {
                pg_columns(connection, constraints.get_text(4), constraints.get_text(5)) + ") on update " +
                action_name(constraints.get_text(7)) + " on delete " + action_name(constraints.get_text(8)));
   }
-  for (const auto& [table, count] : checks) out.insert("table " + table + ": " + std::to_string(count) + " check constraints");
+  for (const auto& [table, count] : checks)
+    out.insert("table " + table + ": " + std::to_string(count) + " check constraints");
   auto views =
       connection.prepare("SELECT table_name FROM information_schema.views WHERE table_schema = current_schema()");
   while (views.step()) out.insert("view " + views.get_text(0));

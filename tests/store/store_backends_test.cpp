@@ -265,19 +265,26 @@ TEST_P(StoreBackends, AKeyIndexOrConstraintChangedByAnotherProgramIsRefused) {
       // One sweep could store a key twice, or one run a force component twice.
       {"ALTER TABLE run DROP CONSTRAINT %unique(run)%",
        {"lacks table run: unique index (body_id, u, v, w, p, q, r, disturbance_key)"}},
-      {"ALTER TABLE run_force DROP CONSTRAINT run_force_pkey", {"lacks table run_force: primary key (run_id, component)"}},
+      {"ALTER TABLE run_force DROP CONSTRAINT run_force_pkey",
+       {"lacks table run_force: primary key (run_id, component)"}},
       // Deleting a run would leave its forces behind.
       {"ALTER TABLE run_force DROP CONSTRAINT run_force_run_id_fkey; ALTER TABLE run_force ADD FOREIGN KEY (run_id) "
        "REFERENCES run(id)",
        {"has table run_force: foreign key (run_id) references run (id) on update no action on delete no action "
-        "where hydrocoef creates", "on delete cascade"}},
-      {"ALTER TABLE run_force DROP CONSTRAINT %check(run_force)%", {"check constraints where hydrocoef creates table run_force: "}},
+        "where hydrocoef creates",
+        "on delete cascade"}},
+      {"ALTER TABLE run_force DROP CONSTRAINT %check(run_force)%",
+       {"check constraints where hydrocoef creates table run_force: "}},
       {"CREATE INDEX extra ON run (u)", {"has table run: index (u)", "does not create"}},
-      {"CREATE UNIQUE INDEX extra ON run (body_id, u) WHERE u > 0", {"has table run: unique index (body_id, u) (partial)"}},
-      {"ALTER TABLE run ALTER COLUMN u DROP DEFAULT", {"has table run: column u double precision not null where hydrocoef creates", "not null default"}},
-      {"ALTER TABLE run ALTER COLUMN id DROP IDENTITY", {"has table run: column id bigint not null where hydrocoef creates", "id bigint not null identity"}},
+      {"CREATE UNIQUE INDEX extra ON run (body_id, u) WHERE u > 0",
+       {"has table run: unique index (body_id, u) (partial)"}},
+      {"ALTER TABLE run ALTER COLUMN u DROP DEFAULT",
+       {"has table run: column u double precision not null where hydrocoef creates", "not null default"}},
+      {"ALTER TABLE run ALTER COLUMN id DROP IDENTITY",
+       {"has table run: column id bigint not null where hydrocoef creates", "id bigint not null identity"}},
       // Another collation sorts and compares names otherwise.
-      {"ALTER TABLE body ALTER COLUMN name TYPE text COLLATE \"POSIX\"", {"has table body: column name text collate POSIX not null where hydrocoef creates"}},
+      {"ALTER TABLE body ALTER COLUMN name TYPE text COLLATE \"POSIX\"",
+       {"has table body: column name text collate POSIX not null where hydrocoef creates"}},
   };
   for (const Change& change : changes) {
     SCOPED_TRACE(change.sql);
