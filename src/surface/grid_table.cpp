@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
@@ -450,69 +451,69 @@ inline std::size_t GridTable::cell_inside(const AxisLookup& axis, const double* 
 }
 
 template <std::size_t K, bool WithGradient>
+inline std::size_t GridTable::axis_cell(std::size_t a, double value, double* w, double* dw) const {
+  const AxisLookup& axis = lookup_[a];
+  const double* x = breakpoints_.data() + axis.offset;
+  const std::size_t last_cell = axis.count - 2;
+  std::size_t cell = 0;
+  if (value >= axis.lo && value <= axis.hi) [[likely]] {
+    cell = cell_inside(axis, x, value);
+  } else {
+    // NaN, infinite or outside the breakpoints.
+    if (!std::isfinite(value) || axis.extrapolation == Extrapolation::Error) throw_outside(a, value);
+    const bool below = value < axis.lo;
+    cell = below ? 0 : last_cell;
+    Extrapolation policy = axis.extrapolation;
+    if (K == 1) policy = Extrapolation::Clamp;  // a constant's own continuation and its slope are both flat
+    if (K == 2 && policy == Extrapolation::Linear) policy = Extrapolation::Method;  // the same line
+    if (policy == Extrapolation::Clamp) {
+      // The end node's value alone; flat along this axis.
+      const std::size_t end = below || K == 1 ? 0 : (K == 4 ? 2 : 1);
+      for (std::size_t e = 0; e < K; ++e) {
+        w[e] = e == end ? 1.0 : 0.0;
+        if constexpr (WithGradient) dw[e] = 0.0;
+      }
+      return K == 1 && !below ? cell + 1 : cell;
+    }
+    if (K == 4 && policy == Extrapolation::Linear) {
+      // End value plus end slope times the distance beyond the end.
+      const double distance = value - (below ? axis.lo : axis.hi);
+      const std::size_t end = below ? 0 : 2;
+      for (std::size_t e = 0; e < K; ++e) {
+        w[e] = e == end ? 1.0 : (e == end + 1 ? distance : 0.0);
+        if constexpr (WithGradient) dw[e] = e == end + 1 ? 1.0 : 0.0;
+      }
+      return cell;
+    }
+    // Extrapolation::Method: the end cell's polynomial at t outside [0, 1].
+  }
+  const double h = x[cell + 1] - x[cell];
+  const double t = (value - x[cell]) / h;
+  if constexpr (K == 1) {
+    w[0] = 1.0;
+    if constexpr (WithGradient) dw[0] = 0.0;
+    return t >= 0.5 ? cell + 1 : cell;
+  } else if constexpr (K == 2) {
+    w[0] = 1.0 - t;
+    w[1] = t;
+    if constexpr (WithGradient) {
+      dw[0] = -1.0 / h;
+      dw[1] = 1.0 / h;
+    }
+  } else {
+    hermite_weights(t, h, w);
+    if constexpr (WithGradient) hermite_derivative_weights(t, h, dw);
+  }
+  return cell;
+}
+
+template <std::size_t K, bool WithGradient>
 void GridTable::locate(std::span<const double> point, Location& location) const {
   std::size_t base_node = 0;
-  const double* all_breakpoints = breakpoints_.data();
   for (std::size_t a = 0; a < point.size(); ++a) {
-    const AxisLookup& axis = lookup_[a];
-    const double* x = all_breakpoints + axis.offset;
-    const std::size_t last_cell = axis.count - 2;
-    double* w = location.weights.data() + 4 * a;
-    double* dw = location.derivative_weights.data() + 4 * a;
-    double value = point[a];
-    std::size_t cell = 0;
-    if (value >= axis.lo && value <= axis.hi) [[likely]] {
-      cell = cell_inside(axis, x, value);
-    } else {
-      // NaN, infinite or outside the breakpoints.
-      if (!std::isfinite(value) || axis.extrapolation == Extrapolation::Error) throw_outside(a, value);
-      const bool below = value < axis.lo;
-      cell = below ? 0 : last_cell;
-      Extrapolation policy = axis.extrapolation;
-      if (K == 1) policy = Extrapolation::Clamp;  // a constant's own continuation and its slope are both flat
-      if (K == 2 && policy == Extrapolation::Linear) policy = Extrapolation::Method;  // the same line
-      if (policy == Extrapolation::Clamp) {
-        // The end node's value alone; flat along this axis.
-        base_node += (K == 1 && !below ? cell + 1 : cell) * axis.node_stride;
-        const std::size_t end = below || K == 1 ? 0 : (K == 4 ? 2 : 1);
-        for (std::size_t e = 0; e < K; ++e) {
-          w[e] = e == end ? 1.0 : 0.0;
-          if constexpr (WithGradient) dw[e] = 0.0;
-        }
-        continue;
-      }
-      if (K == 4 && policy == Extrapolation::Linear) {
-        // End value plus end slope times the distance beyond the end.
-        base_node += cell * axis.node_stride;
-        const double distance = value - (below ? axis.lo : axis.hi);
-        const std::size_t end = below ? 0 : 2;
-        for (std::size_t e = 0; e < K; ++e) {
-          w[e] = e == end ? 1.0 : (e == end + 1 ? distance : 0.0);
-          if constexpr (WithGradient) dw[e] = e == end + 1 ? 1.0 : 0.0;
-        }
-        continue;
-      }
-      // Extrapolation::Method: the end cell's polynomial at t outside [0, 1].
-    }
-    const double h = x[cell + 1] - x[cell];
-    const double t = (value - x[cell]) / h;
-    if constexpr (K == 1) {
-      base_node += (t >= 0.5 ? cell + 1 : cell) * axis.node_stride;
-      w[0] = 1.0;
-      if constexpr (WithGradient) dw[0] = 0.0;
-    } else if constexpr (K == 2) {
-      base_node += cell * axis.node_stride;
-      w[0] = 1.0 - t;
-      w[1] = t;
-      if constexpr (WithGradient) {
-        dw[0] = -1.0 / h;
-        dw[1] = 1.0 / h;
-      }
-    } else {
-      base_node += cell * axis.node_stride;
-      hermite_weights(t, h, w);
-      if constexpr (WithGradient) hermite_derivative_weights(t, h, dw);
-    }
+    base_node += axis_cell<K, WithGradient>(a, point[a], location.weights.data() + 4 * a,
+                                            location.derivative_weights.data() + 4 * a) *
+                 lookup_[a].node_stride;
   }
   location.base = base_node * node_block_;
 }
@@ -558,37 +559,105 @@ void GridTable::evaluate_with_gradient(std::span<const double> point, std::span<
   }
 }
 
-void GridTable::evaluate_one_axis(double value, double* out) const {
-  const AxisLookup& axis = lookup_[0];
-  if (axes_.size() != 1 || !(value >= axis.lo && value <= axis.hi)) [[unlikely]] {
-    // Another axis count (evaluate says so), or outside: the general path.
-    evaluate(std::span<const double>(&value, 1), std::span<double>(out, outputs_.size()));
+void GridTable::evaluate_one_axis(double value, double* out) const { evaluate_one_axis_lanes<1>({this}, &value, out); }
+
+bool GridTable::shares_axis(const GridTable& other) const {
+  return axes_.size() == 1 && other.axes_.size() == 1 && method_ == other.method_ &&
+         outputs_.size() == other.outputs_.size() && breakpoints_ == other.breakpoints_ &&
+         lookup_[0].extrapolation == other.lookup_[0].extrapolation && node_block_ == other.node_block_ &&
+         term_offsets_ == other.term_offsets_;
+}
+
+template <std::size_t N>
+void GridTable::evaluate_one_axis_lanes(const std::array<const GridTable*, N>& tables, const double* values,
+                                        double* out) {
+  const GridTable& first = *tables[0];
+  const AxisLookup& axis = first.lookup_[0];
+  const std::size_t n_out = first.outputs_.size();
+  if (first.axes_.size() != 1) [[unlikely]] {
+    // evaluate says what is wrong.
+    std::vector<double> lane_out(n_out);
+    first.evaluate(std::span<const double>(values, 1), lane_out);
+    throw std::logic_error("GridTable::evaluate_one_axis_lanes: a table of more than one axis");
+  }
+  const std::size_t terms = first.terms_per_axis_;
+  std::array<std::size_t, N> node;
+  std::array<std::array<double, N>, 4> w;  // entries e < terms are written before they are read
+  bool inside = true;
+  for (std::size_t l = 0; l < N; ++l) inside = inside && values[l] >= axis.lo && values[l] <= axis.hi;
+  if (!inside) [[unlikely]] {
+    // A value outside the axis (or NaN): locate's work, lane by lane.
+    for (std::size_t l = 0; l < N; ++l) {
+      std::array<double, 4> lane;
+      switch (terms) {
+        case 1: node[l] = first.axis_cell<1, false>(0, values[l], lane.data(), nullptr); break;
+        case 2: node[l] = first.axis_cell<2, false>(0, values[l], lane.data(), nullptr); break;
+        default: node[l] = first.axis_cell<4, false>(0, values[l], lane.data(), nullptr); break;
+      }
+      for (std::size_t e = 0; e < terms; ++e) w[e][l] = lane[e];
+    }
+    sum_lanes(tables, node, w, out);
     return;
   }
-  // locate's work for one axis inside its range, then the table's own sum.
-  const double* x = breakpoints_.data() + axis.offset;
-  std::size_t node = cell_inside(axis, x, value);
-  const double h = x[node + 1] - x[node];
-  const double t = (value - x[node]) / h;
-  std::array<double, 4> w{1.0, 0.0, 0.0, 0.0};
-  if (terms_per_axis_ == 1) {
-    if (t >= 0.5) ++node;
-  } else if (terms_per_axis_ == 2) {
-    w[0] = 1.0 - t;
-    w[1] = t;
-  } else {
-    hermite_weights(t, h, w.data());
+  // locate's work for one axis inside its range, every lane at once (the
+  // cell search, the division and the weights vectorize over the lanes).
+  const double* x = first.breakpoints_.data() + axis.offset;
+  std::array<double, N> h, t;
+  for (std::size_t l = 0; l < N; ++l) node[l] = cell_inside(axis, x, values[l]);
+  for (std::size_t l = 0; l < N; ++l) {
+    h[l] = x[node[l] + 1] - x[node[l]];
+    t[l] = (values[l] - x[node[l]]) / h[l];
   }
-  const double* data = (hermite_.empty() ? values_.data() : hermite_.data()) + node * node_block_;
-  // sum_terms<1, K>'s arithmetic, inlined: out[k] = sum_e w[e] data[offset_e + k],
-  // added in the same order from 0 (its inner weight is 1), so bit for bit.
-  const std::size_t* offsets = term_offsets_.data();
-  for (std::size_t k = 0; k < outputs_.size(); ++k) {
-    double total = 0.0;
-    for (std::size_t e = 0; e < terms_per_axis_; ++e) total += w[e] * data[offsets[e] + k];
-    out[k] = total;
+  if (terms == 1) {
+    for (std::size_t l = 0; l < N; ++l) {
+      w[0][l] = 1.0;
+      if (t[l] >= 0.5) ++node[l];
+    }
+  } else if (terms == 2) {
+    for (std::size_t l = 0; l < N; ++l) {
+      w[0][l] = 1.0 - t[l];
+      w[1][l] = t[l];
+    }
+  } else {
+    for (std::size_t l = 0; l < N; ++l) {
+      std::array<double, 4> lane;
+      hermite_weights(t[l], h[l], lane.data());
+      for (std::size_t e = 0; e < 4; ++e) w[e][l] = lane[e];
+    }
+  }
+  sum_lanes(tables, node, w, out);
+}
+
+template <std::size_t N>
+inline void GridTable::sum_lanes(const std::array<const GridTable*, N>& tables, const std::array<std::size_t, N>& node,
+                                 const std::array<std::array<double, N>, 4>& w, double* out) {
+  // sum_terms<1, K>'s arithmetic: out = sum_e w[e] data[offset_e + k], added
+  // in the same order from 0 (its inner weight is 1), so evaluate()'s numbers
+  // bit for bit.
+  const GridTable& first = *tables[0];
+  const std::size_t n_out = first.outputs_.size();
+  const std::size_t* offsets = first.term_offsets_.data();
+  const auto sum = [&]<std::size_t K>() {
+    for (std::size_t l = 0; l < N; ++l) {
+      const GridTable& table = *tables[l];
+      const double* data =
+          (table.hermite_.empty() ? table.values_.data() : table.hermite_.data()) + node[l] * first.node_block_;
+      for (std::size_t k = 0; k < n_out; ++k) {
+        double total = 0.0;
+        for (std::size_t e = 0; e < K; ++e) total += w[e][l] * data[offsets[e] + k];
+        out[k * N + l] = total;
+      }
+    }
+  };
+  switch (first.terms_per_axis_) {
+    case 1: sum.template operator()<1>(); break;
+    case 2: sum.template operator()<2>(); break;
+    default: sum.template operator()<4>(); break;
   }
 }
+
+template void GridTable::evaluate_one_axis_lanes<1>(const std::array<const GridTable*, 1>&, const double*, double*);
+template void GridTable::evaluate_one_axis_lanes<8>(const std::array<const GridTable*, 8>&, const double*, double*);
 
 double GridTable::evaluate_one(std::span<const double> point, std::size_t output) const {
   check_point(point);

@@ -175,6 +175,18 @@ class GridTable {
   /// evaluate, and InputError for a table of more than one axis.
   void evaluate_one_axis(double value, double* out) const;
 
+  /// True when `other` has this table's one axis (breakpoints and
+  /// extrapolation), method and output count, as the draws of one surface on
+  /// its nodes have: evaluate_one_axis_lanes may serve both.
+  bool shares_axis(const GridTable& other) const;
+  /// evaluate_one_axis of N tables that share their axis (shares_axis) at
+  /// values[l], lane by lane: out[k * N + l] = tables[l]'s output k at values[l],
+  /// the same numbers. The cell search, the division and the weights are done
+  /// for every lane at once; allocates only for a value outside the axis.
+  /// Instantiated for N = 1 and 8 (motion::kLanes).
+  template <std::size_t N>
+  static void evaluate_one_axis_lanes(const std::array<const GridTable*, N>& tables, const double* values, double* out);
+
   /// One output at a point (the same number evaluate gives). Throws as
   /// evaluate; std::out_of_range if output >= output_count().
   double evaluate_one(std::span<const double> point, std::size_t output) const;
@@ -201,8 +213,16 @@ class GridTable {
                              const std::size_t* term_offsets, const double* data, std::size_t count, double* out,
                              std::size_t out_stride);
 
+  // locate's work along axis a: the weights w (and their derivatives dw) of
+  // `value`, and the node along the axis the weights start at.
+  template <std::size_t K, bool WithGradient>
+  std::size_t axis_cell(std::size_t a, double value, double* w, double* dw) const;
   template <std::size_t K, bool WithGradient>
   void locate(std::span<const double> point, Location& location) const;
+  // evaluate_one_axis_lanes' sum from each lane's node and weights w[e][lane].
+  template <std::size_t N>
+  static void sum_lanes(const std::array<const GridTable*, N>& tables, const std::array<std::size_t, N>& node,
+                        const std::array<std::array<double, N>, 4>& w, double* out);
   template <bool WithGradient>
   void locate_any(std::span<const double> point, Location& location) const;
   static std::size_t cell_inside(const AxisLookup& axis, const double* x, double value);

@@ -1137,5 +1137,78 @@ TEST(GridTable, OneAxisPathGivesEvaluatesNumbers) {
   EXPECT_THROW(two_axes.evaluate_one_axis(0.5, &out), InputError);
 }
 
+// Tables on one axis with other numbers (the draws of one surface) looked up
+// together: every lane's numbers are its own table's evaluate(), bit for bit,
+// inside the axis, beyond it under every policy, at the breakpoints.
+TEST(GridTable, LanesOnASharedAxisGiveEachTablesOwnNumbers) {
+  constexpr std::size_t kN = 8;
+  std::mt19937_64 rng(12);
+  for (const bool even : {true, false}) {
+    const std::vector<double> x = even ? evenly_spaced(-1.0, 2.0, 13) : unevenly_spaced(-1.0, 2.0, 13, rng);
+    for (Interpolation method : kAllMethods) {
+      for (Extrapolation policy :
+           {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
+        SCOPED_TRACE(method_label(method) + (even ? " even" : " uneven"));
+        std::vector<GridTable> tables;
+        for (std::size_t l = 0; l < kN; ++l) {
+          const double scale = 1.0 + 0.1 * static_cast<double>(l);
+          tables.push_back(make_table(
+              {x}, 2,
+              [&](const Point& p) {
+                return std::vector<double>{scale * std::sin(3.0 * p[0]), p[0] * std::abs(p[0]) - scale};
+              },
+              method, policy));
+        }
+        std::array<const GridTable*, kN> lanes;
+        for (std::size_t l = 0; l < kN; ++l) {
+          lanes[l] = &tables[l];
+          EXPECT_TRUE(tables[0].shares_axis(tables[l]));
+        }
+        for (int round = 0; round < 60; ++round) {
+          // Inside only, then some lanes beyond either end.
+          const double spread = round < 30 ? 0.0 : 0.6;
+          std::array<double, kN> values;
+          for (double& v : values) v = std::uniform_real_distribution<double>(-1.0 - spread, 2.0 + spread)(rng);
+          if (round % 10 == 0)
+            for (std::size_t l = 0; l < kN; ++l) values[l] = x[(static_cast<std::size_t>(round) + l) % x.size()];
+          const bool outside = std::any_of(values.begin(), values.end(), [&](double v) { return v < -1.0 || v > 2.0; });
+          std::array<double, 2 * kN> out{};
+          if (policy == Extrapolation::Error && outside) {
+            EXPECT_THROW(GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data()), InputError);
+            continue;
+          }
+          GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data());
+          for (std::size_t l = 0; l < kN; ++l) {
+            const std::vector<double> own = evaluate(tables[l], {values[l]});
+            for (std::size_t k = 0; k < 2; ++k)
+              EXPECT_EQ(std::bit_cast<std::uint64_t>(out[k * kN + l]), std::bit_cast<std::uint64_t>(own[k]))
+                  << "lane " << l << " at " << values[l] << ", output " << k;
+          }
+        }
+        std::array<double, kN> values;
+        values.fill(0.5);
+        values[3] = std::numeric_limits<double>::quiet_NaN();
+        std::array<double, 2 * kN> out{};
+        EXPECT_THROW(GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data()), InputError);
+      }
+    }
+  }
+  // Another axis, method, policy or output count is not shared.
+  const auto g = [](const Point& p) { return std::vector<double>{p[0]}; };
+  const GridTable base = make_table({{0.0, 1.0, 2.0}}, 1, g, Interpolation::Linear, Extrapolation::Clamp);
+  EXPECT_FALSE(base.shares_axis(make_table({{0.0, 1.0, 2.5}}, 1, g, Interpolation::Linear, Extrapolation::Clamp)));
+  EXPECT_FALSE(base.shares_axis(make_table({{0.0, 1.0, 2.0}}, 1, g, Interpolation::Pchip, Extrapolation::Clamp)));
+  EXPECT_FALSE(base.shares_axis(make_table({{0.0, 1.0, 2.0}}, 1, g, Interpolation::Linear, Extrapolation::Linear)));
+  EXPECT_FALSE(base.shares_axis(make_table(
+      {{0.0, 1.0, 2.0}}, 2,
+      [](const Point& p) {
+        return std::vector<double>{p[0], 1.0};
+      },
+      Interpolation::Linear, Extrapolation::Clamp)));
+  EXPECT_TRUE(base.shares_axis(make_table(
+      {{0.0, 1.0, 2.0}}, 1, [](const Point& p) { return std::vector<double>{-p[0]}; }, Interpolation::Linear,
+      Extrapolation::Clamp)));
+}
+
 }  // namespace
 }  // namespace hydrocoef
