@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace hydrocoef {
@@ -67,10 +68,17 @@ int term_power(DampingTerm term);
 
 /// Every basis term's value at x, indexed by DampingTerm (x in m/s or rad/s;
 /// each in x's unit to the term's power, 1 for Constant).
+/// T: double, or an Eigen array of lanes (the same operations in every lane).
 static_assert(static_cast<int>(DampingTerm::AbsLinear) == 5, "basis_values lists every DampingTerm in order");
-inline std::array<double, 6> basis_values(double x) {
-  const double magnitude = std::abs(x);
-  return {1.0, x, x * magnitude, x * x, x * x * x, magnitude};
+template <class T = double>
+inline std::array<T, 6> basis_values(const T& x) {
+  if constexpr (std::is_same_v<T, double>) {
+    const double magnitude = std::abs(x);
+    return {1.0, x, x * magnitude, x * x, x * x * x, magnitude};
+  } else {
+    const T magnitude = x.abs();
+    return {T::Ones(), x, x * magnitude, x * x, x * x * x, magnitude};
+  }
 }
 
 /// The basis term's value at x; std::invalid_argument for a DampingTerm

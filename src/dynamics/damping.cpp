@@ -142,22 +142,25 @@ Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> di
     tau[static_cast<Eigen::Index>(law.dof)] +=
         damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
   }
-  // Written before they are read; left uninitialised on purpose (hot path).
-  std::array<double, kMaxAxes> point;
-  std::array<double, kMaxOutputs> out;
+  std::array<double, kMaxOutputs> out;  // written before it is read (hot path)
   for (const Lookup& l : lookups_) {
-    for (std::size_t a = 0; a < l.axis_count; ++a)
-      point[a] = l.source[a] < 6 ? nu_r_b[static_cast<Eigen::Index>(l.source[a])] : disturbances[l.source[a] - 6];
-    // A table of one axis (a draw of a GP surface, a 1-D CFD table) skips the span checks.
-    const GridTable* grid = l.surface.grid();
-    if (grid && l.axis_count == 1)
-      grid->evaluate_one_axis(point[0], out.data());
-    else
-      l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),
-                         std::span<double>(out.data(), l.surface.output_count()));
+    look_up(l, nu_r_b.data(), disturbances, out.data());
     for (std::size_t k = 0; k < l.used; ++k) tau[static_cast<Eigen::Index>(l.dof[k])] += l.sign[k] * out[l.output[k]];
   }
   return tau;
+}
+
+void DampingModel::look_up(const Lookup& l, const double* nu_r_b, std::span<const double> disturbances, double* out) {
+  std::array<double, kMaxAxes> point;  // written before it is read (hot path)
+  for (std::size_t a = 0; a < l.axis_count; ++a)
+    point[a] = l.source[a] < 6 ? nu_r_b[l.source[a]] : disturbances[l.source[a] - 6];
+  // A table of one axis (a draw of a GP surface, a 1-D CFD table) skips the span checks.
+  const GridTable* grid = l.surface.grid();
+  if (grid && l.axis_count == 1)
+    grid->evaluate_one_axis(point[0], out);
+  else
+    l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),
+                       std::span<double>(out, l.surface.output_count()));
 }
 
 }  // namespace hydrocoef

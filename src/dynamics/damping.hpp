@@ -121,7 +121,11 @@ class DampingModel {
     std::array<double, 6> sign{};
   };
 
+  /// Surface l's outputs at nu_r_b (6) and the disturbances into out.
+  static void look_up(const Lookup& l, const double* nu_r_b, std::span<const double> disturbances, double* out);
+
   friend class DampingDraws;  // makes copies with drawn coefficients and surfaces
+  friend class DampingLanes;  // evaluates several models of one shape at once
 
   std::array<bool, 6> damped_{};
   std::vector<Law> laws_;

@@ -65,27 +65,81 @@ class ProgressCounter {
 };
 
 /// Runs body(i, drawn model) for every draw i on options.threads threads;
-/// a draw whose body throws InputError is recorded as failed. Returns which
-/// draws succeeded and the failures.
-template <typename Body>
+/// a draw whose body throws InputError is recorded as failed. Draws go in
+/// batches of `batch_size`: batch(first, count) may do draws first ..
+/// first + count - 1 at once and return true, or return false (or throw
+/// InputError) to leave them to body one by one. Returns which draws
+/// succeeded and the failures.
+template <typename Body, typename Batch>
 std::vector<char> run_draws(const VehicleModel& model, const DampingDraws& draws, const EnsembleOptions& options,
-                            const EnsembleProgress& progress, EnsembleFailures& failed, Body&& body) {
+                            const EnsembleProgress& progress, EnsembleFailures& failed, std::size_t batch_size,
+                            Body&& body, Batch&& batch) {
   const std::size_t n = options.samples;
   std::vector<char> ok(n, 0);
   FailureLog failures;
   ProgressCounter counter(progress, n);
-  parallel_for(n, options.threads, [&](std::size_t i) {
+  parallel_for((n + batch_size - 1) / batch_size, options.threads, [&](std::size_t b) {
+    const std::size_t first = b * batch_size, count = std::min(batch_size, n - first);
+    bool done = false;
     try {
-      body(i, model.with_damping(draws.draw(options.seed, i)));
-      ok[i] = 1;
-    } catch (const InputError& e) {
-      failures.add(i, e.what());
+      done = batch(first, count);
+    } catch (const InputError&) {}
+    for (std::size_t i = first; i < first + count; ++i) {
+      if (!done) {
+        try {
+          body(i, model.with_damping(draws.draw(options.seed, i)));
+          ok[i] = 1;
+        } catch (const InputError& e) {
+          failures.add(i, e.what());
+        }
+      } else {
+        ok[i] = 1;
+      }
+      counter.done();
     }
-    counter.done();
   });
   failed = failures.result();
   return ok;
 }
+
+/// Draw i's output samples into data: position, Euler angles (unwrapped in
+/// time below) and velocity at output time k.
+class TrajectoryStore {
+ public:
+  TrajectoryStore(std::vector<double>& data, std::size_t times) : data_(data), times_(times) {}
+  /// Draw i at output time k.
+  void put(std::size_t i, std::size_t k, const Vector3& p_n, const Vector3& euler_rad, const Vector6& nu_b) {
+    double* out = data_.data() + i * kQuantities * times_;
+    for (std::size_t a = 0; a < 3; ++a) {
+      out[a * times_ + k] = p_n[static_cast<Eigen::Index>(a)];
+      out[(3 + a) * times_ + k] = euler_rad[static_cast<Eigen::Index>(a)];
+    }
+    for (std::size_t a = 0; a < 6; ++a) out[(6 + a) * times_ + k] = nu_b[static_cast<Eigen::Index>(a)];
+  }
+  /// Draw i at output time k from its state, as make_sample reports it.
+  void put(std::size_t i, std::size_t k, const StateVector& x) {
+    put(i, k, position_n(x), euler_from_quaternion(attitude_nb(x).normalized()), velocity_b(x));
+  }
+  /// Unwraps draw i's Euler angles in time.
+  void unwrap(std::size_t i) {
+    double* out = data_.data() + i * kQuantities * times_;
+    for (std::size_t a = 3; a < 6; ++a) {
+      double* angle = out + a * times_;
+      double turns = 0.0;
+      for (std::size_t k = 1; k < times_; ++k) {
+        const double raw = angle[k] + turns;
+        const double step = raw - angle[k - 1];
+        if (step > std::numbers::pi) turns -= 2.0 * std::numbers::pi;
+        if (step < -std::numbers::pi) turns += 2.0 * std::numbers::pi;
+        angle[k] += turns;
+      }
+    }
+  }
+
+ private:
+  std::vector<double>& data_;
+  std::size_t times_;
+};
 
 [[noreturn]] void all_failed(const char* what, EnsembleFailures failures) {
   throw InputError("every one of the " + std::to_string(failures.count) + " draws failed to " + what + "; the first, " +
@@ -133,33 +187,36 @@ TrajectoryBands simulate_samples(const VehicleModel& model, const DampingDraws& 
 
   // All trajectories, draw-major: data[(draw * kQuantities + q) * times + k].
   std::vector<double> data(n * kQuantities * times);
+  TrajectoryStore store(data, times);
+  const auto one = [&](std::size_t i, const VehicleModel& drawn) {
+    const SimulationResult r = simulate(drawn, scenario);
+    if (r.samples.size() != times) throw std::logic_error("simulate_samples: a draw with other output times");
+    for (std::size_t k = 0; k < times; ++k)
+      store.put(i, k, r.samples[k].p_n, r.samples[k].euler_rad, r.samples[k].nu_b);
+    store.unwrap(i);
+  };
+  // RK4: motion::kLanes draws at once (simulate_lanes), the same numbers.
+  const bool lanes = scenario.integrator.method == IntegratorSettings::Method::Rk4;
+  const auto batch = [&](std::size_t first, std::size_t count) {
+    if (!lanes) return false;
+    std::array<DampingModel, motion::kLanes> drawn;
+    std::array<const DampingModel*, motion::kLanes> lane_damping{};
+    for (std::size_t l = 0; l < drawn.size(); ++l) {
+      // A short last batch fills its lanes with its last draw.
+      drawn[l] = draws.draw(options.seed, first + std::min(l, count - 1));
+      lane_damping[l] = &drawn[l];
+    }
+    const LaneSimulation r = simulate_lanes(model, lane_damping, scenario);
+    if (r.states.size() != times) throw std::logic_error("simulate_samples: lanes with other output times");
+    for (std::size_t l = 0; l < count; ++l) {
+      for (std::size_t k = 0; k < times; ++k) store.put(first + l, k, r.states[k].col(static_cast<Eigen::Index>(l)));
+      store.unwrap(first + l);
+    }
+    return true;
+  };
   EnsembleFailures failures;
-  const std::vector<char> ok =
-      run_draws(model, draws, options, progress, failures, [&](std::size_t i, const VehicleModel& drawn) {
-        const SimulationResult r = simulate(drawn, scenario);
-        if (r.samples.size() != times) throw std::logic_error("simulate_samples: a draw with other output times");
-        double* out = data.data() + i * kQuantities * times;
-        for (std::size_t k = 0; k < times; ++k) {
-          const TrajectorySample& s = r.samples[k];
-          for (std::size_t a = 0; a < 3; ++a) {
-            out[a * times + k] = s.p_n[static_cast<Eigen::Index>(a)];
-            out[(3 + a) * times + k] = s.euler_rad[static_cast<Eigen::Index>(a)];
-          }
-          for (std::size_t a = 0; a < 6; ++a) out[(6 + a) * times + k] = s.nu_b[static_cast<Eigen::Index>(a)];
-        }
-        // Unwrap the Euler angles in time.
-        for (std::size_t a = 3; a < 6; ++a) {
-          double* angle = out + a * times;
-          double turns = 0.0;
-          for (std::size_t k = 1; k < times; ++k) {
-            const double raw = angle[k] + turns;
-            const double step = raw - angle[k - 1];
-            if (step > std::numbers::pi) turns -= 2.0 * std::numbers::pi;
-            if (step < -std::numbers::pi) turns += 2.0 * std::numbers::pi;
-            angle[k] += turns;
-          }
-        }
-      });
+  const std::vector<char> ok = run_draws(model, draws, options, progress, failures,
+                                         lanes ? static_cast<std::size_t>(motion::kLanes) : 1, one, batch);
 
   TrajectoryBands bands;
   bands.failures = failures;
@@ -215,8 +272,9 @@ EquilibriumSamples solve_equilibrium_samples(const VehicleModel& model, const Da
   const std::size_t n = options.samples;
   std::vector<Vector6> nu(n, Vector6::Zero());
   EnsembleFailures failures;
-  const std::vector<char> ok =
-      run_draws(model, draws, options, progress, failures, [&](std::size_t i, const VehicleModel& drawn) {
+  const std::vector<char> ok = run_draws(
+      model, draws, options, progress, failures, 1,
+      [&](std::size_t i, const VehicleModel& drawn) {
         const EquilibriumResult r = solve_equilibrium(drawn, inputs);
         if (!r.converged) {
           std::size_t worst = 0;
@@ -226,7 +284,8 @@ EquilibriumSamples solve_equilibrium_samples(const VehicleModel& model, const Da
                            std::string(1, "XYZKMN"[worst]));
         }
         nu[i] = r.nu_b;
-      });
+      },
+      [](std::size_t, std::size_t) { return false; });
 
   EquilibriumSamples out;
   out.failures = failures;

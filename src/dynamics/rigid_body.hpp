@@ -25,6 +25,7 @@
 #include <optional>
 
 #include "src/core/matrix6.hpp"
+#include "src/dynamics/motion_terms.hpp"
 
 namespace hydrocoef {
 
@@ -62,27 +63,9 @@ Matrix6 coriolis_matrix(const Matrix6& mass, const Vector6& nu_b);
 /// C(nu) nu without forming C: the Coriolis–centripetal term of the equations
 /// of motion M nu' + C(nu) nu = tau, with a = M11 nu1 + M12 nu2 and
 /// b = M21 nu1 + M22 nu2:  C(nu) nu = ( -a x nu2,  -a x nu1 - b x nu2 ).
-/// out (6 numbers) -= C(nu) nu, element by element from nu (6 numbers): the
-/// integrators' hot path.
-inline void subtract_coriolis_force(const Matrix6& mass, const double* nu, double* out) {
-  double m[6];  // (a, b)
-  for (Eigen::Index i = 0; i < 6; ++i) {
-    double sum = 0.0;
-    for (Eigen::Index j = 0; j < 6; ++j) sum += mass(i, j) * nu[j];
-    m[i] = sum;
-  }
-  const double u = nu[0], v = nu[1], w = nu[2], p = nu[3], q = nu[4], r = nu[5];
-  out[0] -= m[2] * q - m[1] * r;  // -(a x nu2)
-  out[1] -= m[0] * r - m[2] * p;
-  out[2] -= m[1] * p - m[0] * q;
-  out[3] -= (m[2] * v - m[1] * w) + (m[5] * q - m[4] * r);  // -(a x nu1) - (b x nu2)
-  out[4] -= (m[0] * w - m[2] * u) + (m[3] * r - m[5] * p);
-  out[5] -= (m[1] * u - m[0] * v) + (m[4] * p - m[3] * q);
-}
-
 inline Vector6 coriolis_force(const Matrix6& mass, const Vector6& nu_b) {
   Vector6 minus = Vector6::Zero();
-  subtract_coriolis_force(mass, nu_b.data(), minus.data());
+  motion::subtract_coriolis(mass, nu_b.data(), minus.data());
   return -minus;
 }
 

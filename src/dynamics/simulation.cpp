@@ -6,6 +6,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/dynamics/damping_lanes.hpp"
 #include "src/dynamics/integrators.hpp"
 
 namespace hydrocoef {
@@ -144,28 +145,53 @@ std::optional<std::size_t> non_finite(const StateVector& x) {
 
 }  // namespace
 
-SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress) {
+namespace {
+
+/// What a run needs before its first step, checked: every segment's inputs,
+/// the output and segment times, the initial state.
+struct Plan {
+  std::vector<SegmentInputs> segments;
+  std::vector<Event> events;
+  StateVector initial;
+};
+
+Plan plan_run(const VehicleModel& model, const Scenario& scenario, std::vector<std::string>* notes) {
   if (scenario.segments.empty() || !(scenario.duration_s > 0.0) || !(scenario.output_rate_Hz > 0.0))
     throw InputError(SourceLocation{scenario.file},
                      "a scenario needs a positive duration and output rate and a segment");
   check_limits(scenario);
-  SimulationResult result;
-  // Every segment's inputs are checked before the first step.
-  std::vector<SegmentInputs> segments;
+  Plan plan;
   for (std::size_t i = 0; i < scenario.segments.size(); ++i)
-    segments.push_back(segment_inputs(model, scenario, i, &result.notes));
-
-  StateVector x =
+    plan.segments.push_back(segment_inputs(model, scenario, i, notes));
+  plan.events = event_times(scenario);
+  plan.initial =
       make_state(scenario.initial_position_n, quaternion_from_euler(scenario.initial_euler_rad), scenario.initial_nu_b);
-  std::size_t active = 0;
+  return plan;
+}
+
+/// The model inputs of a segment (pointing into it).
+ModelInputs inputs_of(const SegmentInputs& segment) {
   ModelInputs inputs;
-  auto activate = [&](std::size_t segment) {
-    active = segment;
-    inputs.tau_b = segments[active].tau_b;
-    inputs.current_n = segments[active].current_n;
-    inputs.disturbances = segments[active].disturbances;
-  };
-  activate(0);
+  inputs.tau_b = segment.tau_b;
+  inputs.current_n = segment.current_n;
+  inputs.disturbances = segment.disturbances;
+  return inputs;
+}
+
+/// RK4 steps from one event to the next: as many of equal size as keep each
+/// at most `step` (one at least).
+std::pair<std::size_t, double> rk4_steps(double span, double step) {
+  const auto steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(span / step - 1e-9)));
+  return {steps, span / static_cast<double>(steps)};
+}
+
+}  // namespace
+
+SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress) {
+  SimulationResult result;
+  const Plan plan = plan_run(model, scenario, &result.notes);
+  StateVector x = plan.initial;
+  ModelInputs inputs = inputs_of(plan.segments[0]);
   auto f = [&](double, const StateVector& state, StateVector& state_dot) {
     model.derivative(state, inputs, state_dot);
   };
@@ -174,7 +200,7 @@ SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, c
         std::max(result.max_attitude_norm_error, std::abs(attitude_nb(state).norm() - 1.0));
   };
 
-  const std::vector<Event> events = event_times(scenario);
+  const std::vector<Event>& events = plan.events;
   result.samples.reserve(events.size() + 1);
   result.samples.push_back(make_sample(model, 0.0, x, inputs));
 
@@ -189,9 +215,7 @@ SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, c
   double t = 0.0;
   for (const Event& event : events) {
     if (settings.method == IntegratorSettings::Method::Rk4) {
-      const double span = event.t - t;
-      const auto steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(span / settings.step_s - 1e-9)));
-      const double h = span / static_cast<double>(steps);
+      const auto [steps, h] = rk4_steps(event.t - t, settings.step_s);
       for (std::size_t k = 0; k < steps; ++k) {
         rk4_step(f, t + static_cast<double>(k) * h, h, x, rk4);
         track_norm(x);
@@ -216,7 +240,7 @@ SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, c
                            " s; expected forces, velocities and currents the vehicle model can integrate");
     t = event.t;
     if (event.segment != 0) {
-      activate(event.segment);
+      inputs = inputs_of(plan.segments[event.segment]);
       dopri.reset_step();
     }
     if (event.output) result.samples.push_back(make_sample(model, t, x, inputs));
@@ -229,6 +253,55 @@ SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, c
   }
   result.final_state = x;
   return result;
+}
+
+LaneSimulation simulate_lanes(const VehicleModel& model, const std::array<const DampingModel*, motion::kLanes>& damping,
+                              const Scenario& scenario) {
+  if (scenario.integrator.method != IntegratorSettings::Method::Rk4)
+    throw std::invalid_argument("simulate_lanes: an RK4 scenario is needed (adaptive steps are each vehicle's own)");
+  for (const DampingModel* d : damping)
+    if (!d || d->disturbance_names() != model.disturbance_names())
+      throw std::invalid_argument("simulate_lanes: a damping model reading other disturbances than the vehicle's");
+  const DampingLanes lane_damping(damping);
+  const Plan plan = plan_run(model, scenario, nullptr);
+  using LaneState = VehicleModel::LaneState;
+  LaneState x = plan.initial.replicate<1, motion::kLanes>();
+  ModelInputs inputs = inputs_of(plan.segments[0]);
+  auto f = [&](double, const LaneState& state, LaneState& state_dot) {
+    model.derivative_lanes(lane_damping, state, inputs, state_dot);
+  };
+  // simulate()'s steps, each lane's attitude normalised as there.
+  auto normalize = [](LaneState& state) {
+    motion::Lanes q[4];
+    for (int i = 0; i < 4; ++i) q[i] = state.row(state_index::kAttitude + i).transpose();
+    motion::normalize(q);
+    for (int i = 0; i < 4; ++i) state.row(state_index::kAttitude + i) = q[i].transpose();
+  };
+  LaneSimulation out;
+  out.t_s.reserve(plan.events.size() + 1);
+  out.states.reserve(plan.events.size() + 1);
+  out.t_s.push_back(0.0);
+  out.states.push_back(x);
+  Rk4Workspace<LaneState> rk4;
+  double t = 0.0;
+  for (const Event& event : plan.events) {
+    const auto [steps, h] = rk4_steps(event.t - t, scenario.integrator.step_s);
+    for (std::size_t k = 0; k < steps; ++k) {
+      rk4_step(f, t + static_cast<double>(k) * h, h, x, rk4);
+      normalize(x);
+    }
+    if (!x.allFinite())
+      throw InputError(SourceLocation{scenario.file},
+                       "a lane's state left the finite numbers between t = " + std::to_string(t) + " s and " +
+                           std::to_string(event.t) + " s; run its vehicle alone (simulate) for the details");
+    t = event.t;
+    if (event.segment != 0) inputs = inputs_of(plan.segments[event.segment]);
+    if (event.output) {
+      out.t_s.push_back(t);
+      out.states.push_back(x);
+    }
+  }
+  return out;
 }
 
 }  // namespace hydrocoef

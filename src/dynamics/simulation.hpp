@@ -8,6 +8,8 @@
 // is renormalised after every RK4 step and every Dormand–Prince interval.
 #pragma once
 
+#include <Eigen/StdVector>
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -50,5 +52,23 @@ using SimulationProgress = std::function<void(double t_s, double duration_s)>;
 /// take (see segment_inputs), a surface queried outside its range under
 /// policy "error", or an adaptive step-size underflow.
 SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress = {});
+
+/// The states of motion::kLanes vehicles at a scenario's output times.
+struct LaneSimulation {
+  std::vector<double> t_s;  ///< 0, then the times of SimulationResult::samples
+  /// At t_s; column l: lane l's state.
+  std::vector<VehicleModel::LaneState, Eigen::aligned_allocator<VehicleModel::LaneState>> states;
+};
+
+/// simulate() for motion::kLanes vehicles that are `model` with the damping
+/// models `damping` (the drawn models of an ensemble, reading the model's
+/// disturbances), integrated in lock-step: lane l's states are the states of
+/// simulate(model.with_damping(*damping[l]), scenario)'s samples, bit for bit.
+/// RK4 scenarios only (std::invalid_argument otherwise: an adaptive step is
+/// each vehicle's own). InputError when any lane fails (a state that leaves
+/// the finite numbers, a lookup outside its surface), without saying which:
+/// simulate() that lane's vehicle alone for its message.
+LaneSimulation simulate_lanes(const VehicleModel& model, const std::array<const DampingModel*, motion::kLanes>& damping,
+                              const Scenario& scenario);
 
 }  // namespace hydrocoef

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "src/core/error.hpp"
+#include "src/dynamics/damping_lanes.hpp"
 
 namespace hydrocoef {
 
@@ -68,86 +69,103 @@ Vector6 VehicleModel::thrust_force(std::span<const double> thrust_N) const {
 }
 
 Vector6 VehicleModel::hydrostatic_force(const Quaternion4& q_nb) const {
+  // The exact rotation of a unit q_nb, row-major.
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rotation = rotation_body_to_ned(q_nb);
   Vector6 tau = Vector6::Zero();
-  add_hydrostatic(rotation_body_to_ned(q_nb), tau.data());
+  motion::add_hydrostatic(rotation.data(), weight_N_, description_.buoyancy_N, description_.r_g_b.data(),
+                          description_.r_b_b.data(), tau.data());
   return tau;
 }
 
-// The helpers below add into six plain doubles, element by element: they are
-// the integrators' hot path, where Eigen's 3-element halves of 6-vectors made
-// the compiler store and reload the sums in pieces (store-forwarding stalls,
-// a third of derivative()'s time).
+// The terms and rates below are written once over T = double (one vehicle) or
+// motion::Lanes (kLanes vehicles differing in their damping): see
+// motion_terms.hpp. add_damping(nu_r, out) adds each lane's damping force at
+// its nu_r to out.
 
-[[gnu::always_inline]] inline void VehicleModel::add_hydrostatic(const Matrix3& rotation, double* tau) const {
-  // R^T e_z: the NED down direction in body axes (third row of R). Weight W
-  // at the CG and buoyancy B (up) at the CB along it: (W + B, r_g x W + r_b x B).
-  const double dx = rotation(2, 0), dy = rotation(2, 1), dz = rotation(2, 2);
-  const double wx = weight_N_ * dx, wy = weight_N_ * dy, wz = weight_N_ * dz;
-  const double b = -description_.buoyancy_N, bx = b * dx, by = b * dy, bz = b * dz;
-  const Vector3& g = description_.r_g_b;
-  const Vector3& c = description_.r_b_b;
-  tau[0] += wx + bx;
-  tau[1] += wy + by;
-  tau[2] += wz + bz;
-  tau[3] += (g[1] * wz - g[2] * wy) + (c[1] * bz - c[2] * by);
-  tau[4] += (g[2] * wx - g[0] * wz) + (c[2] * bx - c[0] * bz);
-  tau[5] += (g[0] * wy - g[1] * wx) + (c[0] * by - c[1] * bx);
-}
-
-[[gnu::always_inline]] inline void VehicleModel::add_motion_forces(const Matrix3& rotation, const double* nu,
-                                                                   const ModelInputs& inputs, double* nu_r,
-                                                                   double* damping, double* coriolis) const {
-  const Eigen::Map<const Vector6> nu_b(nu);
+template <class T, class AddDamping>
+void VehicleModel::motion_terms(const T* x, const ModelInputs& inputs, AddDamping&& add_damping,
+                                motion::Terms<T>& terms) const {
+  const T* nu = x + state_index::kVelocity;
+  motion::rotation_any_norm(x + state_index::kAttitude, terms.rotation);
+  for (int i = 0; i < 6; ++i) {
+    terms.nu_r[i] = nu[i];
+    terms.hydrostatic[i] = terms.damping[i] = terms.coriolis[i] = motion::splat<T>(0.0);
+  }
+  motion::add_hydrostatic(terms.rotation, weight_N_, description_.buoyancy_N, description_.r_g_b.data(),
+                          description_.r_b_b.data(), terms.hydrostatic);
   if (inputs.current_n.isZero()) {
     // nu_r = nu: C(nu) is linear in M, so C_RB(nu) nu + C_A(nu) nu = C(M) nu.
-    const Vector6 d = damping_.evaluate(nu_b, inputs.disturbances);
-    for (int i = 0; i < 6; ++i) damping[i] += d[i];
-    subtract_coriolis_force(m_, nu, coriolis);
+    add_damping(nu, terms.damping);
+    motion::subtract_coriolis(m_, nu, terms.coriolis);
     return;
   }
-  const Vector3 current_b = rotation.transpose() * inputs.current_n;
-  for (int i = 0; i < 3; ++i) nu_r[i] -= current_b[i];
-  const Eigen::Map<const Vector6> nu_r_b(nu_r);
-  const Vector6 d = damping_.evaluate(nu_r_b, inputs.disturbances);
-  Vector6 current_rate_b = Vector6::Zero();  // nu_c' for a current constant in NED
-  current_rate_b.head<3>() = -nu_b.tail<3>().cross(current_b);
-  const Vector6 c = -coriolis_force(m_rb_, nu_b) - coriolis_force(m_a_, nu_r_b) + m_a_ * current_rate_b;
-  for (int i = 0; i < 6; ++i) damping[i] += d[i];
-  for (int i = 0; i < 6; ++i) coriolis[i] += c[i];
+  // The current in body axes, R^T v_c, and nu_c' = (-nu2 x R^T v_c, 0) for a
+  // current constant in NED.
+  const T current_n[3] = {motion::splat<T>(inputs.current_n[0]), motion::splat<T>(inputs.current_n[1]),
+                          motion::splat<T>(inputs.current_n[2])};
+  T current_b[3];
+  motion::rotate_back(terms.rotation, current_n, current_b);
+  for (int i = 0; i < 3; ++i) terms.nu_r[i] -= current_b[i];
+  add_damping(terms.nu_r, terms.damping);
+  const T current_rate_b[6] = {-(nu[4] * current_b[2] - nu[5] * current_b[1]),
+                               -(nu[5] * current_b[0] - nu[3] * current_b[2]),
+                               -(nu[3] * current_b[1] - nu[4] * current_b[0]),
+                               motion::splat<T>(0.0),
+                               motion::splat<T>(0.0),
+                               motion::splat<T>(0.0)};
+  T added[6];
+  motion::multiply(m_a_, current_rate_b, added);
+  motion::subtract_coriolis(m_rb_, nu, terms.coriolis);
+  motion::subtract_coriolis(m_a_, terms.nu_r, terms.coriolis);
+  for (int i = 0; i < 6; ++i) terms.coriolis[i] += added[i];
+}
+
+template <class T>
+void VehicleModel::rates(const T* x, const Vector6& tau_b, const motion::Terms<T>& terms, T* x_dot) const {
+  const T* nu = x + state_index::kVelocity;
+  T total[6];
+  for (int i = 0; i < 6; ++i) total[i] = ((tau_b[i] + terms.hydrostatic[i]) + terms.damping[i]) + terms.coriolis[i];
+  motion::rotate(terms.rotation, nu, x_dot + state_index::kPosition);
+  motion::quaternion_rate(x + state_index::kAttitude, nu + 3, kQuaternionNormGain, x_dot + state_index::kAttitude);
+  motion::multiply(m_inv_, total, x_dot + state_index::kVelocity);
 }
 
 ForceBreakdown VehicleModel::forces(const StateVector& x, const ModelInputs& inputs) const {
-  const Matrix3 rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
+  motion::Terms<double> terms;
+  motion_terms(
+      x.data(), inputs, [&](const double* nu_r, double* out) { add_damping(nu_r, inputs, out); }, terms);
   ForceBreakdown f;
-  f.nu_r_b = velocity_b(x);
   f.control_b = inputs.tau_b;
-  add_hydrostatic(rotation, f.hydrostatic_b.data());
-  add_motion_forces(rotation, x.data() + state_index::kVelocity, inputs, f.nu_r_b.data(), f.damping_b.data(),
-                    f.coriolis_b.data());
+  f.nu_r_b = Eigen::Map<const Vector6>(terms.nu_r);
+  f.hydrostatic_b = Eigen::Map<const Vector6>(terms.hydrostatic);
+  f.damping_b = Eigen::Map<const Vector6>(terms.damping);
+  f.coriolis_b = Eigen::Map<const Vector6>(terms.coriolis);
   return f;
 }
 
+void VehicleModel::add_damping(const double* nu_r, const ModelInputs& inputs, double* out) const {
+  const Vector6 d = damping_.evaluate(Eigen::Map<const Vector6>(nu_r), inputs.disturbances);
+  for (int i = 0; i < 6; ++i) out[i] += d[i];
+}
+
 void VehicleModel::derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const {
-  // The terms of forces() summed as they come (the integrators' hot path
-  // keeps no breakdown), element by element.
-  const Matrix3 rotation = rotation_body_to_ned_any_norm(attitude_nb(x));
-  const double* nu = x.data() + state_index::kVelocity;
-  double nu_r[6], total[6];
-  for (int i = 0; i < 6; ++i) {
-    nu_r[i] = nu[i];
-    total[i] = inputs.tau_b[i];
-  }
-  add_hydrostatic(rotation, total);
-  add_motion_forces(rotation, nu, inputs, nu_r, total, total);
-  for (int i = 0; i < 3; ++i)
-    x_dot[state_index::kPosition + i] = rotation(i, 0) * nu[0] + rotation(i, 1) * nu[1] + rotation(i, 2) * nu[2];
-  quaternion_rate(x.data() + state_index::kAttitude, nu + 3, kQuaternionNormGain,
-                  x_dot.data() + state_index::kAttitude);
-  for (Eigen::Index i = 0; i < 6; ++i) {
-    double sum = 0.0;
-    for (Eigen::Index j = 0; j < 6; ++j) sum += m_inv_(i, j) * total[j];
-    x_dot[state_index::kVelocity + i] = sum;
-  }
+  // The terms of forces() summed, without the breakdown.
+  motion::Terms<double> terms;
+  motion_terms(
+      x.data(), inputs, [&](const double* nu_r, double* out) { add_damping(nu_r, inputs, out); }, terms);
+  rates(x.data(), inputs.tau_b, terms, x_dot.data());
+}
+
+void VehicleModel::derivative_lanes(const DampingLanes& damping, const LaneState& x, const ModelInputs& inputs,
+                                    LaneState& x_dot) const {
+  using motion::Lanes;
+  Lanes state[13], state_dot[13];
+  for (int i = 0; i < 13; ++i) state[i] = x.row(i).transpose();
+  motion::Terms<Lanes> terms;
+  motion_terms(
+      state, inputs, [&](const Lanes* nu_r, Lanes* out) { damping.add(nu_r, inputs.disturbances, out); }, terms);
+  rates(state, inputs.tau_b, terms, state_dot);
+  for (int i = 0; i < 13; ++i) x_dot.row(i) = state_dot[i].transpose();
 }
 
 }  // namespace hydrocoef

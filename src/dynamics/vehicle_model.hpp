@@ -19,16 +19,20 @@
 // surfaces evaluated into stack buffers): it is the integrators' hot path.
 #pragma once
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "src/dynamics/damping.hpp"
 #include "src/dynamics/kinematics.hpp"
+#include "src/dynamics/motion_terms.hpp"
 #include "src/dynamics/rigid_body.hpp"
 #include "src/dynamics/vehicle.hpp"
 
 namespace hydrocoef {
+
+class DampingLanes;
 
 using StateVector = Eigen::Matrix<double, 13, 1>;
 
@@ -45,9 +49,7 @@ inline Vector3 position_n(const StateVector& x) { return x.segment<3>(state_inde
 inline Quaternion4 attitude_nb(const StateVector& x) { return x.segment<4>(state_index::kAttitude); }
 inline Vector6 velocity_b(const StateVector& x) { return x.segment<6>(state_index::kVelocity); }
 /// Projects the attitude back onto the unit sphere (after an integration step).
-inline void normalize_attitude(StateVector& x) {
-  x.segment<4>(state_index::kAttitude) /= x.segment<4>(state_index::kAttitude).norm();
-}
+inline void normalize_attitude(StateVector& x) { motion::normalize(x.data() + state_index::kAttitude); }
 
 /// What acts on the vehicle from outside, held constant over a step.
 struct ModelInputs {
@@ -111,14 +113,26 @@ class VehicleModel {
   /// x' at state x. Allocates nothing.
   void derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const;
 
+  /// motion::kLanes states side by side: row i holds state component i of
+  /// every lane (so that a row is one SIMD operand).
+  using LaneState = Eigen::Matrix<double, 13, motion::kLanes, Eigen::RowMajor>;
+  /// x' of kLanes vehicles, lane l this vehicle with lane l's damping model
+  /// (the drawn models of an ensemble, reading this model's disturbances):
+  /// lane l's numbers are derivative()'s for with_damping(that model), bit for
+  /// bit; the rigid-body arithmetic serves every lane at once. Allocates
+  /// nothing.
+  void derivative_lanes(const DampingLanes& damping, const LaneState& x, const ModelInputs& inputs,
+                        LaneState& x_dot) const;
+
  private:
-  /// Adds -g(eta) at `rotation` (body to NED) to tau (6 numbers).
-  void add_hydrostatic(const Matrix3& rotation, double* tau) const;
-  /// Adds the damping and Coriolis terms at velocity nu (6 numbers; rotation:
-  /// body to NED) to `damping` and `coriolis` (which may be one array) and sets
-  /// nu_r (holding nu on entry) to the velocity relative to the water.
-  void add_motion_forces(const Matrix3& rotation, const double* nu, const ModelInputs& inputs, double* nu_r,
-                         double* damping, double* coriolis) const;
+  /// Every term but the control force at state x (13 numbers per lane).
+  template <class T, class AddDamping>
+  void motion_terms(const T* x, const ModelInputs& inputs, AddDamping&& add_damping, motion::Terms<T>& terms) const;
+  /// x' (13 numbers per lane) from the terms at x.
+  template <class T>
+  void rates(const T* x, const Vector6& tau_b, const motion::Terms<T>& terms, T* x_dot) const;
+  /// out (6) += this model's damping force at nu_r (6).
+  void add_damping(const double* nu_r, const ModelInputs& inputs, double* out) const;
 
   VehicleDescription description_;
   Matrix6 m_rb_;

@@ -111,6 +111,61 @@ TEST(Simulation, DriftsWithTheCurrent) {
   EXPECT_NEAR((last.p_n - before.p_n).y() / 10.0, 0.05, 1e-6);
 }
 
+// kLanes vehicles with their own damping in lock-step: each lane's states at
+// the output times are simulate()'s for that vehicle, bit for bit, through a
+// change of torque and a current switched on; an adaptive scenario is
+// refused, and a lane that leaves the finite numbers fails the run.
+TEST(Simulation, LanesAreEachVehiclesOwnRun) {
+  VehicleDescription d = test::asr_v_vehicle(test::fit_asr_v_yaw_law());
+  std::vector<DampingModel> damping;
+  for (std::size_t l = 0; l < motion::kLanes; ++l) {
+    for (std::size_t k = 0; k < 6; ++k) {
+      d.damping[k].kind = DofDamping::Kind::Law;
+      const std::string x(1, "uvwpqr"[k]);
+      d.damping[k].law = parse_damping_terms(x + "," + x + "|" + x + "|");
+      d.damping[k].coefficients = {(k < 3 ? -5.0 : -0.5) * (1.0 + 0.1 * static_cast<double>(l)), -1.0};
+    }
+    damping.push_back(VehicleModel(d).damping());
+  }
+  const VehicleModel model(d);
+  std::array<const DampingModel*, motion::kLanes> models;
+  for (std::size_t l = 0; l < models.size(); ++l) models[l] = &damping[l];
+  Scenario s;
+  s.duration_s = 4.0;
+  s.output_rate_Hz = 5.0;
+  s.integrator.method = IntegratorSettings::Method::Rk4;
+  s.integrator.step_s = 0.01;
+  s.initial_euler_rad = Vector3(0.2, -0.1, 0.5);
+  s.initial_nu_b << 0.1, 0.0, -0.05, 0.0, 0.2, 0.1;
+  s.segments.resize(2);
+  s.segments[0].tau_b << 0.5, 0.0, 0.0, 0.0, 0.0, 0.01;
+  s.segments[1].start_s = 1.55;  // between two outputs
+  s.segments[1].current_n = Vector3(0.1, 0.05, 0.0);
+  const LaneSimulation lanes = simulate_lanes(model, models, s);
+  for (std::size_t l = 0; l < models.size(); ++l) {
+    const SimulationResult own = simulate(model.with_damping(damping[l]), s);
+    ASSERT_EQ(lanes.states.size(), own.samples.size());
+    for (std::size_t k = 0; k < own.samples.size(); ++k) {
+      EXPECT_EQ(lanes.t_s[k], own.samples[k].t_s);
+      const StateVector x = lanes.states[k].col(static_cast<Eigen::Index>(l));
+      for (Eigen::Index i = 0; i < 3; ++i) EXPECT_EQ(x[i], own.samples[k].p_n[i]) << "lane " << l << " at " << k;
+      for (Eigen::Index i = 0; i < 4; ++i)
+        EXPECT_EQ(attitude_nb(x).normalized()[i], own.samples[k].q_nb[i]) << "lane " << l << " at " << k;
+      for (Eigen::Index i = 0; i < 6; ++i) EXPECT_EQ(x[7 + i], own.samples[k].nu_b[i]) << "lane " << l << " at " << k;
+    }
+  }
+  // The lanes moved apart: their damping differs.
+  EXPECT_NE(lanes.states.back()(7, 0), lanes.states.back()(7, 1));
+
+  Scenario adaptive = s;
+  adaptive.integrator.method = IntegratorSettings::Method::DormandPrince45;
+  EXPECT_THROW(simulate_lanes(model, models, adaptive), std::invalid_argument);
+  // Surge damping that pushes instead of holding back: that lane runs away.
+  d.damping[0].coefficients = {-5.0, 1e6};
+  damping[3] = VehicleModel(d).damping();
+  expect_input_error([&] { simulate_lanes(model, models, s); }, {"finite"});
+}
+
 TEST(Simulation, ThrusterCommands) {
   VehicleDescription d = test::asr_v_vehicle(test::fit_asr_v_yaw_law());
   d.thrusters.push_back({"port", Vector3(0.0, -0.12, 0.0), Vector3::UnitX(), -1.0, 1.0});

@@ -7,10 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <numbers>
+#include <random>
 
+#include "src/dynamics/damping_lanes.hpp"
 #include "src/dynamics/integrators.hpp"
 #include "tests/support/count_allocations.hpp"
 
@@ -214,6 +218,54 @@ TEST(VehicleModel, DerivativeIsTheBreakdownsTotal) {
     // The relative velocity: nu minus the current in body axes.
     EXPECT_LT((f.nu_r_b.head<3>() - (nu.head<3>() - r.transpose() * current)).norm(), 1e-15);
     EXPECT_GT(f.damping_b.cwiseAbs().minCoeff(), 0.0);
+  }
+}
+
+// kLanes vehicles with their own damping at their own states, at once: each
+// lane's x' is derivative()'s for that vehicle, bit for bit, with and without
+// a current.
+TEST(VehicleModel, LaneDerivativesAreEachVehiclesOwn) {
+  VehicleDescription d = tumbling_body();
+  d.gravity_m_s2 = 9.81;
+  d.buoyancy_N = 0.9 * d.mass_kg * 9.81;
+  d.r_b_b = Vector3(0.0, 0.01, -0.02);
+  std::vector<DampingModel> damping;
+  for (std::size_t l = 0; l < motion::kLanes; ++l) {
+    for (std::size_t k = 0; k < 6; ++k) {
+      const std::string v(1, "uvwpqr"[k]);
+      d.damping[k].kind = DofDamping::Kind::Law;
+      d.damping[k].law = parse_damping_terms(v + "," + v + "|" + v + "|");
+      d.damping[k].coefficients = {-0.1 * static_cast<double>(k + 1), -1.0 - 0.1 * static_cast<double>(l)};
+    }
+    damping.push_back(VehicleModel(d).damping());
+  }
+  const VehicleModel model(d);
+  std::array<const DampingModel*, motion::kLanes> models;
+  for (std::size_t l = 0; l < models.size(); ++l) models[l] = &damping[l];
+  const DampingLanes lanes(models);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (const Vector3& current : {Vector3::Zero().eval(), Vector3(0.2, -0.1, 0.05)}) {
+    ModelInputs inputs;
+    inputs.current_n = current;
+    inputs.tau_b << 1.0, -2.0, 0.5, 0.1, -0.2, 0.3;
+    VehicleModel::LaneState x, x_dot;
+    for (Eigen::Index l = 0; l < motion::kLanes; ++l) {
+      Vector6 nu;
+      for (Eigen::Index i = 0; i < 6; ++i) nu[i] = 0.5 * uniform(rng);
+      // An attitude off the unit sphere, as within an RK4 step.
+      x.col(l) = make_state(Vector3(uniform(rng), uniform(rng), uniform(rng)),
+                            quaternion_from_euler(Vector3(uniform(rng), 0.5 * uniform(rng), 3.0 * uniform(rng))), nu);
+      x.col(l).segment<4>(state_index::kAttitude) *= 1.0 + 1e-3 * uniform(rng);
+    }
+    model.derivative_lanes(lanes, x, inputs, x_dot);
+    for (Eigen::Index l = 0; l < motion::kLanes; ++l) {
+      StateVector own;
+      model.with_damping(damping[static_cast<std::size_t>(l)]).derivative(x.col(l), inputs, own);
+      for (Eigen::Index i = 0; i < 13; ++i)
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(x_dot(i, l)), std::bit_cast<std::uint64_t>(own[i]))
+            << "lane " << l << ", component " << i;
+    }
   }
 }
 
