@@ -3,7 +3,8 @@
 // surge and yaw damping from GP surfaces fitted to the example's CFD tables,
 // each trajectory a fresh posterior draw of both (DampingDraws: looked up as
 // natural-spline tables), on every core: 1,000 trajectories are 60 M RK4
-// steps (240 M derivative evaluations with two surface lookups each).
+// steps (240 M derivative evaluations with two surface lookups each); RK4
+// runs the draws 8 at a time in lock-step (simulate_lanes).
 // Goal: 1,000 trajectories in <= 15 s on the 2-core machine.
 // Also: the equilibrium's interval from 2,000 draws.
 #include <benchmark/benchmark.h>
