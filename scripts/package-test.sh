@@ -128,9 +128,13 @@ cmake --build "$consumer_build" -j "$jobs" >"$work/consumer-build.log" 2>&1 || {
   fail "building tests/package/consumer against $prefix"
 }
 # The shared one finds libhydrocoef.so.0 through its build RPATH (the prefix), not through the system.
-ldd "$consumer_build/consumer" | grep -q "libhydrocoef.so.0 => $prefix/" ||
-  fail "consumer does not load libhydrocoef.so.0 from $prefix: $(ldd "$consumer_build/consumer" | grep hydrocoef)"
-if ldd "$consumer_build/consumer_static" | grep -q libhydrocoef; then fail "consumer_static loads libhydrocoef.so"; fi
+# ldd's output is read whole first: `ldd | grep -q` under pipefail fails when
+# grep stops reading before ldd has finished writing (SIGPIPE).
+shared_libraries=$(ldd "$consumer_build/consumer")
+grep -q "libhydrocoef.so.0 => $prefix/" <<<"$shared_libraries" ||
+  fail "consumer does not load libhydrocoef.so.0 from $prefix: $(grep hydrocoef <<<"$shared_libraries")"
+static_libraries=$(ldd "$consumer_build/consumer_static")
+if grep -q libhydrocoef <<<"$static_libraries"; then fail "consumer_static loads libhydrocoef.so"; fi
 run_consumer "find_package, hydrocoef::hydrocoef (shared)" "$consumer_build/consumer"
 run_consumer "find_package, hydrocoef::hydrocoef_static" "$consumer_build/consumer_static"
 say "ok: find_package(hydrocoef 0.1 CONFIG REQUIRED [COMPONENTS static]): consumers built against the shared and the static library opened the database and got X(0.25) = $x N, as the CLI"
