@@ -56,9 +56,8 @@ DampingModel lane_model(std::size_t lane, bool surge, Extrapolation policy) {
     spec[0].surface = "surge";
     spec[0].output = "X";
   }
-  return DampingModel(spec, [&](const std::string& name) {
-    return name == "yaw" ? yaw_table(s, policy) : surge_table(s);
-  });
+  return DampingModel(spec,
+                      [&](const std::string& name) { return name == "yaw" ? yaw_table(s, policy) : surge_table(s); });
 }
 
 void expect_lanes_are_each_models_own(const std::array<const DampingModel*, kLanes>& models, const Lanes* nu_r,
@@ -92,8 +91,8 @@ TEST(DampingLanes, EveryLaneIsItsOwnModelsForce) {
       for (Lanes& v : nu_r)
         for (Eigen::Index l = 0; l < kLanes; ++l) v[l] = velocity(rng);
       const std::vector<double> disturbance = {0.3 * static_cast<double>(round) / 50.0};
-      expect_lanes_are_each_models_own(models, nu_r, surge ? std::span<const double>(disturbance)
-                                                           : std::span<const double>());
+      expect_lanes_are_each_models_own(models, nu_r,
+                                       surge ? std::span<const double>(disturbance) : std::span<const double>());
     }
   }
 }
@@ -122,7 +121,8 @@ TEST(DampingLanes, ModelsOfAnotherShapeGoLaneByLane) {
   EXPECT_TRUE(DampingLanes(models).shared());
   Lanes nu_r[6];
   for (std::size_t i = 0; i < 6; ++i)
-    for (Eigen::Index l = 0; l < kLanes; ++l) nu_r[i][l] = 0.05 * static_cast<double>(l) - 0.17 + 0.01 * static_cast<double>(i);
+    for (Eigen::Index l = 0; l < kLanes; ++l)
+      nu_r[i][l] = 0.05 * static_cast<double>(l) - 0.17 + 0.01 * static_cast<double>(i);
   expect_lanes_are_each_models_own(models, nu_r, {});
   // Laws of other terms in one lane: nothing shared.
   spec[3].law = parse_damping_terms("p,p|p|");

@@ -1094,6 +1094,22 @@ TEST(GridTable, EvenSpacingIsDetected) {
   EXPECT_TRUE(table.evenly_spaced(2));
 }
 
+// body(x, method, policy) for a one-axis table's breakpoints x on [-1, 2],
+// evenly and unevenly spaced, with every method and extrapolation policy.
+template <class Body>
+void for_each_one_axis_case(std::mt19937_64& rng, Body&& body) {
+  for (const bool even : {true, false}) {
+    const std::vector<double> x = even ? evenly_spaced(-1.0, 2.0, 13) : unevenly_spaced(-1.0, 2.0, 13, rng);
+    for (Interpolation method : kAllMethods) {
+      for (Extrapolation policy :
+           {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
+        SCOPED_TRACE(method_label(method) + (even ? " even" : " uneven"));
+        body(x, method, policy);
+      }
+    }
+  }
+}
+
 // The dynamics' one-axis path gives evaluate()'s numbers bit for bit: every
 // method, even and uneven breakpoints, several outputs, inside, on
 // breakpoints and beyond the ends under every policy; a NaN or a point
@@ -1103,33 +1119,26 @@ TEST(GridTable, OneAxisPathGivesEvaluatesNumbers) {
   const auto f = [](const Point& p) {
     return std::vector<double>{std::sin(3.0 * p[0]) - 0.2 * p[0], p[0] * std::abs(p[0]), -0.0 * p[0], 2.0};
   };
-  for (const bool even : {true, false}) {
-    const std::vector<double> x = even ? evenly_spaced(-1.0, 2.0, 13) : unevenly_spaced(-1.0, 2.0, 13, rng);
-    for (Interpolation method : kAllMethods) {
-      for (Extrapolation policy :
-           {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
-        SCOPED_TRACE(method_label(method) + (even ? " even" : " uneven"));
-        const GridTable table = make_table({x}, 4, f, method, policy);
-        std::vector<double> points = x;  // every breakpoint, then random points inside and beyond
-        for (int i = 0; i < 200; ++i) points.push_back(std::uniform_real_distribution<double>(-1.5, 2.5)(rng));
-        for (const double p : points) {
-          std::array<double, 4> fast{};
-          if (policy == Extrapolation::Error && (p < x.front() || p > x.back())) {
-            EXPECT_THROW(table.evaluate_one_axis(p, fast.data()), InputError);
-            continue;
-          }
-          table.evaluate_one_axis(p, fast.data());
-          const std::vector<double> general = evaluate(table, {p});
-          for (std::size_t k = 0; k < 4; ++k) {
-            EXPECT_EQ(std::bit_cast<std::uint64_t>(fast[k]), std::bit_cast<std::uint64_t>(general[k]))
-                << "x = " << p << ", output " << k << ": " << fast[k] << " vs " << general[k];
-          }
-        }
-        std::array<double, 4> out{};
-        EXPECT_THROW(table.evaluate_one_axis(std::numeric_limits<double>::quiet_NaN(), out.data()), InputError);
+  for_each_one_axis_case(rng, [&](const std::vector<double>& x, Interpolation method, Extrapolation policy) {
+    const GridTable table = make_table({x}, 4, f, method, policy);
+    std::vector<double> points = x;  // every breakpoint, then random points inside and beyond
+    for (int i = 0; i < 200; ++i) points.push_back(std::uniform_real_distribution<double>(-1.5, 2.5)(rng));
+    for (const double p : points) {
+      std::array<double, 4> fast{};
+      if (policy == Extrapolation::Error && (p < x.front() || p > x.back())) {
+        EXPECT_THROW(table.evaluate_one_axis(p, fast.data()), InputError);
+        continue;
+      }
+      table.evaluate_one_axis(p, fast.data());
+      const std::vector<double> general = evaluate(table, {p});
+      for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(fast[k]), std::bit_cast<std::uint64_t>(general[k]))
+            << "x = " << p << ", output " << k << ": " << fast[k] << " vs " << general[k];
       }
     }
-  }
+    std::array<double, 4> out{};
+    EXPECT_THROW(table.evaluate_one_axis(std::numeric_limits<double>::quiet_NaN(), out.data()), InputError);
+  });
   const GridTable two_axes = make_table(
       {{0.0, 1.0}, {0.0, 1.0}}, 1, [](const Point& p) { return std::vector<double>{p[0] + p[1]}; },
       Interpolation::Linear);
@@ -1143,56 +1152,49 @@ TEST(GridTable, OneAxisPathGivesEvaluatesNumbers) {
 TEST(GridTable, LanesOnASharedAxisGiveEachTablesOwnNumbers) {
   constexpr std::size_t kN = 8;
   std::mt19937_64 rng(12);
-  for (const bool even : {true, false}) {
-    const std::vector<double> x = even ? evenly_spaced(-1.0, 2.0, 13) : unevenly_spaced(-1.0, 2.0, 13, rng);
-    for (Interpolation method : kAllMethods) {
-      for (Extrapolation policy :
-           {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
-        SCOPED_TRACE(method_label(method) + (even ? " even" : " uneven"));
-        std::vector<GridTable> tables;
-        for (std::size_t l = 0; l < kN; ++l) {
-          const double scale = 1.0 + 0.1 * static_cast<double>(l);
-          tables.push_back(make_table(
-              {x}, 2,
-              [&](const Point& p) {
-                return std::vector<double>{scale * std::sin(3.0 * p[0]), p[0] * std::abs(p[0]) - scale};
-              },
-              method, policy));
-        }
-        std::array<const GridTable*, kN> lanes;
-        for (std::size_t l = 0; l < kN; ++l) {
-          lanes[l] = &tables[l];
-          EXPECT_TRUE(tables[0].shares_axis(tables[l]));
-        }
-        for (int round = 0; round < 60; ++round) {
-          // Inside only, then some lanes beyond either end.
-          const double spread = round < 30 ? 0.0 : 0.6;
-          std::array<double, kN> values;
-          for (double& v : values) v = std::uniform_real_distribution<double>(-1.0 - spread, 2.0 + spread)(rng);
-          if (round % 10 == 0)
-            for (std::size_t l = 0; l < kN; ++l) values[l] = x[(static_cast<std::size_t>(round) + l) % x.size()];
-          const bool outside = std::any_of(values.begin(), values.end(), [&](double v) { return v < -1.0 || v > 2.0; });
-          std::array<double, 2 * kN> out{};
-          if (policy == Extrapolation::Error && outside) {
-            EXPECT_THROW(GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data()), InputError);
-            continue;
-          }
-          GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data());
-          for (std::size_t l = 0; l < kN; ++l) {
-            const std::vector<double> own = evaluate(tables[l], {values[l]});
-            for (std::size_t k = 0; k < 2; ++k)
-              EXPECT_EQ(std::bit_cast<std::uint64_t>(out[k * kN + l]), std::bit_cast<std::uint64_t>(own[k]))
-                  << "lane " << l << " at " << values[l] << ", output " << k;
-          }
-        }
-        std::array<double, kN> values;
-        values.fill(0.5);
-        values[3] = std::numeric_limits<double>::quiet_NaN();
-        std::array<double, 2 * kN> out{};
+  for_each_one_axis_case(rng, [&](const std::vector<double>& x, Interpolation method, Extrapolation policy) {
+    std::vector<GridTable> tables;
+    for (std::size_t l = 0; l < kN; ++l) {
+      const double scale = 1.0 + 0.1 * static_cast<double>(l);
+      tables.push_back(make_table(
+          {x}, 2,
+          [&](const Point& p) {
+            return std::vector<double>{scale * std::sin(3.0 * p[0]), p[0] * std::abs(p[0]) - scale};
+          },
+          method, policy));
+    }
+    std::array<const GridTable*, kN> lanes;
+    for (std::size_t l = 0; l < kN; ++l) {
+      lanes[l] = &tables[l];
+      EXPECT_TRUE(tables[0].shares_axis(tables[l]));
+    }
+    for (int round = 0; round < 60; ++round) {
+      // Inside only, then some lanes beyond either end.
+      const double spread = round < 30 ? 0.0 : 0.6;
+      std::array<double, kN> values;
+      for (double& v : values) v = std::uniform_real_distribution<double>(-1.0 - spread, 2.0 + spread)(rng);
+      if (round % 10 == 0)
+        for (std::size_t l = 0; l < kN; ++l) values[l] = x[(static_cast<std::size_t>(round) + l) % x.size()];
+      const bool outside = std::any_of(values.begin(), values.end(), [&](double v) { return v < -1.0 || v > 2.0; });
+      std::array<double, 2 * kN> out{};
+      if (policy == Extrapolation::Error && outside) {
         EXPECT_THROW(GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data()), InputError);
+        continue;
+      }
+      GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data());
+      for (std::size_t l = 0; l < kN; ++l) {
+        const std::vector<double> own = evaluate(tables[l], {values[l]});
+        for (std::size_t k = 0; k < 2; ++k)
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(out[k * kN + l]), std::bit_cast<std::uint64_t>(own[k]))
+              << "lane " << l << " at " << values[l] << ", output " << k;
       }
     }
-  }
+    std::array<double, kN> values;
+    values.fill(0.5);
+    values[3] = std::numeric_limits<double>::quiet_NaN();
+    std::array<double, 2 * kN> out{};
+    EXPECT_THROW(GridTable::evaluate_one_axis_lanes<kN>(lanes, values.data(), out.data()), InputError);
+  });
   // Another axis, method, policy or output count is not shared.
   const auto g = [](const Point& p) { return std::vector<double>{p[0]}; };
   const GridTable base = make_table({{0.0, 1.0, 2.0}}, 1, g, Interpolation::Linear, Extrapolation::Clamp);
