@@ -218,15 +218,12 @@ std::set<std::string> expected_postgresql_objects(int version) {
   return cache.emplace(version, out).first->second;
 }
 
-/// The column names of attribute numbers `numbers` ("{1,3}") of a relation.
-std::string pg_columns(Connection& connection, const std::string& relation, const std::string& numbers) {
-  auto names = connection.prepare(
-      "SELECT string_agg(coalesce(a.attname, '(expression)'), ', ' ORDER BY k.n) "
-      "FROM unnest(?2::int2[]) WITH ORDINALITY AS k(attnum, n) "
-      "LEFT JOIN pg_attribute a ON a.attrelid = ?1::oid AND a.attnum = k.attnum AND k.attnum > 0");
-  names.bind(1, relation);
-  names.bind(2, numbers);
-  return names.step() ? names.get_text(0) : "";
+/// SQL for the column names of a relation's attribute numbers, in order ("a, b";
+/// an expression index's column is "(expression)").
+std::string column_names_sql(const std::string& relation, const std::string& numbers) {
+  return "(SELECT string_agg(coalesce(a.attname, '(expression)'), ', ' ORDER BY k.n) FROM unnest(" + numbers +
+         "::int2[]) WITH ORDINALITY AS k(attnum, n) LEFT JOIN pg_attribute a ON a.attrelid = " + relation +
+         " AND a.attnum = k.attnum AND k.attnum > 0)";
 }
 
 std::set<std::string> postgresql_objects(Connection& connection) {
@@ -243,21 +240,22 @@ std::set<std::string> postgresql_objects(Connection& connection) {
                (columns.get_int(5) != 0 ? " default" : "") + (columns.get_int(6) != 0 ? " identity" : ""));
   }
   // Keys and indexes, by their columns (their names are each database's own).
-  auto indexes = connection.prepare(
-      "SELECT t.relname, i.indrelid::text, i.indkey::int2[]::text, i.indisprimary::int, i.indisunique::int, "
-      "(i.indpred IS NOT NULL)::int FROM pg_index i JOIN pg_class t ON t.oid = i.indrelid "
-      "JOIN pg_namespace n ON n.oid = t.relnamespace WHERE n.nspname = current_schema()");
+  auto indexes = connection.prepare("SELECT t.relname, " + column_names_sql("i.indrelid", "i.indkey") +
+                                    ", i.indisprimary::int, i.indisunique::int, (i.indpred IS NOT NULL)::int "
+                                    "FROM pg_index i JOIN pg_class t ON t.oid = i.indrelid "
+                                    "JOIN pg_namespace n ON n.oid = t.relnamespace WHERE n.nspname = current_schema()");
   while (indexes.step()) {
-    const std::string columns_of = column_list({pg_columns(connection, indexes.get_text(1), indexes.get_text(2))});
-    const std::string kind = indexes.get_int(3) != 0   ? "primary key "
-                             : indexes.get_int(4) != 0 ? "unique index "
+    const std::string columns_of = "(" + indexes.get_text(1) + ")";
+    const std::string kind = indexes.get_int(2) != 0   ? "primary key "
+                             : indexes.get_int(3) != 0 ? "unique index "
                                                        : "index ";
     out.insert("table " + indexes.get_text(0) + ": " + kind + columns_of +
-               (indexes.get_int(5) != 0 ? " (partial)" : ""));
+               (indexes.get_int(4) != 0 ? " (partial)" : ""));
   }
   auto constraints = connection.prepare(
-      "SELECT t.relname, c.contype::text, c.conrelid::text, c.conkey::text, c.confrelid::text, c.confkey::text, "
-      "coalesce(r.relname, ''), c.confupdtype::text, c.confdeltype::text FROM pg_constraint c "
+      "SELECT t.relname, c.contype::text, " + column_names_sql("c.conrelid", "c.conkey") + ", " +
+      column_names_sql("c.confrelid", "c.confkey") +
+      ", coalesce(r.relname, ''), c.confupdtype::text, c.confdeltype::text FROM pg_constraint c "
       "JOIN pg_class t ON t.oid = c.conrelid JOIN pg_namespace n ON n.oid = t.relnamespace "
       "LEFT JOIN pg_class r ON r.oid = c.confrelid WHERE n.nspname = current_schema() AND c.contype IN ('f', 'c')");
   std::map<std::string, std::size_t> checks;
@@ -267,11 +265,9 @@ std::set<std::string> postgresql_objects(Connection& connection) {
       ++checks[table];
       continue;
     }
-    out.insert("table " + table + ": foreign key (" +
-               pg_columns(connection, constraints.get_text(2), constraints.get_text(3)) + ") references " +
-               constraints.get_text(6) + " (" +
-               pg_columns(connection, constraints.get_text(4), constraints.get_text(5)) + ") on update " +
-               action_name(constraints.get_text(7)) + " on delete " + action_name(constraints.get_text(8)));
+    out.insert("table " + table + ": foreign key (" + constraints.get_text(2) + ") references " +
+               constraints.get_text(4) + " (" + constraints.get_text(3) + ") on update " +
+               action_name(constraints.get_text(5)) + " on delete " + action_name(constraints.get_text(6)));
   }
   for (const auto& [table, count] : checks)
     out.insert("table " + table + ": " + std::to_string(count) + " check constraints");
