@@ -19,6 +19,8 @@ DampingLanes::DampingLanes(const std::array<const DampingModel*, kLanes>& models
     for (std::size_t i = 0; shared_ && i < first.laws_.size(); ++i) {
       const auto &a = first.laws_[i], &b = m->laws_[i];
       shared_ = a.dof == b.dof && a.variable == b.variable && a.count == b.count && a.terms == b.terms;
+      // A term outside the enumeration: evaluate() says so, lane by lane.
+      for (std::size_t k = 0; k < a.count; ++k) shared_ = shared_ && static_cast<std::size_t>(a.terms[k]) < 6;
     }
     for (std::size_t i = 0; shared_ && i < first.lookups_.size(); ++i) {
       const auto &a = first.lookups_[i], &b = m->lookups_[i];
@@ -29,6 +31,7 @@ DampingLanes::DampingLanes(const std::array<const DampingModel*, kLanes>& models
   if (!shared_) return;
   for (std::size_t i = 0; i < first.laws_.size(); ++i) {
     std::array<Lanes, 6> coefficients;
+    for (Lanes& c : coefficients) c.setZero();
     for (std::size_t k = 0; k < first.laws_[i].count; ++k)
       for (std::size_t l = 0; l < models_.size(); ++l)
         coefficients[k][static_cast<Eigen::Index>(l)] = models_[l]->laws_[i].coefficients[k];

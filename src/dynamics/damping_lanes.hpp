@@ -28,8 +28,11 @@ class DampingLanes {
 
   /// out (6 per lane) += lane l's damping force on the body at its velocity
   /// relative to the water nu_r (6 per lane), with the disturbance values
-  /// (disturbance_names() order). Throws as DampingModel::evaluate.
-  /// Allocates nothing (but for a lookup outside its table's axis).
+  /// (disturbance_names() order). Throws InputError where a lane's
+  /// DampingModel::evaluate would (a lookup outside its surface under policy
+  /// "error"), with the message of lane 0's surface for a shared table.
+  /// Allocates nothing for laws and shared one-axis tables (other surfaces as
+  /// their evaluate()).
   void add(const motion::Lanes* nu_r, std::span<const double> disturbances, motion::Lanes* out) const;
 
  private:

@@ -195,8 +195,11 @@ TrajectoryBands simulate_samples(const VehicleModel& model, const DampingDraws& 
       store.put(i, k, r.samples[k].p_n, r.samples[k].euler_rad, r.samples[k].nu_b);
     store.unwrap(i);
   };
-  // RK4: motion::kLanes draws at once (simulate_lanes), the same numbers.
-  const bool lanes = scenario.integrator.method == IntegratorSettings::Method::Rk4;
+  // RK4: motion::kLanes draws at once (simulate_lanes), the same numbers;
+  // when there are enough of them to keep every thread busy with batches.
+  constexpr auto kBatch = static_cast<std::size_t>(motion::kLanes);
+  const bool lanes = scenario.integrator.method == IntegratorSettings::Method::Rk4 &&
+                     n >= kBatch * parallel_threads(n, options.threads);
   const auto batch = [&](std::size_t first, std::size_t count) {
     if (!lanes) return false;
     std::array<DampingModel, motion::kLanes> drawn;
@@ -215,8 +218,7 @@ TrajectoryBands simulate_samples(const VehicleModel& model, const DampingDraws& 
     return true;
   };
   EnsembleFailures failures;
-  const std::vector<char> ok = run_draws(model, draws, options, progress, failures,
-                                         lanes ? static_cast<std::size_t>(motion::kLanes) : 1, one, batch);
+  const std::vector<char> ok = run_draws(model, draws, options, progress, failures, lanes ? kBatch : 1, one, batch);
 
   TrajectoryBands bands;
   bands.failures = failures;

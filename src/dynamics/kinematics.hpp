@@ -29,7 +29,8 @@ inline Matrix3 rotation_body_to_ned(const Quaternion4& q) {
 /// The rotation of q / |q| for any nonzero q, without a square root: the
 /// homogeneous form of the formula above, 2 replaced by 2 / (q^T q), which
 /// is exact because every entry is quadratic in q (1 - 2 (y^2 + z^2) / q^T q
-/// = (e^2 + x^2 - y^2 - z^2) / q^T q). The dynamics model's hot path.
+/// = (e^2 + x^2 - y^2 - z^2) / q^T q). (motion::rotation_any_norm is the
+/// dynamics model's element-by-element form.)
 inline Matrix3 rotation_body_to_ned_any_norm(const Quaternion4& q) {
   double r[9];
   motion::rotation_any_norm(q.data(), r);

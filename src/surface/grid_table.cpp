@@ -562,8 +562,8 @@ void GridTable::evaluate_with_gradient(std::span<const double> point, std::span<
 void GridTable::evaluate_one_axis(double value, double* out) const { evaluate_one_axis_lanes<1>({this}, &value, out); }
 
 bool GridTable::shares_axis(const GridTable& other) const {
-  return axes_.size() == 1 && other.axes_.size() == 1 && method_ == other.method_ &&
-         outputs_.size() == other.outputs_.size() && breakpoints_ == other.breakpoints_ &&
+  return axes_.size() == 1 && other.axes_.size() == 1 && axes_[0].name == other.axes_[0].name &&
+         method_ == other.method_ && outputs_.size() == other.outputs_.size() && breakpoints_ == other.breakpoints_ &&
          lookup_[0].extrapolation == other.lookup_[0].extrapolation && node_block_ == other.node_block_ &&
          term_offsets_ == other.term_offsets_;
 }
@@ -575,10 +575,8 @@ void GridTable::evaluate_one_axis_lanes(const std::array<const GridTable*, N>& t
   const AxisLookup& axis = first.lookup_[0];
   const std::size_t n_out = first.outputs_.size();
   if (first.axes_.size() != 1) [[unlikely]] {
-    // evaluate says what is wrong.
-    std::vector<double> lane_out(n_out);
-    first.evaluate(std::span<const double>(values, 1), lane_out);
-    throw std::logic_error("GridTable::evaluate_one_axis_lanes: a table of more than one axis");
+    first.check_point(std::span<const double>(values, 1));  // throws as evaluate does
+    throw std::logic_error("GridTable::evaluate_one_axis_lanes: a table of no axis");
   }
   const std::size_t terms = first.terms_per_axis_;
   std::array<std::size_t, N> node;

@@ -175,14 +175,15 @@ class GridTable {
   /// evaluate, and InputError for a table of more than one axis.
   void evaluate_one_axis(double value, double* out) const;
 
-  /// True when `other` has this table's one axis (breakpoints and
+  /// True when `other` has this table's one axis (name, breakpoints and
   /// extrapolation), method and output count, as the draws of one surface on
   /// its nodes have: evaluate_one_axis_lanes may serve both.
   bool shares_axis(const GridTable& other) const;
   /// evaluate_one_axis of N tables that share their axis (shares_axis) at
   /// values[l], lane by lane: out[k * N + l] = tables[l]'s output k at values[l],
   /// the same numbers. The cell search, the division and the weights are done
-  /// for every lane at once; allocates only for a value outside the axis.
+  /// for every lane at once. Allocates nothing (but to build an exception's
+  /// message).
   /// Instantiated for N = 1 and 8 (motion::kLanes).
   template <std::size_t N>
   static void evaluate_one_axis_lanes(const std::array<const GridTable*, N>& tables, const double* values, double* out);

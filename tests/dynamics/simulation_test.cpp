@@ -160,6 +160,31 @@ TEST(Simulation, LanesAreEachVehiclesOwnRun) {
   Scenario adaptive = s;
   adaptive.integrator.method = IntegratorSettings::Method::DormandPrince45;
   EXPECT_THROW(simulate_lanes(model, models, adaptive), std::invalid_argument);
+  // A segment at the very end that sets a disturbance beyond a surface's axis
+  // (policy "error"): simulate() fails at its last output, and so do the lanes.
+  {
+    VehicleDescription e = d;
+    e.damping[1].kind = DofDamping::Kind::Surface;
+    e.damping[1].surface = "sway";
+    e.damping[1].output = "Y";
+    e.damping[1].law = {};
+    e.damping[1].coefficients.clear();
+    const auto resolver = [](const std::string&) {
+      std::vector<GridAxis> axes{{"current_y", {0.0, 0.5, 1.0}, Extrapolation::Error}};
+      return CoefficientSurface(GridTable(axes, {"Y"}, {0.0, -0.1, -0.3}, Interpolation::Linear));
+    };
+    const VehicleModel swaying(e, resolver);
+    std::array<const DampingModel*, motion::kLanes> same;
+    same.fill(&swaying.damping());
+    Scenario late = s;
+    late.segments[0].disturbances = {{"current_y", 0.5}};
+    late.segments[1].start_s = late.duration_s;
+    late.segments[1].disturbances = {{"current_y", 2.0}};
+    expect_input_error([&] { simulate(swaying, late); }, {"current_y", "outside"});
+    expect_input_error([&] { simulate_lanes(swaying, same, late); }, {"current_y", "outside"});
+    late.segments[1].disturbances = {{"current_y", 1.0}};
+    EXPECT_EQ(simulate_lanes(swaying, same, late).states.size(), simulate(swaying, late).samples.size());
+  }
   // Surge damping that pushes instead of holding back: that lane runs away.
   d.damping[0].coefficients = {-5.0, 1e6};
   damping[3] = VehicleModel(d).damping();
