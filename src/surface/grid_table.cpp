@@ -573,7 +573,6 @@ void GridTable::evaluate_one_axis_lanes(const std::array<const GridTable*, N>& t
                                         double* out) {
   const GridTable& first = *tables[0];
   const AxisLookup& axis = first.lookup_[0];
-  const std::size_t n_out = first.outputs_.size();
   if (first.axes_.size() != 1) [[unlikely]] {
     first.check_point(std::span<const double>(values, 1));  // throws as evaluate does
     throw std::logic_error("GridTable::evaluate_one_axis_lanes: a table of no axis");
