@@ -24,7 +24,6 @@ class DampingLanes {
 
   /// True when the models share their shape (evaluated lanes at once).
   bool shared() const noexcept { return shared_; }
-  const std::array<const DampingModel*, motion::kLanes>& models() const noexcept { return models_; }
 
   /// out (6 per lane) += lane l's damping force on the body at its velocity
   /// relative to the water nu_r (6 per lane), with the disturbance values

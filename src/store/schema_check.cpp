@@ -96,13 +96,9 @@ std::string action_name(std::string text) {
 void add_expected_constraints(Connection& memory, const std::string& table, std::set<std::string>& out) {
   const std::string prefix = "table " + lower_case(table) + ": ";
   std::vector<std::pair<int, std::string>> key;
-  std::map<std::string, std::string> declared;
-  auto columns = memory.prepare("SELECT name, type, pk FROM pragma_table_info(?)");
+  auto columns = memory.prepare("SELECT name, pk FROM pragma_table_info(?) WHERE pk > 0");
   columns.bind(1, table);
-  while (columns.step()) {
-    declared[columns.get_text(0)] = columns.get_text(1);
-    if (columns.get_int(2) > 0) key.emplace_back(columns.get_int(2), lower_case(columns.get_text(0)));
-  }
+  while (columns.step()) key.emplace_back(columns.get_int(1), lower_case(columns.get_text(0)));
   std::sort(key.begin(), key.end());
   std::vector<std::string> key_columns;
   for (const auto& k : key) key_columns.push_back(k.second);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <utility>
-#include <vector>
 
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
