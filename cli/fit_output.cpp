@@ -52,6 +52,7 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
                           {"n", fit.n},
                           {"weighting", fit.weighted ? "uncertainty" : "none"},
                           {"chi2_reduced", optional_number(fit.chi2_reduced)},
+                          {"covariance_scale", fit.covariance_scale},
                           {"covariance", fit.covariance},
                           {"runs", result.run_ids()},
                           {"mirror", setup.mirror.text()},
@@ -102,11 +103,17 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
             << ", R^2 = " << significant(fit.r2, 8)
             << (std::isnan(fit.r2) ? " (the force does not vary over these runs)" : "") << ", loss " << fit.loss
             << '\n';
-  if (fit.weighted)
+  if (fit.weighted) {
     std::cout << "  weighted by each run's uncertainty (1/s^2); reduced chi^2 = "
-              << (std::isfinite(fit.chi2_reduced) ? significant(fit.chi2_reduced, 4) : std::string("n/a"))
-              << " (about 1: the runs scatter as their uncertainties say); standard errors from the stated "
-                 "uncertainties\n";
+              << (std::isfinite(fit.chi2_reduced) ? significant(fit.chi2_reduced, 4) : std::string("n/a"));
+    if (fit.covariance_scale > 1.0)
+      std::cout << ": the runs scatter about the law more than their uncertainties say, so the standard errors "
+                   "are the stated uncertainties' scaled by the Birge ratio sqrt(chi^2/(n-k)) = "
+                << significant(std::sqrt(fit.covariance_scale), 4) << "\n";
+    else
+      std::cout << " (expected about 1 if the runs scatter as their uncertainties say): standard errors from the "
+                   "stated uncertainties\n";
+  }
   if (!result.varying_conditions.empty()) {
     std::string names;
     for (const auto& v : result.varying_conditions) names += (names.empty() ? "" : ", ") + v;

@@ -307,16 +307,21 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
   }
   const double residual_variance =
       n > k ? weighted_ssr / static_cast<double>(n - k) : std::numeric_limits<double>::quiet_NaN();
-  // Stated uncertainties are taken as they are: the covariance is not
-  // rescaled by the scatter (chi2_reduced says how far the scatter agrees).
-  const double covariance_factor = weighted ? 1.0 : residual_variance;
+  // Weighted: the covariance of the stated uncertainties, scaled by the
+  // Birge ratio squared, chi^2 / (n - k), when the runs scatter more than
+  // they say (the Particle Data Group's scale factor S; never scaled down).
+  const double chi2_reduced =
+      n > k ? residuals.squaredNorm() / static_cast<double>(n - k) : std::numeric_limits<double>::quiet_NaN();
+  const double birge_squared = weighted && std::isfinite(chi2_reduced) ? std::max(1.0, chi2_reduced) : 1.0;
+  const double covariance_factor = weighted ? birge_squared : residual_variance;
 
   DampingLawFit fit;
   fit.spec = spec;
   fit.n = n;
   fit.loss = format_loss(options);
   fit.weighted = weighted;
-  if (weighted && n > k) fit.chi2_reduced = residuals.squaredNorm() / static_cast<double>(n - k);
+  if (weighted && n > k) fit.chi2_reduced = chi2_reduced;
+  fit.covariance_scale = birge_squared;
   fit.rmse = std::sqrt(ssr / static_cast<double>(n)) * y_scale;
   fit.r2 = sst > 0.0 ? 1.0 - ssr / sst : std::numeric_limits<double>::quiet_NaN();
   for (Eigen::Index j = 0; j < cols; ++j) {

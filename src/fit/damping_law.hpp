@@ -61,9 +61,14 @@ struct DampingLawFit {
   /// s^2 = sum(w_i r_i^2)/(n-k). NaN when n <= k, where s^2 is undefined.
   ///
   /// Weighted fits (each run's standard uncertainty sigma_i given): the
-  /// residuals are r_i / sigma_i, the covariance is (J^T W J)^-1 itself
-  /// (the uncertainties are taken as stated, not rescaled by the scatter),
-  /// and the standard errors are the square roots of its diagonal.
+  /// residuals are r_i / sigma_i, the covariance is S^2 (J^T W J)^-1 with
+  /// S^2 = max(1, chi^2 / (n - k)): when the runs scatter more than their
+  /// uncertainties say (the law misses something, or the uncertainties are
+  /// understated), the covariance is scaled by the Birge ratio squared, as
+  /// the Particle Data Group scales an average's error by S (R. T. Birge,
+  /// Phys. Rev. 40 (1932) 207; PDG, Review of Particle Physics,
+  /// "Introduction: averaging"); it is never scaled down. The standard
+  /// errors are the square roots of its diagonal.
   std::vector<double> std_errors;
   /// The coefficients' covariance, k x k row by row [unit_i x unit_j], as the
   /// standard errors above (their squares on the diagonal).
@@ -74,6 +79,10 @@ struct DampingLawFit {
   /// above 1: the law misses something or the uncertainties are understated;
   /// well below: overstated. NaN for unweighted fits or n <= k.
   double chi2_reduced = std::numeric_limits<double>::quiet_NaN();
+  /// What the covariance of a weighted fit was scaled by: S^2 above (1 when
+  /// the scatter does not exceed the stated uncertainties, and for
+  /// unweighted fits, whose covariance is scaled by s^2 instead).
+  double covariance_scale = 1.0;
   double rmse = 0.0;  ///< sqrt(SSR/n) of the unweighted residuals [force unit]
   double r2 = 0.0;    ///< 1 - SSR/SST, SST about the mean of y; NaN when all y are equal
   std::size_t n = 0;  ///< number of observations fitted

@@ -102,7 +102,9 @@ FitResult fit_stored_runs(Database& database, const FitRequest& request) {
           {"scatter-exceeds-uncertainty",
            "reduced chi^2 = " + shortest_number(result.fit.chi2_reduced) +
                ": the runs scatter about the law more than their uncertainties say (the law misses something, "
-               "or the uncertainties are understated); the coefficients' standard errors may be too small"});
+               "or the uncertainties are understated); the coefficients' covariance is scaled by it (Birge "
+               "ratio " +
+               shortest_number(std::sqrt(result.fit.chi2_reduced)) + ")"});
     else if (result.fit.chi2_reduced < 1.0 - spread)
       result.setup.warnings.push_back(
           {"scatter-below-uncertainty", "reduced chi^2 = " + shortest_number(result.fit.chi2_reduced) +

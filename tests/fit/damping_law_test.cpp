@@ -339,7 +339,7 @@ TEST(DampingLawFit, ExtremeVelocitiesAndForcesFitOrAreRefusedSayingWhy) {
 }
 
 // Weighted least squares: the coefficients, covariance and reduced chi^2
-// of the closed form c = (A^T W A)^-1 A^T W y, Cov = (A^T W A)^-1,
+// of the closed form c = (A^T W A)^-1 A^T W y, Cov = max(1, chi^2) (A^T W A)^-1,
 // chi^2 = r^T W r / (n - k), W = diag(1/s_i^2), solved here with Eigen.
 TEST(DampingLawWeightedFit, IsTheClosedFormWeightedLeastSquares) {
   const DampingLawSpec spec = parse_damping_terms("1,u,u|u|");
@@ -364,14 +364,18 @@ TEST(DampingLawWeightedFit, IsTheClosedFormWeightedLeastSquares) {
   const Eigen::VectorXd c = covariance * a.transpose() * w * b;
   const Eigen::VectorXd r = a * c - b;
   const double chi2 = r.dot(w * r) / static_cast<double>(n - k);
+  // The runs scatter more than they say here: the covariance is scaled by
+  // the Birge ratio squared.
+  ASSERT_GT(chi2, 1.0);
+  EXPECT_NEAR(fit.covariance_scale, chi2, 1e-8 * chi2);
+  const Eigen::MatrixXd scaled = chi2 * covariance;
   ASSERT_TRUE(fit.weighted);
   for (Eigen::Index j = 0; j < k; ++j) {
     EXPECT_NEAR(fit.coefficients[static_cast<std::size_t>(j)], c(j), 1e-9 * (1.0 + std::abs(c(j))));
-    EXPECT_NEAR(fit.std_errors[static_cast<std::size_t>(j)], std::sqrt(covariance(j, j)),
-                1e-7 * std::sqrt(covariance(j, j)));
+    EXPECT_NEAR(fit.std_errors[static_cast<std::size_t>(j)], std::sqrt(scaled(j, j)), 1e-7 * std::sqrt(scaled(j, j)));
     for (Eigen::Index l = 0; l < k; ++l)
-      EXPECT_NEAR(fit.covariance[static_cast<std::size_t>(j * k + l)], covariance(j, l),
-                  1e-7 * std::sqrt(covariance(j, j) * covariance(l, l)));
+      EXPECT_NEAR(fit.covariance[static_cast<std::size_t>(j * k + l)], scaled(j, l),
+                  1e-7 * std::sqrt(scaled(j, j) * scaled(l, l)));
   }
   EXPECT_NEAR(fit.chi2_reduced, chi2, 1e-8 * chi2);
   // RMSE and R^2 stay those of the unweighted residuals.
