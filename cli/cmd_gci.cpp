@@ -34,6 +34,10 @@ void add_gci_command(CLI::App& app, const GlobalOptions& global) {
                       "Domain volume (m^D) for h = (V/N)^(1/D) from cells=N (default 1: h relative; ratios, order, "
                       "extrapolation and GCI are the same)");
   command->add_option("--dimension", args->request.dimension, "D of h = (V/N)^(1/D): 1, 2 or 3")->capture_default_str();
+  command->add_flag("--allow-unconverged", args->request.allow_unconverged,
+                    "Run the study although a value did not converge or its iterative error is not below a tenth of "
+                    "the change to the adjacent mesh (noted per component); refused by default, as Celik et al. "
+                    "require converged values");
   command->add_flag("--store,!--no-store", args->store, "Store the result and apply it to the runs (default)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] {

@@ -25,6 +25,7 @@ void run_integrate(const IntegrateArgs& args) {
   request.command_line = command_line_settings(args.surface);
   request.format = args.format;
   request.plan.use_sidecars = !args.surface.no_sidecar;
+  request.require_velocity = false;  // nothing is stored: the key is shown as the settings give it
   const ImportPlan plan = plan_request(request);
   const ImportedInput input = read_input(plan.inputs.front(), request);
   if (!input.surface)

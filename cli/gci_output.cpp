@@ -54,6 +54,8 @@ nlohmann::json study_json(const GridConvergenceStudy& study, bool stored) {
           {"asymptotic_ratio", optional_number(order, r.asymptotic_ratio)},
           {"numerical_uncertainty",
            optional_number(c.numerical_uncertainty.has_value(), c.numerical_uncertainty.value_or(0.0))},
+          {"values_convergence", c.convergence},
+          {"values_error", c.iterative_error},
           {"note", r.note}};
     }
     out["keys"].push_back(entry);
@@ -72,7 +74,7 @@ void print_study(const GridConvergenceStudy& study, const GridConvergenceRequest
             << "levels by '" << escape::one_line(study.mesh_parameter) << "', fine (1) to coarse (3)\n";
   std::cout << std::left << std::setw(28) << "key" << std::setw(3) << "F" << std::setw(11) << "h1" << std::setw(11)
             << "h2" << std::setw(11) << "h3" << std::setw(8) << "r21" << std::setw(8) << "r32" << std::setw(9) << "p"
-            << std::setw(13) << "phi1" << std::setw(13) << "phi_ext" << std::setw(11) << "e_a" << std::setw(11)
+            << std::setw(13) << " phi1" << std::setw(13) << "phi_ext" << std::setw(11) << "e_a" << std::setw(11)
             << "e_ext" << std::setw(11) << "GCI_fine" << std::setw(11) << "u_num" << std::setw(12) << "convergence"
             << "notes\n";
   for (const auto& key : study.keys) {
@@ -87,15 +89,20 @@ void print_study(const GridConvergenceStudy& study, const GridConvergenceRequest
       std::cout << std::setw(28) << text.str() << ' ' << std::setw(2) << kForceNames[c.component] << std::setw(11)
                 << significant(key.cell_sizes[0], 4) << std::setw(11) << significant(key.cell_sizes[1], 4)
                 << std::setw(11) << significant(key.cell_sizes[2], 4) << std::setw(8) << significant(r.r21, 4)
-                << std::setw(8) << significant(r.r32, 4) << std::setw(9) << cell(order, r.apparent_order, 4)
-                << std::setw(13) << significant(c.phi[0], 6) << std::setw(13) << cell(found, r.extrapolated, 6)
+                << std::setw(8) << significant(r.r32, 4) << std::setw(9) << cell(order, r.apparent_order, 4) << ' '
+                << std::setw(12) << significant(c.phi[0], 6) << std::setw(13) << cell(found, r.extrapolated, 6)
                 << std::setw(11) << cell(found, r.relative_error, 3) << std::setw(11)
                 << cell(found, r.extrapolated_relative_error, 3) << std::setw(11) << cell(found, r.gci_fine, 3)
                 << std::setw(11) << cell(c.numerical_uncertainty.has_value(), c.numerical_uncertainty.value_or(0.0), 3)
                 << std::setw(12) << grid_convergence_name(r.convergence) << escape::one_line(r.note) << '\n';
     }
+    if (!key.components.empty()) {
+      const auto& kinds = key.components.front().convergence;
+      std::cout << "  values of " << escape::one_line(describe(key.key)) << ", fine to coarse: " << kinds[0] << ", "
+                << kinds[1] << ", " << kinds[2] << '\n';
+    }
     for (const auto& note : key.notes)
-      std::cout << "  note: " << escape::one_line(describe(key.key)) << ": " << note << '\n';
+      std::cout << "  note: " << escape::one_line(describe(key.key)) << ": " << escape::one_line(note) << '\n';
   }
   if (!request.volume && std::any_of(study.keys.begin(), study.keys.end(),
                                      [](const KeyConvergence& k) { return k.size_from == kCellCountParameter; }))

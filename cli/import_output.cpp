@@ -35,9 +35,11 @@ std::string input_line(const ImportedInput& input, const ImportOutcome& outcome)
         forces += "±" + significant(run.statistics->components[i]->standard_error, 2);
     }
     if (!forces.empty()) line += ": " + forces;
-    if (run.statistics && !run.statistics->flags.empty()) {
-      line += " [";
-      for (std::size_t i = 0; i < run.statistics->flags.size(); ++i) line += (i ? ", " : "") + run.statistics->flags[i];
+    if (run.statistics) {
+      line += " [" + run.statistics->convergence;
+      for (std::size_t i = 0; i < 6; ++i)
+        for (const auto& flag : run.statistics->windows[i].flags)
+          line += ", " + std::string(kForceNames[i]) + " " + flag;
       line += "]";
     }
   }
@@ -46,18 +48,23 @@ std::string input_line(const ImportedInput& input, const ImportOutcome& outcome)
 
 nlohmann::json statistics_json(const RunStatistics& s) {
   nlohmann::json out = {{"abscissa", s.abscissa},
-                        {"window", s.window_method},
-                        {"window_first", s.window_first},
-                        {"window_last", s.window_last},
-                        {"samples", s.samples},
+                        {"convergence", s.convergence},
+                        {"convergence_reason", s.convergence_reason},
                         {"flags", s.flags},
                         {"components", nlohmann::json::object()}};
   for (std::size_t i = 0; i < 6; ++i)
-    if (const auto& c = s.components[i])
+    if (const auto& c = s.components[i]) {
+      const ComponentWindow& w = s.windows[i];
       out["components"][std::string(kForceNames[i])] = {{"standard_error", c->standard_error},
                                                         {"spread", c->spread},
                                                         {"drift", c->drift},
-                                                        {"effective_samples", c->effective_samples}};
+                                                        {"effective_samples", c->effective_samples},
+                                                        {"window", w.method},
+                                                        {"window_first", w.first},
+                                                        {"window_last", w.last},
+                                                        {"samples", w.samples},
+                                                        {"flags", w.flags}};
+    }
   return out;
 }
 
@@ -98,6 +105,7 @@ void print_import(const ImportResult& result, const std::string& database, bool 
           file["statistics"] = statistics_json(*input.batch.runs.front().statistics);
       }
       if (input.surface) file["surface"] = surface_run_json(*input.surface);
+      if (input.history) file["history_notes"] = input.history->notes;
       out["files"].push_back(file);
     }
     out["summary"] = {

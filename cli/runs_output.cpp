@@ -110,7 +110,10 @@ nlohmann::json run_json(const StoredRun& run) {
                                                                   {"spread", st.values.spread},
                                                                   {"drift", st.values.drift},
                                                                   {"effective_samples", st.values.effective_samples},
-                                                                  {"flags", st.flags}};
+                                                                  {"flags", st.flags},
+                                                                  {"convergence", st.convergence}};
+      out["convergence"] = st.convergence;
+      out["convergence_reason"] = st.convergence_reason;
     }
   }
   out["flags"] = run_flags(run);
@@ -160,7 +163,11 @@ void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<st
       for (const auto& force : run.tau_b) averaged = averaged || (force && force->statistics);
       std::string flags;
       for (const auto& flag : run_flags(run)) flags += (flags.empty() ? "" : ",") + flag;
-      table << cell(!averaged ? "-" : flags.empty() ? "ok" : flags, 12);
+      std::string kind;
+      for (const auto& force : run.tau_b)
+        if (force && force->statistics && !force->statistics->convergence.empty())
+          kind = force->statistics->convergence;
+      table << cell(!averaged ? "-" : !flags.empty() ? flags : kind == "converged" ? "converged" : "ok", 12);
     }
     std::string disturbances;
     for (const auto& [name, value] : run.key.disturbances)
@@ -170,9 +177,11 @@ void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<st
   std::cout << table.str() << runs.size() << (runs.size() == 1 ? " run" : " runs")
             << "; SI units (m/s, rad/s, N, N m); forces on the body"
             << (any_tabulated ? "; * = as tabulated, positive opposes motion" : "")
-            << (any_history ? "; history: means over a force history, 'ok' when converged, else its flags "
-                              "('runs show ID' gives the window and standard errors)"
-                            : "")
+            << (any_history
+                    ? "; history: from a force history, 'converged' when its solver met the case's criteria (final "
+                      "iterate), 'ok' for a window mean with nothing to act on, else its flags ('runs show ID' "
+                      "gives the windows, standard errors and why)"
+                    : "")
             << '\n';
 }
 
@@ -205,14 +214,32 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
       const std::string unit = i < 3 ? " N" : " N m";
       std::string flags;
       for (const auto& flag : st.flags) flags += (flags.empty() ? "" : ", ") + flag;
-      std::cout << "      mean over " << st.abscissa << " " << significant(st.window_first, 8) << " to "
-                << significant(st.window_last, 8) << " (" << st.samples << " samples, " << st.window_method
-                << "): standard error " << significant(st.values.standard_error, 3) << unit << " ("
-                << significant(st.values.effective_samples, 3) << " effective samples), spread "
-                << significant(st.values.spread, 3) << unit << ", drift " << significant(st.values.drift, 3) << unit
-                << (flags.empty() ? ", converged" : ", flags: " + flags) << '\n';
+      if (st.convergence == "converged")
+        std::cout << "      final iterate, " << st.abscissa << " " << significant(st.window_last, 8)
+                  << ": iterative error " << significant(st.values.standard_error, 3) << unit << " (change per "
+                  << "iteration " << significant(st.values.drift, 3) << unit << ", fluctuation "
+                  << significant(st.values.spread, 3) << unit << ")\n";
+      else
+        std::cout << "      mean over " << st.abscissa << " " << significant(st.window_first, 8) << " to "
+                  << significant(st.window_last, 8) << " (" << st.samples << " samples, "
+                  << escape::one_line(st.window_method) << "): standard error "
+                  << significant(st.values.standard_error, 3) << unit << " ("
+                  << significant(st.values.effective_samples, 3) << " effective samples), spread "
+                  << significant(st.values.spread, 3) << unit << ", drift " << significant(st.values.drift, 3) << unit
+                  << (flags.empty() ? "" : ", flags: " + flags) << '\n';
     }
   }
+  for (const auto& force : run.tau_b)
+    if (force && force->statistics) {
+      const auto& st = *force->statistics;
+      std::cout << "  convergence: "
+                << (st.convergence.empty() ? std::string("not recorded (imported by an older hydrocoef)")
+                                           : st.convergence + (st.convergence_reason.empty()
+                                                                   ? std::string()
+                                                                   : ": " + escape::one_line(st.convergence_reason)))
+                << '\n';
+      break;
+    }
   for (const auto& [id, record] : imports) {
     std::cout << "  import " << id << ": " << record.path << " ("
               << (record.resolved_path.empty() ? "path not resolved" : record.resolved_path) << "), sha256 "

@@ -52,6 +52,9 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
   command.add_option("--set", args.set,
                      "Run key: velocity (u v w [m/s], p q r [rad/s], body axes) or disturbance, NAME=VALUE "
                      "(repeatable)");
+  command.add_flag("--at-rest", args.at_rest,
+                   "The body is at rest (u = v = w = p = q = r = 0): a run whose velocity no file, sidecar or option "
+                   "gives is otherwise refused");
   command.add_flag(
       "--no-sidecar", args.no_sidecar,
       "Ignore sidecar files (FILE.json beside a file, hydrocoef-run.json in its folder and the folders above)");
@@ -112,6 +115,7 @@ SettingsLayer command_line_settings(const SurfaceArgs& args) {
     (void)parse_given_uncertainty(text, "--uncertainty");  // refused here, naming the option
     layer.set("uncertainty", text, "--uncertainty");
   }
+  if (args.at_rest) layer.set("at_rest", std::string("yes"), "--at-rest");
   for (const auto& text : args.set) {
     const auto [name, value] = parse_assignment(text, "--set");
     if (velocity_index(name)) {

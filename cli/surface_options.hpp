@@ -39,6 +39,7 @@ struct SurfaceArgs {
   std::vector<std::string> set;
   std::vector<std::string> uncertainty;  ///< "X=0.01", "N=2%"
   bool no_sidecar = false;
+  bool at_rest = false;  ///< the body is at rest: no velocity setting is expected
 };
 
 /// Adds the surface options to a command.

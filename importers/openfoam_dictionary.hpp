@@ -43,6 +43,8 @@ class FoamDictionary {
 
   const FoamValue* value(std::string_view key) const;
   const FoamDictionary* dictionary(std::string_view key) const;
+  /// The primitive entries by key (quoted keys keep their quotes).
+  const std::map<std::string, FoamValue, std::less<>>& values() const { return values_; }
   /// Keys of the sub-dictionaries, in file order.
   const std::vector<std::string>& dictionary_keys() const { return dictionary_order_; }
   /// The #includeEtc and #includeFunc directives met (their arguments).

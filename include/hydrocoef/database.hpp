@@ -78,8 +78,9 @@ struct ImportOptions {
   /// precedence over every other source (as the CLI's options do): keys
   /// body, u v w p q r, flow, disturbances, rho, nu, p_ref, ref_point, cofr,
   /// axes, origin, pressure, shear, pressure_kind, shear_convention,
-  /// length_unit, pressure_unit, normals, locations, window, symmetry, sign
-  /// (see the README). Each value is JSON ("998.2", "[0, 0, 0.1]",
+  /// length_unit, pressure_unit, normals, locations, window, symmetry, sign,
+  /// at_rest ("true": the body is at rest; a run whose velocity nothing gives
+  /// is otherwise refused) (see the README). Each value is JSON ("998.2", "[0, 0, 0.1]",
   /// "{\"current_v\": 0.05}"), or a plain text when it is not JSON
   /// ("-x,y,-z", "opposing"); quote a text that would read as JSON ("\"1\"").
   std::map<std::string, std::string> settings;

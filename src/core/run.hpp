@@ -92,17 +92,31 @@ struct ComponentStatistics {
   double effective_samples = 0.0;  ///< window samples / integrated autocorrelation time
 };
 
-/// How a run's forces were averaged from a force history.
+/// The samples of a force history one component's value comes from.
+struct ComponentWindow {
+  std::string method;  ///< e.g. "MSER-5 (White 1997)", "range 601:1000", "final iterate"
+  double first = 0.0;  ///< abscissa of the first and last sample used
+  double last = 0.0;
+  std::size_t samples = 0;
+  /// Convergence flags of this component: "no-steady-window", "drifting",
+  /// "too-few-effective-samples", "uneven-sampling"; empty when there is
+  /// nothing to act on.
+  std::vector<std::string> flags;
+};
+
+/// How a run's forces were obtained from a force history.
 struct RunStatistics {
-  std::string abscissa;       ///< "time" [s] or "iteration"
-  std::string window_method;  ///< e.g. "MSER-5 (White 1997)", "range 601:1000", "last 100 samples"
-  double window_first = 0.0;  ///< abscissa of the first and last sample averaged
-  double window_last = 0.0;
-  std::size_t samples = 0;  ///< samples averaged
-  /// Convergence flags of the run: "no-steady-window", "drifting",
-  /// "too-few-effective-samples", "uneven-sampling"; empty when converged.
+  std::string abscissa;  ///< "time" [s] or "iteration"
+  /// The run's convergence kind: "converged" (final iterate, standard error
+  /// = iterative error), "steady-window", "transient-window", "given-window"
+  /// (means over windows); src/history/history_analysis.hpp.
+  std::string convergence;
+  /// Why, with the files and lines of the evidence.
+  std::string convergence_reason;
+  /// The union of the components' flags.
   std::vector<std::string> flags;
   std::array<std::optional<ComponentStatistics>, 6> components;  ///< X..N
+  std::array<ComponentWindow, 6> windows;                        ///< X..N, where components are
 };
 
 /// One run as an importer produced it.

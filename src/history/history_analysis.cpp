@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <span>
 #include <string>
 
@@ -46,6 +47,97 @@ std::vector<std::string> flag_names(const HistoryFlags& flags) {
   return names;
 }
 
+std::string_view convergence_name(RunConvergence kind) {
+  switch (kind) {
+    case RunConvergence::Converged: return "converged";
+    case RunConvergence::SteadyWindow: return "steady-window";
+    case RunConvergence::TransientWindow: return "transient-window";
+    case RunConvergence::GivenWindow: return "given-window";
+  }
+  return "given-window";
+}
+
+namespace {
+
+bool is_moment(HistoryComponent c) { return static_cast<std::size_t>(c) >= 3; }
+
+/// Components that are zero to round-off: every value over the record's last
+/// quarter at most kNegligibleFraction of the largest force there (moments:
+/// of that force times 1 m).
+std::array<bool, kHistoryComponents> negligible_components(const ForceHistory& history) {
+  const std::size_t n = history.size();
+  const std::size_t from = n - std::max<std::size_t>(1, n / 4);
+  std::array<double, kHistoryComponents> largest{};
+  double force_scale = 0.0;
+  for (const HistoryComponent c : kAllHistoryComponents) {
+    if (!history.has(ForcePart::Total, c)) continue;
+    const auto& x = history.values(ForcePart::Total, c);
+    for (std::size_t i = from; i < n; ++i)
+      largest[static_cast<std::size_t>(c)] = std::max(largest[static_cast<std::size_t>(c)], std::abs(x[i]));
+    if (!is_moment(c)) force_scale = std::max(force_scale, largest[static_cast<std::size_t>(c)]);
+  }
+  std::array<bool, kHistoryComponents> out{};
+  if (!(force_scale > 0.0)) return out;
+  for (const HistoryComponent c : kAllHistoryComponents)
+    out[static_cast<std::size_t>(c)] =
+        history.has(ForcePart::Total, c) && largest[static_cast<std::size_t>(c)] <= kNegligibleFraction * force_scale;
+  return out;
+}
+
+/// The statistics that describe a final iterate and its iterative error.
+SeriesStatistics final_iterate_statistics(const IterativeError& e) {
+  SeriesStatistics s;
+  s.count = 1;
+  s.mean = e.value;
+  s.std_dev = e.fluctuation;
+  s.standard_error = e.standard_uncertainty;
+  s.effective_samples = 1.0;
+  s.drift_slope = e.change_per_iteration;
+  s.drift = e.change_per_iteration;
+  s.constant = e.standard_uncertainty == 0.0;
+  return s;
+}
+
+/// Whether the evidence says the run converged at the record's end.
+bool converged_at_end(const ForceHistory& history, const std::optional<ConvergenceEvidence>& evidence) {
+  return evidence && evidence->solver != SolverKind::Transient && evidence->criteria_met_at &&
+         history.abscissa == HistoryAbscissa::Iteration &&
+         std::abs(*evidence->criteria_met_at - history.abscissa_values.back()) < 0.5;
+}
+
+std::string evidence_reason(const ForceHistory& history, const std::optional<ConvergenceEvidence>& evidence,
+                            RunConvergence kind) {
+  std::string solver;
+  if (evidence && evidence->solver != SolverKind::Unknown)
+    solver = std::string(evidence->solver == SolverKind::Steady ? "steady" : "transient") + " solver (" +
+             evidence->solver_source + ")";
+  switch (kind) {
+    case RunConvergence::Converged:
+      return "the convergence criteria (" + evidence->criteria_source + ") hold at the last iteration, " +
+             number(history.abscissa_values.back()) + " (" + evidence->residuals_source + ")" +
+             (solver.empty() ? std::string() : "; " + solver);
+    case RunConvergence::GivenWindow: return "the window was given";
+    case RunConvergence::TransientWindow:
+      return solver.empty() ? "a record over time: averaged over its statistically steady window"
+                            : solver + ": averaged over the statistically steady window of each component";
+    case RunConvergence::SteadyWindow: break;
+  }
+  if (evidence && evidence->criteria_stated && !evidence->criteria_missed.empty())
+    return "the convergence criteria (" + evidence->criteria_source +
+           ") are not met at the last iteration: " + evidence->criteria_missed +
+           (evidence->residuals_source.empty() ? "" : " (" + evidence->residuals_source + ")") +
+           "; averaged over the statistically steady window of each component";
+  if (evidence && evidence->criteria_stated)
+    return "the convergence criteria (" + evidence->criteria_source +
+           ") cannot be checked: no residuals of the run were found (OpenFOAM: the solverInfo function object); "
+           "averaged over the statistically steady window of each component";
+  return std::string(solver.empty() ? "no solver files state convergence criteria"
+                                    : solver + " with no convergence criteria stated") +
+         ": averaged over the statistically steady window of each component";
+}
+
+}  // namespace
+
 HistoryAnalysis analyze_force_history(const ForceHistory& history, const HistoryAnalysisOptions& options) {
   check_force_history(history);
   const std::size_t n = history.size();
@@ -64,105 +156,182 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
   }
   if (!any_total || n == 0)
     throw InputError("the force history has no total force or moment component; expected at least one");
+  const auto negligible = negligible_components(history);
+  for (const HistoryComponent c : kAllHistoryComponents)
+    analysis.components[static_cast<std::size_t>(c)].negligible = negligible[static_cast<std::size_t>(c)];
   const auto deciding = [&](HistoryComponent c) {
-    return analysis.components[static_cast<std::size_t>(c)].present &&
-           options.deciding_components[static_cast<std::size_t>(c)];
+    const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
+    return component.present && !component.negligible && options.deciding_components[static_cast<std::size_t>(c)];
   };
 
-  // The window.
-  std::size_t first = 0;
-  std::size_t count = 0;  // set by every case below
+  // The kind of run, and the window of each component.
+  if (options.window.kind != HistoryWindow::Kind::Automatic)
+    analysis.convergence = RunConvergence::GivenWindow;
+  else if (converged_at_end(history, options.evidence))
+    analysis.convergence = RunConvergence::Converged;
+  else if (history.abscissa == HistoryAbscissa::Time ||
+           (options.evidence && options.evidence->solver == SolverKind::Transient))
+    analysis.convergence = RunConvergence::TransientWindow;
+  else
+    analysis.convergence = RunConvergence::SteadyWindow;
+  analysis.convergence_reason = evidence_reason(history, options.evidence, analysis.convergence);
+
+  std::size_t given_first = 0;
+  std::size_t given_count = 0;
   switch (options.window.kind) {
-    case HistoryWindow::Kind::Automatic: {
-      analysis.window_method = "MSER-" + std::to_string(options.mser_batch_size) + " (White 1997), latest component";
-      for (const HistoryComponent c : kAllHistoryComponents) {
-        if (!deciding(c)) continue;
-        const MserResult& mser = analysis.components[static_cast<std::size_t>(c)].mser;
-        if (!analysis.window_set_by || mser.truncation > first) {
-          first = mser.truncation;
-          analysis.window_set_by = c;
-        }
-      }
-      count = n - first;
+    case HistoryWindow::Kind::Automatic:
+      analysis.window_method = analysis.convergence == RunConvergence::Converged
+                                   ? std::string("final iterate")
+                                   : "MSER-" + std::to_string(options.mser_batch_size) + " (White 1997) per component";
       break;
-    }
     case HistoryWindow::Kind::Range: {
       const double t0 = options.window.first;
       const double t1 = options.window.last;
       const auto& t = history.abscissa_values;
       const auto begin = std::lower_bound(t.begin(), t.end(), t0);
       const auto end = std::upper_bound(t.begin(), t.end(), t1);
-      first = static_cast<std::size_t>(begin - t.begin());
-      count = end > begin ? static_cast<std::size_t>(end - begin) : 0;
+      given_first = static_cast<std::size_t>(begin - t.begin());
+      given_count = end > begin ? static_cast<std::size_t>(end - begin) : 0;
       analysis.window_method = "range " + (std::isfinite(t0) ? number(t0) : std::string()) + ":" +
                                (std::isfinite(t1) ? number(t1) : std::string());
-      if (count < 2)
-        throw InputError("the window " + analysis.window_method + " holds " + std::to_string(count) + " sample" +
-                         (count == 1 ? "" : "s") + " of the history (" + span_text(history) + "); expected at least 2");
+      if (given_count < 2)
+        throw InputError("the window " + analysis.window_method + " holds " + std::to_string(given_count) + " sample" +
+                         (given_count == 1 ? "" : "s") + " of the history (" + span_text(history) +
+                         "); expected at least 2");
       break;
     }
     case HistoryWindow::Kind::Last: {
-      count = options.window.count;
-      analysis.window_method = "last " + std::to_string(count) + " samples";
-      if (count < 2 || count > n)
-        throw InputError("the window of the last " + std::to_string(count) + " samples does not fit the history (" +
-                         span_text(history) + "); expected 2 to " + std::to_string(n));
-      first = n - count;
+      given_count = options.window.count;
+      analysis.window_method = "last " + std::to_string(given_count) + " samples";
+      if (given_count < 2 || given_count > n)
+        throw InputError("the window of the last " + std::to_string(given_count) +
+                         " samples does not fit the history (" + span_text(history) + "); expected 2 to " +
+                         std::to_string(n));
+      given_first = n - given_count;
       break;
     }
   }
-  analysis.first_sample = first;
-  analysis.sample_count = count;
-  analysis.first_abscissa = history.abscissa_values[first];
-  analysis.last_abscissa = history.abscissa_values[first + count - 1];
-  const std::span<const double> t(history.abscissa_values.data() + first, count);
 
-  // Steps of the abscissa in the window.
-  bool uneven = false;
-  if (count >= 3) {
-    double low = t[1] - t[0];
-    double high = low;
-    for (std::size_t i = 2; i < count; ++i) {
-      const double step = t[i] - t[i - 1];
-      low = std::min(low, step);
-      high = std::max(high, step);
-    }
-    const double mean_step = (t[count - 1] - t[0]) / static_cast<double>(count - 1);
-    uneven = (high - low) > options.uneven_step_tolerance * mean_step;
-  }
-
+  const bool converged = analysis.convergence == RunConvergence::Converged;
   for (const HistoryComponent c : kAllHistoryComponents) {
     ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
     if (!component.present) continue;
+    if (converged) {
+      component.first_sample = n - 1;
+      component.sample_count = 1;
+      component.window_method = "final iterate";
+    } else if (options.window.kind == HistoryWindow::Kind::Automatic) {
+      component.first_sample = component.mser.truncation;
+      component.sample_count = n - component.first_sample;
+      component.window_method = "MSER-" + std::to_string(options.mser_batch_size) + " (White 1997)";
+    } else {
+      component.first_sample = given_first;
+      component.sample_count = given_count;
+      component.window_method = analysis.window_method;
+    }
+    component.first_abscissa = history.abscissa_values[component.first_sample];
+    component.last_abscissa = history.abscissa_values[component.first_sample + component.sample_count - 1];
+  }
+
+  // The common window: the latest start among the deciding components.
+  bool have_common = false;
+  for (const HistoryComponent c : kAllHistoryComponents) {
+    const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
+    if (!deciding(c)) continue;
+    if (!have_common || component.first_sample > analysis.first_sample) {
+      analysis.first_sample = component.first_sample;
+      analysis.sample_count = component.sample_count;
+      if (options.window.kind == HistoryWindow::Kind::Automatic && !converged) analysis.window_set_by = c;
+      have_common = true;
+    }
+  }
+  if (!have_common) {  // every component negligible or left out: the widest window
+    analysis.first_sample = converged ? n - 1 : given_first;
+    analysis.sample_count = converged ? 1 : (given_count ? given_count : n);
+  }
+  analysis.first_abscissa = history.abscissa_values[analysis.first_sample];
+  analysis.last_abscissa = history.abscissa_values[analysis.first_sample + analysis.sample_count - 1];
+
+  const double rate = options.evidence ? options.evidence->residual_rate : std::numeric_limits<double>::quiet_NaN();
+  bool any_uneven = false;
+  for (const HistoryComponent c : kAllHistoryComponents) {
+    ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
+    if (!component.present) continue;
+    if (converged) {
+      for (const ForcePart part : kAllForceParts) {
+        if (!history.has(part, c)) continue;
+        const IterativeError e = iterative_error(history.values(part, c), rate);
+        component.parts[static_cast<std::size_t>(part)] = final_iterate_statistics(e);
+        if (part == ForcePart::Total) component.iterative = e;
+      }
+      continue;  // no flags: the solver's criteria held, the error is stated
+    }
+    const std::size_t first = component.first_sample;
+    const std::size_t count = component.sample_count;
+    const std::span<const double> t(history.abscissa_values.data() + first, count);
     for (const ForcePart part : kAllForceParts) {
       if (!history.has(part, c)) continue;
       const std::span<const double> values(history.values(part, c).data() + first, count);
       component.parts[static_cast<std::size_t>(part)] = series_statistics(values, t, options.statistics);
     }
+    // Steps of the abscissa in the window.
+    bool uneven = false;
+    if (count >= 3) {
+      double low = t[1] - t[0];
+      double high = low;
+      for (std::size_t i = 2; i < count; ++i) {
+        const double step = t[i] - t[i - 1];
+        low = std::min(low, step);
+        high = std::max(high, step);
+      }
+      const double mean_step = (t[count - 1] - t[0]) / static_cast<double>(count - 1);
+      uneven = (high - low) > options.uneven_step_tolerance * mean_step;
+    }
     const SeriesStatistics& total = component.total();
+    component.drift_exceeds_standard_error = std::abs(total.drift) > total.standard_error;
+    if (component.negligible) continue;  // zero to round-off: nothing to act on
     HistoryFlags& flags = component.flags;
     if (options.window.kind == HistoryWindow::Kind::Automatic)
       flags.no_steady_window = !component.mser.applicable || !component.mser.settled;
-    component.drift_exceeds_standard_error = std::abs(total.drift) > total.standard_error;
     flags.drifting = !total.constant && std::abs(total.drift) > options.drift_z * total.drift_standard_error;
     flags.too_few_effective_samples =
         !total.constant && (!total.autocorrelation_resolved || total.effective_samples < options.min_effective_samples);
     flags.uneven_sampling = uneven;
-    if (deciding(c)) analysis.flags.merge(flags);
+    if (deciding(c)) {
+      analysis.flags.merge(flags);
+      any_uneven = any_uneven || uneven;
+    }
   }
 
   // Notes for people.
   const auto name = [&](HistoryComponent c) { return std::string(component_name(c, history.frame.naming)); };
-  if (options.window.kind == HistoryWindow::Kind::Automatic) {
-    if (analysis.window_set_by)
-      analysis.notes.push_back("the window starts at " + abscissa_text(history.abscissa, analysis.first_abscissa) +
-                               " (" + sample_location(history, first, *analysis.window_set_by) + "), where MSER-" +
-                               std::to_string(options.mser_batch_size) + " ends the start-up of " +
-                               name(*analysis.window_set_by) + "; " + std::to_string(count) + " of " +
-                               std::to_string(n) + " samples kept");
+  std::string negligible_names;
+  for (const HistoryComponent c : kAllHistoryComponents)
+    if (analysis.components[static_cast<std::size_t>(c)].present &&
+        analysis.components[static_cast<std::size_t>(c)].negligible)
+      negligible_names += (negligible_names.empty() ? "" : ", ") + name(c);
+  if (!negligible_names.empty())
+    analysis.notes.push_back(negligible_names + " zero to round-off (at most " + number(kNegligibleFraction) +
+                             " of the largest force; moments per metre): no flags of their own");
+  if (converged) {
+    std::string errors;
     for (const HistoryComponent c : kAllHistoryComponents) {
       const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
-      if (!component.present || !component.flags.no_steady_window) continue;
+      if (!component.present || component.negligible) continue;
+      const IterativeError& e = *component.iterative;
+      errors += (errors.empty() ? "" : ", ") + name(c) + " " + number(e.value) + " +- " +
+                number(e.standard_uncertainty) +
+                (e.value != 0.0 ? " (" + number(100.0 * e.standard_uncertainty / std::abs(e.value)) + " %)" : "");
+    }
+    analysis.notes.push_back("converged: " + analysis.convergence_reason +
+                             "; the final iterate is stored with its iterative error" +
+                             (errors.empty() ? std::string() : ": " + errors));
+    return analysis;
+  }
+  if (options.window.kind == HistoryWindow::Kind::Automatic) {
+    for (const HistoryComponent c : kAllHistoryComponents) {
+      const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
+      if (!component.present || component.negligible || !component.flags.no_steady_window) continue;
       if (!component.mser.applicable)
         analysis.notes.push_back(name(c) + ": the record is too short to find a steady window (" + std::to_string(n) +
                                  " samples; MSER-" + std::to_string(options.mser_batch_size) + " needs at least " +
@@ -179,7 +348,7 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
     for (const HistoryComponent c : kAllHistoryComponents) {
       const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
       if (!component.present || !component.mser.applicable || !deciding(c)) continue;
-      if (first < component.mser.truncation)
+      if (given_first < component.mser.truncation)
         analysis.notes.push_back("the window starts before MSER-" + std::to_string(options.mser_batch_size) +
                                  " ends the start-up of " + name(c) + " (at " +
                                  abscissa_text(history.abscissa, history.abscissa_values[component.mser.truncation]) +
@@ -188,21 +357,21 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
   }
   for (const HistoryComponent c : kAllHistoryComponents) {
     const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
-    if (!component.present) continue;
+    if (!component.present || component.negligible) continue;
     const SeriesStatistics& total = component.total();
     if (component.flags.drifting)
-      analysis.notes.push_back(name(c) + " drifts by " + number(total.drift) + " across the window (" +
+      analysis.notes.push_back(name(c) + " drifts by " + number(total.drift) + " across its window (" +
                                number(std::abs(total.drift) / total.drift_standard_error) +
                                " times its standard error " + number(total.drift_standard_error) +
                                "; standard error of the mean " + number(total.standard_error) + ")");
     if (component.flags.too_few_effective_samples)
       analysis.notes.push_back(name(c) + ": " +
                                (total.autocorrelation_resolved
-                                    ? number(total.effective_samples) + " effective samples in the window"
-                                    : std::string("the autocorrelation time is longer than the window can resolve")) +
+                                    ? number(total.effective_samples) + " effective samples in its window"
+                                    : std::string("the autocorrelation time is longer than its window can resolve")) +
                                " (expected at least " + number(options.min_effective_samples) + ")");
   }
-  if (uneven)
+  if (any_uneven)
     analysis.notes.push_back(
         "the " + std::string(abscissa_name(history.abscissa)) +
         " steps in the window vary (adaptive time steps?): samples are averaged with equal weight");

@@ -1,15 +1,30 @@
-// A force history reduced to what a run stores: the window of the record that
-// is statistically steady, and per component its mean, spread, standard error
-// of the mean (corrected for autocorrelation), drift, and flags for a run that
-// has not converged.
+// A force history reduced to what a run stores: per force component, the
+// value and its uncertainty, how they were found (the run's convergence kind
+// and each component's window), and flags a user should act on.
 //
-// The window is either found (MSER-5 on each total component, see
-// steady_window.hpp; the window starts where the last component settles) or
-// given: an abscissa range T0:T1 (inclusive) or the last N samples. The
-// statistics of each part (total, pressure, viscous, porous) over the window
-// are those of statistics.hpp.
+// The run's convergence kind is decided from its evidence
+// (convergence_evidence.hpp) unless a window is given:
+// - converged: a steady run whose solver met the case's convergence criteria
+//   at the record's last iteration. Each component's value is the final
+//   iterate, its standard error the iterative error left in it
+//   (iterative_error.hpp). No flags: the solver said it converged and the
+//   uncertainty says by how much the value may still move.
+// - steady-window: a steady (iteration) record that did not meet criteria, or
+//   whose criteria are not known: it oscillates about a mean
+//   (pseudo-unsteady), and each component is averaged over its own
+//   statistically steady window (MSER-5 on that component, see
+//   steady_window.hpp) with the standard error corrected for
+//   autocorrelation (statistics.hpp).
+// - transient-window: the same over physical time, for a transient run.
+// - given-window: an abscissa range T0:T1 (inclusive) or the last N samples,
+//   for every component.
+// A component that is zero to round-off (a moment about the centre of a
+// symmetric body; at most kNegligibleFraction of the largest force, moments
+// per metre) gets its statistics but no flags, and sets nothing for the
+// others.
 //
-// Flags (per component, and for the run as the union over components):
+// Flags (per component; the run's are the union over its components that are
+// not negligible and are deciding):
 // - no_steady_window: a found window only: MSER-5's minimum lies in the
 //   second half of the record (the start-up has not ended, or the record is
 //   too short to tell: fewer than kMserMinBatches batches). The statistics are
@@ -28,7 +43,7 @@
 //   averaged with equal weight, not weighted by their time step.
 //
 // Cost: O(n) for MSER on every component plus the statistics of every part
-// over the window (each O(window) with the bounded constant of
+// over its window (each O(window) with the bounded constant of
 // statistics.hpp).
 #pragma once
 
@@ -39,7 +54,9 @@
 #include <string>
 #include <vector>
 
+#include "src/history/convergence_evidence.hpp"
 #include "src/history/force_history.hpp"
+#include "src/history/iterative_error.hpp"
 #include "src/history/statistics.hpp"
 #include "src/history/steady_window.hpp"
 
@@ -48,7 +65,7 @@ namespace hydrocoef {
 /// Which samples to average.
 struct HistoryWindow {
   enum class Kind {
-    Automatic,  ///< MSER-5 on each total component
+    Automatic,  ///< from the run's evidence: the final iterate, or MSER-5 on each component
     Range,      ///< first <= abscissa <= last
     Last,       ///< the last `count` samples
   };
@@ -76,7 +93,20 @@ struct HistoryAnalysisOptions {
   double min_effective_samples = 20.0;
   double drift_z = 3.0;
   double uneven_step_tolerance = 0.01;
+  /// What the solver's files say (none: the history alone decides, and a
+  /// steady run is never taken as converged without its solver's word).
+  std::optional<ConvergenceEvidence> evidence;
 };
+
+/// A component at most this fraction of the largest force component (a
+/// moment: of the largest force times 1 m) is zero to round-off.
+inline constexpr double kNegligibleFraction = 1e-5;
+
+/// How a run's values were obtained (stored with each component).
+enum class RunConvergence { Converged, SteadyWindow, TransientWindow, GivenWindow };
+
+/// "converged", "steady-window", "transient-window", "given-window".
+std::string_view convergence_name(RunConvergence kind);
 
 struct HistoryFlags {
   bool no_steady_window = false;
@@ -95,10 +125,23 @@ struct HistoryFlags {
 std::vector<std::string> flag_names(const HistoryFlags& flags);
 
 struct ComponentAnalysis {
-  bool present = false;  ///< the history has this component's total
+  bool present = false;     ///< the history has this component's total
+  bool negligible = false;  ///< zero to round-off: no flags, sets nothing
+  /// This component's window: samples [first_sample, first_sample +
+  /// sample_count); for a converged run the final iterate alone.
+  std::string window_method;
+  std::size_t first_sample = 0;
+  std::size_t sample_count = 0;
+  double first_abscissa = 0.0;
+  double last_abscissa = 0.0;
   /// Statistics of each part over the window, indexed by ForcePart; empty
-  /// where the history lacks the part.
+  /// where the history lacks the part. For a converged run: mean = the final
+  /// iterate, standard_error = its iterative error, std_dev = the
+  /// fluctuation about the tail's trend, drift = the change per iteration at
+  /// the end, count = effective_samples = 1.
   std::array<std::optional<SeriesStatistics>, kForceParts> parts;
+  /// A converged run: the total's iterative error.
+  std::optional<IterativeError> iterative;
   /// MSER-5 on this component's total over the whole record (for a given
   /// window too, for comparison).
   MserResult mser;
@@ -111,12 +154,18 @@ struct ComponentAnalysis {
 struct HistoryAnalysis {
   HistoryAbscissa abscissa = HistoryAbscissa::Time;
   HistoryWindow::Kind window_kind = HistoryWindow::Kind::Automatic;
-  std::string window_method;  ///< e.g. "MSER-5 (White 1997)", "range 601:1000", "last 100 samples"
+  RunConvergence convergence = RunConvergence::SteadyWindow;
+  /// Why: the evidence in words with its files and lines.
+  std::string convergence_reason;
+  std::string window_method;  ///< e.g. "MSER-5 (White 1997) per component", "range 601:1000", "final iterate"
+  /// The window every non-negligible deciding component's window contains
+  /// (the latest start among them): samples [first_sample, first_sample +
+  /// sample_count). Each component's own is in `components`.
   std::size_t first_sample = 0;
-  std::size_t sample_count = 0;  ///< the window is samples [first_sample, first_sample + sample_count)
+  std::size_t sample_count = 0;
   double first_abscissa = 0.0;
   double last_abscissa = 0.0;
-  /// For a found window: the component whose truncation started it.
+  /// For found windows: the component whose window starts latest.
   std::optional<HistoryComponent> window_set_by;
   std::array<ComponentAnalysis, kHistoryComponents> components;
   HistoryFlags flags;        ///< union over the present deciding components

@@ -28,6 +28,41 @@ std::string run_text(const StoredRun& run) {
 
 std::string key_text(const RunKey& key) { return "key " + escape::one_line(describe(key)); }
 
+/// Celik et al.'s premise for one component of a study: every value of a
+/// history converged (or is a transient's or a given window's mean) and its
+/// stated error is small against the change to the adjacent level(s).
+/// InputError naming the level, the run and what to do, unless
+/// allow_unconverged (then a note).
+void check_iterative_convergence(const RunKey& key, std::size_t c, const std::vector<Level>& levels,
+                                 const ComponentConvergence& component, const GridConvergenceRequest& request,
+                                 std::vector<std::string>& notes) {
+  const std::array<double, 2> change = {std::abs(component.phi[1] - component.phi[0]),
+                                        std::abs(component.phi[2] - component.phi[1])};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::string& kind = component.convergence[i];
+    if (kind == "no history") continue;
+    const double adjacent = i == 0 ? change[0] : i == 2 ? change[1] : std::min(change[0], change[1]);
+    std::string problem;
+    if (kind == "steady-window")
+      problem = "did not converge (a steady run's mean over a window)";
+    else if (kind == "not recorded")
+      problem = "has no recorded convergence kind (imported by an older hydrocoef: import it again)";
+    else if (component.iterative_error[i] > kMaxIterativeFraction * adjacent)
+      problem = "has an " + std::string(kind == "converged" ? "iterative" : "statistical") + " error of " +
+                shortest_number(component.iterative_error[i]) + ", more than " +
+                shortest_number(kMaxIterativeFraction) + " of the change " + shortest_number(adjacent) +
+                " to the adjacent mesh level";
+    if (problem.empty()) continue;
+    const std::string where = std::string(kForceNames[c]) + " at " + escape::one_line(request.mesh_parameter) + "=" +
+                              shortest_number(levels[i].level) + " (" + run_text(*levels[i].run) + ", " + kind + ")";
+    if (!request.allow_unconverged)
+      throw InputError(key_text(key) + ": " + where + " " + problem +
+                       "; expected converged values whose iterative error is small against the discretisation "
+                       "error (Celik et al. 2008): converge the runs further, or give --allow-unconverged");
+    notes.push_back(where + " " + problem + " (--allow-unconverged)");
+  }
+}
+
 /// The run's representative cell size, from cell_size or cells.
 std::pair<double, std::string> cell_size_of(const StoredRun& run, const GridConvergenceRequest& request) {
   const auto& d = run.key.disturbances;
@@ -143,6 +178,18 @@ GridConvergenceStudy grid_convergence_of_runs(Database& database, const GridConv
                           " left out)");
     }
     const std::array<double, 3> h = {levels[0].h, levels[1].h, levels[2].h};
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double r = h[i + 1] / h[i];
+      const std::string pair = escape::one_line(request.mesh_parameter) + "=" + shortest_number(levels[i].level) +
+                               " and " + shortest_number(levels[i + 1].level);
+      if (!(r >= kMinRefinementRatio))
+        throw InputError(key_text(key) + ": the refinement ratio of " + pair + " is " + shortest_number(r) +
+                         "; expected at least " + shortest_number(kMinRefinementRatio) +
+                         " (Celik et al. ask for more than 1.3): meshes that close cannot tell the order");
+      if (r <= 1.3)
+        out.notes.push_back("the refinement ratio of " + pair + " is " + shortest_number(r) +
+                            ", not above 1.3 as Celik et al. ask");
+    }
     for (std::size_t c = 0; c < 6; ++c) {
       std::size_t present = 0;
       for (std::size_t i = 0; i < 3; ++i) present += levels[i].run->tau_b[c] ? 1 : 0;
@@ -158,6 +205,14 @@ GridConvergenceStudy grid_convergence_of_runs(Database& database, const GridConv
         const StoredForce& force = *levels[i].run->tau_b[c];
         component.phi[i] = to_on_body(force.value.total, force.sign);
       }
+      for (std::size_t i = 0; i < 3; ++i) {
+        const StoredForce& force = *levels[i].run->tau_b[c];
+        component.convergence[i] = !force.statistics                       ? "no history"
+                                   : force.statistics->convergence.empty() ? "not recorded"
+                                                                           : force.statistics->convergence;
+        component.iterative_error[i] = force.statistics ? force.statistics->values.standard_error : 0.0;
+      }
+      check_iterative_convergence(key, c, levels, component, request, out.notes);
       component.result = grid_convergence_index(h, component.phi);
       const GciResult& r = component.result;
       const bool has_gci = r.convergence != GridConvergence::NotFound && std::isfinite(r.gci_fine) &&

@@ -31,6 +31,17 @@
 // k = 2 is the coverage factor of about 95 % of a normal distribution (GUM).
 // It is combined with the statistical and given uncertainties in quadrature
 // (StoredForce::standard_uncertainty).
+//
+// Celik et al.'s procedure assumes the values are converged solutions whose
+// iterative error is small against the discretisation error. Each value's
+// convergence kind is stated (src/history/history_analysis.hpp), and a study
+// is refused unless every value of a history converged ("converged") or is a
+// mean over a window chosen for a transient or given on purpose, and its
+// stated error (iterative error or standard error) is at most
+// kMaxIterativeFraction of the change to the adjacent mesh level(s): a
+// steady run averaged over a window did not converge. Values with no history
+// (tables, surfaces) are taken as they are, and said so. --allow-unconverged
+// runs such a study anyway, with a note on each component concerned.
 #pragma once
 
 #include <array>
@@ -47,6 +58,14 @@ namespace hydrocoef {
 
 /// The coverage factor that turns a GCI (about 95 %) into a standard uncertainty.
 inline constexpr double kGciCoverageFactor = 2.0;
+/// The largest iterative (or statistical) error of a value, as a fraction of
+/// the change between it and an adjacent mesh level's value.
+inline constexpr double kMaxIterativeFraction = 0.1;
+/// The smallest refinement ratio h_coarse / h_fine between adjacent levels
+/// (Celik et al. ask for more than 1.3; below this the difference of the
+/// values is mostly iterative and round-off error, and the order and the
+/// GCI come out at any size).
+inline constexpr double kMinRefinementRatio = 1.1;
 
 struct GridConvergenceRequest {
   std::string body;
@@ -54,6 +73,9 @@ struct GridConvergenceRequest {
   /// The domain's volume (m^D) for cell counts; 1 when not given.
   std::optional<double> volume;
   int dimension = 3;  ///< D of h = (V / N)^(1/D)
+  /// Run a study whose values did not converge (or whose iterative error is
+  /// not small against the mesh changes), with a note, instead of refusing it.
+  bool allow_unconverged = false;
 };
 
 /// One force component of one key's study.
@@ -62,6 +84,13 @@ struct ComponentConvergence {
   std::array<double, 3> phi{};  ///< fine to coarse, on the body (sign convention on-body)
   GciResult result;
   std::optional<double> numerical_uncertainty;  ///< GCI_fine |phi1| / k; empty when no GCI was found
+  /// Each value's convergence kind, fine to coarse ("converged",
+  /// "steady-window", "transient-window", "given-window"; "no history" for a
+  /// value from a table or surface; "not recorded" for one stored before
+  /// kinds were) and its stated error (iterative or standard error; 0 when
+  /// none).
+  std::array<std::string, 3> convergence;
+  std::array<double, 3> iterative_error{};
 };
 
 /// One physical key's mesh study.

@@ -23,6 +23,8 @@
 #include "src/core/version.hpp"
 #include "src/loads/symmetry.hpp"
 #include "src/pipeline/given_uncertainty.hpp"
+#include "src/pipeline/openfoam_case.hpp"
+#include "src/pipeline/openfoam_convergence.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -373,10 +375,8 @@ ImportedRun run_from_history(const ForceHistory& history, const HistoryAnalysis&
   ImportedRun run;
   RunStatistics statistics;
   statistics.abscissa = std::string(abscissa_name(analysis.abscissa));
-  statistics.window_method = analysis.window_method;
-  statistics.window_first = analysis.first_abscissa;
-  statistics.window_last = analysis.last_abscissa;
-  statistics.samples = analysis.sample_count;
+  statistics.convergence = std::string(convergence_name(analysis.convergence));
+  statistics.convergence_reason = analysis.convergence_reason;
   statistics.flags = flag_names(analysis.flags);
   for (std::size_t c = 0; c < 6; ++c) {
     const auto& component = analysis.components[c];
@@ -389,6 +389,8 @@ ImportedRun run_from_history(const ForceHistory& history, const HistoryAnalysis&
     run.tau_b[c] = force;
     statistics.components[c] =
         ComponentStatistics{total.standard_error, total.std_dev, total.drift, total.effective_samples};
+    statistics.windows[c] = ComponentWindow{component.window_method, component.first_abscissa, component.last_abscissa,
+                                            component.sample_count, flag_names(component.flags)};
   }
   (void)history;
   run.statistics = std::move(statistics);
@@ -441,11 +443,29 @@ BodyHistory body_history_of(const PlannedInput& input, const std::string& format
   return out;
 }
 
+/// The OpenFOAM case folder a force input belongs to: the input itself for a
+/// case folder, else the folder above its postProcessing/ that has a
+/// system/ folder; empty when there is none.
+fs::path case_of_forces(const fs::path& input, const std::string& format) {
+  if (format == "openfoam-case") return input;
+  std::error_code ec;
+  fs::path at = input.lexically_normal();
+  for (int up = 0; up < 6 && !at.empty() && at != at.parent_path(); ++up, at = at.parent_path())
+    if (at.filename() == "postProcessing") {
+      const fs::path case_dir = at.has_parent_path() ? at.parent_path() : fs::path(".");
+      return fs::is_directory(case_dir / "system", ec) ? case_dir : fs::path();
+    }
+  return {};
+}
+
 ImportedInput read_history(const PlannedInput& input, const std::string& format, RunSettings settings,
                            const ImportRequest& request) {
   ImportedInput out;
   out.input = input;
   out.format = format;
+  if (request.require_velocity)
+    require_velocity(settings, input.path.string(),
+                     format == "openfoam-case" ? openfoam_free_stream_search(input.path) : std::string());
   BodyHistory read = body_history_of(input, format, std::move(settings), request);
   out.notes = std::move(read.notes);
   settings = std::move(read.settings);
@@ -454,11 +474,16 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   Provenance& provenance = read.provenance;
   HistoryAnalysisOptions analysis_options;
   analysis_options.window = window_of(settings);
+  if (format == "openfoam-case" || format == "openfoam-forces")
+    if (const fs::path case_dir = case_of_forces(input.path, format);
+        !case_dir.empty() && !body.abscissa_values.empty())
+      analysis_options.evidence = openfoam_convergence_evidence(case_dir, body.abscissa_values.back(), out.notes);
   // --average-last N on a monitor is the window of its last N iterations.
   if (format == "monitor" && request.columns.average_last > 1 && !settings.find("window"))
     analysis_options.window = HistoryWindow::last_samples(request.columns.average_last);
+  // The analysis' own notes (windows, flags, iterative errors) stay with the
+  // input (out.history); store_import sums them up by kind over all inputs.
   const HistoryAnalysis analysis = analyze_force_history(body, analysis_options);
-  for (const auto& note : analysis.notes) out.notes.push_back(note);
   ImportedRun run = run_from_history(body, analysis);
   run.key = read.key;
   check_flow_speed(settings, run.key, input.path, out.notes);
@@ -524,6 +549,7 @@ ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& 
   check_flow_speed(settings, key, input.path, out.notes);
   const Vec3 reference_b = resolve_reference_point(settings, frame);
   if (format == "cfdpost" || format == "vtk") {
+    if (request.require_velocity) require_velocity(settings, input.path.string(), std::string());
     settings_not_applicable(settings, {"window", "sign"}, "a surface export", out.notes);
     SurfaceRunOptions options = surface_options(settings, format, frame, key, reference_b);
     out.surface = import_surface_run(input.path, options);
@@ -605,6 +631,58 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 }  // namespace
 
+namespace {
+
+/// One line per kind of convergence and per kind of flag over the inputs'
+/// force histories (not one note per run and component): what a user should
+/// act on, and where to look.
+std::vector<std::string> history_summary(const std::vector<ImportedInput>& inputs) {
+  std::map<std::string, std::size_t> kinds;
+  std::map<std::string, std::map<std::string, std::size_t>> flagged;  // flag -> component -> runs
+  std::map<std::string, std::size_t> negligible;                      // component -> runs
+  std::size_t histories = 0;
+  for (const auto& input : inputs) {
+    if (!input.history) continue;
+    ++histories;
+    const HistoryAnalysis& a = *input.history;
+    ++kinds[std::string(convergence_name(a.convergence))];
+    for (std::size_t c = 0; c < kHistoryComponents; ++c) {
+      const ComponentAnalysis& component = a.components[c];
+      if (!component.present) continue;
+      const std::string name = std::string(kForceNames[c]);
+      if (component.negligible) ++negligible[name];
+      for (const auto& flag : flag_names(component.flags)) ++flagged[flag][name];
+    }
+  }
+  std::vector<std::string> out;
+  if (histories == 0) return out;
+  std::string line = "force histories: ";
+  bool first = true;
+  for (const auto& [kind, count] : kinds) {
+    line += (first ? "" : ", ") + std::to_string(count) + " " + kind;
+    first = false;
+  }
+  if (kinds.count("converged")) line += " (converged: the final iterate, with its iterative error as standard error)";
+  out.push_back(line + "; 'runs show ID' says why, with the files");
+  if (!negligible.empty()) {
+    std::string names;
+    for (const auto& [name, count] : negligible)
+      names += (names.empty() ? "" : ", ") + name + " of " + std::to_string(count);
+    out.push_back("zero to round-off, never flagged: " + names + " run(s)");
+  }
+  for (const auto& [flag, components] : flagged) {
+    std::string where;
+    for (const auto& [name, count] : components)
+      where += (where.empty() ? "" : ", ") + name + " of " + std::to_string(count);
+    out.push_back(flag + ": " + where +
+                  " run(s); 'runs show ID' gives the windows and the import's --json the "
+                  "details");
+  }
+  return out;
+}
+
+}  // namespace
+
 ImportResult read_import(const ImportRequest& request) {
   ImportResult result;
   auto start = std::chrono::steady_clock::now();
@@ -631,6 +709,7 @@ void store_import(Database& database, ImportResult& result, const ImportOptions&
   for (const auto& note : result.plan.notes) add_note(note);
   for (const auto& input : result.inputs)
     for (const auto& note : input.notes) add_note(note);
+  for (const auto& note : history_summary(result.inputs)) add_note(note);
   result.runs = result.runs_created = result.runs_extended = result.already_imported = result.replaced = 0;
   for (std::size_t i = 0; i < result.outcomes.size(); ++i) {
     const auto& outcome = result.outcomes[i];

@@ -62,6 +62,9 @@ struct ImportRequest {
   std::string format = "auto";  ///< auto, table, monitor, cfdpost, vtk, history
   ColumnOptions columns;
   std::string default_body = "vehicle";
+  /// Refuse a history or surface input whose velocity no setting gives
+  /// (require_velocity); `integrate`, which stores nothing, reads without.
+  bool require_velocity = true;
   unsigned jobs = 0;  ///< 0: every core
   /// Called after each input is read (from the reading threads, one at a
   /// time): inputs done, inputs in all, the input's path.

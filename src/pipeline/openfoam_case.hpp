@@ -21,13 +21,22 @@ struct OpenFoamCaseSettings {
 };
 
 /// Reads the case's dictionaries. The free stream is the `freestreamValue`
-/// of a freestreamVelocity or freestream patch of 0/U, else the value of an
-/// inlet patch (fixedValue `value`, inletOutlet `inletValue`, a patch whose
-/// name contains "inlet"); two patches that state different free streams are
-/// refused. rho is the forces function object's rhoInf when its rho is
+/// of a freestreamVelocity or freestream patch, else the inflow of a patch
+/// of any name by its boundary-condition type: fixedValue `value`,
+/// inletOutlet `inletValue`, uniformFixedValue `uniformValue`, when it is a
+/// uniform vector that is not zero (a zero one is a wall or an outlet); two
+/// patches that state different inflows are refused. The velocity file is
+/// the first of 0/U, 0/U.orig, 0/U.0, 0.orig/U, 0.orig/U.orig that states a
+/// free stream. The forceCoeffs function object's magUInf along dragDir
+/// gives it where no file does (magUInf alone: the speed, `flow_speed`), and
+/// must agree with a file's (refused naming both otherwise). rho is the forces function object's rhoInf when its rho is
 /// rhoInf; cofr its CofR (or origin). Missing files give no setting.
 /// InputError (file and line) for a dictionary that cannot be read or a
 /// value that is not what its keyword needs.
 OpenFoamCaseSettings openfoam_case_settings(const std::filesystem::path& case_dir);
+
+/// Where openfoam_case_settings looked for the free stream and why each place
+/// gave none, for the message that refuses a run without a velocity.
+std::string openfoam_free_stream_search(const std::filesystem::path& case_dir);
 
 }  // namespace hydrocoef

@@ -114,7 +114,8 @@ const std::vector<std::string>& sidecar_keys() {
                                                 "window",
                                                 "symmetry",
                                                 "sign",
-                                                "uncertainty"};
+                                                "uncertainty",
+                                                "at_rest"};
   return keys;
 }
 
@@ -236,6 +237,22 @@ RunKey resolve_key(const RunSettings& settings, const FrameTransform& frame, con
   return key;
 }
 
+void require_velocity(const RunSettings& settings, const std::string& file, const std::string& looked) {
+  const Setting* velocity = settings.find("flow");
+  for (std::size_t i = 0; i < 6 && !velocity; ++i) velocity = settings.find(kVelocityNames[i]);
+  const Setting* at_rest = settings.find("at_rest");
+  if (velocity && at_rest)
+    throw InputError(SourceLocation{file}, where_text(*at_rest) + " says the body is at rest and " +
+                                               where_text(*velocity) + " gives its velocity; expected one of them");
+  if (velocity || at_rest || settings.find("flow_speed")) return;
+  throw InputError(SourceLocation{file},
+                   "no body velocity found (" +
+                       (looked.empty() ? std::string("no file of this kind states it") : looked) +
+                       "); expected it from --flow U,V,W (the free stream, CFD axes), --set u=... (body axes), a "
+                       "sidecar FILE.json {\"u\": ...}, a manifest row or --key-from-name, or --at-rest for a body "
+                       "at rest");
+}
+
 Vec3 resolve_reference_point(const RunSettings& settings, const FrameTransform& frame) {
   if (const auto point = settings.triple("ref_point")) return *point;
   if (const auto cofr = settings.triple("cofr")) return frame.point_to_body(*cofr);
@@ -267,6 +284,12 @@ SettingsLayer settings_from_json(const nlohmann::json& object, SettingOrigin ori
     switch (kind_of(key)) {
       case Kind::Number: layer.set(key, finite_number(value, where, key)); break;
       case Kind::Text: {
+        if (key == "at_rest") {  // true, as JSON says yes
+          if (!value.is_boolean() || !value.get<bool>())
+            throw InputError(where, "key 'at_rest': expected true (leave it out when the body moves)");
+          layer.set(key, std::string("yes"));
+          break;
+        }
         std::string text = json_text(value, where, key);
         if (key == "body") check_name(NameKind::Body, text, where, "key 'body'");
         layer.set(key, std::move(text));

@@ -115,6 +115,14 @@ FrameTransform resolve_frame(const RunSettings& settings);
 /// both flow and u, v or w are stated by the same layer.
 RunKey resolve_key(const RunSettings& settings, const FrameTransform& frame, const std::string& default_body);
 
+/// A run's velocity is never a default: InputError naming `file` when no
+/// setting gives it (flow, u..r, or a flow_speed whose direction
+/// check_flow_speed asks for) and the settings do not say the body is at
+/// rest (`at_rest`, from --at-rest or a sidecar's "at_rest": true), or when
+/// both are said. `looked`: where the input's own files were searched, in
+/// words.
+void require_velocity(const RunSettings& settings, const std::string& file, const std::string& looked);
+
 /// The moment reference point in body axes: `ref_point`, else the solver's
 /// `cofr` brought into body axes, else the body origin.
 Vec3 resolve_reference_point(const RunSettings& settings, const FrameTransform& frame);

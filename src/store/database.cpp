@@ -477,9 +477,11 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
         drop_statistics.bind(1, run_id).bind(2, force_name(i)).run();
         if (run.statistics && run.statistics->components[i]) {
           const RunStatistics& statistics = *run.statistics;
-          rows.write_statistics(run_id, i, statistics.abscissa, statistics.window_method, statistics.window_first,
-                                statistics.window_last, statistics.samples, statistics.flags,
-                                *statistics.components[i]);
+          const ComponentWindow& window = statistics.windows[i];
+          rows.write_statistics(run_id, i,
+                                StoredStatistics{statistics.abscissa, window.method, window.first, window.last,
+                                                 window.samples, window.flags, *statistics.components[i],
+                                                 statistics.convergence, statistics.convergence_reason});
         }
         ++outcome.components_written;
         extended = true;
@@ -554,7 +556,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   }
   auto statistics = connection_.prepare(
       "SELECT run_id, component, abscissa, window_method, window_first, window_last, samples, flags, standard_error, "
-      "spread, drift, effective_samples FROM run_force_statistics");
+      "spread, drift, effective_samples, convergence, convergence_reason FROM run_force_statistics");
   while (statistics.step()) {
     const auto found = index.find(statistics.get_int(0));
     if (found == index.end()) continue;
@@ -583,6 +585,8 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     stored.values.spread = row.non_negative(9);
     stored.values.drift = row.real(10);
     stored.values.effective_samples = row.non_negative(11);
+    stored.convergence = row.one_of(12, {"", "converged", "steady-window", "transient-window", "given-window"});
+    stored.convergence_reason = row.text(13, 4096);
     force->statistics = std::move(stored);
   }
   auto surfaces = connection_.prepare(

@@ -30,8 +30,13 @@ struct StoredStatistics {
   double window_first = 0.0;  ///< abscissa of the first and last averaged sample
   double window_last = 0.0;
   std::size_t samples = 0;
-  std::vector<std::string> flags;  ///< empty when the history converged
+  std::vector<std::string> flags;  ///< this component's; empty when there is nothing to act on
   ComponentStatistics values;      ///< standard error, spread, drift, effective samples
+  /// The run's convergence kind ("converged", "steady-window",
+  /// "transient-window", "given-window"; "" when stored before it was
+  /// recorded) and why (src/core/run.hpp RunStatistics).
+  std::string convergence;
+  std::string convergence_reason;
 };
 
 struct StoredForce {

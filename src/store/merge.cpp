@@ -212,9 +212,7 @@ MergeOutcome Database::merge_one(Database& shard) {
       rows.write_force(here, i, force->value, force->sign, mapped_source(force->source_id), force->source_line,
                        import_id);
       if (force->statistics) {
-        const StoredStatistics& s = *force->statistics;
-        rows.write_statistics(here, i, s.abscissa, s.window_method, s.window_first, s.window_last, s.samples, s.flags,
-                              s.values);
+        rows.write_statistics(here, i, *force->statistics);
       }
       ++outcome.components;
       extended = true;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "src/core/sign_convention.hpp"
+#include "src/store/database.hpp"
 
 namespace hydrocoef::store {
 
@@ -26,8 +27,9 @@ RunRows::RunRows(Connection& connection)
           "source_line = excluded.source_line, import_id = excluded.import_id, uncertainty = excluded.uncertainty")),
       statistics_(connection.prepare(
           "INSERT INTO run_force_statistics(run_id, component, abscissa, window_method, window_first, window_last, "
-          "samples, flags, standard_error, spread, drift, effective_samples) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-          "?)")),
+          "samples, flags, standard_error, spread, drift, effective_samples, convergence, convergence_reason) VALUES "
+          "(?, "
+          "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")),
       surface_(connection.prepare(
           "INSERT INTO run_surface(run_id, source_id, faces, area, signed_volume, closed, boundary_edges, "
           "degenerate_faces, normals_flipped, n_dA_x, n_dA_y, n_dA_z, x_cross_n_dA_x, x_cross_n_dA_y, "
@@ -96,24 +98,23 @@ void RunRows::write_force(std::int64_t run_id, std::size_t component, const Forc
   force_.bind(10, value.uncertainty).run();
 }
 
-void RunRows::write_statistics(std::int64_t run_id, std::size_t component, const std::string& abscissa,
-                               const std::string& window_method, double window_first, double window_last,
-                               std::size_t samples, const std::vector<std::string>& flags,
-                               const ComponentStatistics& values) {
+void RunRows::write_statistics(std::int64_t run_id, std::size_t component, const StoredStatistics& s) {
   std::string flag_list;
-  for (const auto& flag : flags) flag_list += (flag_list.empty() ? "" : ",") + flag;
+  for (const auto& flag : s.flags) flag_list += (flag_list.empty() ? "" : ",") + flag;
   statistics_.bind(1, run_id)
       .bind(2, std::string(kForceNames[component]))
-      .bind(3, abscissa)
-      .bind(4, window_method)
-      .bind(5, window_first)
-      .bind(6, window_last)
-      .bind(7, static_cast<std::int64_t>(samples))
+      .bind(3, s.abscissa)
+      .bind(4, s.window_method)
+      .bind(5, s.window_first)
+      .bind(6, s.window_last)
+      .bind(7, static_cast<std::int64_t>(s.samples))
       .bind(8, flag_list)
-      .bind(9, values.standard_error)
-      .bind(10, values.spread)
-      .bind(11, values.drift)
-      .bind(12, values.effective_samples)
+      .bind(9, s.values.standard_error)
+      .bind(10, s.values.spread)
+      .bind(11, s.values.drift)
+      .bind(12, s.values.effective_samples)
+      .bind(13, s.convergence)
+      .bind(14, s.convergence_reason)
       .run();
 }
 

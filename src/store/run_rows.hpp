@@ -14,6 +14,10 @@
 #include "src/core/run.hpp"
 #include "src/store/connection.hpp"
 
+namespace hydrocoef {
+struct StoredStatistics;  // src/store/database.hpp
+}  // namespace hydrocoef
+
 namespace hydrocoef::store {
 
 /// -0 stored as 0, so that a key is one row whatever the sign of its zeros.
@@ -38,9 +42,7 @@ class RunRows {
   void write_force(std::int64_t run_id, std::size_t component, const ForceComponent& value, SignConvention sign,
                    std::int64_t source_id, std::size_t source_line, std::optional<std::int64_t> import_id);
   /// The statistics of a component that is a mean over a force history.
-  void write_statistics(std::int64_t run_id, std::size_t component, const std::string& abscissa,
-                        const std::string& window_method, double window_first, double window_last, std::size_t samples,
-                        const std::vector<std::string>& flags, const ComponentStatistics& values);
+  void write_statistics(std::int64_t run_id, std::size_t component, const StoredStatistics& statistics);
   /// The integrals of the surface the run's forces came from (replacing the run's).
   void write_surface(std::int64_t run_id, std::int64_t source_id, const SurfaceIntegrals& g);
 

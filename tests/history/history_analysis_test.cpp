@@ -291,5 +291,115 @@ TEST(HistoryAnalysis, RefusesAHistoryThatBreaksItsInvariants) {
   EXPECT_THROW(analyze_force_history(short_series), std::invalid_argument);
 }
 
+// --- the run's convergence kind and a window per component ------------------
+
+ConvergenceEvidence met_at(double iteration, double rate) {
+  ConvergenceEvidence e;
+  e.solver = SolverKind::Steady;
+  e.solver_source = "system/fvSchemes:20: ddtSchemes default steadyState";
+  e.criteria_stated = true;
+  e.criteria_source = "system/fvSolution:40: SIMPLE residualControl p 0.0001";
+  e.criteria_met_at = iteration;
+  e.residuals_source = "postProcessing/solverInfo/0/solverInfo.dat:147";
+  e.residual_rate = rate;
+  return e;
+}
+
+TEST(HistoryAnalysis, AConvergedSteadyRunStoresItsFinalIterateWithItsIterativeError) {
+  // Geometric convergence to 0.5 at rate 0.97 per iteration, stopped at 300.
+  const std::size_t n = 300;
+  std::vector<double> fx(n);
+  for (std::size_t i = 0; i < n; ++i) fx[i] = 0.5 + 0.2 * std::pow(0.97, static_cast<double>(i));
+  ForceHistory h = history_of(fx, iota_abscissa(n, 1.0));
+  h.values(ForcePart::Total, HistoryComponent::Mz) = std::vector<double>(n, 1e-9);  // zero by symmetry
+  HistoryAnalysisOptions options;
+  options.evidence = met_at(static_cast<double>(n), 0.97);
+  const HistoryAnalysis a = analyze_force_history(h, options);
+  EXPECT_EQ(a.convergence, RunConvergence::Converged);
+  EXPECT_EQ(convergence_name(a.convergence), "converged");
+  EXPECT_NE(a.convergence_reason.find("solverInfo.dat:147"), std::string::npos) << a.convergence_reason;
+  EXPECT_NE(a.convergence_reason.find("fvSolution:40"), std::string::npos) << a.convergence_reason;
+  const ComponentAnalysis& x = a.components[0];
+  EXPECT_EQ(x.total().mean, fx.back());
+  EXPECT_EQ(x.sample_count, 1u);
+  EXPECT_EQ(x.last_abscissa, static_cast<double>(n));
+  const double truth = fx.back() - 0.5;
+  EXPECT_GE(x.total().standard_error, truth);
+  EXPECT_LE(x.total().standard_error, 2.0 * truth);
+  EXPECT_FALSE(a.flags.any());
+  EXPECT_TRUE(a.components[5].negligible);
+  EXPECT_FALSE(a.components[5].flags.any());
+
+  // The same record without the solver's word is a steady window: its mean
+  // is not the final iterate.
+  const HistoryAnalysis plain = analyze_force_history(h);
+  EXPECT_EQ(plain.convergence, RunConvergence::SteadyWindow);
+  EXPECT_NE(plain.components[0].total().mean, fx.back());
+  // Criteria met at another iteration than the record's last: not converged.
+  options.evidence = met_at(static_cast<double>(n - 10), 0.97);
+  EXPECT_EQ(analyze_force_history(h, options).convergence, RunConvergence::SteadyWindow);
+  // A given window overrides the evidence.
+  options.evidence = met_at(static_cast<double>(n), 0.97);
+  options.window = HistoryWindow::last_samples(50);
+  const HistoryAnalysis given = analyze_force_history(h, options);
+  EXPECT_EQ(given.convergence, RunConvergence::GivenWindow);
+  EXPECT_EQ(given.components[0].sample_count, 50u);
+}
+
+TEST(HistoryAnalysis, EachComponentHasItsOwnWindow) {
+  // Fx settles at once; Fy has a long start-up. Fy's window must not cut
+  // Fx's, and a negligible Mz (round-off noise) sets nothing and is not
+  // flagged.
+  const std::size_t n = 4000;
+  ForceHistory h = history_of(make_series({.mean = 1.0, .phi = 0.0, .sigma = 0.01}, n, 21));
+  h.values(ForcePart::Total, HistoryComponent::Fy) =
+      make_series({.mean = 0.3, .startup = 0.5, .startup_decay = 150.0, .phi = 0.0, .sigma = 0.01}, n, 22);
+  std::vector<double> mz = make_series({.mean = 0.0, .phi = 0.0, .sigma = 1e-7, .slope = 1e-10}, n, 23);
+  h.values(ForcePart::Total, HistoryComponent::Mz) = mz;
+  const HistoryAnalysis a = analyze_force_history(h);
+  const ComponentAnalysis& fx = a.components[0];
+  const ComponentAnalysis& fy = a.components[1];
+  EXPECT_LT(fx.first_sample, 200u);
+  EXPECT_GT(fy.first_sample, 300u);
+  EXPECT_EQ(fx.sample_count, n - fx.first_sample);
+  EXPECT_EQ(fx.total().count, fx.sample_count);
+  EXPECT_EQ(a.window_set_by, HistoryComponent::Fy);
+  EXPECT_EQ(a.first_sample, fy.first_sample);
+  EXPECT_TRUE(a.components[5].negligible);
+  EXPECT_FALSE(a.components[5].flags.any());
+  EXPECT_FALSE(a.flags.not_converged());
+  // Fx's mean is over its own window: the mean of those samples.
+  double sum = 0.0;
+  const auto& x = h.values(ForcePart::Total, HistoryComponent::Fx);
+  for (std::size_t i = fx.first_sample; i < n; ++i) sum += x[i];
+  EXPECT_NEAR(fx.total().mean, sum / static_cast<double>(n - fx.first_sample), 1e-13);
+}
+
+TEST(HistoryAnalysis, ARecordOverTimeIsATransientWindow) {
+  const std::size_t n = 2000;
+  ForceHistory h =
+      history_of(make_series({.mean = 1.0, .phi = 0.5, .sigma = 0.01}, n, 31), iota_abscissa(n, 0.0, 0.01));
+  h.abscissa = HistoryAbscissa::Time;
+  const HistoryAnalysis a = analyze_force_history(h);
+  EXPECT_EQ(a.convergence, RunConvergence::TransientWindow);
+  // Criteria "met" on a record over time are not a converged steady run.
+  HistoryAnalysisOptions options;
+  options.evidence = met_at(h.abscissa_values.back(), 0.9);
+  EXPECT_EQ(analyze_force_history(h, options).convergence, RunConvergence::TransientWindow);
+}
+
+TEST(HistoryAnalysis, MissedCriteriaAreSaidWithTheirEvidence) {
+  const std::size_t n = 1000;
+  ForceHistory h = history_of(make_series({.mean = 1.0, .phi = 0.5, .sigma = 0.01}, n, 41), iota_abscissa(n, 1.0));
+  HistoryAnalysisOptions options;
+  ConvergenceEvidence e = met_at(1000.0, 0.99);
+  e.criteria_met_at.reset();
+  e.criteria_missed = "initial residuals at 1000: p 0.003 (tolerance 0.0001)";
+  options.evidence = e;
+  const HistoryAnalysis a = analyze_force_history(h, options);
+  EXPECT_EQ(a.convergence, RunConvergence::SteadyWindow);
+  EXPECT_NE(a.convergence_reason.find("p 0.003 (tolerance 0.0001)"), std::string::npos) << a.convergence_reason;
+}
+
 }  // namespace
 }  // namespace hydrocoef

@@ -38,12 +38,15 @@ std::vector<ImportedInput> import(const std::vector<fs::path>& inputs, const nlo
   return read_inputs(plan_request(request), request);
 }
 
-/// The mean of a component over the samples a history analysis used.
+/// The mean of a component over the samples a history analysis used for it
+/// (its own window).
 double window_mean(const ForceHistory& history, HistoryComponent c, const HistoryAnalysis& analysis) {
   const auto& values = history.values(ForcePart::Total, c);
+  const ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
   double sum = 0.0;
-  for (std::size_t i = analysis.first_sample; i < analysis.first_sample + analysis.sample_count; ++i) sum += values[i];
-  return sum / static_cast<double>(analysis.sample_count);
+  for (std::size_t i = component.first_sample; i < component.first_sample + component.sample_count; ++i)
+    sum += values[i];
+  return sum / static_cast<double>(component.sample_count);
 }
 
 TEST(ImportFiles, OpenFoamCaseFoldersBecomeRunsInBodyAxesWithTheirUncertainty) {
@@ -251,7 +254,7 @@ TEST(ImportFiles, MonitorsTakeTheFlowAndTheAxes) {
   EXPECT_NEAR(run.tau_b[2]->total, -0.025, 1e-15);
   ASSERT_TRUE(run.statistics);
   EXPECT_EQ(run.statistics->abscissa, "iteration");
-  EXPECT_EQ(run.statistics->samples, 2u);
+  EXPECT_EQ(run.statistics->windows[0].samples, 2u);
 }
 
 TEST(ImportFiles, SettingsAnImporterCannotApplyAreRefusedOrNoted) {
@@ -290,10 +293,74 @@ TEST(ImportFiles, GivenWindowsAreUsed) {
   const auto inputs = import({kSphere / "cases" / "u0.30_v0.00"},
                              {{"body", "sphere"}, {"axes", "-x,y,-z"}, {"window", "601:1000"}}, &pattern);
   const auto& statistics = *inputs.front().batch.runs.front().statistics;
-  EXPECT_EQ(statistics.window_first, 601.0);
-  EXPECT_EQ(statistics.window_last, 1000.0);
-  EXPECT_EQ(statistics.samples, 400u);
+  EXPECT_EQ(statistics.convergence, "given-window");
+  for (std::size_t c = 0; c < 6; ++c) {
+    EXPECT_EQ(statistics.windows[c].first, 601.0);
+    EXPECT_EQ(statistics.windows[c].last, 1000.0);
+    EXPECT_EQ(statistics.windows[c].samples, 400u);
+  }
   EXPECT_THROW(import({kSphere / "cases" / "u0.30_v0.00"}, {{"window", "1000:601"}}, &pattern), InputError);
+}
+
+TEST(ImportFiles, AConvergedSteadyCaseStoresItsFinalIterateWithItsIterativeError) {
+  // The quarter runs stopped when their residualControl held: each component
+  // is the last iteration's value, its standard error the iterative error,
+  // and nothing is flagged. The full-domain runs ran to endTime without it:
+  // window means, as before.
+  const NamePattern pattern("U{u}");
+  for (const char* name : {"U0.1000", "U0.3000"}) {
+    SCOPED_TRACE(name);
+    const auto inputs = import({kSphere / "quarter-cases" / name}, {{"body", "sphere"}}, &pattern);
+    const auto& run = inputs.front().batch.runs.front();
+    ASSERT_TRUE(run.statistics);
+    EXPECT_EQ(run.statistics->convergence, "converged");
+    EXPECT_NE(run.statistics->convergence_reason.find("solverInfo.dat:"), std::string::npos);
+    EXPECT_TRUE(run.statistics->flags.empty());
+    const ForceHistory h = read_openfoam_forces(kSphere / "quarter-cases" / name / "postProcessing" / "forces");
+    for (std::size_t c = 0; c < 6; ++c) {
+      ASSERT_TRUE(run.tau_b[c]);
+      EXPECT_EQ(run.tau_b[c]->total, h.values(ForcePart::Total, HistoryComponent(c)).back()) << c;
+      EXPECT_EQ(*run.tau_b[c]->pressure, h.values(ForcePart::Pressure, HistoryComponent(c)).back()) << c;
+      EXPECT_EQ(run.statistics->windows[c].samples, 1u);
+      EXPECT_EQ(run.statistics->windows[c].last, h.abscissa_values.back());
+      EXPECT_TRUE(run.statistics->windows[c].flags.empty());
+    }
+    // The drag still creeps by about 1e-4 of itself per iteration when the
+    // criteria are met: the stated error is well above that and a few per cent
+    // at most.
+    const double drag = std::abs(run.tau_b[0]->total);
+    const double error = run.statistics->components[0]->standard_error;
+    EXPECT_GT(error, 3e-4 * drag);
+    EXPECT_LT(error, 0.05 * drag);
+  }
+  const NamePattern full("u{u}_v{v}");
+  const auto inputs = import({kSphere / "cases" / "u0.10_v0.00"}, {{"body", "sphere"}}, &full);
+  const auto& run = inputs.front().batch.runs.front();
+  EXPECT_EQ(run.statistics->convergence, "steady-window");
+  EXPECT_NE(run.statistics->convergence_reason.find("are not met at the last iteration"), std::string::npos)
+      << run.statistics->convergence_reason;
+}
+
+TEST(ImportFiles, NoVelocityIsEverADefault) {
+  // A case whose free stream is nowhere: refused naming where it looked, and
+  // imported at rest only when the user says so.
+  test::TempDir dir;
+  fs::copy(kSphere / "quarter-cases" / "U0.1000", dir / "case", fs::copy_options::recursive);
+  fs::remove_all(dir / "case" / "0");
+  try {
+    import({dir / "case"}, {{ "body", "sphere" }});
+    ADD_FAILURE() << "expected a refusal";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("no body velocity found"), std::string::npos) << message;
+    EXPECT_NE(message.find("no velocity file"), std::string::npos) << message;
+    EXPECT_NE(message.find("--at-rest"), std::string::npos) << message;
+  }
+  const auto at_rest = import({dir / "case"}, {{"body", "sphere"}, {"at_rest", true}});
+  EXPECT_EQ(at_rest.front().batch.runs.front().key.nu_b, (std::array<double, 6>{}));
+  EXPECT_THROW(import({dir / "case"}, {{"body", "sphere"}, {"at_rest", true}, {"u", 0.1}}), InputError);
+  // A force file alone, outside a case: the same.
+  EXPECT_THROW(import({kSphere / "full" / "u0.10_v0.00" / "force.dat"}, {{"body", "sphere"}}), InputError);
 }
 
 }  // namespace
