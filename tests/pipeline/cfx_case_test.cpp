@@ -241,7 +241,7 @@ TEST(CfxCase, NormalSpeedGivesASpeedAndANoteButNoDirection) {
       << notes_of(s);
 }
 
-TEST(CfxCase, RefusesInletsThatDisagreeAndAPressureDrivenOpening) {
+TEST(CfxCase, RefusesInletsThatDisagreeAndKeepsWhyAPressureDrivenCaseStatesNoFlow) {
   CaseParts two;
   two.more_boundaries =
       "    BOUNDARY: inlet 2\n"
