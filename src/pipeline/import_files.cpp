@@ -702,7 +702,7 @@ void refuse_forced_oscillation(const fs::path& case_dir, std::vector<std::string
   if (!motion) return;
   throw InputError(motion->where + ": a forced-oscillation case (" + motion->description +
                    "), not a run at one velocity; expected `hydrocoef pmm " + case_dir.string() +
-                   "` for its added mass and damping, or a case without an imposed motion");
+                   "`, which reads forced-oscillation runs, or a case without an imposed motion");
 }
 
 /// The runs of one input as its format gives them, with its settings.
