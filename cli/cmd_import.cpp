@@ -97,17 +97,27 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("inputs", args->inputs, "Files, folders or case folders to import (all in one transaction)")
       ->required();
   command
-      ->add_option("--format", args->format, "auto (by extension and content), table, monitor, history, cfdpost or vtk")
+      ->add_option("--format", args->format,
+                   "auto (by extension and content), table, monitor, history, cfdpost, vtk or cfx-out (the wall "
+                   "force summary of a CFX solver output)")
       ->capture_default_str();
   command->add_option("--body", args->surface.body, "Body name the runs belong to (default vehicle)");
   add_surface_options(*command, args->surface);
-  command->add_option("--include", args->include, "Folders: import only files matching this glob (repeatable)");
-  command->add_option("--exclude", args->exclude, "Folders: leave out files matching this glob (repeatable)");
+  command->get_option("--location")
+      ->description(
+          "Surface exports: a patch, block, zone or [Name] to integrate; CFX .out: a boundary or domain group of the "
+          "wall force summary (default its domain group's totals) (repeatable; several are summed)");
+  command->add_option("--include", args->include,
+                      "Folders: import only files matching this glob (repeatable; applied before twins are paired)");
+  command->add_option("--exclude", args->exclude,
+                      "Folders: leave out files matching this glob (repeatable; applied before twins are paired)");
   command->add_option("--manifest", args->manifest, "A sweep manifest: CSV of path and key columns (see the README)");
   command->add_option("--key-from-name", args->key_pattern,
-                      "Run keys from folder or file names, e.g. 'u{u}_v{v}' or 'r{r [deg s^-1]}'");
+                      "Run keys from folder or file names, e.g. 'u{u}_v{v}' or 'r{r [deg s^-1]}', of folder contents "
+                      "and of files and case folders named on the command line (their path as given)");
   command->add_flag("--prefer-surfaces", args->prefer_surfaces,
-                    "Of a force history and surface exports of one run, import the surfaces");
+                    "Of a force history and surface exports of one run, import the surfaces (in an OpenFOAM case "
+                    "folder: the export under its VTK/ rather than postProcessing's forces)");
   command->add_option("--column", args->columns,
                       "Tables and histories: map a header to a component, COMPONENT=HEADER, e.g. X=Drag (repeatable)");
   command->add_option("--unit", args->units, "Unit of a column without one, NAME=UNIT, e.g. X=kN (repeatable)");

@@ -296,12 +296,20 @@ class CaseReader {
   }
 
   void set_free_stream() {
-    if (inlets_.empty() && !pressure_openings_.empty())
-      fail(pressure_openings_.front().line,
-           "opening " + name_of(pressure_openings_.front().label) +
-               " gives Option = Opening Pressure and Direction and no inlet states a velocity: the flow is driven "
-               "by a pressure, so the free stream is not stated; expected an inlet that states the velocity (or "
-               "give the run's flow in a sidecar)");
+    // A pressure-driven case states no free stream. Whether one is given
+    // elsewhere (command line, sidecar, manifest, name pattern) is known only
+    // once the settings are merged: the import refuses there, at this line,
+    // when none is (see flow_unstated in cfx_case.hpp).
+    if (inlets_.empty() && !pressure_openings_.empty()) {
+      const auto& opening = pressure_openings_.front();
+      const std::string why = "opening " + name_of(opening.label) +
+                              " gives Option = Opening Pressure and Direction and no inlet states a velocity: the "
+                              "flow is driven by a pressure, so the free stream is not stated";
+      out_.layer.set("flow_unstated", why, where(opening.line));
+      out_.notes.push_back(why + " (" + printable_where(opening.line) +
+                           "): the run's flow is taken from --flow, a sidecar, the manifest or the name pattern");
+      return;
+    }
     for (const auto& opening : pressure_openings_)
       out_.notes.push_back("opening " + name_of(opening.label) + " (" + printable_where(opening.line) +
                            ") is a pressure opening; the free stream is the inlet's");

@@ -24,6 +24,12 @@ struct CfxCaseSettings {
   ///   flow_speed m/s     instead of flow when the inlets give a Normal Speed:
   ///                      the direction is the inlet's normal, which the CCL
   ///                      does not state (a note says so; the caller decides)
+  ///   flow_unstated      instead of flow when no inlet states a velocity and
+  ///                      a pressure opening drives the flow: why, at the
+  ///                      opening's line. The free stream must come from a
+  ///                      source of higher precedence (command line, sidecar,
+  ///                      manifest) or the name pattern; the import refuses
+  ///                      the run at that line when none gives it.
   ///   rho kg m^-3, nu m^2 s^-1 (dynamic viscosity / density), p_ref Pa
   SettingsLayer layer;
   std::vector<std::string> notes;  ///< symmetry and wall boundaries, settings not read and why
@@ -37,12 +43,12 @@ struct CfxCaseSettings {
 /// BOUNDARY CONDITIONS: MASS AND MOMENTUM: with Option = Cartesian Velocity
 /// Components (U, V, W) or Option = Normal Speed (Normal Speed). Inlets that
 /// state different velocities, an inlet velocity that is not a constant (a
-/// profile, a function of x or t), and an OPENING with Option = Opening
-/// Pressure and Direction (the free stream through it is not stated) are
-/// refused with the file and line. Other inlet options (mass flow rate,
+/// profile, a function of x or t) are refused with the file and line. Other inlet options (mass flow rate,
 /// total pressure, per-fluid velocities) and a moving domain (DOMAIN MOTION
 /// other than Stationary, a frame velocity given as Cartesian components) give
-/// notes only.
+/// notes only. A pressure opening with no inlet that states a velocity gives
+/// flow_unstated (above), which the import checks once the settings are
+/// merged.
 ///
 /// The fluid: the domain's FLUID DEFINITION's Material, looked up in the
 /// file's LIBRARY: MATERIAL: (its PROPERTIES: or MATERIAL PROPERTIES:);

@@ -13,11 +13,14 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 
+#include "importers/case_motion.hpp"
+#include "importers/cfx_out.hpp"
 #include "importers/force_history_csv.hpp"
 #include "importers/force_table.hpp"
 #include "importers/openfoam_forces.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/parallel.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/version.hpp"
@@ -132,6 +135,29 @@ void check_flow_speed(const RunSettings& settings, const RunKey& key, const fs::
     std::snprintf(found, sizeof found, "%.6g m/s", body);
     notes.push_back("the body's speed, " + std::string(found) + ", is not the inlet's normal speed in the CFX case, " +
                     text + " (" + where + "): check the run's key");
+  }
+}
+
+/// A case that states no free stream (a pressure-driven CFX case) or only
+/// its size (a CFX inlet's Normal Speed) needs the run's velocity from
+/// another source; checked once the settings are merged, so that the command
+/// line, a sidecar, a manifest row or the name pattern completes the case.
+void check_flow_stated(const RunSettings& settings, const fs::path& file) {
+  if (settings.find("flow") || settings.find("u") || settings.find("v") || settings.find("w")) return;
+  const char* expected =
+      "expected the free stream with --flow x,y,z (CFD axes), or the body velocity u, v, w from a sidecar, the "
+      "manifest or --key-from-name";
+  if (const Setting* unstated = settings.find("flow_unstated")) {
+    const std::string where = unstated->origin.where.empty() ? file.string() : unstated->origin.where;
+    throw InputError(where + ": " + *settings.text("flow_unstated") + "; " + expected);
+  }
+  if (const Setting* stated = settings.find("flow_speed")) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.6g m/s", *settings.number("flow_speed"));
+    const std::string where = stated->origin.where.empty() ? "the case files" : stated->origin.where;
+    throw InputError(SourceLocation{file.string()}, "the CFX case states the inlet's normal speed, " +
+                                                        std::string(text) + " (" + where + "), not its direction; " +
+                                                        expected);
   }
 }
 
@@ -501,9 +527,10 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
 }  // namespace
 
 std::string input_format(const PlannedInput& input, const std::string& requested) {
-  static const std::vector<std::string> known = {"auto", "cfdpost", "vtk", "monitor", "table", "history"};
+  static const std::vector<std::string> known = {"auto", "cfdpost", "vtk", "monitor", "table", "history", "cfx-out"};
   if (std::find(known.begin(), known.end(), requested) == known.end())
-    throw InputError("--format '" + requested + "': expected one of auto, table, monitor, history, cfdpost, vtk");
+    throw InputError("--format '" + requested +
+                     "': expected one of auto, table, monitor, history, cfdpost, vtk, cfx-out");
   if (input.kind == InputKind::OpenFoamCase) return "openfoam-case";
   std::error_code ec;
   if (fs::is_directory(input.path, ec)) return "openfoam-forces";  // a function object's folder
@@ -515,6 +542,7 @@ std::string input_format(const PlannedInput& input, const std::string& requested
   }
   if (requested != "auto") return requested;
   const std::string extension = lower(input.path.extension().string());
+  if (extension == ".out") return "cfx-out";  // a CFX solver output read for its wall force summary
   if (extension == ".csv" || extension == ".txt" || extension == ".tsv" || extension == ".dat") {
     const std::string head = head_of(input.path);
     if (is_force_history_name(input.path) || lower(input.path.filename().string()) == "forcecoeffs.dat" ||
@@ -531,15 +559,195 @@ ImportPlan plan_request(const ImportRequest& request) { return plan_import(reque
 
 namespace {
 
+/// Names compared as CFX compares them: runs of blanks as one space, any case.
+std::string cfx_name_key(std::string_view name) {
+  std::string out;
+  bool blank = false;
+  for (const char c : name) {
+    if (c == ' ' || c == '\t') {
+      blank = true;
+      continue;
+    }
+    if (blank && !out.empty()) out += ' ';
+    blank = false;
+    out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+/// The loads of the locations a CFX run's forces are taken from: the one
+/// domain group's totals by default, else the boundaries or groups named
+/// with --location (summed). `what` says which, for notes.
+CfxWallLoads cfx_summary_loads(const CfxWallForceSummary& summary, const RunSettings& settings, std::string& what) {
+  const SourceLocation at{summary.file, summary.line, 0};
+  std::string available;
+  for (const auto& group : summary.groups) {
+    for (const auto& [name, loads] : group.boundaries) available += (available.empty() ? "" : ", ") + name;
+    available += ", " + group.name + " (the domain group's totals)";
+  }
+  available = printable_text(available, 400);
+  const auto names = settings.texts("locations");
+  if (!names || names->empty()) {
+    if (summary.groups.size() != 1)
+      throw InputError(at, std::to_string(summary.groups.size()) +
+                               " domain groups in the wall force summary; expected one, or --location NAME of "
+                               "the one to import: " +
+                               available);
+    what = "the totals of domain group '" + printable_text(summary.groups.front().name, 80) + "'";
+    return summary.groups.front().totals;
+  }
+  CfxWallLoads sum;
+  bool first = true;
+  const auto add = [&](std::optional<Vec3>& total, const std::optional<Vec3>& part) {
+    if (first) {
+      total = part;
+    } else if (total && part) {
+      for (std::size_t i = 0; i < 3; ++i) (*total)[i] += (*part)[i];
+    } else {
+      total.reset();  // a part one location lacks is not known for the sum
+    }
+  };
+  for (const auto& name : *names) {
+    const CfxWallLoads* found = nullptr;
+    std::size_t matches = 0;
+    for (const auto& group : summary.groups) {
+      if (cfx_name_key(group.name) == cfx_name_key(name)) found = &group.totals, ++matches;
+      for (const auto& [boundary, loads] : group.boundaries)
+        if (cfx_name_key(boundary) == cfx_name_key(name)) found = &loads, ++matches;
+    }
+    if (matches == 0)
+      throw InputError(at, "no location '" + printable_text(name, 80) +
+                               "' (--location) in the wall force summary; expected one of: " + available);
+    if (matches > 1)
+      throw InputError(at, "location '" + printable_text(name, 80) +
+                               "' (--location) names several boundaries or groups of the wall force summary; "
+                               "expected a name found once");
+    add(sum.pressure_force, found->pressure_force);
+    add(sum.viscous_force, found->viscous_force);
+    add(sum.pressure_moment, found->pressure_moment);
+    add(sum.viscous_moment, found->viscous_moment);
+    if (first) sum.line = found->line;
+    first = false;
+    what += (what.empty() ? "" : " + ") + printable_text(name, 80);
+  }
+  return sum;
+}
+
+/// A CFX run from the wall force summary of its solver output: the chosen
+/// location's pressure and viscous force and moment, one sample brought into
+/// body axes by the transform a history's samples go through (moments to the
+/// reference point, mirrored for symmetry planes, rotated).
+ImportedInput read_cfx_summary(const PlannedInput& input, RunSettings settings, const ImportRequest& request) {
+  ImportedInput out;
+  out.input = input;
+  out.format = "cfx-out";
+  settings_not_applicable(
+      settings,
+      {"window", "pressure", "shear", "pressure_kind", "shear_convention", "length_unit", "pressure_unit", "normals"},
+      "the wall force summary of a CFX solver output", out.notes);
+  const SourceFile file = load_source_file(input.path);
+  const CfxWallForceSummary summary = parse_cfx_wall_forces(file.bytes, input.path.string());
+  std::string what;
+  const CfxWallLoads loads = cfx_summary_loads(summary, settings, what);
+
+  ForceHistory history;
+  history.abscissa = HistoryAbscissa::Iteration;
+  history.abscissa_values = {1.0};
+  history.files.push_back(HistorySourceFile{input.path, std::string(kCfxOutImporter), file.sha256,
+                                            static_cast<std::uint64_t>(file.bytes.size()), 1, 1});
+  const auto put = [&](ForcePart part, std::size_t offset, const std::optional<Vec3>& v) {
+    if (!v) return;
+    for (std::size_t c = 0; c < 3; ++c) history.series[static_cast<std::size_t>(part)][offset + c] = {(*v)[c]};
+  };
+  put(ForcePart::Pressure, 0, loads.pressure_force);
+  put(ForcePart::Viscous, 0, loads.viscous_force);
+  put(ForcePart::Pressure, 3, loads.pressure_moment);
+  put(ForcePart::Viscous, 3, loads.viscous_moment);
+  for (std::size_t c = 0; c < 6; ++c) {
+    const auto& p = history.series[static_cast<std::size_t>(ForcePart::Pressure)][c];
+    const auto& v = history.series[static_cast<std::size_t>(ForcePart::Viscous)][c];
+    if (!p.empty() || !v.empty())
+      history.series[static_cast<std::size_t>(ForcePart::Total)][c] = {(p.empty() ? 0.0 : p[0]) +
+                                                                       (v.empty() ? 0.0 : v[0])};
+  }
+  const auto origin = SampleOrigin{0, static_cast<std::uint32_t>(loads.line)};
+  if (loads.pressure_force || loads.viscous_force) history.force_origin = {origin};
+  if (loads.pressure_moment || loads.viscous_moment) history.moment_origin = {origin};
+  history.frame.description = "the CFX solver's global axes";
+
+  const FrameTransform frame = resolve_frame(settings);
+  const Vec3 reference_b = resolve_reference_point(settings, frame);
+  const ForceHistory body = history_in_body_axes(std::move(history), settings, frame, reference_b, out.notes);
+  ImportedRun run;
+  for (std::size_t c = 0; c < 6; ++c) {
+    const auto& total = body.series[static_cast<std::size_t>(ForcePart::Total)][c];
+    if (total.empty()) continue;
+    ForceComponent force;
+    force.total = total[0];
+    if (const auto& p = body.series[static_cast<std::size_t>(ForcePart::Pressure)][c]; !p.empty())
+      force.pressure = p[0];
+    if (const auto& v = body.series[static_cast<std::size_t>(ForcePart::Viscous)][c]; !v.empty()) force.viscous = v[0];
+    run.tau_b[c] = force;
+  }
+  run.key = resolve_key(settings, frame, request.default_body);
+  check_flow_speed(settings, run.key, input.path, out.notes);
+  run.fluid = fluid_of(settings);
+  run.reference_point_b = reference_b;
+  run.sign = SignConvention::OnBody;
+  run.source_line = loads.line;
+  out.notes.push_back(input.path.string() + ": forces of " + what + " from the wall force summary at line " +
+                      std::to_string(summary.line) +
+                      (summary.summaries > 1 ? " (the last of " + std::to_string(summary.summaries) + ")" : "") +
+                      ": the solver's values at the end of the run, pressure and viscous parts kept apart; no "
+                      "history, so no steady window or standard error");
+  out.batch.source.path = input.path.string();
+  out.batch.source.sha256 = file.sha256;
+  out.batch.source.size_bytes = file.bytes.size();
+  out.batch.source.importer = std::string(kCfxOutImporter);
+  out.batch.source.importer_version = std::string(kCfxOutImporterVersion);
+  out.batch.runs.push_back(std::move(run));
+  record_settings(out.batch, settings, "cfx-out", input.path);
+  out.settings = std::move(settings);
+  return out;
+}
+
+/// A forced-oscillation case (an imposed harmonic motion in
+/// constant/dynamicMeshDict) is not a run at one velocity: `hydrocoef pmm`
+/// reads it. A motion that is not an oscillation gives a note.
+void refuse_forced_oscillation(const fs::path& case_dir, std::vector<std::string>& notes) {
+  std::optional<CaseOscillation> motion;
+  try {
+    motion = read_openfoam_motion(case_dir);
+  } catch (const InputError& e) {
+    notes.push_back(case_dir.string() +
+                    ": constant/dynamicMeshDict moves the mesh in a way that is not a forced oscillation (" + e.what() +
+                    "); imported as a run at the velocity of its settings: check its key");
+    return;
+  }
+  if (!motion) return;
+  throw InputError(motion->where + ": a forced-oscillation case (" + motion->description +
+                   "), not a run at one velocity; expected `hydrocoef pmm " + case_dir.string() +
+                   "`, which reads forced-oscillation runs, or a case without an imposed motion");
+}
+
 /// The runs of one input as its format gives them, with its settings.
 ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& request) {
   std::vector<SettingsLayer> layers;
   if (!request.command_line.empty()) layers.push_back(request.command_line);
   layers.insert(layers.end(), input.layers.begin(), input.layers.end());
   RunSettings settings = merge_settings(layers);
+  check_flow_stated(settings, input.path);
   const std::string format = input_format(input, request.format);
-  if (format == "openfoam-forces" || format == "force-history" || format == "openfoam-case" || format == "monitor")
+  if (format == "openfoam-case") {
+    std::vector<std::string> motion_notes;
+    refuse_forced_oscillation(input.path, motion_notes);
+    ImportedInput out = read_history(input, format, std::move(settings), request);
+    out.notes.insert(out.notes.end(), motion_notes.begin(), motion_notes.end());
+    return out;
+  }
+  if (format == "openfoam-forces" || format == "force-history" || format == "monitor")
     return read_history(input, format, std::move(settings), request);
+  if (format == "cfx-out") return read_cfx_summary(input, std::move(settings), request);
 
   ImportedInput out;
   out.input = input;
@@ -588,6 +796,7 @@ BodyHistory read_body_history(const PlannedInput& input, const ImportRequest& re
   if (!request.command_line.empty()) layers.push_back(request.command_line);
   layers.insert(layers.end(), input.layers.begin(), input.layers.end());
   RunSettings settings = merge_settings(layers);
+  check_flow_stated(settings, input.path);
   const std::string format = input_format(input, request.format);
   if (format != "openfoam-forces" && format != "force-history" && format != "openfoam-case" && format != "monitor")
     throw InputError(SourceLocation{input.path.string()},
@@ -628,6 +837,65 @@ std::vector<ImportedInput> read_inputs(const ImportPlan& plan, const ImportReque
 namespace {
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool is_key_setting(const std::string& name) {
+  return velocity_index(name) || name == "flow" || name.rfind("disturbance.", 0) == 0;
+}
+
+/// True when the input states its runs' keys (a table's rows, or a velocity
+/// or disturbance from any source), false when its key is only the default.
+bool states_key(const ImportedInput& input) {
+  if (input.format == "table") return true;
+  return std::any_of(input.settings.values.begin(), input.settings.values.end(),
+                     [](const auto& entry) { return is_key_setting(entry.first); });
+}
+
+/// A file and where its run's key came from, for collision messages.
+std::string key_origin(const ImportedInput& input, const ImportedRun& run) {
+  const std::string file = printable_text(input.input.path.string(), 200);
+  if (input.format == "table") return file + " (its row at line " + std::to_string(run.source_line) + ")";
+  std::string parts;
+  for (const auto& [name, setting] : input.settings.values) {
+    if (!is_key_setting(name)) continue;
+    parts +=
+        (parts.empty() ? "" : ", ") + name + " from the " + std::string(setting_source_name(setting.origin.source));
+    if (!setting.origin.where.empty()) parts += " " + printable_text(setting.origin.where, 120);
+  }
+  return file + " (" + (parts.empty() ? std::string("no velocity stated by any source") : parts) + ")";
+}
+
+/// Two inputs of one import that give the same component of the same run:
+/// refused before anything is stored, naming both files and where each key
+/// came from. Superseding is for a later import (--replace); within one
+/// import it would keep whichever file was stored last.
+void check_key_collisions(const std::vector<ImportedInput>& inputs) {
+  std::map<std::string, std::pair<std::size_t, std::size_t>> seen;  // key and component -> input, run
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const auto& runs = inputs[i].batch.runs;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const RunKey& key = runs[r].key;
+      std::string text = key.body + "\n" + disturbance_signature(key.disturbances);
+      for (const double v : key.nu_b) text += "\n" + shortest_number(v);
+      for (std::size_t c = 0; c < 6; ++c) {
+        if (!runs[r].tau_b[c]) continue;
+        const auto [it, inserted] = seen.try_emplace(text + "\n" + std::string(kForceNames[c]), i, r);
+        if (inserted || it->second.first == i) continue;
+        const ImportedInput& earlier = inputs[it->second.first];
+        const ImportedRun& earlier_run = earlier.batch.runs[it->second.second];
+        const bool neither = !states_key(earlier) && !states_key(inputs[i]);
+        throw InputError(
+            SourceLocation{inputs[i].input.path.string()},
+            "run " + printable_text(describe(key), 200) + " gets " + std::string(kForceNames[c]) +
+                " from two files of this import: " + key_origin(earlier, earlier_run) + " and " +
+                key_origin(inputs[i], runs[r]) + "; " +
+                (neither ? "neither states its run's velocity; expected each file's key with --key-from-name PATTERN "
+                           "(file names and folder contents alike), --manifest or a sidecar FILE.json"
+                         : "expected one file per run and component (a file meant to supersede another is "
+                           "imported on its own, in a later import with --replace)"));
+      }
+    }
+  }
 }
 }  // namespace
 
@@ -690,6 +958,7 @@ ImportResult read_import(const ImportRequest& request) {
   result.plan_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
   result.inputs = read_inputs(result.plan, request);
+  check_key_collisions(result.inputs);
   result.read_s = seconds_since(start);
   return result;
 }

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "importers/cfx_monitor.hpp"
+#include "importers/cfx_out.hpp"
 #include "src/core/error.hpp"
 #include "src/pipeline/cfx_case.hpp"
 #include "src/pipeline/openfoam_case.hpp"
@@ -29,7 +30,16 @@ bool is_data_extension(const std::string& extension) {
   return known.count(extension) > 0;
 }
 
+bool is_surface_extension(const std::string& extension) {
+  static const std::set<std::string> known = {".vtp", ".vtu", ".vtk", ".vtm", ".case", ".encas", ".cgns"};
+  return known.count(extension) > 0;
+}
+
 constexpr const char* kFolderSidecar = "hydrocoef-run.json";
+
+/// The path a name pattern reads for an input named on the command line: the
+/// path as given, without its root.
+fs::path pattern_path(const fs::path& given) { return given.lexically_normal().relative_path(); }
 
 /// The layers of one input: its own sidecar, the manifest row, the folder
 /// sidecars from its folder up to `root`, the name pattern.
@@ -137,8 +147,9 @@ void add_cfx_case_layer(const fs::path& file, const fs::path& case_file, std::ve
 }
 
 /// The monitor file of a CFX case file named on the command line: the one
-/// cfx5mondata CSV beside it whose name starts with the case's stem.
-fs::path cfx_monitor_of(const fs::path& case_file) {
+/// cfx5mondata CSV beside it whose name starts with the case's stem; empty
+/// when there is none.
+std::optional<fs::path> cfx_monitor_of(const fs::path& case_file) {
   std::vector<fs::path> found;
   std::error_code ec;
   const fs::path folder = case_file.parent_path().empty() ? fs::path(".") : case_file.parent_path();
@@ -159,12 +170,7 @@ fs::path cfx_monitor_of(const fs::path& case_file) {
   }
   std::sort(found.begin(), found.end());
   if (found.size() == 1) return found.front();
-  if (found.empty())
-    throw InputError(SourceLocation{case_file.string()},
-                     "a CFX case file, but no monitor file beside it (" + stem +
-                         "*.csv with an 'Accumulated Timestep' header); expected the monitors exported with "
-                         "cfx5mondata -res " +
-                         stem + ".res -out " + stem + ".csv");
+  if (found.empty()) return std::nullopt;
   std::string names;
   for (const auto& f : found) names += (names.empty() ? "" : ", ") + f.filename().string();
   throw InputError(SourceLocation{case_file.string()}, "a CFX case file with " + std::to_string(found.size()) +
@@ -180,7 +186,93 @@ bool filtered_in(const fs::path& relative, const ImportPlanOptions& options) {
                       [&](const std::string& p) { return glob_matches(p, relative); });
 }
 
+/// Settings files of a folder walk: sidecars and the manifest, used, not data.
+bool is_settings_file(const fs::path& file, const ImportPlanOptions& options) {
+  const std::string name = file.filename().string();
+  if (name == kFolderSidecar) return true;
+  std::error_code ec;
+  if (lower(file.extension().string()) == ".json" && fs::exists(file.parent_path() / file.stem(), ec)) return true;
+  return options.manifest && fs::equivalent(file, options.manifest->file(), ec);
+}
+
+std::string skipped_note(const std::vector<fs::path>& skipped) {
+  std::string names;
+  const std::size_t shown = std::min<std::size_t>(skipped.size(), 5);
+  for (std::size_t i = 0; i < shown; ++i) names += (i ? ", " : "") + skipped[i].generic_string();
+  if (skipped.size() > shown) names += ", ... (" + std::to_string(skipped.size() - shown) + " more)";
+  return std::to_string(skipped.size()) + (skipped.size() == 1 ? " file" : " files") +
+         " skipped as not CFD data (documentation, logs, solver outputs other than forces, other formats): " + names;
+}
+
+/// The time of a foamToVTK name, NAME_TIME(.vtm): the number after the last '_'.
+std::optional<double> vtk_time(const fs::path& file) {
+  const std::string stem = file.stem().string();
+  const auto underscore = stem.rfind('_');
+  if (underscore == std::string::npos) return std::nullopt;
+  const std::string text = stem.substr(underscore + 1);
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+  return value;
+}
+
 }  // namespace
+
+bool is_not_cfd_data(const fs::path& file) {
+  const std::string name = lower(file.filename().string());
+  if (name.rfind("log.", 0) == 0 || name.ends_with(".log")) return true;
+  std::string stem = lower(file.stem().string());
+  for (const char* documentation : {"readme", "source", "sources", "notes", "note", "license", "licence", "provenance",
+                                    "changelog", "citation", "authors", "todo", "description"})
+    if (stem == documentation) return true;
+  if (stem.rfind("readme", 0) == 0) return true;
+  // OpenFOAM function objects other than forces, with or without a restart time.
+  if (const auto underscore = stem.rfind('_'); underscore != std::string::npos) {
+    const std::string time = stem.substr(underscore + 1);
+    if (!time.empty() && time.find_first_not_of("0123456789.e+-") == std::string::npos) stem.resize(underscore);
+  }
+  for (const char* output :
+       {"solverinfo", "yplus", "wallshearstress", "residuals", "fieldminmax", "surfacefieldvalue", "volfieldvalue",
+        "fieldaverage", "courantno", "wallheatflux", "continuityerror", "cellzoneflux"})
+    if (stem == output) return true;
+  return false;
+}
+
+std::optional<fs::path> case_surface_export(const fs::path& case_folder, std::string& why) {
+  const fs::path vtk = case_folder / "VTK";
+  std::error_code ec;
+  if (!fs::is_directory(vtk, ec)) {
+    why = "no VTK/ folder";
+    return std::nullopt;
+  }
+  std::vector<std::pair<double, fs::path>> multiblocks;
+  std::vector<fs::path> untimed;
+  for (const auto& entry : fs::directory_iterator(vtk, ec)) {
+    if (!entry.is_regular_file(ec) || lower(entry.path().extension().string()) != ".vtm") continue;
+    if (const auto time = vtk_time(entry.path()))
+      multiblocks.emplace_back(*time, entry.path());
+    else
+      untimed.push_back(entry.path());
+  }
+  fs::path chosen;
+  if (!multiblocks.empty()) {
+    std::sort(multiblocks.begin(), multiblocks.end());
+    chosen = multiblocks.back().second;
+  } else if (untimed.size() == 1) {
+    chosen = untimed.front();
+  } else {
+    why = untimed.empty() ? "no .vtm under VTK/" : "several .vtm under VTK/ without a time in their names";
+    return std::nullopt;
+  }
+  // foamToVTK's layout: NAME_TIME.vtm beside NAME_TIME/ holding the blocks.
+  const fs::path blocks = chosen.parent_path() / chosen.stem();
+  std::vector<fs::path> surfaces;
+  if (fs::is_directory(blocks, ec))
+    for (const auto& entry : fs::recursive_directory_iterator(blocks, ec))
+      if (entry.is_regular_file(ec) && is_surface_extension(lower(entry.path().extension().string())))
+        surfaces.push_back(entry.path());
+  return surfaces.size() == 1 ? surfaces.front() : chosen;
+}
 
 bool is_force_history_name(const fs::path& file) {
   const std::string name = lower(file.filename().string());
@@ -201,6 +293,30 @@ bool glob_matches(const std::string& pattern, const fs::path& relative) {
   return fnmatch(pattern.c_str(), text.c_str(), 0) == 0;
 }
 
+namespace {
+
+/// An OpenFOAM case as one input: its force history, or with
+/// --prefer-surfaces the surface export under its VTK/ folder.
+PlannedInput case_input(const fs::path& folder, const fs::path& relative, const fs::path& pattern, const fs::path& root,
+                        const ImportPlanOptions& options, std::vector<std::string>& notes) {
+  PlannedInput input{folder, relative, InputKind::OpenFoamCase, case_layers(folder, pattern, root, options, notes)};
+  if (!options.prefer_surfaces) return input;
+  std::string why;
+  const auto surface = case_surface_export(folder, why);
+  if (!surface) {
+    notes.push_back(folder.string() + ": no surface export to prefer (" + why + "); its force history imported");
+    return input;
+  }
+  notes.push_back(folder.string() + ": " + surface->lexically_relative(folder).generic_string() +
+                  " (surfaces, as asked) imported; postProcessing's forces left out: one run read two ways");
+  input.path = *surface;
+  input.kind = InputKind::File;
+  if (!relative.empty()) input.relative = relative / surface->lexically_relative(folder);
+  return input;
+}
+
+}  // namespace
+
 ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOptions& options) {
   ImportPlan plan;
   CfxCaseFiles cfx_cases;
@@ -211,23 +327,39 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
                        "no such file or folder; expected a CFD result file, a folder of "
                        "them or a case folder");
     if (!fs::is_directory(input, ec)) {
-      // A CFX case file named directly stands for its run: its monitors, with its settings.
+      // A CFX case file named directly stands for its run: its monitors, with
+      // its settings, or the wall force summary of its .out.
       fs::path file = input;
       if (is_cfx_case_extension(input) && is_cfx_case_file(input)) {
-        file = cfx_monitor_of(input);
-        plan.notes.push_back(input.string() + ": a CFX run; its monitors read from " + file.filename().string());
+        if (const auto monitors = cfx_monitor_of(input)) {
+          file = *monitors;
+          plan.notes.push_back(input.string() + ": a CFX run; its monitors read from " + file.filename().string());
+        } else if (lower(input.extension().string()) == ".out" && file_has_cfx_wall_forces(input)) {
+          plan.notes.push_back(input.string() +
+                               ": a CFX run without monitor files beside it; its forces read from the solver's wall "
+                               "force and moment summary");
+        } else {
+          const std::string stem = input.stem().string();
+          throw InputError(SourceLocation{input.string()},
+                           "a CFX case file, but no monitor file beside it (" + stem +
+                               "*.csv with an 'Accumulated Timestep' header)" +
+                               (lower(input.extension().string()) == ".out" ? " and no wall force summary in it" : "") +
+                               "; expected the monitors exported with cfx5mondata -res " + stem + ".res -out " + stem +
+                               ".csv, or the .out of the finished run");
+        }
       }
-      auto layers = layers_for(file, {}, {}, true, options);
+      auto layers = layers_for(file, pattern_path(input), {}, true, options);
       if (const auto case_file = cfx_cases.of(file)) add_cfx_case_layer(file, *case_file, layers, plan.notes);
       plan.inputs.push_back({file, {}, InputKind::File, std::move(layers)});
       continue;
     }
     if (is_openfoam_case(input)) {
-      plan.inputs.push_back({input, {}, InputKind::OpenFoamCase, case_layers(input, {}, input, options, plan.notes)});
+      plan.inputs.push_back(case_input(input, {}, pattern_path(input), input, options, plan.notes));
       continue;
     }
     // A walk that does not enter case folders and keeps the order stable.
-    std::vector<fs::path> files, cases;
+    std::vector<fs::path> files, cases, cfx_outs;
+    std::vector<fs::path> skipped;
     for (auto it = fs::recursive_directory_iterator(input, fs::directory_options::skip_permission_denied, ec);
          it != fs::recursive_directory_iterator(); it.increment(ec)) {
       if (ec) throw InputError(SourceLocation{it->path().string()}, "cannot read the folder: " + ec.message());
@@ -239,11 +371,47 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
         }
         continue;
       }
-      if (!it->is_regular_file(ec) || !is_data_extension(lower(path.extension().string()))) continue;
+      if (!it->is_regular_file(ec) || is_settings_file(path, options)) continue;
+      const std::string extension = lower(path.extension().string());
+      if (is_cfx_case_extension(path) && is_cfx_case_file(path)) {
+        if (extension == ".out") cfx_outs.push_back(path);  // settings, or a run of its own (below)
+        continue;
+      }
+      if (!is_data_extension(extension) || is_not_cfd_data(path)) {
+        skipped.push_back(path);
+        continue;
+      }
+      // The filters come first: twins and partners are paired among the files kept.
+      if (!filtered_in(path.lexically_relative(input), options)) {
+        ++plan.excluded;
+        continue;
+      }
       files.push_back(path);
+    }
+    // A CFX .out that no data file of its run takes settings from is a run
+    // of its own when it holds the solver's wall force summary.
+    std::set<fs::path> settings_of_data;
+    for (const auto& file : files)
+      if (const auto case_file = cfx_cases.of(file)) settings_of_data.insert(*case_file);
+    for (const auto& out : cfx_outs) {
+      if (settings_of_data.count(out)) continue;
+      if (!file_has_cfx_wall_forces(out)) {
+        skipped.push_back(out);
+      } else if (!filtered_in(out.lexically_relative(input), options)) {
+        ++plan.excluded;
+      } else {
+        files.push_back(out);
+        plan.notes.push_back(out.string() +
+                             ": a CFX run without data files beside it; its forces read from the solver's wall force "
+                             "and moment summary");
+      }
     }
     std::sort(files.begin(), files.end());
     std::sort(cases.begin(), cases.end());
+    std::vector<fs::path> skipped_here;
+    for (const auto& file : skipped) skipped_here.push_back(file.lexically_relative(input));
+    std::sort(skipped_here.begin(), skipped_here.end());
+    plan.skipped.insert(plan.skipped.end(), skipped_here.begin(), skipped_here.end());
 
     // Twins and partners, decided per folder.
     std::set<fs::path> dropped;
@@ -252,7 +420,12 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
       const std::string extension = lower(file.extension().string());
       if (extension == ".vtp" || extension == ".vtu" || extension == ".vtk")
         by_stem[{file.parent_path(), file.stem().string()}].push_back(file);
-      if (extension == ".vtm" && fs::is_directory(file.parent_path() / file.stem(), ec)) {
+      // (when the filters left some of its blocks)
+      const fs::path blocks = file.parent_path() / file.stem();
+      if (extension == ".vtm" && std::any_of(files.begin(), files.end(), [&](const fs::path& other) {
+            const auto rest = other.lexically_relative(blocks);
+            return !rest.empty() && *rest.begin() != "..";
+          })) {
         dropped.insert(file);
         plan.notes.push_back(file.string() + ": left out; its blocks are read from " +
                              (file.parent_path() / file.stem()).string() + "/");
@@ -267,7 +440,7 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
       const std::string extension = lower(file.extension().string());
       if (is_force_history_name(file))
         kinds[file.parent_path()].first.push_back(file);
-      else if (extension != ".csv" && extension != ".txt" && extension != ".tsv" && extension != ".dat")
+      else if (is_surface_extension(extension))
         kinds[file.parent_path()].second.push_back(file);
     }
     for (const auto& [folder, found] : kinds) {
@@ -311,17 +484,12 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
         ++plan.excluded;
         continue;
       }
-      plan.inputs.push_back(
-          {folder, relative, InputKind::OpenFoamCase, case_layers(folder, relative, input, options, plan.notes)});
+      plan.inputs.push_back(case_input(folder, relative, relative, input, options, plan.notes));
       ++planned;
     }
     for (const auto& file : files) {
       if (dropped.count(file)) continue;
       const fs::path relative = file.lexically_relative(input);
-      if (!filtered_in(relative, options)) {
-        ++plan.excluded;
-        continue;
-      }
       auto layers = layers_for(file, relative, input, true, options);
       if (const auto case_file = cfx_cases.of(file)) add_cfx_case_layer(file, *case_file, layers, plan.notes);
       plan.inputs.push_back({file, relative, InputKind::File, std::move(layers)});
@@ -333,9 +501,12 @@ ImportPlan plan_import(const std::vector<fs::path>& inputs, const ImportPlanOpti
       for (const auto& p : options.exclude) filters += " --exclude '" + p + "'";
       throw InputError(SourceLocation{input.string()},
                        "folder holds nothing to import" + (filters.empty() ? std::string() : " with" + filters) +
-                           "; expected case folders or files .csv .txt .tsv .dat .vtp .vtu .vtk .vtm .case .cgns");
+                           (skipped_here.empty() ? std::string() : " (" + skipped_note(skipped_here) + ")") +
+                           "; expected case folders or files .csv .txt .tsv .dat .vtp .vtu .vtk .vtm .case .cgns, "
+                           "or CFX .out files with their wall force summary");
     }
   }
+  if (!plan.skipped.empty()) plan.notes.push_back(skipped_note(plan.skipped));
   return plan;
 }
 

@@ -95,12 +95,13 @@ TEST(CliCfxRun, TheSolverOutputAndItsMonitorsGiveOneRunInBodyAxes) {
   EXPECT_NEAR(tail[0].at("forces").at("X").at("total").get<double>(), -mean_over(fx, 291, 300), 1e-12);
 }
 
-TEST(CliCfxRun, ACaseFileWithoutItsMonitorsIsRefused) {
+TEST(CliCfxRun, ACaseFileWithoutItsMonitorsOrSummaryIsRefused) {
   TempDir dir;
   std::filesystem::copy_file(kOut, dir / "tow_u1.5_001.out");
   const auto result = run_cli({"import", "tow_u1.5_001.out", "--body", "hull"}, dir.path());
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("no monitor file beside it"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("no wall force summary in it"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("cfx5mondata"), std::string::npos) << result.err;
   EXPECT_FALSE(test::database_exists(dir / "hydrocoef.db") &&
                nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out).size() > 0);
@@ -129,6 +130,75 @@ TEST(CliCfxRun, ANormalSpeedWithoutADirectionIsRefusedAndTakesAGivenOne) {
   const auto runs = nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out);
   ASSERT_EQ(runs.size(), 1u);
   EXPECT_DOUBLE_EQ(runs[0].at("u").get<double>(), 1.5);
+}
+
+const std::filesystem::path kSummaryOut = HYDROCOEF_SOURCE_DIR "/tests/data/cfx/hull_u1.5_001.out";
+
+// A run with only its .out: the solver's wall force summary (the numbers of
+// tests/data/cfx/hull_u1.5_001.out's own table), the domain group's totals by
+// default, one boundary with --location.
+TEST(CliCfxRun, AnOutWithoutMonitorsImportsItsWallForceSummary) {
+  TempDir dir;
+  std::filesystem::copy_file(kSummaryOut, dir / "hull_u1.5_001.out");
+  const auto result = run_cli({"import", "hull_u1.5_001.out", "--body", "hull", "--axes=-x,y,-z"}, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("wall force and moment summary"), std::string::npos) << result.out;
+  const auto runs = nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out);
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_DOUBLE_EQ(runs[0].at("u").get<double>(), 1.5);
+  const auto& x = runs[0].at("forces").at("X");
+  EXPECT_DOUBLE_EQ(x.at("pressure").get<double>(), -13.25);  // -(12.5 + 0.75): hull and rudder
+  EXPECT_DOUBLE_EQ(x.at("viscous").get<double>(), -3.75);
+  EXPECT_DOUBLE_EQ(x.at("total").get<double>(), -17.0);
+
+  const auto hull = run_cli(
+      {"--db", "hull.db", "import", "hull_u1.5_001.out", "--body", "hull", "--axes=-x,y,-z", "--location", "hull"},
+      dir.path());
+  ASSERT_EQ(hull.exit_code, 0) << hull.err;
+  const auto one = nlohmann::json::parse(run_cli({"--db", "hull.db", "runs", "--json"}, dir.path()).out);
+  EXPECT_DOUBLE_EQ(one[0].at("forces").at("X").at("pressure").get<double>(), -12.5);
+  EXPECT_DOUBLE_EQ(one[0].at("forces").at("X").at("viscous").get<double>(), -3.5);
+  const auto unknown = run_cli({"--db", "keel.db", "import", "hull_u1.5_001.out", "--location", "keel"}, dir.path());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("no location 'keel'"), std::string::npos) << unknown.err;
+}
+
+// A pressure-driven case (an opening, no inlet velocity): refused without a
+// flow, completed by --flow or by a sidecar.
+TEST(CliCfxRun, APressureDrivenCaseTakesTheFlowFromTheCommandLineOrASidecar) {
+  TempDir dir;
+  std::string text;
+  {
+    std::ifstream in(kSummaryOut);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string inlet = "       Boundary Type = INLET\n";
+  text.replace(text.find(inlet), inlet.size(), "       Boundary Type = OPENING\n");
+  const auto at = text.find("Option = Cartesian Velocity Components");
+  const auto end = text.find("W = 0 [m s^-1]", at);
+  text.replace(at, end + 14 - at, "Option = Opening Pressure and Direction\n           Relative Pressure = 0 [Pa]");
+  std::ofstream(dir / "channel.out") << text;
+  const auto refused = run_cli({"import", "channel.out", "--body", "hull", "--axes=-x,y,-z"}, dir.path());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("channel.out:"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("driven by a pressure"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--flow"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "hydrocoef.db"));
+
+  const auto flow =
+      run_cli({"--db", "flow.db", "import", "channel.out", "--body", "hull", "--axes=-x,y,-z", "--flow", "1.2,0,0"},
+              dir.path());
+  ASSERT_EQ(flow.exit_code, 0) << flow.err;
+  EXPECT_DOUBLE_EQ(
+      nlohmann::json::parse(run_cli({"--db", "flow.db", "runs", "--json"}, dir.path()).out)[0].at("u").get<double>(),
+      1.2);
+  std::ofstream(dir / "channel.out.json") << R"({"flow": [0.9, 0, 0]})";
+  const auto sidecar =
+      run_cli({"--db", "sidecar.db", "import", "channel.out", "--body", "hull", "--axes=-x,y,-z"}, dir.path());
+  ASSERT_EQ(sidecar.exit_code, 0) << sidecar.err;
+  EXPECT_DOUBLE_EQ(
+      nlohmann::json::parse(run_cli({"--db", "sidecar.db", "runs", "--json"}, dir.path()).out)[0].at("u").get<double>(),
+      0.9);
 }
 
 }  // namespace

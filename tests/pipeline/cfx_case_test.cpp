@@ -3,8 +3,9 @@
 // written in CFX-Pre's layout and from the CCL echoed in a solver output file
 // (tests/data/cfx, see its PROVENANCE.md); the notes for symmetry and wall
 // boundaries, normal-speed inlets, moving domains and properties that are not
-// constant; and the refusals of inlets that disagree, a pressure-driven
-// opening, a velocity that is not a constant or not a velocity.
+// constant; a pressure-driven case's reason for stating no flow, kept for the
+// import to check; and the refusals of inlets that disagree, a velocity that
+// is not a constant or not a velocity.
 #include "src/pipeline/cfx_case.hpp"
 
 #include <gtest/gtest.h>
@@ -240,7 +241,7 @@ TEST(CfxCase, NormalSpeedGivesASpeedAndANoteButNoDirection) {
       << notes_of(s);
 }
 
-TEST(CfxCase, RefusesInletsThatDisagreeAndAPressureDrivenOpening) {
+TEST(CfxCase, RefusesInletsThatDisagreeAndKeepsWhyAPressureDrivenCaseStatesNoFlow) {
   CaseParts two;
   two.more_boundaries =
       "    BOUNDARY: inlet 2\n"
@@ -295,9 +296,18 @@ TEST(CfxCase, RefusesInletsThatDisagreeAndAPressureDrivenOpening) {
   EXPECT_TRUE(std::any_of(with_inlet.notes.begin(), with_inlet.notes.end(), [](const std::string& n) {
     return n.find("opening 'far field'") != std::string::npos && n.find("pressure opening") != std::string::npos;
   }));
+  // Without one, the case states why it gives no flow, at the opening's line,
+  // for the import to refuse unless the flow is given elsewhere (the settings
+  // are merged later, by precedence).
   opening.inlet = "          Option = Mass Flow Rate\n          Mass Flow Rate = 1 [kg s^-1]\n";
-  test::expect_input_error([&] { settings_of(opening); }, {at(opening, "Opening Pressure and Direction") + ":",
-                                                           "opening 'far field'", "no inlet states a velocity"});
+  const CfxCaseSettings driven = settings_of(opening);
+  EXPECT_EQ(driven.layer.values.count("flow"), 0u);
+  ASSERT_EQ(driven.layer.values.count("flow_unstated"), 1u);
+  const Setting& unstated = driven.layer.values.at("flow_unstated");
+  EXPECT_EQ(unstated.origin.where, at(opening, "Opening Pressure and Direction"));
+  const auto& why = std::get<std::string>(unstated.value);
+  EXPECT_NE(why.find("opening 'far field'"), std::string::npos) << why;
+  EXPECT_NE(why.find("no inlet states a velocity"), std::string::npos) << why;
 }
 
 TEST(CfxCase, RefusesAVelocityThatIsNotAConstantVelocity) {

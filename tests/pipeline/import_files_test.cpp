@@ -9,9 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "importers/openfoam_forces.hpp"
@@ -361,6 +363,159 @@ TEST(ImportFiles, NoVelocityIsEverADefault) {
   EXPECT_THROW(import({dir / "case"}, {{"body", "sphere"}, {"at_rest", true}, {"u", 0.1}}), InputError);
   // A force file alone, outside a case: the same.
   EXPECT_THROW(import({kSphere / "full" / "u0.10_v0.00" / "force.dat"}, {{"body", "sphere"}}), InputError);
+}
+
+const fs::path kCfxOut = fs::path(HYDROCOEF_SOURCE_DIR) / "tests/data/cfx/hull_u1.5_001.out";
+
+// A CFX run with only its solver output: the wall force summary's domain
+// group totals, pressure and viscous parts apart, in body axes with the key
+// from the CCL's inlet (tests/data/cfx/hull_u1.5_001.out; the numbers are the
+// file's own table).
+TEST(ImportFiles, ACfxOutImportsFromItsWallForceSummary) {
+  test::TempDir dir;
+  fs::copy_file(kCfxOut, dir / "hull_u1.5_001.out");
+  const auto inputs = import({dir / "hull_u1.5_001.out"}, {{"body", "hull"}, {"axes", "-x,y,-z"}});
+  ASSERT_EQ(inputs.size(), 1u);
+  EXPECT_EQ(inputs[0].format, "cfx-out");
+  EXPECT_EQ(inputs[0].batch.source.importer, "cfx-out-summary");
+  const auto& run = inputs[0].batch.runs.at(0);
+  EXPECT_DOUBLE_EQ(run.key.nu_b[0], 1.5);  // the inlet's (1.5, 0.1, 0) m/s, the body moving into it
+  EXPECT_DOUBLE_EQ(run.key.nu_b[1], -0.1);
+  EXPECT_EQ(*run.fluid.density_kg_m3, 997.0);
+  EXPECT_FALSE(run.statistics);  // one value, not a mean over a history
+  // Totals: pressure (13.25, 1.5, -0.5) + viscous (3.75, 0.005, 0.02) N in CFD
+  // axes; body axes (-x, y, -z).
+  EXPECT_DOUBLE_EQ(*run.tau_b[0]->pressure, -13.25);
+  EXPECT_DOUBLE_EQ(*run.tau_b[0]->viscous, -3.75);
+  EXPECT_DOUBLE_EQ(run.tau_b[0]->total, -17.0);
+  EXPECT_DOUBLE_EQ(run.tau_b[1]->total, 1.505);
+  EXPECT_DOUBLE_EQ(run.tau_b[2]->total, 0.5 - 0.02);
+  // Moments (0.01, -0.24, -0.575) + (0, -0.012, 0.00125) N m.
+  EXPECT_DOUBLE_EQ(*run.tau_b[3]->pressure, -0.01);
+  EXPECT_DOUBLE_EQ(run.tau_b[4]->total, -0.252);
+  EXPECT_DOUBLE_EQ(*run.tau_b[5]->viscous, -0.00125);
+  EXPECT_DOUBLE_EQ(run.tau_b[5]->total, 0.575 - 0.00125);
+
+  // --location: one boundary, or several summed (their sum is the totals).
+  const auto hull = import({dir / "hull_u1.5_001.out"}, {{"axes", "-x,y,-z"}, {"locations", {"hull"}}});
+  const auto& h = hull[0].batch.runs.at(0);
+  EXPECT_DOUBLE_EQ(*h.tau_b[0]->pressure, -12.5);
+  EXPECT_DOUBLE_EQ(*h.tau_b[0]->viscous, -3.5);
+  EXPECT_DOUBLE_EQ(h.tau_b[1]->total, 0.26);
+  const auto both = import({dir / "hull_u1.5_001.out"}, {{"axes", "-x,y,-z"}, {"locations", {"rudder", "hull"}}});
+  for (std::size_t c = 0; c < 6; ++c)
+    EXPECT_NEAR(both[0].batch.runs.at(0).tau_b[c]->total, run.tau_b[c]->total, 1e-12) << c;
+  try {
+    import({dir / "hull_u1.5_001.out"}, {{ "locations", { "keel" } }});
+    FAIL() << "an unknown location was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("hull_u1.5_001.out:217:"), std::string::npos) << m;
+    EXPECT_NE(m.find("no location 'keel'"), std::string::npos) << m;
+    EXPECT_NE(m.find("hull, rudder, Default Domain"), std::string::npos) << m;
+  }
+}
+
+// A pressure-driven CFX case states no free stream: refused at the opening's
+// line unless the flow comes from the command line or a sidecar, which
+// complete the case's settings by precedence.
+TEST(ImportFiles, APressureDrivenCfxCaseTakesTheFlowGivenElsewhere) {
+  std::string text;
+  {
+    std::ifstream in(kCfxOut);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string inlet_from = "       Boundary Type = INLET\n";
+  text.replace(text.find(inlet_from), inlet_from.size(), "       Boundary Type = OPENING\n");
+  const auto option = text.find("Option = Cartesian Velocity Components");
+  const auto end = text.find("W = 0 [m s^-1]", option);
+  text.replace(option, end + 14 - option,
+               "Option = Opening Pressure and Direction\n           Relative Pressure = 0 [Pa]");
+  const std::size_t line =
+      static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(option), '\n')) + 1;
+  test::TempDir dir;
+  std::ofstream(dir / "channel_001.out") << text;
+  try {
+    import({dir / "channel_001.out"}, {{ "axes", "-x,y,-z" }});
+    FAIL() << "a pressure-driven case without a flow was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("channel_001.out:" + std::to_string(line) + ": opening 'inlet'"), std::string::npos) << m;
+    EXPECT_NE(m.find("--flow"), std::string::npos) << m;
+  }
+  const auto given = import({dir / "channel_001.out"}, {{"axes", "-x,y,-z"}, {"flow", {1.2, 0, 0}}});
+  EXPECT_DOUBLE_EQ(given[0].batch.runs.at(0).key.nu_b[0], 1.2);
+  EXPECT_DOUBLE_EQ(given[0].batch.runs.at(0).tau_b[0]->total, -17.0);
+  std::ofstream(dir / "channel_001.out.json") << R"({"u": 0.8})";
+  const auto sidecar = import({dir / "channel_001.out"}, {{"axes", "-x,y,-z"}});
+  EXPECT_DOUBLE_EQ(sidecar[0].batch.runs.at(0).key.nu_b[0], 0.8);
+  EXPECT_EQ(sidecar[0].settings.find("u")->origin.source, SettingSource::FileSidecar);
+}
+
+// A forced-oscillation case is for `hydrocoef pmm`, not for import.
+TEST(ImportFiles, AForcedOscillationCaseIsRefusedNamingPmm) {
+  const fs::path pmm_case = fs::path(HYDROCOEF_SOURCE_DIR) / "examples/openfoam-sphere/pmm/surge-A0.015-T2";
+  try {
+    import({pmm_case}, {{ "axes", "-x,y,-z" }});
+    FAIL() << "a forced-oscillation case was imported";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("constant/dynamicMeshDict:"), std::string::npos) << m;
+    EXPECT_NE(m.find("a forced-oscillation case"), std::string::npos) << m;
+    EXPECT_NE(m.find("hydrocoef pmm " + pmm_case.string()), std::string::npos) << m;
+  }
+}
+
+ImportResult read_all(const std::vector<fs::path>& inputs, const nlohmann::json& cli,
+                      const NamePattern* pattern = nullptr) {
+  ImportRequest request;
+  request.inputs = inputs;
+  request.command_line = command_line(cli);
+  request.plan.key_pattern = pattern;
+  request.jobs = 2;
+  return read_import(request);
+}
+
+// --key-from-name reads files named on the command line as it reads folder
+// contents; two files that give one run's component are refused naming both
+// and where each key came from.
+TEST(ImportFiles, NamePatternKeysFilesNamedDirectlyAndCollisionsNameTheirSources) {
+  test::TempDir dir;
+  for (const char* run : {"u0.10_v0.00", "u0.20_v0.00"}) {
+    fs::create_directories(dir / "a" / run);
+    for (const char* f : {"force.dat", "moment.dat"})
+      fs::copy_file(kSphere / "full" / "u0.10_v0.00" / f, dir / "a" / run / f);
+  }
+  const NamePattern pattern("u{u}_v{v}");
+  const auto keyed =
+      read_all({dir / "a/u0.10_v0.00/force.dat", dir / "a/u0.20_v0.00/force.dat"}, {{"axes", "-x,y,-z"}}, &pattern);
+  ASSERT_EQ(keyed.inputs.size(), 2u);
+  EXPECT_DOUBLE_EQ(keyed.inputs[0].batch.runs.at(0).key.nu_b[0], 0.1);
+  EXPECT_DOUBLE_EQ(keyed.inputs[1].batch.runs.at(0).key.nu_b[0], 0.2);
+
+  // The same run from two folders: refused, each key's source named.
+  fs::create_directories(dir / "b" / "u0.10_v0.00");
+  for (const char* f : {"force.dat", "moment.dat"})
+    fs::copy_file(kSphere / "full" / "u0.10_v0.00" / f, dir / "b" / "u0.10_v0.00" / f);
+  try {
+    read_all({dir / "a/u0.10_v0.00/force.dat", dir / "b/u0.10_v0.00/force.dat"}, {{"axes", "-x,y,-z"}}, &pattern);
+    FAIL() << "two files of one run were accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind((dir / "b/u0.10_v0.00/force.dat").string() + ": run ", 0), 0u) << m;
+    EXPECT_NE(m.find("gets X from two files of this import"), std::string::npos) << m;
+    EXPECT_NE(m.find((dir / "a/u0.10_v0.00/force.dat").string() + " (u from the name pattern"), std::string::npos) << m;
+    EXPECT_NE(m.find("--key-from-name 'u{u}_v{v}'"), std::string::npos) << m;
+  }
+  // Files that give no key at all are never told to --replace one another.
+  try {
+    read_all({dir / "a/u0.10_v0.00/force.dat", dir / "a/u0.20_v0.00/force.dat"}, {{"axes", "-x,y,-z"}});
+    FAIL() << "two files without a key were accepted as one run";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.find("--replace"), std::string::npos) << m;
+    EXPECT_NE(m.find("--key-from-name"), std::string::npos) << m;
+  }
 }
 
 }  // namespace
