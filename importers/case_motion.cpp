@@ -40,7 +40,7 @@ std::optional<CaseOscillation> read_openfoam_motion(const fs::path& case_dir) {
   const fs::path file = case_dir / "constant" / "dynamicMeshDict";
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return std::nullopt;
-  const FoamDictionary root = FoamDictionary::read(file);
+  const FoamDictionary root = FoamDictionary::read(file, case_dir);
   const auto dictionaries = motion_dictionaries(root);
   if (dictionaries.empty()) {
     const FoamValue* mesh = root.value("dynamicFvMesh");

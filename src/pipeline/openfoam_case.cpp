@@ -14,6 +14,12 @@ namespace fs = std::filesystem;
 
 std::string where_of(const FoamValue& value) { return value.file + ":" + std::to_string(value.line); }
 
+/// What the dictionary reader read otherwise than written (a stray '}' that
+/// ends a file, as OpenFOAM reads it), as notes.
+void note_warnings(const FoamDictionary& dictionary, OpenFoamCaseSettings& out) {
+  out.notes.insert(out.notes.end(), dictionary.warnings().begin(), dictionary.warnings().end());
+}
+
 std::string lower(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -28,6 +34,7 @@ struct FreeStream {
 
 void read_velocity(const fs::path& file, OpenFoamCaseSettings& out) {
   const FoamDictionary u = FoamDictionary::read(file);
+  note_warnings(u, out);
   const FoamDictionary* boundary = u.dictionary("boundaryField");
   if (!boundary) return;
   std::optional<FreeStream> freestream, inlet;
@@ -66,6 +73,7 @@ void read_velocity(const fs::path& file, OpenFoamCaseSettings& out) {
 
 void read_forces_function(const fs::path& file, OpenFoamCaseSettings& out) {
   const FoamDictionary control = FoamDictionary::read(file);
+  note_warnings(control, out);
   const FoamDictionary* functions = control.dictionary("functions");
   bool found = false;
   if (functions) {
@@ -98,6 +106,7 @@ void read_viscosity(const fs::path& case_dir, OpenFoamCaseSettings& out) {
     const fs::path file = case_dir / "constant" / name;
     if (!fs::is_regular_file(file)) continue;
     const FoamDictionary d = FoamDictionary::read(file);
+    note_warnings(d, out);
     if (const FoamValue* nu = d.value("nu")) {
       out.layer.set("nu", foam_scalar(*nu, "nu"), where_of(*nu));
       return;
