@@ -128,10 +128,7 @@ class FoamParser {
       }
       if (text_[at_] == '}') {
         ++at_;
-        if (!nested) {
-          stray_brace();
-          return;
-        }
+        if (!nested) stray_brace();
         return;
       }
       if (text_[at_] == ';') {  // a stray ';' is allowed
