@@ -13,8 +13,8 @@
 //    no entry is refused (OpenFOAM stops there too); directives hydrocoef
 //    cannot evaluate (#calc, #codeStream, #if...) are refused rather than
 //    skipped.
-//  - Bounded, because a received case is untrusted (FoamReadLimits, whose
-//    defaults the README lists): dictionary nesting (the parser recurses per
+//  - Bounded, because a received case is untrusted (FoamReadLimits in the
+//    header, with its defaults): dictionary nesting (the parser recurses per
 //    level, so 20,000 levels would overflow the stack), the tokens `$`
 //    references copy (counted before they are copied), each entry's tokens,
 //    each file's bytes, and the number and bytes of included files.
