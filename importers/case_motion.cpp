@@ -1,7 +1,9 @@
 #include "importers/case_motion.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <system_error>
 #include <utility>
@@ -40,7 +42,7 @@ std::optional<CaseOscillation> read_openfoam_motion(const fs::path& case_dir) {
   const fs::path file = case_dir / "constant" / "dynamicMeshDict";
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return std::nullopt;
-  const FoamDictionary root = FoamDictionary::read(file);
+  const FoamDictionary root = FoamDictionary::read(file, case_dir);
   const auto dictionaries = motion_dictionaries(root);
   if (dictionaries.empty()) {
     const FoamValue* mesh = root.value("dynamicFvMesh");
@@ -129,39 +131,110 @@ std::string replace_identifiers(std::string_view text, Replace&& replace) {
   return out;
 }
 
-/// The expression with named expressions written out and `pi` as a number,
-/// so that t can be found wherever it hides.
-std::string expanded(const CelEvaluator& cel, const CclDocument& document, std::string_view text, std::size_t line,
-                     int depth = 0) {
-  if (depth > 64) throw InputError(document.location(line), "expressions nested more than 64 deep; expected fewer");
-  // Each level is bounded, so expressions that double at every level (A = B + B,
-  // B = C + C, ...) stop at the first level past the bound.
-  constexpr std::size_t kMaxExpandedBytes = 1 << 16;
-  std::string out = replace_identifiers(text, [&](const std::string& name) -> std::optional<std::string> {
-    if (name == "pi") return "(" + shortest_number(std::numbers::pi) + ")";
-    if (!cel.has_expression(name)) return std::nullopt;
+/// Named expressions written out and `pi` as a number, so that t can be
+/// found wherever it hides. Each named expression is written out once and
+/// remembered; every text is bounded while it is written (an expression that
+/// repeats another 20,000 times stops at the bound, not after it is built:
+/// 216 KB of CCL took 224 s and then all memory), and references are
+/// followed at most 64 deep.
+class ExpressionExpander {
+ public:
+  ExpressionExpander(const CelEvaluator& cel, const CclDocument& document) : cel_(cel), document_(document) {
     for (const auto* library : document.root.children_of_type("LIBRARY"))
       for (const auto* cel_object : library->children_of_type("CEL"))
         for (const auto* expressions : cel_object->children_of_type("EXPRESSIONS"))
-          for (const auto& parameter : expressions->parameters)
-            if (parameter.name == name)
-              return "(" + expanded(cel, document, parameter.value, parameter.line, depth + 1) + ")";
-    return std::nullopt;
-  });
-  if (out.size() > kMaxExpandedBytes)
-    throw InputError(document.location(line),
-                     "the expression expands to more than 64 kB of CEL; expected a displacement "
-                     "of the form A*sin(omega*t + phi)");
-  return out;
-}
+          for (const auto& parameter : expressions->parameters) named_.emplace(parameter.name, &parameter);
+  }
+
+  std::string expand(std::string_view text, std::size_t line) {
+    std::string out;
+    (void)expand_into(out, text, line, 0);
+    return out;
+  }
+
+ private:
+  static constexpr std::size_t kMaxExpandedBytes = 1 << 16;
+  static constexpr int kMaxDepth = 64;
+
+  struct Written {
+    std::string text;
+    int height = 0;  ///< levels of references below it
+  };
+
+  [[noreturn]] void too_deep(std::size_t line) const {
+    throw InputError(document_.location(line), "expressions nested more than 64 deep; expected fewer");
+  }
+
+  void append(std::string& out, std::string_view piece, std::size_t line) const {
+    if (piece.size() > kMaxExpandedBytes - out.size())
+      throw InputError(document_.location(line),
+                       "the expression expands to more than 64 kB of CEL; expected a displacement "
+                       "of the form A*sin(omega*t + phi)");
+    out.append(piece);
+  }
+
+  /// Appends `text` (written on `line`, `depth` references down) expanded;
+  /// returns how many levels of references it went down.
+  int expand_into(std::string& out, std::string_view text, std::size_t line, int depth) {
+    if (depth > kMaxDepth) too_deep(line);
+    int height = 0;
+    for (std::size_t i = 0; i < text.size();) {
+      const char c = text[i];
+      if (c == '[') {  // a unit: copied as written
+        const std::size_t end = text.find(']', i);
+        const std::size_t stop = end == std::string_view::npos ? text.size() : end + 1;
+        append(out, text.substr(i, stop - i), line);
+        i = stop;
+      } else if (identifier_start(c) &&
+                 (i == 0 || !(std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.'))) {
+        std::size_t j = i;
+        while (j < text.size() && identifier_char(text[j])) ++j;
+        const std::string name(text.substr(i, j - i));
+        i = j;
+        const auto found = named_.find(name);
+        if (name == "pi") {
+          append(out, "(" + shortest_number(std::numbers::pi) + ")", line);
+        } else if (!cel_.has_expression(name) || found == named_.end()) {
+          append(out, name, line);
+        } else {
+          const Written& written = written_out(name, *found->second, depth + 1);
+          height = std::max(height, written.height + 1);
+          append(out, "(", line);
+          append(out, written.text, line);
+          append(out, ")", line);
+        }
+      } else {
+        append(out, std::string_view(&text[i], 1), line);
+        ++i;
+      }
+    }
+    return height;
+  }
+
+  const Written& written_out(const std::string& name, const CclParameter& parameter, int depth) {
+    if (const auto known = written_.find(name); known != written_.end()) {
+      if (depth + known->second.height > kMaxDepth) too_deep(parameter.line);
+      return known->second;
+    }
+    Written written;
+    written.height = expand_into(written.text, parameter.value, parameter.line, depth);
+    return written_.emplace(name, std::move(written)).first->second;
+  }
+
+  const CelEvaluator& cel_;
+  const CclDocument& document_;
+  std::map<std::string, const CclParameter*> named_;  ///< the first definition, as the document holds one
+  std::map<std::string, Written> written_;
+};
 
 /// A * sin(omega t + phi) read from one displacement component.
 struct Component {
   double amplitude = 0.0, omega = 0.0, phase = 0.0;
 };
 
-Component displacement_component(const CelEvaluator& cel, const CclDocument& document, const CclParameter& parameter) {
-  const std::string text = expanded(cel, document, parameter.value, parameter.line);
+Component displacement_component(const CelEvaluator& cel, ExpressionExpander& expander, const CclDocument& document,
+                                 const CclParameter& parameter) {
+  const std::string text = expander.expand(parameter.value, parameter.line);
   const auto location = document.location(parameter.line);
   const std::string expected = "; expected a constant 0 or A*sin(omega*t + phi) with constant A, omega, phi";
   const std::size_t sin_at = text.find("sin(");
@@ -247,6 +320,7 @@ std::optional<CaseOscillation> cfx_motion(const CclDocument& document) {
   collect_displacements(document.root, found, nullptr);
   if (found.empty()) return std::nullopt;
   const CelEvaluator cel(document);
+  ExpressionExpander expander(cel, document);
   std::optional<CaseOscillation> motion;
   std::string motion_owner;
   for (const auto& [object, owner] : found) {
@@ -258,7 +332,7 @@ std::optional<CaseOscillation> cfx_motion(const CclDocument& document) {
       const CclParameter* parameter = object->parameter(names[axis]);
       if (!parameter) continue;
       line = parameter->line;
-      Component c = displacement_component(cel, document, *parameter);
+      Component c = displacement_component(cel, expander, document, *parameter);
       if (c.amplitude == 0.0) continue;
       double phase = c.phase;
       if (c.amplitude < 0.0) {

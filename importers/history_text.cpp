@@ -746,7 +746,12 @@ StreamedRows parse_file_rows(const std::filesystem::path& path,
       }
     }
     if (at_end) break;
-    // The partial last line goes in front of the block read meanwhile.
+    // The partial last line goes in front of the block read meanwhile,
+    // unless it is already longer than a line may be.
+    if (buffer.size() - stop > options.max_line_bytes)
+      throw InputError(SourceLocation{file, line, 0}, "a line of more than " + std::to_string(options.max_line_bytes) +
+                                                          " bytes; expected rows of at most " +
+                                                          std::to_string(options.max_line_bytes) + " bytes");
     reader.join();
     if (read_error) std::rethrow_exception(read_error);
     next.insert(next.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(stop), buffer.end());

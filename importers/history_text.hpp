@@ -35,6 +35,9 @@ struct RowSyntax {
   bool require_line_end = false;
 };
 
+/// The default bound of RowOptions::max_line_bytes: 1 MiB.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+
 struct RowOptions {
   /// A last row cut short without its line end (a run stopped while writing)
   /// is dropped and reported in ParsedRows::dropped_last_row instead of
@@ -44,6 +47,11 @@ struct RowOptions {
   /// parse_file_rows: bytes read at a time (the header must fit in the first
   /// block). Smaller blocks only for tests of the block boundaries.
   std::size_t block_bytes = std::size_t{32} << 20;
+  /// parse_file_rows: the most bytes of a line carried from one block to the
+  /// next (a row of 4096 numbers is about 100 kB). A line still without its
+  /// end past this is refused as soon as it is seen, so a file of one 2 GB
+  /// line costs a block, not the line twice over.
+  std::size_t max_line_bytes = kMaxLineBytes;
 };
 
 /// Where the numbers go: one vector per parsed (not skipped) field, in field
@@ -95,8 +103,9 @@ struct StreamedRows {
 /// lines are parsed as parse_rows does (on every core), with the SHA-256 of
 /// the bytes computed beside the parse when asked. Memory: one block, not the
 /// file. Throws InputError naming the file when it does not exist, is a
-/// directory, cannot be read, or when the header does not end in the first
-/// block, and what parse_rows throws.
+/// directory, cannot be read, when the header does not end in the first
+/// block or a line runs on past options.max_line_bytes, and what parse_rows
+/// throws.
 StreamedRows parse_file_rows(const std::filesystem::path& path,
                              const std::function<FileLayout(std::string_view head)>& layout,
                              const RowOptions& options = {}, bool compute_sha256 = false);

@@ -25,9 +25,16 @@ std::vector<TextLine> split_lines(std::string_view bytes) {
 }
 
 std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file,
-                                    std::size_t max_fields) {
+                                    std::size_t max_fields, std::size_t max_field_bytes) {
   std::vector<TextField> fields;
   const std::string_view text = line.text;
+  // A field is bounded as the count of fields is: a line of one 2 GB field
+  // is refused before the field is copied (it cost three times its size).
+  const auto too_long = [&](std::size_t start) {
+    return InputError(SourceLocation{file, line.number, start + 1},
+                      "a field of more than " + std::to_string(max_field_bytes) + " bytes; expected at most " +
+                          std::to_string(max_field_bytes) + " bytes per field");
+  };
   std::size_t i = 0;
   while (true) {
     // Memory stays a small multiple of the line's useful content: a line of
@@ -46,6 +53,7 @@ std::vector<TextField> split_fields(const TextLine& line, char delimiter, const 
       while (j < text.size()) {
         if (text[j] == '"') {
           if (j + 1 < text.size() && text[j + 1] == '"') {
+            if (field.text.size() == max_field_bytes) throw too_long(start);
             field.text += '"';
             j += 2;
             continue;
@@ -54,6 +62,7 @@ std::vector<TextField> split_fields(const TextLine& line, char delimiter, const 
           ++j;
           break;
         }
+        if (field.text.size() == max_field_bytes) throw too_long(start);
         field.text += text[j++];
       }
       if (!closed)
@@ -69,7 +78,9 @@ std::vector<TextField> split_fields(const TextLine& line, char delimiter, const 
     } else {
       std::size_t j = start;
       while (j < text.size() && text[j] != delimiter) ++j;
-      field.text = std::string(trim(text.substr(start, j - start), kSpaceTab));
+      const std::string_view content = trim(text.substr(start, j - start), kSpaceTab);
+      if (content.size() > max_field_bytes) throw too_long(start);
+      field.text = std::string(content);
       i = j;
     }
     fields.push_back(std::move(field));

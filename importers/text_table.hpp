@@ -29,11 +29,18 @@ std::vector<TextLine> split_lines(std::string_view bytes);
 /// The most fields split_fields accepts on a line by default.
 inline constexpr std::size_t kMaxTextFields = 4096;
 
+/// The most bytes of one field split_fields accepts by default (a column
+/// name with its unit, a number or a text cell is far shorter): a field
+/// longer than this is refused before it is copied.
+inline constexpr std::size_t kMaxTextFieldBytes = 65536;
+
 /// Splits one line at `delimiter`; double-quoted fields may hold the delimiter
-/// and doubled quotes (""). An unterminated quote, or more than `max_fields`
-/// fields (a data line longer than its header), is an InputError at the line.
+/// and doubled quotes (""). An unterminated quote, more than `max_fields`
+/// fields (a data line longer than its header), or a field of more than
+/// `max_field_bytes` bytes is an InputError at the line and column.
 std::vector<TextField> split_fields(const TextLine& line, char delimiter, const std::string& file,
-                                    std::size_t max_fields = kMaxTextFields);
+                                    std::size_t max_fields = kMaxTextFields,
+                                    std::size_t max_field_bytes = kMaxTextFieldBytes);
 
 /// Picks the delimiter of a header line: ',' if present outside quotes, else
 /// tab, else ';'.

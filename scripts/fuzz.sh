@@ -45,6 +45,9 @@ seed_files() {
     vtp_fuzz) ls "$root"/tests/data/vtp-encodings/*.vtp "$root"/tests/data/bad/vtp-*.vtp ;;
     stored_record_fuzz) ls "$root"/tests/data/fuzz-seeds/stored-record-* ;;
     case_motion_fuzz) ls "$root"/tests/data/fuzz-seeds/case-motion.ccl "$root"/tests/data/cfx/*.ccl 2>/dev/null || true ;;
+    cfx_ccl_fuzz) ls "$root"/tests/data/fuzz-seeds/*.ccl "$root"/tests/data/cfx/*.ccl 2>/dev/null || true ;;
+    openfoam_dictionary_fuzz) ls "$root"/tests/data/fuzz-seeds/*.foam "$root"/data/openfoam-sphere/cases/*/system/controlDict \
+                                 "$root"/data/openfoam-sphere/cases/*/0/U 2>/dev/null || true ;;
   esac
 }
 write_seeds() {  # target seed-dir

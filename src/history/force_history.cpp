@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 
@@ -30,6 +31,17 @@ namespace {
 
 bool is_force(HistoryComponent component) { return static_cast<std::size_t>(component) < 3; }
 
+bool within_magnitudes(double value) {
+  const double magnitude = std::abs(value);
+  return magnitude == 0.0 || (magnitude >= kMinHistoryMagnitude && magnitude <= kMaxHistoryMagnitude);
+}
+
+std::string magnitudes_expected(std::string_view unit) {
+  return "expected 0 or a magnitude from " + shortest_number(kMinHistoryMagnitude) + " to " +
+         shortest_number(kMaxHistoryMagnitude) + (unit.empty() ? "" : " ") + std::string(unit) +
+         " (the history's statistics would not be finite)";
+}
+
 }  // namespace
 
 std::string sample_location(const ForceHistory& history, std::size_t sample, HistoryComponent component) {
@@ -47,6 +59,15 @@ void check_force_history(const ForceHistory& history) {
     if (i > 0 && !(history.abscissa_values[i] > history.abscissa_values[i - 1]))
       fail("abscissa not strictly increasing at sample " + std::to_string(i));
   }
+  // Bad input rather than a broken invariant: the magnitudes of times and
+  // values, checked here so that no importer can let one through.
+  const HistoryComponent any_origin =
+      history.force_origin.empty() && !history.moment_origin.empty() ? HistoryComponent::Mx : HistoryComponent::Fx;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!within_magnitudes(history.abscissa_values[i]))
+      throw InputError(sample_location(history, i, any_origin) + ": " + std::string(abscissa_name(history.abscissa)) +
+                       " " + shortest_number(history.abscissa_values[i]) + "; " +
+                       magnitudes_expected(abscissa_unit(history.abscissa)));
   bool any_force = false;
   bool any_moment = false;
   for (const ForcePart part : kAllForceParts)
@@ -56,10 +77,15 @@ void check_force_history(const ForceHistory& history) {
       if (values.size() != n)
         fail(std::string(part_name(part)) + " " + std::string(component_name(component)) + " has " +
              std::to_string(values.size()) + " values for " + std::to_string(n) + " samples");
-      for (const double value : values)
-        if (!std::isfinite(value))
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(values[i]))
           fail(std::string(part_name(part)) + " " + std::string(component_name(component)) +
                " holds a value that is not finite");
+        if (!within_magnitudes(values[i]))
+          throw InputError(sample_location(history, i, component) + ": " + std::string(part_name(part)) + " " +
+                           std::string(component_name(component, history.frame.naming)) + " " +
+                           shortest_number(values[i]) + "; " + magnitudes_expected(is_force(component) ? "N" : "N m"));
+      }
       (is_force(component) ? any_force : any_moment) = true;
     }
   const auto check_origins = [&](const std::vector<SampleOrigin>& origins, bool present, const char* what) {

@@ -120,8 +120,18 @@ struct ForceHistory {
 /// when the history has no origins.
 std::string sample_location(const ForceHistory& history, std::size_t sample, HistoryComponent component);
 
+/// The magnitudes a history's abscissa and values may have besides 0: their
+/// squares, and sums of a billion of them, stay normal finite doubles, so that
+/// every statistic of the history is finite (a denormal force or time step, or
+/// a time of 1e300, made a NaN standard error).
+inline constexpr double kMinHistoryMagnitude = 1e-100;
+inline constexpr double kMaxHistoryMagnitude = 1e100;
+
 /// Checks the invariants above and throws std::invalid_argument naming the
-/// first one broken. Importers call it on what they return; code that builds a
+/// first one broken; and throws InputError naming the sample's file and line
+/// for an abscissa or a value that is neither 0 nor of a magnitude from
+/// kMinHistoryMagnitude to kMaxHistoryMagnitude (bad input, not a broken
+/// invariant). Importers call it on what they return; code that builds a
 /// history by hand can too.
 void check_force_history(const ForceHistory& history);
 

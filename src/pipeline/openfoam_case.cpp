@@ -16,6 +16,12 @@ namespace fs = std::filesystem;
 
 std::string where_of(const FoamValue& value) { return value.file + ":" + std::to_string(value.line); }
 
+/// What the dictionary reader read otherwise than written (a stray '}' that
+/// ends a file, as OpenFOAM reads it), as notes.
+void note_warnings(const FoamDictionary& dictionary, OpenFoamCaseSettings& out) {
+  out.notes.insert(out.notes.end(), dictionary.warnings().begin(), dictionary.warnings().end());
+}
+
 struct FreeStream {
   std::array<double, 3> value{};
   std::string where;
@@ -31,6 +37,7 @@ struct VelocityFile {
   std::optional<FreeStream> freestream, inlet;
   std::vector<std::string> symmetry;
   std::vector<std::string> unusable;  ///< patches whose inflow hydrocoef cannot take, in words
+  std::vector<std::string> warnings;  ///< what the reader read otherwise than written
 };
 
 /// The vector value of `key` in a patch, or nullopt where it is not a
@@ -54,6 +61,7 @@ std::optional<std::array<double, 3>> uniform_vector(const FoamDictionary& d, con
 VelocityFile read_velocity_file(const fs::path& file) {
   VelocityFile out;
   const FoamDictionary u = FoamDictionary::read(file);
+  out.warnings = u.warnings();
   const FoamDictionary* boundary = u.dictionary("boundaryField");
   if (!boundary) return out;
   for (const auto& patch : boundary->dictionary_keys()) {
@@ -141,6 +149,7 @@ void read_velocity(const fs::path& case_dir, OpenFoamCaseSettings& out) {
   for (const auto& file : velocity_files(case_dir)) {
     if (!fs::is_regular_file(file, ec)) continue;
     const VelocityFile read = read_velocity_file(file);
+    out.notes.insert(out.notes.end(), read.warnings.begin(), read.warnings.end());
     if (!read.symmetry.empty()) {
       std::string names;
       for (const auto& name : read.symmetry) names += (names.empty() ? "" : ", ") + name;
@@ -181,6 +190,7 @@ void read_velocity(const fs::path& case_dir, OpenFoamCaseSettings& out) {
 
 void read_forces_function(const fs::path& file, OpenFoamCaseSettings& out) {
   const FoamDictionary control = FoamDictionary::read(file);
+  note_warnings(control, out);
   const FoamDictionary* functions = control.dictionary("functions");
   bool found = false;
   if (functions) {
@@ -213,6 +223,7 @@ void read_viscosity(const fs::path& case_dir, OpenFoamCaseSettings& out) {
     const fs::path file = case_dir / "constant" / name;
     if (!fs::is_regular_file(file)) continue;
     const FoamDictionary d = FoamDictionary::read(file);
+    note_warnings(d, out);
     if (const FoamValue* nu = d.value("nu")) {
       out.layer.set("nu", foam_scalar(*nu, "nu"), where_of(*nu));
       return;

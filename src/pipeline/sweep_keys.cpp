@@ -184,26 +184,63 @@ NamePattern::NamePattern(std::string pattern) : pattern_(std::move(pattern)) {
   spans_folders_ = pattern_.find('/') != std::string::npos;
 }
 
+namespace {
+
+/// Whether c can be part of a finite number std::from_chars reads (digits,
+/// sign, point, exponent): a number ends before the first other character.
+bool number_char(char c) { return (c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-'; }
+
+}  // namespace
+
 std::optional<std::vector<double>> NamePattern::match_text(std::string_view text) const {
   std::vector<double> values(fields_.size());
   // Literal, number, literal, ...: each number is tried longest first, so
   // that "u0.20_v0.05" reads 0.20 then 0.05, and backtracks when the literal
-  // after a number begins with a digit or 'e'.
-  const auto match_from = [&](const auto& self, std::size_t field, std::size_t at) -> bool {
-    const std::string& literal = literals_[field];
-    if (text.substr(at, literal.size()) != literal) return false;
-    at += literal.size();
-    if (field == fields_.size()) return at == text.size();
-    for (std::size_t end = text.size(); end > at; --end) {
+  // after a number begins with a digit or 'e'. The first match in that order
+  // is taken. Trying is bounded: a (field, position) that failed once fails
+  // again, so it is remembered (without that, crafted names such as
+  // "1e1e1e...x" against "{a}e{b}e{c}..." took exponential time: 10 fields
+  // over a minute); the numbers that may start at a position are read once.
+  // Work: O(fields x length x longest number), each number parsed once per
+  // end.
+  const std::size_t n = text.size();
+  const std::size_t fields = fields_.size();
+  std::vector<char> failed((fields + 1) * (n + 1), 0);
+  struct Candidate {
+    std::size_t end;
+    double value;
+  };
+  std::vector<std::optional<std::vector<Candidate>>> numbers_at(n + 1);
+  const auto numbers_from = [&](std::size_t at) -> const std::vector<Candidate>& {
+    auto& slot = numbers_at[at];
+    if (slot) return *slot;
+    slot.emplace();
+    std::size_t run = at;
+    while (run < n && number_char(text[run])) ++run;
+    for (std::size_t end = run; end > at; --end) {  // longest first
       std::string_view number = text.substr(at, end - at);
       if (number.front() == '+') number.remove_prefix(1);
       double value = 0.0;
       const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
       if (number.empty() || ec != std::errc() || ptr != number.data() + number.size() || !std::isfinite(value))
         continue;
-      values[field] = value * fields_[field].scale;
-      if (self(self, field + 1, end)) return true;
+      slot->push_back({end, value});
     }
+    return *slot;
+  };
+  const auto match_from = [&](const auto& self, std::size_t field, std::size_t at) -> bool {
+    char& known_failure = failed[field * (n + 1) + at];
+    if (known_failure) return false;
+    const std::string& literal = literals_[field];
+    if (text.substr(at, literal.size()) == literal) {
+      const std::size_t after = at + literal.size();
+      if (field == fields) return after == n;
+      for (const Candidate& candidate : numbers_from(after)) {
+        values[field] = candidate.value * fields_[field].scale;
+        if (self(self, field + 1, candidate.end)) return true;
+      }
+    }
+    known_failure = 1;
     return false;
   };
   if (!match_from(match_from, 0, 0)) return std::nullopt;

@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -209,14 +212,29 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
   }
   if (!any || t.size() < 8) throw InputError("forced oscillation: expected a force history of at least 8 samples");
 
-  // Whole periods: phase θ = ω t + φ crossing multiples of 2π.
+  // Whole periods: phase θ = ω t + φ crossing multiples of 2π. A period
+  // must span a few sampling steps, which also bounds the count of periods
+  // by the count of samples before anything is sized by it (omega 1e20 made
+  // it 10^19: a conversion out of range, then an empty vector's back()).
   const double period = motion.period();
+  const double mean_step = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+  if (!(period >= kMinStepsPerPeriod * mean_step)) {
+    const auto rounded = [](double x) {  // the steps' sum rounds: 0.01 s, not 0.009999999999999832 s
+      char text[32];
+      std::snprintf(text, sizeof text, "%.4g", x);
+      return std::string(text);
+    };
+    throw InputError("forced oscillation: the period " + shortest_number(period) + " s is shorter than " +
+                     std::to_string(static_cast<int>(kMinStepsPerPeriod)) + " sampling steps (the history steps by " +
+                     rounded(mean_step) + " s on average); expected a period of at least " +
+                     rounded(kMinStepsPerPeriod * mean_step) + " s");
+  }
   const auto boundary = [&](double k) { return (kTwoPi * k - motion.phase) / motion.omega; };
   double k0 = std::ceil((motion.omega * t.front() + motion.phase) / kTwoPi - 1e-9);
   double k_end = std::floor((motion.omega * t.back() + motion.phase) / kTwoPi + 1e-9);
   if (options.start_time)
     k0 = std::max(k0, std::ceil((motion.omega * *options.start_time + motion.phase) / kTwoPi - 1e-9));
-  const double whole = k_end - k0;
+  const double whole = k_end - k0;  // at most (t.size() - 1) / kMinStepsPerPeriod + 1
   if (!(whole >= 3.0))
     throw InputError("forced oscillation: the history holds " +
                      std::to_string(static_cast<long>(std::max(0.0, whole))) + " whole period(s) of " +

@@ -78,12 +78,16 @@ struct HarmonicAnalysis {
   std::array<HarmonicComponent, 6> components;  ///< X..N, `present` where given
 };
 
+/// The fewest sampling steps (the history's mean step) a period may span.
+inline constexpr double kMinStepsPerPeriod = 4.0;
+
 /// Analyses a force history sampled at times `t` (increasing, s). `forces[i]`
 /// is component i's samples (same length as t) or empty when absent.
 /// InputError when the times are not increasing or not finite, the motion's
 /// amplitude or frequency is not positive, a component has the wrong length
-/// or a non-finite value, or fewer than 3 whole periods remain after the
-/// transient (the message says how many there are).
+/// or a non-finite value, the period spans fewer than kMinStepsPerPeriod mean
+/// sampling steps, or fewer than 3 whole periods remain after the transient
+/// (the message says how many there are).
 HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
                                             const std::array<std::span<const double>, 6>& forces,
                                             const HarmonicMotion& motion, const HarmonicFitOptions& options = {});

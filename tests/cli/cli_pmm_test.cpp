@@ -314,6 +314,28 @@ TEST(Pmm, TheMotionIsReadFromTheOpenFoamCaseAndCheckedAgainstTheOptions) {
   EXPECT_EQ(assembled["records"], 1);
 }
 
+TEST(Pmm, AFrequencyTooHighForTheSamplingIsOneLine) {
+  // omega 1e20 in dynamicMeshDict, or --period 1e-20 / 1e-18 / 1e-9: a
+  // SIGSEGV or "internal error" before; now one line naming the input, exit
+  // 2, the database unchanged.
+  TempDir dir;
+  ASSERT_EQ(pmm(dir, write_history(dir.path(), "surge.csv", 0, 0.05), 0, 0.05, "hull"), 0);
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  const fs::path case_dir = write_openfoam_case(dir.path(), 0.02, 1e20);
+  const auto refused = [&](const std::vector<std::string>& args, const std::string& input) {
+    const auto result = run_cli(args, dir.path());
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_NE(result.err.find(input), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find("shorter than 4 sampling steps"), std::string::npos) << result.err;
+    EXPECT_EQ(test::dump_database(dir / "hydrocoef.db"), before);
+  };
+  refused({"pmm", case_dir.string(), "--body", "ball"}, "osc");
+  for (const char* period : {"1e-20", "1e-18", "1e-9"})
+    refused({"pmm", "surge.csv", "--body", "hull", "--motion", "surge", "--amplitude", "0.05", "--period", period},
+            "surge.csv");
+}
+
 TEST(Pmm, TheOpenFoamSphereRunGivesHalfTheDisplacedMass) {
   // examples/openfoam-sphere/pmm: OpenFOAM v1912, the whole mesh of a
   // R = 0.15 m sphere moved as x = A sin(pi t) (PROVENANCE.md there). In

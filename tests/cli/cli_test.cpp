@@ -149,6 +149,32 @@ INSTANTIATE_TEST_SUITE_P(
                       BadTable{"unknown_column", "u [m s^-1],X [N],Foo [N]\n0.1,1,2\n", "1:18", "--column"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
+TEST(Cli, HistoriesWhoseStatisticsWouldNotBeFiniteAreOneLine) {
+  // Denormal or huge time steps, denormal forces: "internal error" before (a
+  // NaN statistic reached the database); now exit 2, one line naming the
+  // file and line, the database unchanged.
+  TempDir dir;
+  ASSERT_EQ(run_cli({"import", kSurge, "--body", "asr-v"}, dir.path()).exit_code, 0);
+  const auto before = dump_database(dir / "hydrocoef.db");
+  const std::vector<std::pair<std::string, std::string>> histories = {
+      {"denormal-steps", "Time [s],X [N]\n0,1\n5e-324,2\n1e-323,1\n1.5e-323,2\n2e-323,1\n"},
+      {"huge-steps", "Time [s],X [N]\n0,1\n1e300,2\n2e300,1\n3e300,2\n4e300,1\n"},
+      {"denormal-forces", "Time [s],X [N]\n0,1e-310\n0.1,2e-310\n0.2,1e-310\n0.3,2e-310\n0.4,1e-310\n"}};
+  for (const auto& [name, text] : histories) {
+    const auto path = dir / (name + ".csv");
+    write(path, text);
+    const auto result =
+        run_cli({"import", path.string(), "--body", "asr-v", "--set", "u=0.1", "--set", "v=0"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2) << name << ": " << result.err;
+    EXPECT_EQ(line_count(result.err), 1u) << result.err;
+    EXPECT_NE(result.err.find(path.string() + ":" + (name == "denormal-forces" ? "2" : "3") + ":"), std::string::npos)
+        << result.err;
+    EXPECT_NE(result.err.find("expected 0 or a magnitude from 1e-100 to"), std::string::npos) << result.err;
+    EXPECT_EQ(result.err.find("internal error"), std::string::npos) << result.err;
+    EXPECT_EQ(dump_database(dir / "hydrocoef.db"), before) << name;
+  }
+}
+
 TEST(Cli, ConflictingRunNeedsReplace) {
   TempDir dir;
   ASSERT_EQ(run_cli({"import", kSurge, "--body", "asr-v"}, dir.path()).exit_code, 0);

@@ -162,5 +162,33 @@ TEST(CaseMotion, CfxSpecifiedDisplacement) {
       {"case.ccl:", "64 kB"});
 }
 
+TEST(CaseMotion, CfxExpansionIsBoundedWhileItIsWrittenNotAfter) {
+  // A wide level: e1 repeats e0 (40 kB written out) 20,000 times, in 100 kB
+  // of CCL. Concatenated whole before the 64 kB check, that level was 800 MB
+  // (a 216 KB file took 224 s, then all memory); written with the bound it
+  // stops past 64 kB.
+  std::string e0 = "      e0 = 1 [m]";
+  for (int i = 0; i < 5000; ++i) e0 += " + 0 [m]";
+  std::string e1 = "      e1 = e0";
+  for (int i = 1; i < 20000; ++i) e1 += "+e0";
+  test::expect_input_error(
+      [&] { cfx_motion(ccl(e0 + "\n" + e1 + "\n", "            Displacement X Component = e1*sin(2 [s^-1]*t)\n")); },
+      {"case.ccl:5:", "expands to more than 64 kB of CEL"});
+  // Below the bound, a named expression used many times is written out once
+  // and reads as before.
+  const auto motion = cfx_motion(ccl("      A = 0.5 [mm] + 0.5 [mm]\n      B = A + A + A + A\n      w = 2*pi/(2 [s])\n",
+                                     "            Displacement X Component = (B + B - B - B + B)*sin(w*t)\n"));
+  ASSERT_TRUE(motion);
+  EXPECT_NEAR(motion->amplitude[0], 0.004, 1e-15);
+  EXPECT_NEAR(motion->omega, kPi, 1e-12);
+  // A chain deeper than 64 references is refused as before.
+  std::string chain;
+  for (int k = 0; k < 70; ++k) chain += "      c" + std::to_string(k) + " = c" + std::to_string(k + 1) + "\n";
+  chain += "      c70 = 1 [m]\n";
+  test::expect_input_error(
+      [&] { cfx_motion(ccl(chain, "            Displacement X Component = c0*sin(2 [s^-1]*t)\n")); },
+      {"case.ccl:", "nested more than 64 deep"});
+}
+
 }  // namespace
 }  // namespace hydrocoef

@@ -201,6 +201,29 @@ TEST(ForceHistoryCsv, ALastRowCutShortCanBeDropped) {
 namespace hydrocoef {
 namespace {
 
+// Values whose statistics are not finite: denormal or huge times or time
+// steps, denormal forces (a NaN standard error reached a NOT NULL column:
+// "internal error"). The history check refuses them with the file and line.
+TEST(ForceHistoryCsv, TimesAndForcesTheStatisticsCannotTakeAreRefusedWithTheLine) {
+  EXPECT_EQ(kMinHistoryMagnitude, 1e-100);
+  EXPECT_EQ(kMaxHistoryMagnitude, 1e100);
+  const auto refused = [](const std::string& text, const std::vector<std::string>& pieces) {
+    test::expect_input_error([&] { check_force_history(parse_force_history_csv(text, "h.csv")); }, pieces);
+  };
+  refused("Time [s],X [N]\n0,1\n5e-324,2\n1e-323,1\n", {"h.csv:3: time 5e-324; expected 0 or a magnitude from"});
+  refused("Time [s],X [N]\n0,1\n1e300,2\n2e300,1\n", {"h.csv:3: time 1e+300; expected 0 or a magnitude from", " s "});
+  refused("Time [s],X [N],N [N m]\n0,1,1\n0.1,1e-310,1\n0.2,1,1\n", {"h.csv:3: total X 1e-310;", " N ("});
+  refused("# Time Fx My\n0 1 1\n0.1 1 3e-200\n", {"h.csv:3: total My 3e-200;", " N m ("});
+  // 0 and the magnitudes inside the range are read.
+  const ForceHistory kept = parse_force_history_csv("Time [s],X [N]\n0,0\n1e-100,-1e100\n1,1e-100\n", "h.csv");
+  EXPECT_NO_THROW(check_force_history(kept));
+  // A history built by hand says which sample.
+  ForceHistory hand;
+  hand.abscissa_values = {0.0, 1.0};
+  hand.values(ForcePart::Total, HistoryComponent::Fx) = {1.0, 1e-320};
+  test::expect_input_error([&] { check_force_history(hand); }, {"sample 2: total Fx 1e-320"});
+}
+
 // Damaged tables: read (a valid history) or refused with a one-line InputError.
 TEST(ForceHistoryCsv, DamagedTablesAreReadOrRefusedInOneLine) {
   const std::vector<std::string> seeds{

@@ -221,5 +221,44 @@ TEST(HistoryText, StreamedFilesGiveTheSameRowsLinesAndDigest) {
                            {"s.dat", "header runs past the first 5 bytes"});
 }
 
+TEST(HistoryText, ALineIsBoundedWhileItIsRead) {
+  // A file of one endless line cost the line twice over (carried and
+  // re-read at every block) before anything refused it; now a line still
+  // without its end past max_line_bytes is refused as soon as it is seen.
+  EXPECT_EQ(kMaxLineBytes, std::size_t{1} << 20);
+  EXPECT_EQ(RowOptions{}.max_line_bytes, kMaxLineBytes);
+  const std::string header = "# Time a\n";
+  const std::string rows = "0 1\n1 2\n2 3\n";
+  test::TempDir dir;
+  RowSyntax syntax;
+  syntax.columns = 2;
+  std::vector<double> t, a;
+  const auto layout = [&](std::string_view) {
+    FileLayout out;
+    out.data_offset = header.size();
+    out.first_line = 2;
+    out.syntax = syntax;
+    out.sink = RowSink{{&t, &a}, nullptr};
+    return out;
+  };
+  // The default bound, with blocks of 64 kB: a line of 1.2 MB of digits.
+  test::write_bytes(dir / "long.dat", header + rows + std::string(1200000, '7') + " 1\n");
+  RowOptions options;
+  options.block_bytes = 65536;
+  test::expect_input_error(
+      [&] { parse_file_rows(dir / "long.dat", layout, options); },
+      {"long.dat:5:", "a line of more than 1048576 bytes; expected rows of at most 1048576 bytes"});
+  // A smaller bound, and a long line that ends within it is read.
+  options.block_bytes = 1000;
+  options.max_line_bytes = 2000;
+  test::write_bytes(dir / "field.dat", header + rows + std::string(5000, '1') + " 1\n");
+  test::expect_input_error([&] { parse_file_rows(dir / "field.dat", layout, options); },
+                           {"field.dat:5:", "a line of more than 2000 bytes"});
+  test::write_bytes(dir / "fits.dat", header + rows + std::string(1500, '0') + "3 4\n");  // 3, written long
+  const StreamedRows fits = parse_file_rows(dir / "fits.dat", layout, options);
+  EXPECT_EQ(fits.rows.rows, 4u);
+  EXPECT_EQ(a.back(), 4.0);
+}
+
 }  // namespace
 }  // namespace hydrocoef::history_text

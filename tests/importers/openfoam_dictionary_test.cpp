@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <fstream>
+#include <string>
 
 #include "src/core/error.hpp"
 #include "src/pipeline/openfoam_case.hpp"
@@ -85,6 +88,203 @@ TEST(OpenFoamDictionary, WhatCannotBeReadIsRefusedWithTheLine) {
   const auto d = FoamDictionary::parse("v uniform (1 2);\ns abc;\n", "case/0/U");
   EXPECT_THROW((void)foam_vector(*d.value("v"), "v"), InputError);
   EXPECT_THROW((void)foam_scalar(*d.value("s"), "s"), InputError);
+}
+
+/// The message of the InputError `read` throws; a failure when it throws none.
+template <typename Read>
+std::string refusal(Read&& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return {};
+}
+
+std::string repeated(const std::string& piece, std::size_t times) {
+  std::string out;
+  out.reserve(piece.size() * times);
+  for (std::size_t i = 0; i < times; ++i) out += piece;
+  return out;
+}
+
+TEST(OpenFoamDictionaryLimits, DefaultsAreTheDocumentedOnes) {
+  const FoamReadLimits limits;
+  EXPECT_EQ(limits.max_nesting, 256u);
+  EXPECT_EQ(limits.max_expanded_tokens, 1'000'000u);
+  EXPECT_EQ(limits.max_entry_tokens, 100'000u);
+  EXPECT_EQ(limits.max_file_bytes, 16u << 20);
+  EXPECT_EQ(limits.max_included_files, 64u);
+  EXPECT_EQ(limits.max_included_bytes, 16u << 20);
+  EXPECT_EQ(limits.max_include_depth, 8);
+}
+
+TEST(OpenFoamDictionaryLimits, DictionariesNestedTwentyThousandDeepAreRefusedNotOverflowed) {
+  // 60 KB: a{a{a{...}}} 20,000 levels (the recursive parser overflowed its stack).
+  const std::string deep = repeated("a{", 20000) + repeated("}", 20000) + "\n";
+  const std::string message = refusal([&] { (void)FoamDictionary::parse(deep, "case/0/U"); });
+  EXPECT_NE(message.find("case/0/U:1:"), std::string::npos) << message;
+  EXPECT_NE(message.find("nested more than 256 deep"), std::string::npos) << message;
+  // The limit itself: 256 levels are read, 257 are not.
+  const auto nested = [](std::size_t levels) {
+    return "FoamFile { version 2.0; }\n" + repeated("a {\n", levels) + "x 1;\n" + repeated("}\n", levels);
+  };
+  const auto d = FoamDictionary::parse(nested(255), "case/0/U");
+  const FoamDictionary* inner = &d;
+  for (int i = 0; i < 255; ++i) inner = inner->dictionary("a");
+  ASSERT_TRUE(inner);
+  EXPECT_EQ(foam_scalar(*inner->value("x"), "x"), 1.0);
+  EXPECT_NO_THROW((void)FoamDictionary::parse(nested(256), "case/0/U"));
+  EXPECT_NE(refusal([&] { (void)FoamDictionary::parse(nested(257), "case/0/U"); }).find("case/0/U:258:"),
+            std::string::npos);
+}
+
+TEST(OpenFoamDictionaryLimits, ReferencesThatDoubleAreCountedBeforeTheyAreCopied) {
+  // a_k = $a_{k-1} $a_{k-1}: a 16-level chain is 65,536 tokens; twenty
+  // entries of it pass the read's budget of 10^6 copied tokens (3 KB of
+  // text reached 3 GB before).
+  std::string text = "a0 1;\n";
+  for (int k = 1; k <= 16; ++k)
+    text += "a" + std::to_string(k) + " $a" + std::to_string(k - 1) + " $a" + std::to_string(k - 1) + ";\n";
+  const auto chain = FoamDictionary::parse(text, "case/0/U");
+  EXPECT_EQ(chain.value("a16")->tokens.size(), 65536u);
+  for (int b = 0; b < 20; ++b) text += "b" + std::to_string(b) + " $a16;\n";
+  const std::string message = refusal([&] { (void)FoamDictionary::parse(text, "case/0/U"); });
+  EXPECT_NE(message.find("case/0/U:"), std::string::npos) << message;
+  EXPECT_NE(message.find("expand to more than 1000000 tokens"), std::string::npos) << message;
+  // One entry is bounded on its own: the chain one level further passes 100,000 tokens.
+  std::string longer = "a0 1;\n";
+  for (int k = 1; k <= 17; ++k)
+    longer += "a" + std::to_string(k) + " $a" + std::to_string(k - 1) + " $a" + std::to_string(k - 1) + ";\n";
+  const std::string entry = refusal([&] { (void)FoamDictionary::parse(longer, "case/0/U"); });
+  EXPECT_NE(entry.find("case/0/U:18:"), std::string::npos) << entry;
+  EXPECT_NE(entry.find("'a17' has more than 100000 tokens"), std::string::npos) << entry;
+}
+
+/// A case folder with system/ and constant/, and a folder beside it holding
+/// a file whose first line must never be quoted.
+struct IncludeCase {
+  test::TempDir dir;
+  fs::path case_dir = dir / "case";
+  fs::path control = case_dir / "system" / "controlDict";
+  IncludeCase() {
+    fs::create_directories(case_dir / "system");
+    fs::create_directories(case_dir / "constant");
+    fs::create_directories(dir / "outside");
+    std::ofstream(dir / "outside" / "secret") << "secret_first_line 42 ( unbalanced\n";
+  }
+  void control_includes(const std::string& directive) const {
+    std::ofstream(control) << "application simpleFoam;\n" << directive << "\n";
+  }
+  std::string refused() const {
+    const std::string message = refusal([&] { (void)FoamDictionary::read(control); });
+    EXPECT_NE(message.find(control.string() + ":2:"), std::string::npos) << message;
+    EXPECT_EQ(message.find("secret_first_line"), std::string::npos) << message;
+    return message;
+  }
+};
+
+TEST(OpenFoamDictionaryIncludes, ReachRegularFilesInsideTheCaseOnly) {
+  IncludeCase c;
+  std::ofstream(c.case_dir / "constant" / "forceSettings") << "rhoInf 1025;\n";
+  std::ofstream(c.case_dir / "system" / "more") << "#include \"<constant>/forceSettings\"\nCofR (1 2 3);\n";
+  c.control_includes(
+      "#include \"more\"\n#includeIfPresent \"missing\"\n#include \"$FOAM_CASE/constant/forceSettings\"");
+  const auto d = FoamDictionary::read(c.control);
+  EXPECT_EQ(foam_scalar(*d.value("rhoInf"), "rhoInf"), 1025.0);
+  EXPECT_EQ(foam_vector(*d.value("CofR"), "CofR"), (std::array<double, 3>{1, 2, 3}));
+  EXPECT_NE(d.value("CofR")->file.find("system/more"), std::string::npos);
+
+  c.control_includes("#include \"/etc/passwd\"");
+  EXPECT_NE(c.refused().find("an absolute file name"), std::string::npos);
+  c.control_includes("#include \"../../outside/secret\"");
+  EXPECT_NE(c.refused().find("outside the case folder"), std::string::npos);
+  c.control_includes("#includeIfPresent \"../../outside/secret\"");
+  EXPECT_NE(c.refused().find("outside the case folder"), std::string::npos);
+  // A symbolic link inside the case to a file outside it, and to a device.
+  fs::create_symlink(c.dir / "outside" / "secret", c.case_dir / "system" / "link");
+  c.control_includes("#include \"link\"");
+  EXPECT_NE(c.refused().find("outside the case folder"), std::string::npos);
+  fs::create_symlink("/dev/zero", c.case_dir / "system" / "zero");
+  c.control_includes("#include \"zero\"");
+  EXPECT_NE(c.refused().find("outside the case folder"), std::string::npos);
+  // A FIFO inside the case is refused before it is opened (opening it would block).
+  ASSERT_EQ(::mkfifo((c.case_dir / "system" / "pipe").c_str(), 0600), 0);
+  c.control_includes("#include \"pipe\"");
+  EXPECT_NE(c.refused().find("not a regular file"), std::string::npos);
+  c.control_includes("#include \"../system\"");
+  EXPECT_NE(c.refused().find("not a regular file"), std::string::npos);
+  c.control_includes("#include \"$HOME/x\"");
+  EXPECT_NE(c.refused().find("a variable other than $FOAM_CASE"), std::string::npos);
+  // The file read itself must be a regular file too.
+  const std::string fifo = refusal([&] { (void)FoamDictionary::read(c.case_dir / "system" / "pipe"); });
+  EXPECT_NE(fifo.find("not a regular file"), std::string::npos) << fifo;
+}
+
+TEST(OpenFoamDictionaryIncludes, FanOutAndBytesAreBudgeted) {
+  IncludeCase c;
+  // Eight includes of the next level at each of 7 levels: 2 million reads before.
+  for (int level = 1; level <= 7; ++level) {
+    std::ofstream out(c.case_dir / "system" / ("level" + std::to_string(level)));
+    out << "x" << level << " 1;\n";
+    if (level < 7)
+      for (int i = 0; i < 8; ++i) out << "#include \"level" << level + 1 << "\"\n";
+  }
+  std::ofstream(c.control) << "application simpleFoam;\n#include \"level1\"\n";
+  const std::string message = refusal([&] { (void)FoamDictionary::read(c.control); });
+  EXPECT_NE(message.find("more than 64 files included in one read"), std::string::npos) << message;
+  EXPECT_NE(message.find("system/level"), std::string::npos) << message;
+  // The bytes of the included files together, with a small bound.
+  std::ofstream(c.case_dir / "system" / "big") << "big (" << repeated("1 ", 100) << ");\n";
+  c.control_includes("#include \"big\"");
+  FoamReadLimits limits;
+  limits.max_included_bytes = 100;
+  const std::string bytes = refusal([&] { (void)FoamDictionary::read(c.control, {}, limits); });
+  EXPECT_NE(bytes.find(c.control.string() + ":2:"), std::string::npos) << bytes;
+  EXPECT_NE(bytes.find("pass 100 bytes together"), std::string::npos) << bytes;
+  limits = {};
+  limits.max_file_bytes = 10;
+  const std::string file = refusal([&] { (void)FoamDictionary::read(c.control, {}, limits); });
+  EXPECT_NE(file.find("expected an OpenFOAM dictionary of at most 10 bytes"), std::string::npos) << file;
+}
+
+TEST(OpenFoamDictionary, AStrayClosingBraceEndsTheFileAsOpenFoamReadsIt) {
+  // OpenFOAM-10's dictionary::read stops where entry::New meets a '}' at the
+  // top level: this controlDict runs in the solver.
+  const auto d =
+      FoamDictionary::parse("application pimpleFoam;\nfunctions\n{\n  forces { type forces; rhoInf 1025; }\n}\n}\n",
+                            "case/system/controlDict");
+  ASSERT_TRUE(d.dictionary("functions"));
+  EXPECT_EQ(foam_scalar(*d.dictionary("functions")->dictionary("forces")->value("rhoInf"), "rhoInf"), 1025.0);
+  ASSERT_EQ(d.warnings().size(), 1u);
+  EXPECT_NE(d.warnings()[0].find("case/system/controlDict:6: a '}' without its '{' ends the dictionary"),
+            std::string::npos)
+      << d.warnings()[0];
+  EXPECT_EQ(d.warnings()[0].find("not read"), std::string::npos) << d.warnings()[0];
+  // What follows it is not read, as in OpenFOAM, and the warning says so.
+  const auto cut = FoamDictionary::parse("a 1;\n}\nb 2;\n", "case/system/controlDict");
+  EXPECT_TRUE(cut.value("a"));
+  EXPECT_FALSE(cut.value("b"));
+  ASSERT_EQ(cut.warnings().size(), 1u);
+  EXPECT_NE(cut.warnings()[0].find(":2: a '}'"), std::string::npos) << cut.warnings()[0];
+  EXPECT_NE(cut.warnings()[0].find("the text after it is not read"), std::string::npos) << cut.warnings()[0];
+  // Inside a dictionary a missing '}' is still refused (a file cut short).
+  EXPECT_NE(refusal([] {
+              (void)FoamDictionary::parse("functions\n{\n  a 1;\n", "case/system/controlDict");
+            }).find("ends inside a dictionary"),
+            std::string::npos);
+}
+
+TEST(OpenFoamCase, AControlDictWithAStrayBraceIsReadWithANote) {
+  test::TempDir dir;
+  fs::create_directories(dir / "system");
+  std::ofstream(dir.path() / "system" / "controlDict")
+      << "application pimpleFoam;\nfunctions\n{\n  forces { type forces; rhoInf 1025; CofR (0 0 0); }\n}\n}\n";
+  const auto settings = openfoam_case_settings(dir.path());
+  EXPECT_EQ(std::get<double>(settings.layer.values.at("rho").value), 1025.0);
+  ASSERT_EQ(settings.notes.size(), 1u);
+  EXPECT_NE(settings.notes[0].find("controlDict:6: a '}' without its '{'"), std::string::npos) << settings.notes[0];
 }
 
 TEST(OpenFoamCase, TheSphereCasesStateTheirFreeStreamDensityCentreAndViscosity) {

@@ -166,6 +166,36 @@ TEST(SplitFields, TextAfterAClosingQuoteIsAnError) {
   }
 }
 
+TEST(SplitFields, AFieldIsBoundedBeforeItIsCopied) {
+  // A line of one 2 GB field cost three times its size before it was
+  // refused; the bound, as the count of fields, refuses it at its column.
+  EXPECT_EQ(kMaxTextFieldBytes, 65536u);
+  const std::string long_field(65537, '1');
+  const std::string line_text = "1," + long_field + ",3";
+  try {
+    (void)split_fields(TextLine{line_text, 7}, ',', "t.csv");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "t.csv:7:3: a field of more than 65536 bytes; expected at most 65536 bytes per field");
+  }
+  EXPECT_EQ(split_fields(TextLine{"1," + std::string(65536, '2') + ",3", 7}, ',', "t.csv")[1].text.size(), 65536u);
+  // A smaller bound, quoted fields (doubled quotes counted as one byte) and blanks around.
+  const std::string quoted = R"(a,"1234""6789",  0123456789  )";
+  const auto fields = split_fields(TextLine{quoted, 2}, ',', "t.csv", kMaxTextFields, 10);
+  EXPECT_EQ(fields[1].text, "1234\"6789");
+  EXPECT_EQ(fields[2].text, "0123456789");
+  for (const std::string text : {R"(a,"1234""678901")", "a,01234567890", "\"12345678901\""}) {
+    try {
+      (void)split_fields(TextLine{text, 2}, ',', "t.csv", kMaxTextFields, 10);
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("t.csv:2:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("a field of more than 10 bytes"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(DetectDelimiter, PrefersCommaThenTabThenSemicolon) {
   EXPECT_EQ(detect_delimiter("u [m s^-1],X [N]"), ',');
   EXPECT_EQ(detect_delimiter("u [m s^-1]\tX [N]"), '\t');

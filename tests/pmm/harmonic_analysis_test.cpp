@@ -163,5 +163,26 @@ TEST(HarmonicAnalysis, RefusesWhatCannotBeAnalysed) {
   EXPECT_NEAR(stokes_number(0.3, 2.0, 1e-6), 45000.0, 1e-6);
 }
 
+TEST(HarmonicAnalysis, PeriodsShorterThanAFewStepsAreRefusedBeforeTheyAreCounted) {
+  // 10 s at 0.01 s: omega 1e20 (or a period of 1e-20 s) gave 10^20 periods,
+  // converted to a count before any check (SIGSEGV); 1e-18 s and 1e-9 s
+  // asked for vectors of 10^18 and 10^10 periods.
+  const History h = sample(
+      10.0, 0.01, [](double t) { return std::sin(3.0 * t); }, 0);
+  EXPECT_EQ(kMinStepsPerPeriod, 4.0);
+  for (const double omega : {1e20, 2.0 * kPi / 1e-20, 2.0 * kPi / 1e-18, 2.0 * kPi / 1e-9, 2.0 * kPi / 0.039}) {
+    try {
+      (void)analyse_forced_oscillation(h.t, h.spans(), HarmonicMotion{0, 0.05, omega, 0.0});
+      ADD_FAILURE() << "accepted omega " << omega;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("is shorter than 4 sampling steps"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("expected a period of at least 0.04 s"), std::string::npos) << e.what();
+    }
+  }
+  // Four steps are enough to be counted (and many periods are still read).
+  const auto result = analyse_forced_oscillation(h.t, h.spans(), HarmonicMotion{0, 0.05, 2.0 * kPi / 0.04, 0.0});
+  EXPECT_GE(result.periods + result.transient_periods, 240u);
+}
+
 }  // namespace
 }  // namespace hydrocoef

@@ -64,8 +64,9 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
   fs::create_directory(dir / "corpus");
   for (const char* folder : {"bad", "vtp-encodings", "fuzz-seeds"})
     for (const auto& entry : fs::directory_iterator(kSource / "tests" / "data" / folder))
-      if (entry.is_regular_file() && (entry.path().extension() == ".csv" || entry.path().extension() == ".vtp" ||
-                                      entry.path().extension() == ".bin"))
+      if (const auto extension = entry.path().extension();
+          entry.is_regular_file() && (extension == ".csv" || extension == ".vtp" || extension == ".bin" ||
+                                      extension == ".ccl" || extension == ".foam"))
         fs::copy_file(entry.path(), dir / "corpus" / entry.path().filename(), fs::copy_options::skip_existing);
   const auto fuzz = run(shell_quote(exe.string()) + " -seed=1 -max_total_time=3 -max_len=4096 -timeout=10 " +
                             "-print_final_stats=1 -artifact_prefix=" + shell_quote((dir / "").string()) + " " +
@@ -81,8 +82,9 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
 }
 
 const std::vector<std::string> kTargets = {
-    "cfdpost_export_fuzz", "cfx_monitor_fuzz", "force_table_fuzz",   "units_fuzz",      "vehicle_fuzz",
-    "scenario_fuzz",       "vtp_fuzz",         "stored_record_fuzz", "case_motion_fuzz"};
+    "cfdpost_export_fuzz",     "cfx_monitor_fuzz", "force_table_fuzz",   "units_fuzz",       "vehicle_fuzz",
+    "scenario_fuzz",           "vtp_fuzz",         "stored_record_fuzz", "case_motion_fuzz", "cfx_ccl_fuzz",
+    "openfoam_dictionary_fuzz"};
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke, ::testing::ValuesIn(kTargets));
 
