@@ -12,7 +12,9 @@
 #   (coarse), 2 or 3 (fine): the background cells of blockMesh shrink by about
 #   1.37 per direction per level (24, 33, 45 cells along x) and the
 #   snappyHexMesh refinement levels and regions stay the same, so every cell
-#   shrinks by about that ratio. Free stream (U, 0, 0). Writes
+#   shrinks by about that ratio, except the two wall layers, which keep the
+#   same absolute thickness (first layer 2.5 mm) so that the wall functions see
+#   the same y+ on every mesh. Free stream (U, 0, 0). Writes
 #   converged/cases/M<MESH>-U<U>/, then (unless REFERENCE=0) continues the same
 #   run from its final state with residualControl REF_RESIDUAL (default 1e-7)
 #   and linear-solver tolerances 1e-12, until that is met, or until the means
