@@ -36,8 +36,8 @@ struct ConvergenceEvidence {
   /// tolerance, in words.
   std::string criteria_missed;
   /// The slowest decay rate per iteration of the controlled fields' residuals
-  /// over the record's tail, for the iterative error
-  /// (src/history/iterative_error.hpp); NaN when not known.
+  /// over the record's tail, reported with the run (the forces creep more
+  /// slowly than this: src/history/iterative_error.hpp); NaN when not known.
   double residual_rate = std::numeric_limits<double>::quiet_NaN();
 };
 

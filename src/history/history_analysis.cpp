@@ -114,8 +114,11 @@ std::string evidence_reason(const ForceHistory& history, const std::optional<Con
   switch (kind) {
     case RunConvergence::Converged:
       return "the convergence criteria (" + evidence->criteria_source + ") hold at the last iteration, " +
-             number(history.abscissa_values.back()) + " (" + evidence->residuals_source + ")" +
-             (solver.empty() ? std::string() : "; " + solver);
+             number(history.abscissa_values.back()) + " (" + evidence->residuals_source +
+             (std::isfinite(evidence->residual_rate)
+                  ? ", residuals falling by a factor " + number(evidence->residual_rate) + " per iteration"
+                  : std::string()) +
+             ")" + (solver.empty() ? std::string() : "; " + solver);
     case RunConvergence::GivenWindow: return "the window was given";
     case RunConvergence::TransientWindow:
       return solver.empty() ? "a record over time: averaged over its statistically steady window"
@@ -252,7 +255,6 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
   analysis.first_abscissa = history.abscissa_values[analysis.first_sample];
   analysis.last_abscissa = history.abscissa_values[analysis.first_sample + analysis.sample_count - 1];
 
-  const double rate = options.evidence ? options.evidence->residual_rate : std::numeric_limits<double>::quiet_NaN();
   bool any_uneven = false;
   for (const HistoryComponent c : kAllHistoryComponents) {
     ComponentAnalysis& component = analysis.components[static_cast<std::size_t>(c)];
@@ -260,7 +262,7 @@ HistoryAnalysis analyze_force_history(const ForceHistory& history, const History
     if (converged) {
       for (const ForcePart part : kAllForceParts) {
         if (!history.has(part, c)) continue;
-        const IterativeError e = iterative_error(history.values(part, c), rate);
+        const IterativeError e = iterative_error(history.values(part, c));
         component.parts[static_cast<std::size_t>(part)] = final_iterate_statistics(e);
         if (part == ForcePart::Total) component.iterative = e;
       }
