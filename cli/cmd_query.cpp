@@ -69,6 +69,8 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
       json["values"][surface.output_names()[k]] = out[k];
       json["units"][surface.output_names()[k]] = surface.output_units()[k];
       if (args.uncertainty) json["standard_deviation"][surface.output_names()[k]] = sd[k];
+      if (args.uncertainty && surface.gp())
+        json["new_run_standard_deviation"][surface.output_names()[k]] = surface.gp()->output(k).run_sd(sd[k]);
       if (args.gradient)
         for (std::size_t a = 0; a < n_axes; ++a)
           json["gradient"][surface.output_names()[k]][surface.axis_names()[a]] = gradient[k * n_axes + a];
@@ -84,7 +86,10 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
     std::cout << "  " << std::left << std::setw(4) << surface.output_names()[k] << std::setw(16)
               << significant(out[k], 9) << surface.output_units()[k];
     if (args.uncertainty)
-      std::cout << "  +/- " << significant(sd[k], 3) << " " << surface.output_units()[k] << " (1 sd)";
+      std::cout << "  +/- " << significant(sd[k], 3) << " " << surface.output_units()[k] << " (1 sd"
+                << (surface.gp() ? "; a new run there: +/- " + significant(surface.gp()->output(k).run_sd(sd[k]), 3)
+                                 : std::string())
+                << ")";
     std::cout << '\n';
     if (args.gradient)
       for (std::size_t a = 0; a < n_axes; ++a) {
@@ -137,7 +142,9 @@ void add_query_command(CLI::App& app, const GlobalOptions& global) {
   query->add_option("--output", args->output, "CSV of results, - for standard output")->capture_default_str();
   query->add_flag("--gradient", args->gradient, "Also the derivative of each output along each axis");
   query->add_flag("--uncertainty", args->uncertainty,
-                  "Also each output's standard deviation (GP surfaces: the posterior's; grid and RBF surfaces: "
+                  "Also each output's standard deviation (GP surfaces: the posterior's, calibrated by the surface's "
+                  "leave-one-out residuals and the runs' count, and a new run's about it with the discrepancy sd; "
+                  "grid and RBF surfaces: "
                   "the runs' uncertainty interpolated as the surface, with the leave-one-out RMS error in "
                   "quadrature; a sigma_OUT column per output in a batch)");
   query->add_flag("--json", args->json, "Machine-readable output (single point)");

@@ -93,8 +93,15 @@ void print_axes(const CoefficientSurface& surface) {
 
 namespace {
 
-/// A GP surface's hyperparameters per output and the three points of its
-/// range where its standard deviation is largest.
+/// A GP output's leave-one-out standardized residuals look like N(0, 1):
+/// RMS within [0.5, 2] and none beyond 4.
+bool gp_calibration_ok(const GpState& state) {
+  return !std::isfinite(state.loo_rms_z) ||
+         (state.loo_rms_z >= 0.5 && state.loo_rms_z <= 2.0 && state.loo_max_z <= 4.0);
+}
+
+/// A GP surface's hyperparameters per output, its calibration and the three
+/// points of its range where its standard deviation is largest.
 nlohmann::json gp_json(const CoefficientSurface& surface) {
   const GpSurfaces* gp = surface.gp();
   nlohmann::json out = {{"kernel", std::string(gp_kernel_name(gp->kernel()))}, {"mean_degree", gp->mean_degree()}};
@@ -103,7 +110,15 @@ nlohmann::json gp_json(const CoefficientSurface& surface) {
     lower.push_back(surface.lower(a)), upper.push_back(surface.upper(a));
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const GpSurface& output = gp->output(k);
-    nlohmann::json entry = {{"signal_sd", output.signal_sd()}, {"length_scales", nlohmann::json::object()}};
+    const GpState& state = output.state();
+    nlohmann::json entry = {
+        {"signal_sd", output.signal_sd()},
+        {"discrepancy_sd", output.nugget_sd()},
+        {"sd_factor", state.sd_factor},
+        {"loo_rms_z", std::isfinite(state.loo_rms_z) ? nlohmann::json(state.loo_rms_z) : nlohmann::json()},
+        {"loo_max_z", std::isfinite(state.loo_max_z) ? nlohmann::json(state.loo_max_z) : nlohmann::json()},
+        {"calibrated", gp_calibration_ok(state)},
+        {"length_scales", nlohmann::json::object()}};
     const auto lengths = output.length_scales();
     for (std::size_t a = 0; a < surface.axis_count(); ++a) entry["length_scales"][surface.axis_names()[a]] = lengths[a];
     entry["largest_sd"] = nlohmann::json::array();
@@ -145,7 +160,18 @@ void print_gp(const CoefficientSurface& surface) {
     for (std::size_t a = 0; a < surface.axis_count(); ++a)
       std::cout << " " << surface.axis_names()[a] << " "
                 << significant(entry["length_scales"][surface.axis_names()[a]].get<double>(), 3);
-    std::cout << '\n';
+    std::cout << ", discrepancy sd " << significant(entry["discrepancy_sd"].get<double>(), 3) << '\n';
+    const GpState& state = surface.gp()->output(k).state();
+    if (std::isfinite(state.loo_rms_z))
+      std::cout << "      leave-one-out standardized residuals: RMS " << significant(state.loo_rms_z, 3) << ", largest "
+                << significant(state.loo_max_z, 3)
+                << (gp_calibration_ok(state) ? " (expected RMS about 1)"
+                                             : " -- WARNING: outside RMS 0.5..2 or beyond 4: the stated sd does not "
+                                               "describe the runs held out")
+                << "; stated sd x " << significant(state.sd_factor, 3)
+                << " (Student-t for the runs' count, and the RMS when above 1)\n";
+    else
+      std::cout << "      calibration not known (stored before it was kept): surface rebuild NAME computes it\n";
     print_largest_sd(surface, entry["largest_sd"]);
   }
 }

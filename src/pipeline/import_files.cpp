@@ -126,7 +126,7 @@ void check_flow_speed(const RunSettings& settings, const RunKey& key, const fs::
   const std::string where = stated->origin.where.empty() ? "the case files" : stated->origin.where;
   if (!settings.find("flow") && !settings.find("u") && !settings.find("v") && !settings.find("w"))
     throw InputError(SourceLocation{file.string()},
-                     "the CFX case states the inlet's normal speed, " + std::string(text) + " (" + where +
+                     "the case states only the free stream's normal speed, " + std::string(text) + " (" + where +
                          "), not its direction; expected the free stream with --flow x,y,z (CFD axes) or the body "
                          "velocity u, v, w from a sidecar, the manifest or --key-from-name");
   const double body = std::hypot(key.nu_b[0], key.nu_b[1], key.nu_b[2]);
@@ -143,10 +143,12 @@ void check_flow_speed(const RunSettings& settings, const RunKey& key, const fs::
 /// another source; checked once the settings are merged, so that the command
 /// line, a sidecar, a manifest row or the name pattern completes the case.
 void check_flow_stated(const RunSettings& settings, const fs::path& file) {
-  if (settings.find("flow") || settings.find("u") || settings.find("v") || settings.find("w")) return;
+  if (settings.find("flow") || settings.find("u") || settings.find("v") || settings.find("w") ||
+      settings.find("at_rest"))
+    return;
   const char* expected =
       "expected the free stream with --flow x,y,z (CFD axes), or the body velocity u, v, w from a sidecar, the "
-      "manifest or --key-from-name";
+      "manifest or --key-from-name (--at-rest for a body at rest)";
   if (const Setting* unstated = settings.find("flow_unstated")) {
     const std::string where = unstated->origin.where.empty() ? file.string() : unstated->origin.where;
     throw InputError(where + ": " + *settings.text("flow_unstated") + "; " + expected);
@@ -155,7 +157,7 @@ void check_flow_stated(const RunSettings& settings, const fs::path& file) {
     char text[64];
     std::snprintf(text, sizeof text, "%.6g m/s", *settings.number("flow_speed"));
     const std::string where = stated->origin.where.empty() ? "the case files" : stated->origin.where;
-    throw InputError(SourceLocation{file.string()}, "the CFX case states the inlet's normal speed, " +
+    throw InputError(SourceLocation{file.string()}, "the case states only the free stream's normal speed, " +
                                                         std::string(text) + " (" + where + "), not its direction; " +
                                                         expected);
   }

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "src/core/error.hpp"
 
@@ -15,8 +16,11 @@ namespace hydrocoef {
 namespace {
 
 constexpr double kSqrt5 = 2.23606797749978969641;
-constexpr double kJitter = 1e-10;  ///< relative to sigma^2, on the diagonal
-constexpr double kPriorSd = 3.0;   ///< of each log length scale (scaled axes)
+constexpr double kJitter = 1e-10;                          ///< relative to sigma^2, on the diagonal
+constexpr double kLengthPriorMean = -0.69314718055994531;  ///< log 0.5 (scaled axes: half the runs' span)
+constexpr double kLengthPriorSd = 1.5;                     ///< of each log length scale
+constexpr double kNuggetPriorMean = -2.99573227355399099;  ///< log 0.05 (scaled values)
+constexpr double kNuggetPriorSd = 3.0;
 constexpr std::size_t kMaxDims = 6;
 
 /// exp(x) for x <= 0, branch-free so that loops over it vectorize: x = k ln2
@@ -194,6 +198,7 @@ struct Scaled {
   Eigen::VectorXd y;       ///< scaled values
   Eigen::VectorXd noise2;  ///< scaled noise variances
   Eigen::MatrixXd H;       ///< n x m mean basis
+  bool nugget = true;      ///< tau is a parameter (the last)
 };
 
 /// Everything REML needs at one set of hyperparameters.
@@ -206,7 +211,8 @@ struct Factorised {
   double objective = 0.0;  ///< REML negative log likelihood (without constants and prior)
 };
 
-bool factorise(const Scaled& p, double sigma, const std::vector<double>& lengths, double jitter, Factorised& f) {
+bool factorise(const Scaled& p, double sigma, const std::vector<double>& lengths, double tau, double jitter,
+               Factorised& f) {
   const std::size_t n = p.n;
   f.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   for (std::size_t i = 0; i < n; ++i) {
@@ -225,7 +231,8 @@ bool factorise(const Scaled& p, double sigma, const std::vector<double>& lengths
     }
   }
   Eigen::MatrixXd K = sigma * sigma * f.correlation;
-  K.diagonal() += p.noise2 + Eigen::VectorXd::Constant(static_cast<Eigen::Index>(n), jitter * sigma * sigma);
+  K.diagonal() +=
+      p.noise2 + Eigen::VectorXd::Constant(static_cast<Eigen::Index>(n), tau * tau + jitter * sigma * sigma);
   f.K.compute(K);
   if (f.K.info() != Eigen::Success) return false;
   const auto L = f.K.matrixL();
@@ -243,22 +250,32 @@ bool factorise(const Scaled& p, double sigma, const std::vector<double>& lengths
   return std::isfinite(f.objective);
 }
 
-/// REML of log-parameters (log sigma, log l_1..d) with its analytic gradient.
+/// REML of log-parameters (log sigma, log l_1..d[, log tau]) with its
+/// analytic gradient.
 class Reml final : public ceres::FirstOrderFunction {
  public:
   explicit Reml(const Scaled& problem) : p_(problem) {}
-  int NumParameters() const override { return static_cast<int>(1 + p_.d); }
+  int NumParameters() const override { return static_cast<int>(1 + p_.d + (p_.nugget ? 1 : 0)); }
 
   bool Evaluate(const double* theta, double* cost, double* gradient) const override {
-    for (std::size_t j = 0; j <= p_.d; ++j)
+    const std::size_t parameters = static_cast<std::size_t>(NumParameters());
+    for (std::size_t j = 0; j < parameters; ++j)
       if (!(std::abs(theta[j]) < 20.0)) return false;  // far outside anything meaningful
     const double sigma = std::exp(theta[0]);
     std::vector<double> lengths(p_.d);
     for (std::size_t a = 0; a < p_.d; ++a) lengths[a] = std::exp(theta[1 + a]);
+    const double tau = p_.nugget ? std::exp(theta[1 + p_.d]) : 0.0;
     Factorised f;
-    if (!factorise(p_, sigma, lengths, kJitter, f)) return false;
+    if (!factorise(p_, sigma, lengths, tau, kJitter, f)) return false;
     double prior = 0.0;
-    for (std::size_t a = 0; a < p_.d; ++a) prior += theta[1 + a] * theta[1 + a] / (2.0 * kPriorSd * kPriorSd);
+    for (std::size_t a = 0; a < p_.d; ++a) {
+      const double e = theta[1 + a] - kLengthPriorMean;
+      prior += e * e / (2.0 * kLengthPriorSd * kLengthPriorSd);
+    }
+    if (p_.nugget) {
+      const double e = theta[1 + p_.d] - kNuggetPriorMean;
+      prior += e * e / (2.0 * kNuggetPriorSd * kNuggetPriorSd);
+    }
     *cost = f.objective + prior;
     if (!gradient) return true;
     // P = K^-1 - K^-1 H A^-1 H^T K^-1; dREML/dtheta = tr(P dK)/2 - alpha^T dK alpha/2.
@@ -296,7 +313,14 @@ class Reml final : public ceres::FirstOrderFunction {
           quadratic += f.alpha[i] * dk * f.alpha[j];
         }
       }
-      gradient[1 + a] = 0.5 * trace - 0.5 * quadratic + theta[1 + a] / (kPriorSd * kPriorSd);
+      gradient[1 + a] =
+          0.5 * trace - 0.5 * quadratic + (theta[1 + a] - kLengthPriorMean) / (kLengthPriorSd * kLengthPriorSd);
+    }
+    if (p_.nugget) {
+      // log tau: dK = 2 tau^2 I.
+      const double t2 = tau * tau;
+      gradient[1 + p_.d] = 0.5 * P.trace() * 2.0 * t2 - 0.5 * 2.0 * t2 * f.alpha.squaredNorm() +
+                           (theta[1 + p_.d] - kNuggetPriorMean) / (kNuggetPriorSd * kNuggetPriorSd);
     }
     return true;
   }
@@ -331,6 +355,9 @@ void check_state(const GpState& s) {
   if (!(s.sigma > 0.0) || !std::isfinite(s.sigma) || !(s.value_scale > 0.0) || !std::isfinite(s.value_scale) ||
       !std::isfinite(s.value_centre))
     bad("signal and value scales must be finite and positive");
+  if (!(s.nugget >= 0.0) || !std::isfinite(s.nugget)) bad("the nugget must be a finite number >= 0");
+  if (!(s.sd_factor >= 1.0) || !std::isfinite(s.sd_factor) || s.sd_factor > 1e3)
+    bad("the standard-deviation factor must be a finite number from 1 to 1000");
   // L packed by rows: row i starts at i (i + 1) / 2, its diagonal i further on.
   for (std::size_t i = 0; i < n; ++i)
     if (!(s.cholesky[i * (i + 1) / 2 + i] > 0.0))
@@ -408,8 +435,16 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
   state.value_centre = mean;
   state.value_scale = spread > 0.0 ? spread : 1.0;
 
-  Scaled p{options.kernel,     options.mean_degree,  n, dims, m, Eigen::MatrixXd(n, dims), Eigen::VectorXd(n),
-           Eigen::VectorXd(n), Eigen::MatrixXd(n, m)};
+  Scaled p{options.kernel,
+           options.mean_degree,
+           n,
+           dims,
+           m,
+           Eigen::MatrixXd(n, dims),
+           Eigen::VectorXd(n),
+           Eigen::VectorXd(n),
+           Eigen::MatrixXd(n, m),
+           options.estimate_nugget};
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t a = 0; a < dims; ++a)
       p.z(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(a)) =
@@ -428,23 +463,27 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
                          " are at the same point");
 
   // Hyperparameters: fixed, or the best of several L-BFGS starts.
-  double sigma = 1.0;
+  double sigma = 1.0, tau = 0.0;
   std::vector<double> lengths(dims, 0.5);
   if (!options.fixed_hyperparameters.empty()) {
-    if (options.fixed_hyperparameters.size() != 1 + dims)
-      throw InputError("GP surface: fixed hyperparameters are sigma and one length scale per axis");
-    sigma = options.fixed_hyperparameters[0] / state.value_scale;
-    for (std::size_t a = 0; a < dims; ++a) lengths[a] = options.fixed_hyperparameters[1 + a] / state.axis_scale[a];
-    if (!(sigma > 0.0) || std::any_of(lengths.begin(), lengths.end(), [](double l) { return !(l > 0.0); }))
-      throw InputError("GP surface: fixed hyperparameters must be positive");
+    const auto& fixed = options.fixed_hyperparameters;
+    if (fixed.size() != 1 + dims && fixed.size() != 2 + dims)
+      throw InputError("GP surface: fixed hyperparameters are sigma, one length scale per axis and optionally tau");
+    sigma = fixed[0] / state.value_scale;
+    for (std::size_t a = 0; a < dims; ++a) lengths[a] = fixed[1 + a] / state.axis_scale[a];
+    if (fixed.size() == 2 + dims) tau = fixed[1 + dims] / state.value_scale;
+    if (!(sigma > 0.0) || std::any_of(lengths.begin(), lengths.end(), [](double l) { return !(l > 0.0); }) ||
+        !(tau >= 0.0) || !std::isfinite(tau))
+      throw InputError("GP surface: fixed hyperparameters must be positive (tau >= 0)");
   } else {
     std::mt19937 random(options.seed);
     std::uniform_real_distribution<double> log_length(std::log(0.05), std::log(3.0));
     double best = INFINITY;
     for (int start = 0; start < options.starts; ++start) {
-      std::vector<double> theta(1 + dims, 0.0);
+      std::vector<double> theta(1 + dims + (p.nugget ? 1 : 0), 0.0);
       const double first[3] = {std::log(0.5), std::log(0.2), std::log(1.5)};
       for (std::size_t a = 0; a < dims; ++a) theta[1 + a] = start < 3 ? first[start] : log_length(random);
+      if (p.nugget) theta[1 + dims] = start % 2 == 0 ? std::log(0.01) : std::log(0.2);
       ceres::GradientProblem problem(new Reml(p));
       ceres::GradientProblemSolver::Options solver;
       solver.line_search_direction_type = ceres::LBFGS;
@@ -456,6 +495,7 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
       best = summary.final_cost;
       sigma = std::exp(theta[0]);
       for (std::size_t a = 0; a < dims; ++a) lengths[a] = std::exp(theta[1 + a]);
+      tau = p.nugget ? std::exp(theta[1 + dims]) : 0.0;
     }
     if (!std::isfinite(best))
       throw InputError(
@@ -465,12 +505,30 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
   // The final factorisation; more jitter only if the matrix is numerically singular.
   Factorised f;
   double jitter = kJitter;
-  while (!factorise(p, sigma, lengths, jitter, f)) {
+  while (!factorise(p, sigma, lengths, tau, jitter, f)) {
     jitter *= 100.0;
     if (jitter > 1e-4)
       throw InputError(
           "GP surface: the kernel matrix cannot be factorised; the runs are too close for these length scales");
   }
+  // Leave-one-out standardized residuals (Dubrule 1983): alpha = P y, so
+  // e_i = alpha_i / P_ii with variance 1 / P_ii.
+  {
+    const auto nn = static_cast<Eigen::Index>(n);
+    const Eigen::MatrixXd Kinv = f.K.solve(Eigen::MatrixXd::Identity(nn, nn));
+    const Eigen::MatrixXd KinvH = f.K.solve(p.H);
+    const Eigen::VectorXd P_diagonal = Kinv.diagonal() - (KinvH * f.A.solve(KinvH.transpose())).diagonal();
+    double sum = 0.0, largest = 0.0;
+    for (Eigen::Index i = 0; i < nn; ++i) {
+      const double z = P_diagonal[i] > 0.0 ? f.alpha[i] / std::sqrt(P_diagonal[i]) : 0.0;
+      sum += z * z;
+      largest = std::max(largest, std::abs(z));
+    }
+    state.loo_rms_z = std::sqrt(sum / static_cast<double>(n));
+    state.loo_max_z = largest;
+  }
+  state.nugget = tau;
+  state.sd_factor = student_t_factor(n - m) * std::max(1.0, state.loo_rms_z);
   state.sigma = sigma;
   state.length_scales = lengths;
   state.log_likelihood = -f.objective;
@@ -495,6 +553,26 @@ GpSurface GpSurface::fit(std::span<const double> x, std::size_t dims, std::span<
 }
 
 double GpSurface::signal_sd() const { return state_.sigma * state_.value_scale; }
+double GpSurface::nugget_sd() const { return state_.nugget * state_.value_scale; }
+double GpSurface::run_sd(double latent_sd, double run_uncertainty) const {
+  const double tau = state_.nugget * state_.value_scale * state_.sd_factor;
+  return std::sqrt(latent_sd * latent_sd + tau * tau + run_uncertainty * run_uncertainty);
+}
+
+double student_t_factor(std::size_t dof) {
+  // t_{0.975, dof} for 1..30 (any table of the Student-t distribution), then
+  // the Cornish-Fisher expansion in 1/dof (error below 1e-4 beyond 30).
+  static constexpr double kTable[30] = {12.7062, 4.3027, 3.1824, 2.7764, 2.5706, 2.4469, 2.3646, 2.3060,
+                                        2.2622,  2.2281, 2.2010, 2.1788, 2.1604, 2.1448, 2.1314, 2.1199,
+                                        2.1098,  2.1009, 2.0930, 2.0860, 2.0796, 2.0739, 2.0687, 2.0639,
+                                        2.0595,  2.0555, 2.0518, 2.0484, 2.0452, 2.0423};
+  constexpr double z = 1.959963984540054;
+  if (dof == 0) throw std::invalid_argument("student_t_factor: dof must be at least 1");
+  if (dof <= 30) return kTable[dof - 1] / z;
+  const double v = static_cast<double>(dof);
+  const double z3 = z * z * z, z5 = z3 * z * z;
+  return (z + (z3 + z) / (4.0 * v) + (5.0 * z5 + 16.0 * z3 + 3.0 * z) / (96.0 * v * v)) / z;
+}
 
 std::vector<double> GpSurface::length_scales() const {
   std::vector<double> out(state_.dims);
@@ -551,7 +629,7 @@ double GpSurface::evaluate(const double* x, Workspace& ws, double* standard_devi
     for (std::size_t t = 0; t < m; ++t) u[t] = h[t] - dot_product(state_.basis_solve.data() + t * n, w, n);
     const double uu = solve_lower_packed(state_.mean_cholesky.data(), u, m);
     const double variance = std::max(0.0, s2 - ww + uu);
-    *standard_deviation = std::sqrt(variance) * state_.value_scale;
+    *standard_deviation = std::sqrt(variance) * state_.value_scale * state_.sd_factor;
   }
   return state_.value_centre + state_.value_scale * mean;
 }
@@ -582,7 +660,7 @@ void GpSurface::posterior(std::span<const double> points, std::size_t count, std
     solve_lower_packed(state_.mean_cholesky.data(), u, m);
   }
   const double s2 = state_.sigma * state_.sigma;
-  const double scale2 = state_.value_scale * state_.value_scale;
+  const double scale2 = state_.value_scale * state_.value_scale * state_.sd_factor * state_.sd_factor;
   covariance.assign(count * count, 0.0);
   for (std::size_t i = 0; i < count; ++i) {
     for (std::size_t j = 0; j <= i; ++j) {

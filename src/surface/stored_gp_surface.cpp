@@ -65,7 +65,11 @@ json gp_definition(const GpSurfaces& gp) {
                               {"axis_centre", s.axis_centre},
                               {"axis_scale", s.axis_scale},
                               {"length_scales", s.length_scales},
-                              {"beta", s.beta}});
+                              {"beta", s.beta},
+                              {"nugget", s.nugget},
+                              {"sd_factor", s.sd_factor},
+                              {"loo_rms_z", s.loo_rms_z},
+                              {"loo_max_z", s.loo_max_z}});
   }
   return out;
 }
@@ -126,6 +130,14 @@ GpSurfaces gp_from_stored(const json& gp_json, std::span<const double> data, std
     s.axis_scale = numbers(entry, "axis_scale", d, where);
     s.length_scales = numbers(entry, "length_scales", d, where);
     s.beta = numbers(entry, "beta", m, where);
+    // Surfaces stored before the nugget and the calibration were kept have
+    // neither: tau 0, factor 1, calibration unknown (NaN).
+    if (entry.contains("nugget")) s.nugget = number(entry, "nugget", where);
+    if (entry.contains("sd_factor")) s.sd_factor = number(entry, "sd_factor", where);
+    if (entry.contains("loo_rms_z") && !entry["loo_rms_z"].is_null()) {
+      s.loo_rms_z = number(entry, "loo_rms_z", where);
+      s.loo_max_z = number(entry, "loo_max_z", where);
+    }
     s.points = take(d * n);
     s.alpha = take(n);
     s.cholesky = take(n * (n + 1) / 2);

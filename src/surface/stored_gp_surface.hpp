@@ -7,7 +7,9 @@
 //    "lower": [...], "upper": [...],                  (the runs' range per axis)
 //    "outputs": [{"sigma": s, "value_centre": c, "value_scale": v,
 //                 "log_likelihood": l, "axis_centre": [...], "axis_scale": [...],
-//                 "length_scales": [...], "beta": [...]}, ...]}   (one per output)
+//                 "length_scales": [...], "beta": [...], "nugget": tau, "sd_factor": f,
+//                 "loo_rms_z": r, "loo_max_z": z}, ...]}   (one per output; the last four
+//                 absent in surfaces stored before them: tau 0, f 1, r and z unknown)
 // Data (float64), per output in turn: the scaled points (N x D, axis-major),
 // alpha (N), the Cholesky factor L packed by rows (N (N + 1) / 2), (L^-1 H)^T
 // (M x N) and the mean's Cholesky factor packed by rows (M (M + 1) / 2), with

@@ -310,6 +310,7 @@ std::vector<double> gp_loo(const GpSurfaces& gp, const Samples& samples) {
     options.mean_degree = full.state().mean_degree;
     options.fixed_hyperparameters = {full.signal_sd()};
     for (const double l : full.length_scales()) options.fixed_hyperparameters.push_back(l);
+    options.fixed_hyperparameters.push_back(full.nugget_sd());
     std::vector<double> x, y, noise;
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i) continue;

@@ -121,7 +121,7 @@ TEST(CliSurface, AFolderWithSidecarsImportsInParallelInOneTransaction) {
   std::filesystem::create_directories(other / "sweep");
   std::filesystem::copy_file(kSphere + "full/u0.10_v0.00/u0.10_v0.00_sphere_t1000.vtp", other / "sweep" / "a.vtp");
   std::ofstream(other / "sweep" / "b.vtp") << "<VTKFile type=\"PolyData\"><PolyData><Piece NumberOfPoints=\"3\"";
-  const auto bad = run_cli({"import", (other / "sweep").string(), "--rho", "998.2"}, other.path());
+  const auto bad = run_cli({"import", (other / "sweep").string(), "--rho", "998.2", "--set", "u=0.1"}, other.path());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("b.vtp"), std::string::npos) << bad.err;
   EXPECT_FALSE(test::database_exists(other / "hydrocoef.db"));

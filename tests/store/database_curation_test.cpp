@@ -194,12 +194,10 @@ ImportBatch averaged_reading(char hash, double u, double x, double standard_erro
   ImportBatch batch = reading(hash, u, x);
   RunStatistics statistics;
   statistics.abscissa = "time";
-  statistics.window_method = "MSER-5 (White 1997)";
-  statistics.window_first = 2.5;
-  statistics.window_last = 10.0;
-  statistics.samples = 751;
-  statistics.flags = std::move(flags);
+  statistics.convergence = "transient-window";
+  statistics.flags = flags;
   statistics.components[0] = ComponentStatistics{standard_error, 0.07, -0.001, 42.5};
+  statistics.windows[0] = ComponentWindow{"MSER-5 (White 1997)", 2.5, 10.0, 751, std::move(flags)};
   batch.runs.front().statistics = statistics;
   return batch;
 }
@@ -258,7 +256,8 @@ TEST(DatabaseCuration, StatisticsOfAComponentTheRunLacksAreRefusedOnRead) {
   test::connect_database(dir / "db")
       .execute(
           "INSERT INTO run_force_statistics SELECT run_id, 'Y', abscissa, window_method, window_first, "
-          "window_last, samples, flags, standard_error, spread, drift, effective_samples FROM "
+          "window_last, samples, flags, standard_error, spread, drift, effective_samples, convergence, "
+          "convergence_reason FROM "
           "run_force_statistics");
   Database db(test::database_location(dir / "db"), Database::OpenMode::ReadOnly);
   try {

@@ -368,11 +368,9 @@ std::vector<ImportBatch> sweep_batches() {
     run.key.disturbances["mesh"] = 1.0 + (i % 2);
     RunStatistics statistics;
     statistics.abscissa = "iteration";
-    statistics.window_method = "MSER-5 (White 1997)";
-    statistics.window_first = 500;
-    statistics.window_last = 1000;
-    statistics.samples = 501;
+    statistics.convergence = "steady-window";
     statistics.components[i % 3 == 0 ? 5 : 0] = ComponentStatistics{0.01 * i, 0.2, 1e-4, 40.0};
+    statistics.windows[i % 3 == 0 ? 5 : 0] = ComponentWindow{"MSER-5 (White 1997)", 500, 1000, 501, {}};
     run.statistics = statistics;
     ImportBatch batch = test::one_run_batch(i + 1, run);
     batch.source.settings = "{\"rho\":{\"value\":998.2,\"source\":\"command line\"}}";
