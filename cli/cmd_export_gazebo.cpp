@@ -77,6 +77,8 @@ void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global) {
                       "The added mass assembled from BODY's stored forced-oscillation runs (hydrocoef pmm; see "
                       "hydrocoef added-mass)");
   command->add_option("--same", args->same, "With --added-mass-from-database: DOF=DOF for a DOF no run moves");
+  command->add_option("--added-mass-period", args->added_mass_period,
+                      "With --added-mass-from-database: the period [s] of the runs to use, when they have several");
   command->add_option("--zero", args->zero, "With --added-mass-from-database: a DOF whose added mass is zero")
       ->delimiter(',');
   command->add_option("--added-mass-rotation", args->rotation,

@@ -20,7 +20,7 @@ struct PmmArgs {
   std::vector<std::string> inputs;
   SurfaceArgs settings;
   std::optional<std::string> sign, ccl, motion;
-  std::optional<double> amplitude, period, start, size, volume;
+  std::optional<double> amplitude, period, start, size, volume, restoring;
   double phase = 0.0;
   std::vector<std::string> columns, units;
   int harmonics = 1;
@@ -54,6 +54,7 @@ void run_pmm(const PmmArgs& args, const GlobalOptions& global) {
   request.medium = args.stream ? PmmMedium::OscillatingStream : PmmMedium::StillWater;
   request.size = args.size;
   request.displaced_volume = args.volume;
+  request.restoring = args.restoring;
   const bool progress = isatty(STDERR_FILENO) != 0;
   if (progress)
     request.import.progress = [](std::size_t done, std::size_t total, const std::filesystem::path& path) {
@@ -109,11 +110,54 @@ void add_pmm_command(CLI::App& app, const GlobalOptions& global) {
                     "The body stood in an oscillating stream (the motion is the stream's): the Froude-Krylov force "
                     "rho V a is removed (needs --rho and --volume)");
   command->add_option("--volume", args->volume, "Displaced volume V [m^3]: the coefficient M_A/(rho V), and a stream");
+  command->add_option("--restoring", args->restoring,
+                      "Restoring coefficient C [N/m, or N m/rad for a rotation] of a force F = -C x on the moved DOF's "
+                      "own component (a floating body's hydrostatics), removed before the added mass is fitted");
   command->add_option("--size", args->size, "Body size D [m] for the Keulegan-Carpenter and Stokes numbers");
   command->add_option("--jobs", args->jobs, "Inputs read in parallel (default: the number of cores)");
   command->add_flag("--store,!--no-store", args->store, "Store the analyses in the database (default)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_pmm(*args, global); });
+}
+
+namespace {
+
+struct PmmRunsArgs {
+  std::optional<std::string> body;
+  bool json = false;
+};
+
+struct PmmDeleteArgs {
+  std::vector<std::int64_t> ids;
+  bool json = false;
+};
+
+}  // namespace
+
+void add_pmm_runs_command(CLI::App& app, const GlobalOptions& global) {
+  auto args = std::make_shared<PmmRunsArgs>();
+  auto* command = app.add_subcommand(
+      "pmm-runs",
+      "List the stored forced-oscillation analyses (hydrocoef pmm), one line each; pmm-runs delete ID... "
+      "removes some");
+  command->add_option("--body", args->body, "Only the analyses of this body");
+  command->add_flag("--json", args->json, "Print JSON");
+  command->callback([args, command, &global] {
+    if (!command->get_subcommands().empty()) return;  // pmm-runs delete
+    Database database(global.database, Database::OpenMode::ReadOnly);
+    print_pmm_records(database.pmm_records(args->body, false), args->json);
+  });
+  auto remove = std::make_shared<PmmDeleteArgs>();
+  auto* delete_command = command->add_subcommand(
+      "delete",
+      "Delete forced-oscillation analyses by id (pmm-runs lists them; pmm prints the id it stored) in one "
+      "transaction; an id that is not stored deletes nothing. Works on records no other command can read");
+  delete_command->add_option("ids", remove->ids, "pmm run ids")->required();
+  delete_command->add_flag("--json", remove->json, "Print JSON");
+  delete_command->callback([remove, &global] {
+    Database database(global.database, Database::OpenMode::MustExist);
+    print_pmm_deleted(database.delete_pmm_runs(remove->ids), global.database, remove->json);
+  });
 }
 
 }  // namespace hydrocoef::cli

@@ -42,6 +42,7 @@ void add_report_command(CLI::App& app, const GlobalOptions& global);
 void add_suggest_command(CLI::App& app, const GlobalOptions& global);
 void add_gci_command(CLI::App& app, const GlobalOptions& global);
 void add_pmm_command(CLI::App& app, const GlobalOptions& global);
+void add_pmm_runs_command(CLI::App& app, const GlobalOptions& global);
 void add_added_mass_command(CLI::App& app, const GlobalOptions& global);
 void add_merge_command(CLI::App& app, const GlobalOptions& global);
 

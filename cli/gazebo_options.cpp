@@ -42,13 +42,15 @@ std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args, const st
                      "; expected exactly one of --added-mass d1,...,d6, --added-mass-matrix FILE, --sphere-radius "
                      "R --rho RHO --added-mass-rotation a,b,c or --added-mass-from-database BODY");
   }
-  if ((!args.same.empty() || !args.zero.empty()) && !args.added_mass_from_database)
-    throw InputError("--same and --zero apply to --added-mass-from-database only; expected it with them");
+  if ((!args.same.empty() || !args.zero.empty() || args.added_mass_period) && !args.added_mass_from_database)
+    throw InputError(
+        "--same, --zero and --added-mass-period apply to --added-mass-from-database only; expected it with them");
   if (args.added_mass_from_database) {
     Database db(database, Database::OpenMode::ReadOnly);
-    const AddedMassAssembly assembly =
-        assemble_added_mass(*args.added_mass_from_database, db.pmm_records(*args.added_mass_from_database, false),
-                            parse_added_mass_options(args.same, args.zero));
+    AddedMassOptions options = parse_added_mass_options(args.same, args.zero);
+    options.period = args.added_mass_period;
+    const AddedMassAssembly assembly = assemble_added_mass(
+        *args.added_mass_from_database, db.pmm_records(*args.added_mass_from_database, false), options);
     if (!assembly.missing.empty()) {
       std::string list;
       for (const auto& m : assembly.missing) list += (list.empty() ? "" : "; ") + m;

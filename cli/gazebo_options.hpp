@@ -24,6 +24,7 @@ struct GazeboArgs {
   std::optional<std::string> rotation;
   std::optional<std::string> added_mass_from_database;  ///< BODY of stored forced-oscillation runs
   std::vector<std::string> same, zero;                  ///< with it: DOFs no run moves
+  std::optional<double> added_mass_period;              ///< with it: the runs' period [s], when they have several
   bool drop_constant = false;
   bool allow_missing = false;
   bool allow_unphysical = false;

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   cli::add_suggest_command(app, global);
   cli::add_gci_command(app, global);
   cli::add_pmm_command(app, global);
+  cli::add_pmm_runs_command(app, global);
   cli::add_added_mass_command(app, global);
   cli::add_merge_command(app, global);
   cli::add_export_command(app, global);

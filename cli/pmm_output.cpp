@@ -85,6 +85,8 @@ nlohmann::json run_json(const PmmRun& run, const PmmSaved* saved) {
                         {"stokes_number", optional_json(r.stokes_number)},
                         {"rho_kg_m3", optional_json(r.rho)},
                         {"displaced_volume_m3", optional_json(r.displaced_volume)},
+                        {"restoring", optional_json(r.restoring)},
+                        {"restoring_unit", r.dof < 3 ? "N/m" : "N m/rad"},
                         {"notes", run.notes},
                         {"components", nlohmann::json::array()}};
   if (saved) out["stored"] = {{"id", saved->id}, {"replaced", saved->replaced}};
@@ -135,6 +137,9 @@ void print_pmm_runs(const std::vector<PmmRun>& runs, const std::vector<PmmSaved>
               << significant(r.window_end, 6) << " s: " << r.periods << " whole periods after " << r.transient_periods
               << " start-up " << (r.transient_periods == 1 ? "period" : "periods") << ", " << r.samples << " samples, "
               << r.harmonics << (r.harmonics == 1 ? " harmonic" : " harmonics") << "\n";
+    if (r.restoring)
+      std::cout << "  restoring force -C x removed from " << kForceNames[r.dof]
+                << " before the fit: C = " << significant(*r.restoring, 6) << (r.dof < 3 ? " N/m" : " N m/rad") << "\n";
     if (r.keulegan_carpenter || r.stokes_number) {
       std::cout << " ";
       if (r.keulegan_carpenter) std::cout << " KC = 2 pi A / D = " << significant(*r.keulegan_carpenter, 4) << ";";
@@ -167,6 +172,74 @@ void print_pmm_runs(const std::vector<PmmRun>& runs, const std::vector<PmmSaved>
   if (!saved.empty()) std::cout << "\nStored in " << escape::one_line(database) << "\n";
 }
 
+void print_pmm_records(const std::vector<PmmRecord>& records, bool json) {
+  const auto inline_entry = [](const PmmRecord& r) -> const PmmCoefficient* {
+    for (const auto& c : r.coefficients)
+      if (c.component == r.dof) return &c;
+    return nullptr;
+  };
+  if (json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& r : records) {
+      const PmmCoefficient* own = inline_entry(r);
+      out.push_back({{"id", r.id},
+                     {"body", r.body},
+                     {"dof", std::string(dof_name(r.dof))},
+                     {"amplitude", r.amplitude},
+                     {"amplitude_unit", r.dof < 3 ? "m" : "rad"},
+                     {"period_s", 2.0 * std::numbers::pi / r.omega},
+                     {"omega_rad_s", r.omega},
+                     {"medium", pmm_medium_name(r.medium)},
+                     {"restoring", optional_json(r.restoring)},
+                     {"added_mass", own ? nlohmann::json(own->added_mass) : nlohmann::json()},
+                     {"damping", own ? nlohmann::json(own->damping) : nlohmann::json()},
+                     {"source_path", r.source_path},
+                     {"created_at", r.created_at}});
+    }
+    std::cout << escape::json_text(out, 2) << '\n';
+    return;
+  }
+  if (records.empty()) {
+    std::cout << "No forced-oscillation runs stored (hydrocoef pmm stores them)\n";
+    return;
+  }
+  std::cout << records.size() << (records.size() == 1 ? " forced-oscillation run" : " forced-oscillation runs")
+            << " (in-line M_A and D of the moved DOF; body axes, F = -M_A x'' - D x' on the body):\n";
+  for (const auto& r : records) {
+    const PmmCoefficient* own = inline_entry(r);
+    std::cout << "  " << std::setw(5) << r.id << "  " << escape::one_line(r.body) << "  " << dof_name(r.dof) << " A "
+              << significant(r.amplitude, 6) << (r.dof < 3 ? " m" : " rad") << ", T "
+              << significant(2.0 * std::numbers::pi / r.omega, 6) << " s";
+    if (own)
+      std::cout << ": M_A " << significant(own->added_mass, 5) << " " << added_mass_unit(r.dof, r.dof) << ", D "
+                << significant(own->damping, 5) << " " << pmm_damping_unit(r.dof, r.dof);
+    if (r.restoring) std::cout << ", restoring " << significant(*r.restoring, 6) << (r.dof < 3 ? " N/m" : " N m/rad");
+    std::cout << "  " << escape::one_line(r.source_path) << "\n";
+  }
+}
+
+void print_pmm_deleted(const std::vector<PmmDeleted>& deleted, const std::string& database, bool json) {
+  if (json) {
+    nlohmann::json out = {{"database", database}, {"deleted", nlohmann::json::array()}};
+    for (const auto& d : deleted)
+      out["deleted"].push_back(
+          {{"id", d.id},
+           {"body", d.body},
+           {"dof", d.dof >= 0 && d.dof < 6 ? nlohmann::json(std::string(dof_name(static_cast<std::size_t>(d.dof))))
+                                           : nlohmann::json()},
+           {"source_path", d.source_path}});
+    std::cout << escape::json_text(out, 2) << '\n';
+    return;
+  }
+  std::cout << "deleted " << deleted.size()
+            << (deleted.size() == 1 ? " forced-oscillation run" : " forced-oscillation runs") << " from "
+            << escape::one_line(database) << ":\n";
+  for (const auto& d : deleted)
+    std::cout << "  " << d.id << "  " << escape::one_line(d.body) << "  "
+              << (d.dof >= 0 && d.dof < 6 ? dof_name(static_cast<std::size_t>(d.dof)) : "?") << "  "
+              << escape::one_line(d.source_path) << "\n";
+}
+
 void print_added_mass(const AddedMassAssembly& a, bool json) {
   if (json) {
     nlohmann::json entries = nlohmann::json::array();
@@ -195,8 +268,24 @@ void print_added_mass(const AddedMassAssembly& a, bool json) {
                            {"linear_se", q.fit.linear_se},
                            {"quadratic", q.fit.quadratic},
                            {"quadratic_se", q.fit.quadratic_se}});
+    nlohmann::json frequencies = nlohmann::json::array();
+    for (const auto& f : a.by_frequency)
+      frequencies.push_back({{"dof", std::string(dof_name(f.dof))},
+                             {"omega_rad_s", f.omega},
+                             {"period_s", 2.0 * std::numbers::pi / f.omega},
+                             {"runs", f.runs},
+                             {"amplitudes", {f.amplitude_min, f.amplitude_max}},
+                             {"added_mass", f.added_mass},
+                             {"added_mass_se", f.added_mass_se},
+                             {"damping", f.damping},
+                             {"damping_se", f.damping_se},
+                             {"used", f.omega == a.omega}});
     const nlohmann::json out = {{"body", a.body},
+                                {"period_s", 2.0 * std::numbers::pi / a.omega},
+                                {"omega_rad_s", a.omega},
                                 {"records", a.records},
+                                {"other_frequency_records", a.other_frequency_records},
+                                {"by_frequency", frequencies},
                                 {"added_mass_b", matrix_json(a.added_mass)},
                                 {"added_mass_se", matrix_json(a.added_mass_se)},
                                 {"damping_b", matrix_json(a.damping)},
@@ -211,8 +300,13 @@ void print_added_mass(const AddedMassAssembly& a, bool json) {
     return;
   }
   std::cout << "Added mass of body " << escape::one_line(a.body) << " from " << a.records
-            << (a.records == 1 ? " forced-oscillation run" : " forced-oscillation runs")
-            << " (body axes; kg, kg m, kg m^2; symmetric)\n";
+            << (a.records == 1 ? " forced-oscillation run" : " forced-oscillation runs") << " at period "
+            << significant(2.0 * std::numbers::pi / a.omega, 6) << " s (omega " << significant(a.omega, 6)
+            << " rad/s; body axes; kg, kg m, kg m^2; symmetric)";
+  if (a.other_frequency_records)
+    std::cout << "; " << a.other_frequency_records << (a.other_frequency_records == 1 ? " run" : " runs")
+              << " at other periods left out";
+  std::cout << "\n";
   const auto print_matrix = [](const Matrix6& m, const Matrix6& se) {
     std::cout << std::setw(8) << "";
     for (std::size_t j = 0; j < 6; ++j) std::cout << std::setw(24) << dof_name(j);
@@ -228,7 +322,7 @@ void print_added_mass(const AddedMassAssembly& a, bool json) {
     }
   };
   print_matrix(a.added_mass, a.added_mass_se);
-  std::cout << (a.positive_definite ? "positive definite" : "NOT positive definite")
+  std::cout << (a.positive_definite ? "positive definite" : "NOT positive definite (printed: --allow-indefinite)")
             << " over the DOFs with a non-zero diagonal (smallest eigenvalue " << significant(a.smallest_eigenvalue, 5)
             << ")\n";
   std::cout << "\nLinear damping D (N s/m, N s, N m s; as measured):\n";
@@ -249,6 +343,17 @@ void print_added_mass(const AddedMassAssembly& a, bool json) {
       if (e.runs > 1) std::cout << ", spread " << significant(e.added_mass_spread, 3) << " " << added_mass_unit(i, j);
       std::cout << "\n";
     }
+  std::cout << "\nIn-line added mass and damping by frequency (runs of one DOF and period combined; * the period "
+               "used above):\n";
+  for (const auto& f : a.by_frequency)
+    std::cout << (f.omega == a.omega ? "* " : "  ") << std::left << std::setw(6) << dof_name(f.dof) << std::right
+              << " T " << significant(2.0 * std::numbers::pi / f.omega, 6) << " s (omega " << significant(f.omega, 4)
+              << " rad/s), " << f.runs << (f.runs == 1 ? " run" : " runs") << ", A " << significant(f.amplitude_min, 4)
+              << (f.amplitude_max != f.amplitude_min ? ".." + significant(f.amplitude_max, 4) : std::string())
+              << (f.dof < 3 ? " m" : " rad") << ": M_A = " << significant(f.added_mass, 5) << " +- "
+              << significant(f.added_mass_se, 2) << " " << added_mass_unit(f.dof, f.dof)
+              << ", D = " << significant(f.damping, 5) << " +- " << significant(f.damping_se, 2) << " "
+              << pmm_damping_unit(f.dof, f.dof) << "\n";
   if (!a.quadratic.empty()) {
     std::cout << "\nQuadratic damping from the amplitude dependence, D_eq(A) = b1 + b2 (8/(3 pi)) A omega:\n";
     for (const auto& q : a.quadratic)

@@ -16,6 +16,11 @@ namespace hydrocoef::cli {
 void print_pmm_runs(const std::vector<PmmRun>& runs, const std::vector<PmmSaved>& saved, const std::string& database,
                     bool json);
 
+/// The stored analyses, one line each (pmm-runs).
+void print_pmm_records(const std::vector<PmmRecord>& records, bool json);
+/// What pmm-runs delete removed.
+void print_pmm_deleted(const std::vector<PmmDeleted>& deleted, const std::string& database, bool json);
+
 /// The assembled matrices.
 void print_added_mass(const AddedMassAssembly& assembly, bool json);
 

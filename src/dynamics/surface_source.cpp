@@ -42,6 +42,7 @@ void resolve_added_mass(VehicleDescription& vehicle, Database& db) {
   AddedMassOptions options;
   for (const auto& [to, from] : reference.same) options.same[dof(to, "added_mass.same")] = dof(from, "added_mass.same");
   for (const auto& name : reference.zero) options.zero.push_back(dof(name, "added_mass.zero"));
+  options.period = reference.period;
   AddedMassAssembly assembly;
   try {
     assembly = assemble_added_mass(reference.body, db.pmm_records(reference.body, false), options);

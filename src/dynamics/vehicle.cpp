@@ -61,13 +61,15 @@ VehicleDescription::AddedMassFromDatabase read_added_mass_reference(const Json& 
     for (std::size_t k = 0; k < zero->size(); ++k)
       out.zero.push_back(ji::string((*zero)[k], file, "added_mass.zero[" + std::to_string(k) + "]"));
   }
+  if (const Json* period = ji::find(value, "period")) out.period = ji::number(*period, file, "added_mass.period");
   return out;
 }
 
 Matrix6 read_added_mass(const Json& value, const std::string& file, double rho) {
   ji::expect_object(value, file, "added_mass",
-                    {"sphere_radius", "diagonal", "matrix", "from_database", "same", "zero"});
-  if (ji::find(value, "from_database") == nullptr && (ji::find(value, "same") || ji::find(value, "zero")))
+                    {"sphere_radius", "diagonal", "matrix", "from_database", "same", "zero", "period"});
+  if (ji::find(value, "from_database") == nullptr &&
+      (ji::find(value, "same") || ji::find(value, "zero") || ji::find(value, "period")))
     ji::fail(file, "added_mass", "found same or zero without from_database, expected them with from_database");
   if (value.size() != 1 && ji::find(value, "from_database") == nullptr)
     ji::fail(file, "added_mass", "expected exactly one of sphere_radius, diagonal, matrix, from_database");

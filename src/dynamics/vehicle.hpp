@@ -18,7 +18,7 @@
 //     one of "buoyancy_force": B (N), "displaced_volume": V (m^3, B = rho g V),
 //            "neutrally_buoyant": true (B = m g),
 //     "added_mass": {"sphere_radius": R} | {"diagonal": [6]} | {"matrix": [[6x6]]}
-//                 | {"from_database": "BODY", "same": {"sway": "surge"}, "zero": ["roll"]},
+//                 | {"from_database": "BODY", "same": {"sway": "surge"}, "zero": ["roll"], "period": 2},
 //                                            optional (none); positive entries,
 //                                            M_A = -diag(X_udot, ...); symmetric;
 //                                            from_database: assembled from the
@@ -75,6 +75,7 @@ struct VehicleDescription {
     std::string body;
     std::vector<std::pair<std::string, std::string>> same;  ///< DOF name -> DOF name
     std::vector<std::string> zero;                          ///< DOF names
+    std::optional<double> period;                           ///< s: the runs' period, when they have several
   };
   std::optional<AddedMassFromDatabase> added_mass_from_database;
   std::vector<Thruster> thrusters;

@@ -15,12 +15,15 @@
 #include "src/core/numbers.hpp"
 #include "src/core/parallel.hpp"
 #include "src/core/sign_convention.hpp"
+#include "src/pmm/added_mass_assembly.hpp"
 #include "src/pmm/imposed_motion.hpp"
 
 namespace hydrocoef {
 namespace fs = std::filesystem;
 
 namespace {
+
+std::string restoring_unit(std::size_t dof) { return dof < 3 ? "N/m" : "N m/rad"; }
 
 std::string motion_text(const HarmonicMotion& m) {
   return std::string(dof_name(m.dof)) + " amplitude " + shortest_number(m.amplitude) + (m.dof < 3 ? " m" : " rad") +
@@ -91,6 +94,34 @@ std::pair<HarmonicMotion, std::string> motion_of(const PmmRequest& request, cons
   return {*from_case, stated->where + " (" + stated->description + ")"};
 }
 
+/// Every number a record stores is finite (a database holding an infinity
+/// is refused by every later reader).
+void check_finite(const PmmRecord& r, const std::string& where) {
+  const auto need = [&](double value, const std::string& what) {
+    if (!std::isfinite(value))
+      throw InputError(SourceLocation{where}, what + " is " + shortest_number(value) + "; expected a finite number");
+  };
+  const auto maybe = [&](const std::optional<double>& value, const std::string& what) {
+    if (value) need(*value, what);
+  };
+  need(r.window_start, "the window start");
+  need(r.window_end, "the window end");
+  maybe(r.keulegan_carpenter, "the Keulegan-Carpenter number");
+  maybe(r.stokes_number, "the Stokes number");
+  maybe(r.restoring, "--restoring");
+  for (const double v : r.history) need(v, "a sample of the kept history");
+  for (const auto& c : r.coefficients) {
+    const std::string name(kForceNames[c.component]);
+    need(c.mean, name + " mean");
+    need(c.added_mass, name + " added mass");
+    need(c.added_mass_se, name + " added mass standard error");
+    need(c.damping, name + " damping");
+    need(c.damping_se, name + " damping standard error");
+    need(c.explained, name + " explained variance");
+    for (const double h : c.harmonics) need(h, name + " harmonic");
+  }
+}
+
 std::vector<double> kept_history(const ForceHistory& history, const HarmonicAnalysis& analysis) {
   const auto& t = history.abscissa_values;
   const std::size_t first =
@@ -128,6 +159,38 @@ PmmRun analyse_one(const PlannedInput& input, const PmmRequest& request) {
       for (auto& values : part)
         for (double& v : values) v = -v;
   const auto [motion, source] = motion_of(request, input.path, read, run.notes);
+  // The displacement must stand well above the round-off of the positions it
+  // is added to (a body's coordinates of about its size, at least 1 m).
+  const double smallest_amplitude =
+      kMinRelativeAmplitude * (motion.dof < 3 ? std::max(1.0, request.size.value_or(1.0)) : 1.0);
+  if (!(motion.amplitude >= smallest_amplitude))
+    throw InputError(SourceLocation{where}, "the motion's amplitude " + shortest_number(motion.amplitude) +
+                                                (motion.dof < 3 ? " m" : " rad") + " (from " + source +
+                                                ") is at the round-off of the positions; expected at least " +
+                                                shortest_number(smallest_amplitude) + (motion.dof < 3 ? " m" : " rad"));
+  const auto inline_component = kAllHistoryComponents[motion.dof];
+  if (request.restoring) {
+    if (request.medium == PmmMedium::OscillatingStream)
+      throw InputError(SourceLocation{where},
+                       "--restoring with --stream: a body held in a stream is not displaced; "
+                       "expected a restoring force only for a body that moves");
+    auto& values = read.history.values(ForcePart::Total, inline_component);
+    if (values.empty())
+      throw InputError(SourceLocation{where}, "--restoring: the history has no " +
+                                                  std::string(kForceNames[motion.dof]) + " component to remove the " +
+                                                  std::string(dof_name(motion.dof)) + " restoring force from");
+    const auto& t = read.history.abscissa_values;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      values[i] += *request.restoring * motion.displacement(t[i]);  // F - (-C x)
+      if (!std::isfinite(values[i]))
+        throw InputError(SourceLocation{where}, "--restoring " + shortest_number(*request.restoring) +
+                                                    ": removing -C x from sample " + std::to_string(i + 1) +
+                                                    " gives a non-finite force; expected a finite result");
+    }
+    run.notes.push_back("the restoring force -C x, C = " + shortest_number(*request.restoring) + " " +
+                        restoring_unit(motion.dof) + ", was removed from " + std::string(kForceNames[motion.dof]) +
+                        " before the fit");
+  }
   std::array<std::span<const double>, 6> forces;
   for (std::size_t c = 0; c < 6; ++c) forces[c] = read.history.values(ForcePart::Total, kAllHistoryComponents[c]);
   try {
@@ -156,6 +219,7 @@ PmmRun analyse_one(const PlannedInput& input, const PmmRequest& request) {
   record.kinematic_viscosity = nu;
   record.rho = rho;
   record.displaced_volume = request.displaced_volume;
+  record.restoring = request.restoring;
   if (request.size && motion.dof < 3) record.keulegan_carpenter = keulegan_carpenter(motion.amplitude, *request.size);
   if (request.size && nu) record.stokes_number = stokes_number(*request.size, motion.period(), *nu);
   record.source_path = read.provenance.path;
@@ -198,6 +262,15 @@ PmmRun analyse_one(const PlannedInput& input, const PmmRequest& request) {
     }
     record.coefficients.push_back(std::move(coefficient));
   }
+  for (const auto& coefficient : record.coefficients)
+    if (coefficient.component == motion.dof && coefficient.added_mass < 0.0)
+      throw InputError(SourceLocation{where},
+                       added_mass_entry_name(motion.dof, motion.dof) + " = " + shortest_number(coefficient.added_mass) +
+                           " " + (motion.dof < 3 ? "kg" : "kg m^2") +
+                           " is negative; expected a positive added mass: a restoring force in phase with the "
+                           "displacement (a floating body's hydrostatics: give --restoring C), or a wrong phase or "
+                           "sign of the motion (check --axes and --phase)");
+  check_finite(record, where);
   return run;
 }
 
@@ -208,6 +281,9 @@ std::vector<PmmRun> analyse_pmm_runs(const PmmRequest& request) {
     throw InputError("--size " + shortest_number(*request.size) + ": expected a body size > 0 (m)");
   if (request.displaced_volume && !(std::isfinite(*request.displaced_volume) && *request.displaced_volume > 0.0))
     throw InputError("--volume " + shortest_number(*request.displaced_volume) + ": expected a volume > 0 (m^3)");
+  if (request.restoring && !std::isfinite(*request.restoring))
+    throw InputError("--restoring " + shortest_number(*request.restoring) +
+                     ": expected a finite restoring coefficient C (N/m, or N m/rad for a rotation)");
   if (request.fit.harmonics < 1 || request.fit.harmonics > 10)
     throw InputError("--harmonics " + std::to_string(request.fit.harmonics) + ": expected 1 to 10");
   const ImportPlan plan = plan_request(request.import);

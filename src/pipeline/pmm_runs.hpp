@@ -42,7 +42,16 @@ struct PmmRequest {
   PmmMedium medium = PmmMedium::StillWater;
   std::optional<double> size;              ///< body size D [m] for the KC and Stokes numbers
   std::optional<double> displaced_volume;  ///< V [m^3], required for an oscillating stream
+  /// C of a restoring force F = -C x on the oscillated DOF's own component
+  /// (N/m, or N m/rad for a rotation: a floating body's hydrostatics),
+  /// removed from the history before the fit. Refused with a stream.
+  std::optional<double> restoring;
 };
+
+/// The smallest amplitude analysed, relative to the body's scale (its size,
+/// at least 1 m) for a translation, in rad for a rotation: below it the
+/// displacement is at the round-off of the positions.
+inline constexpr double kMinRelativeAmplitude = 1e-9;
 
 struct PmmRun {
   std::filesystem::path path;
@@ -54,8 +63,11 @@ struct PmmRun {
 
 /// Reads and analyses every input (nothing is stored). InputError naming the
 /// file for an input that is not a time history, a motion that cannot be
-/// found or that the options contradict, fewer than 3 whole periods after
-/// the transient, or a stream without rho or V.
+/// found or that the options contradict, an amplitude below
+/// kMinRelativeAmplitude of the body's scale, fewer than 3 whole periods
+/// after the transient, a stream without rho or V, a negative diagonal added
+/// mass (the message names the likely causes: a restoring force, a wrong
+/// phase or sign), or any result that is not a finite number.
 std::vector<PmmRun> analyse_pmm_runs(const PmmRequest& request);
 
 /// Stores the runs' records in one transaction.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 #include "src/core/error.hpp"
@@ -55,21 +56,78 @@ std::pair<double, double> combined(const std::vector<double>& values, const std:
   return {mean, std::sqrt(ss / static_cast<double>(n - 1) / static_cast<double>(n))};
 }
 
+bool same_frequency(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }
+
+/// The frequency of `frequencies` that `omega` equals.
+double frequency_of(const std::vector<double>& frequencies, double omega) {
+  for (const double f : frequencies)
+    if (same_frequency(f, omega)) return f;
+  return omega;
+}
+
+std::string period_list(const std::string& body, const std::vector<PmmRecord>& records,
+                        const std::vector<double>& frequencies) {
+  std::string out;
+  for (const double f : frequencies) {
+    std::size_t runs = 0;
+    for (const auto& r : records) runs += r.body == body && same_frequency(r.omega, f) ? 1 : 0;
+    out += (out.empty() ? "" : ", ") + shortest_number(2.0 * std::numbers::pi / f) + " s (" + std::to_string(runs) +
+           (runs == 1 ? " run)" : " runs)");
+  }
+  return out;
+}
+
 }  // namespace
+
+std::vector<double> pmm_frequencies(const std::string& body, const std::vector<PmmRecord>& records) {
+  std::vector<double> out;
+  for (const auto& r : records)
+    if (r.body == body && std::none_of(out.begin(), out.end(), [&](double f) { return same_frequency(f, r.omega); }))
+      out.push_back(r.omega);
+  std::sort(out.begin(), out.end());
+  return out;
+}
 
 AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector<PmmRecord>& records,
                                       const AddedMassOptions& options) {
   AddedMassAssembly out;
   out.body = body;
+  const std::vector<double> frequencies = pmm_frequencies(body, records);
+  if (frequencies.empty())
+    throw InputError("body '" + printable_text(body, 80) +
+                     "' has no stored forced-oscillation runs; expected some (hydrocoef pmm ... --body BODY)");
+  if (options.period) {
+    const double period = *options.period;
+    const auto chosen = std::find_if(frequencies.begin(), frequencies.end(), [&](double f) {
+      return std::abs(2.0 * std::numbers::pi / f - period) <= 1e-9 * period;
+    });
+    if (!(std::isfinite(period) && period > 0.0) || chosen == frequencies.end())
+      throw InputError("period " + shortest_number(period) + " s: body '" + printable_text(body, 80) +
+                       "' has no run at it; expected one of " + period_list(body, records, frequencies));
+    out.omega = *chosen;
+  } else if (frequencies.size() > 1) {
+    throw InputError("body '" + printable_text(body, 80) + "' has forced-oscillation runs at " +
+                     std::to_string(frequencies.size()) + " periods, " + period_list(body, records, frequencies) +
+                     ", and the added mass and damping depend on the frequency; expected the period to use "
+                     "(added-mass --period T; export-gazebo --added-mass-period T; a vehicle's added_mass.period)");
+  } else {
+    out.omega = frequencies.front();
+  }
   struct Samples {
     std::vector<double> m, m_se, d, d_se;
   };
   std::array<std::array<Samples, 6>, 6> samples;
+  // Every frequency's runs, by DOF and frequency: the in-line entries of each
+  // and the quadratic damping of each.
   std::map<std::pair<std::size_t, double>, std::vector<const PmmRecord*>> by_frequency;
   for (const auto& record : records) {
     if (record.body != body) continue;
+    by_frequency[{record.dof, frequency_of(frequencies, record.omega)}].push_back(&record);
+    if (!same_frequency(record.omega, out.omega)) {
+      ++out.other_frequency_records;
+      continue;
+    }
     ++out.records;
-    by_frequency[{record.dof, record.omega}].push_back(&record);
     const std::size_t j = record.dof;
     for (const auto& c : record.coefficients) {
       const std::size_t i = c.component;
@@ -89,9 +147,6 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
       ++e.runs;
     }
   }
-  if (out.records == 0)
-    throw InputError("body '" + printable_text(body, 80) +
-                     "' has no stored forced-oscillation runs; expected some (hydrocoef pmm ... --body BODY)");
   for (std::size_t i = 0; i < 6; ++i)
     for (std::size_t j = 0; j < 6; ++j) {
       const auto& s = samples[i][j];
@@ -169,9 +224,11 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
         out.missing.push_back(added_mass_entry_name(i, j) + (i == j ? " (no " + std::string(dof_name(j)) + " run)"
                                                                     : " (no " + std::string(dof_name(j)) + " or " +
                                                                           std::string(dof_name(i)) + " run gives it)"));
-  // Positive definite over the DOFs with a non-zero diagonal, and no
-  // negative eigenvalue beyond round-off in the whole matrix (a DOF stated
-  // zero whose row holds measured couplings of weight makes it indefinite).
+  // Positive definite over the DOFs with a non-zero diagonal, and, once no
+  // entry is missing, no negative eigenvalue beyond round-off in the whole
+  // matrix (a DOF stated zero whose row holds measured couplings of weight
+  // makes it indefinite; a missing diagonal beside measured couplings says
+  // nothing yet).
   std::vector<Eigen::Index> dofs;
   for (Eigen::Index k = 0; k < 6; ++k)
     if (out.added_mass(k, k) != 0.0) dofs.push_back(k);
@@ -184,12 +241,35 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
     out.smallest_eigenvalue = eigen.eigenvalues().minCoeff();
     const Eigen::SelfAdjointEigenSolver<Matrix6> whole(out.added_mass, Eigen::EigenvaluesOnly);
     const double scale = out.added_mass.cwiseAbs().maxCoeff();
-    out.positive_definite = out.smallest_eigenvalue > 0.0 && whole.eigenvalues().minCoeff() >= -1e-9 * scale;
+    out.positive_definite =
+        out.smallest_eigenvalue > 0.0 && (!out.missing.empty() || whole.eigenvalues().minCoeff() >= -1e-9 * scale);
     if (out.smallest_eigenvalue > 0.0 && !out.positive_definite)
       out.notes.push_back("the whole matrix has eigenvalue " + four_digits(whole.eigenvalues().minCoeff()) +
                           ": a DOF with no added mass of its own has couplings to the others");
   }
-  // Quadratic damping from the amplitude dependence at one frequency.
+  // The in-line entries at each frequency, and the quadratic damping from
+  // the amplitude dependence at one frequency.
+  for (const auto& [dof_omega, group] : by_frequency) {
+    FrequencyRow frequency;
+    frequency.dof = dof_omega.first;
+    frequency.omega = dof_omega.second;
+    std::vector<double> m, m_se, d, d_se;
+    for (const PmmRecord* record : group)
+      for (const auto& c : record->coefficients)
+        if (c.component == record->dof) {
+          frequency.amplitude_min =
+              frequency.runs == 0 ? record->amplitude : std::min(frequency.amplitude_min, record->amplitude);
+          frequency.amplitude_max = std::max(frequency.amplitude_max, record->amplitude);
+          ++frequency.runs;
+          m.push_back(c.added_mass), m_se.push_back(c.added_mass_se);
+          d.push_back(c.damping), d_se.push_back(c.damping_se);
+        }
+    if (frequency.runs > 0) {
+      std::tie(frequency.added_mass, frequency.added_mass_se) = combined(m, m_se);
+      std::tie(frequency.damping, frequency.damping_se) = combined(d, d_se);
+      out.by_frequency.push_back(frequency);
+    }
+  }
   for (const auto& [dof_omega, group] : by_frequency) {
     std::vector<double> amplitudes, damping, se;
     for (const PmmRecord* record : group)

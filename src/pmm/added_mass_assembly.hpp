@@ -18,9 +18,15 @@
 //   column from another's (a symmetric body: sway as surge), `zero` states
 //   that a DOF's column is zero (a sphere's rotations in potential flow).
 // - The matrix over the DOFs with a non-zero diagonal is checked positive
-//   definite (its smallest eigenvalue is reported), and the whole matrix for
-//   no eigenvalue below -1e-9 of its largest entry: a DOF stated zero whose
-//   row holds measured couplings of weight fails it.
+//   definite (its smallest eigenvalue is reported), and, when no entry is
+//   missing, the whole matrix for no eigenvalue below -1e-9 of its largest
+//   entry: a DOF stated zero whose row holds measured couplings of weight
+//   fails it.
+//
+// One frequency: added mass and damping depend on the frequency, so the
+// matrices are made from the runs of one frequency (chosen by its period
+// when there are several; refused, listing them, when none is chosen), and
+// the in-line entries of every frequency are listed apart (by_frequency).
 //
 // Quadratic damping: runs of one DOF at one frequency and two or more
 // amplitudes give the linear and quadratic parts of the diagonal damping
@@ -44,6 +50,9 @@ namespace hydrocoef {
 struct AddedMassOptions {
   std::map<std::size_t, std::size_t> same;  ///< DOF -> the DOF whose column it takes
   std::vector<std::size_t> zero;            ///< DOFs whose column is zero
+  /// The period [s] whose runs make the matrix (matched to 1e-9); none: the
+  /// body's runs must all be at one frequency.
+  std::optional<double> period;
 };
 
 /// One entry as measured, before symmetry.
@@ -63,8 +72,20 @@ struct QuadraticDampingRow {
   QuadraticDamping fit;
 };
 
+/// The in-line entries M_A[j][j] and D[j][j] of the runs of one DOF at one
+/// frequency (all the body's runs, whatever frequency the matrix uses).
+struct FrequencyRow {
+  std::size_t dof = 0;
+  double omega = 0.0;  ///< rad/s
+  std::size_t runs = 0;
+  double amplitude_min = 0.0, amplitude_max = 0.0;
+  double added_mass = 0.0, added_mass_se = 0.0;  ///< combined as the matrix's entries are
+  double damping = 0.0, damping_se = 0.0;
+};
+
 struct AddedMassAssembly {
   std::string body;
+  double omega = 0.0;                       ///< rad/s: the frequency of the runs that make the matrices
   Matrix6 added_mass = Matrix6::Zero();     ///< M_A, symmetric (kg, kg m, kg m^2)
   Matrix6 added_mass_se = Matrix6::Zero();  ///< standard errors of the entries
   Matrix6 damping = Matrix6::Zero();        ///< D, as measured (not symmetrised)
@@ -74,14 +95,23 @@ struct AddedMassAssembly {
   std::vector<std::string> missing;                   ///< "M_A[sway][sway] (Y from a sway run)"
   std::vector<std::string> notes;
   bool positive_definite = false;
-  double smallest_eigenvalue = 0.0;  ///< over the DOFs with a non-zero diagonal
-  std::vector<QuadraticDampingRow> quadratic;
-  std::size_t records = 0;
+  double smallest_eigenvalue = 0.0;            ///< over the DOFs with a non-zero diagonal
+  std::vector<QuadraticDampingRow> quadratic;  ///< per DOF and frequency, from all the body's runs
+  std::vector<FrequencyRow> by_frequency;      ///< by DOF, then frequency
+  std::size_t records = 0;                     ///< runs at the chosen frequency
+  std::size_t other_frequency_records = 0;     ///< the body's runs at other frequencies (left out)
 };
 
-/// Assembles the body's matrices from its records (those of other bodies are
-/// ignored). InputError when there are none, naming the body, or for a
-/// `same`/`zero` DOF that the runs measure themselves.
+/// The distinct frequencies [rad/s] of a body's runs (equal to 1e-9), ascending.
+std::vector<double> pmm_frequencies(const std::string& body, const std::vector<PmmRecord>& records);
+
+/// Assembles the body's matrices from its records at one frequency (those of
+/// other bodies are ignored): the added mass and damping depend on the
+/// frequency, so runs at different frequencies are never combined. InputError
+/// when there are none, naming the body; when the runs are at several
+/// frequencies and `options.period` chooses none, or a period no run has
+/// (the message lists the periods and their runs); or for a `same`/`zero`
+/// DOF that the runs measure themselves.
 AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector<PmmRecord>& records,
                                       const AddedMassOptions& options = {});
 

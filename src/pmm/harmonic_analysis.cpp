@@ -1,6 +1,7 @@
 #include "src/pmm/harmonic_analysis.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
+#include "src/core/run.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -82,6 +84,7 @@ inline double sample_weight(std::span<const double> t, std::size_t i, double lo,
 struct WindowFit {
   std::array<Eigen::VectorXd, 6> coefficients;
   std::array<double, 6> explained{};
+  Eigen::MatrixXd normal;  ///< the weighted normal matrix of the basis
 };
 
 WindowFit fit_window(std::span<const double> t, const Phases& phases,
@@ -139,8 +142,10 @@ WindowFit fit_window(std::span<const double> t, const Phases& phases,
   Eigen::MatrixXd A(K, K);
   for (int r = 0; r < K; ++r)
     for (int q = 0; q <= r; ++q) A(r, q) = A(q, r) = normal[r][q];
-  const Eigen::LDLT<Eigen::MatrixXd> solver(A);
   WindowFit out;
+  out.normal = A;
+  if (n_present == 0) return out;
+  const Eigen::LDLT<Eigen::MatrixXd> solver(A);
   for (std::size_t k = 0; k < n_present; ++k)
     out.coefficients[present[k]] = solver.solve(Eigen::Map<const Eigen::VectorXd>(rhs[k], K));
   if (!explained) return out;
@@ -193,6 +198,16 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
     throw InputError("forced oscillation: expected a finite positive amplitude and frequency");
   if (options.harmonics < 1 || options.harmonics > 10)
     throw InputError("forced oscillation: harmonics must be 1 to 10");
+  // M_A and D divide by A w^2 and A w: both must be ordinary numbers (an
+  // amplitude of 5e-324 made them 0 and M_A infinite, 1e308 made A w^2
+  // infinite and M_A 0).
+  for (const double scale : {motion.amplitude * motion.omega, motion.amplitude * motion.omega * motion.omega})
+    if (!std::isnormal(scale) || !std::isfinite(scale))
+      throw InputError("forced oscillation: amplitude " + shortest_number(motion.amplitude) + " and frequency " +
+                       shortest_number(motion.omega) + " rad/s give a velocity amplitude A w = " +
+                       shortest_number(motion.amplitude * motion.omega) + " and an acceleration amplitude A w^2 = " +
+                       shortest_number(motion.amplitude * motion.omega * motion.omega) +
+                       "; expected both finite and well above zero");
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!std::isfinite(t[i])) throw InputError("forced oscillation: time " + std::to_string(i + 1) + " is not finite");
     if (i > 0 && !(t[i] > t[i - 1]))
@@ -229,19 +244,46 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
                      rounded(mean_step) + " s on average); expected a period of at least " +
                      rounded(kMinStepsPerPeriod * mean_step) + " s");
   }
-  const auto boundary = [&](double k) { return (kTwoPi * k - motion.phase) / motion.omega; };
-  double k0 = std::ceil((motion.omega * t.front() + motion.phase) / kTwoPi - 1e-9);
-  double k_end = std::floor((motion.omega * t.back() + motion.phase) / kTwoPi + 1e-9);
-  if (options.start_time)
-    k0 = std::max(k0, std::ceil((motion.omega * *options.start_time + motion.phase) / kTwoPi - 1e-9));
-  const double whole = k_end - k0;  // at most (t.size() - 1) / kMinStepsPerPeriod + 1
+  // Counted from the window's start (the first sample, or --start), not from
+  // where the motion's phase crosses 2π: least squares over whole periods
+  // needs no particular phase at the ends, and a motion of phase π (a
+  // reversed axis) would otherwise lose a period.
+  const double origin = options.start_time ? std::max(t.front(), *options.start_time) : t.front();
+  const auto boundary = [&](double k) { return origin + k * period; };
+  const double k0 = 0.0;
+  const double k_end = std::floor((t.back() - origin) / period + 1e-9);
+  const double whole = k_end - k0;
   if (!(whole >= 3.0))
-    throw InputError("forced oscillation: the history holds " +
-                     std::to_string(static_cast<long>(std::max(0.0, whole))) + " whole period(s) of " +
-                     std::to_string(period) + " s after its start; expected at least 3");
+    throw InputError(
+        "forced oscillation: the history holds " + std::to_string(static_cast<long>(std::max(0.0, whole))) +
+        " whole period(s) of " + shortest_number(period) + " s counted from " +
+        (options.start_time
+             ? "--start " + shortest_number(*options.start_time) + " s"
+             : "its first sample at " + shortest_number(t.front()) + " s (--start counts from a later time)") +
+        " to its end at " + shortest_number(t.back()) + " s; expected at least 3 (a longer run" +
+        (options.start_time ? ", or an earlier --start)" : ")"));
   const auto total_periods = static_cast<std::size_t>(whole);
 
   const Phases phases = phases_of(t, motion);
+  // The samples must resolve the fitted harmonics: over whole periods the
+  // basis 1, sin kθ, cos kθ is orthogonal with weights 1, 1/2, 1/2. A period
+  // of one or two sampling steps (every sample at the same phase) or too many
+  // harmonics for the samples make it nearly dependent, and the coefficients
+  // meaningless however well they fit.
+  {
+    const WindowFit basis_only = fit_window(t, phases, {}, options.harmonics, boundary(k0), boundary(k_end), false);
+    const Eigen::MatrixXd normal = basis_only.normal / basis_only.normal(0, 0);
+    const double smallest =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(normal, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+    if (!(smallest >= 0.25))
+      throw InputError("forced oscillation: the samples do not resolve " + std::to_string(options.harmonics) +
+                       (options.harmonics == 1 ? " harmonic" : " harmonics") + " of the period " +
+                       shortest_number(period) + " s (the history steps by " +
+                       shortest_number((t.back() - t.front()) / static_cast<double>(t.size() - 1)) +
+                       " s on average; the sampled sines and cosines are nearly dependent, smallest eigenvalue " +
+                       shortest_number(smallest) + " of 0.5); expected many sampling steps per period" +
+                       (options.harmonics > 1 ? " or fewer --harmonics" : ""));
+  }
   // Period-by-period first harmonics, for the transient and the spread.
   std::vector<std::array<Eigen::VectorXd, 6>> per_period(total_periods);
   for (std::size_t p = 0; p < total_periods; ++p) {
@@ -265,8 +307,10 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
   }
   const std::size_t kept = total_periods - dropped;
   if (kept < 3)
-    throw InputError("forced oscillation: " + std::to_string(kept) +
-                     " whole period(s) left after the start-up; expected at least 3");
+    throw InputError("forced oscillation: " + std::to_string(kept) + " whole period(s) of " + shortest_number(period) +
+                     " s left after the " + std::to_string(dropped) +
+                     " start-up period(s) MSER dropped; expected at least 3 (a longer run, or --start to say where "
+                     "the periods begin)");
 
   HarmonicAnalysis out;
   out.motion = motion;
@@ -306,6 +350,18 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
     const double root_n = std::sqrt(static_cast<double>(kept));
     component.added_mass_se = component.in_phase_spread / root_n / acceleration_scale;
     component.damping_se = component.quadrature_spread / root_n / velocity_scale;
+    bool finite = std::isfinite(component.mean) && std::isfinite(component.explained) &&
+                  std::isfinite(component.added_mass) && std::isfinite(component.damping) &&
+                  std::isfinite(component.added_mass_se) && std::isfinite(component.damping_se);
+    for (int k = 0; k < options.harmonics; ++k)
+      finite = finite && std::isfinite(component.in_phase[static_cast<std::size_t>(k)]) &&
+               std::isfinite(component.quadrature[static_cast<std::size_t>(k)]);
+    if (!finite)
+      throw InputError("forced oscillation: component " + std::string(kForceNames[c]) + " gives added mass " +
+                       shortest_number(component.added_mass) + " +- " + shortest_number(component.added_mass_se) +
+                       " and damping " + shortest_number(component.damping) + " +- " +
+                       shortest_number(component.damping_se) +
+                       "; expected finite numbers (forces too large for their sum in floating point?)");
   }
   return out;
 }

@@ -16,7 +16,8 @@
 // F in N or N m; M_A in kg, kg m or kg m^2; D in N s/m, N s or N m s.
 //
 // The fit is least squares over whole periods after the start-up transient,
-// each sample weighted by the time it stands for (so uneven steps do not
+// counted from the first sample (or the given start time) whatever the
+// motion's phase there, each sample weighted by the time it stands for (so uneven steps do not
 // bias it). The transient is found by MSER truncation (White 1997, "An
 // effective truncation heuristic for bias reduction in simulation output",
 // Simulation 69(6)) applied to the first-harmonic amplitude of each period:
@@ -84,10 +85,13 @@ inline constexpr double kMinStepsPerPeriod = 4.0;
 /// Analyses a force history sampled at times `t` (increasing, s). `forces[i]`
 /// is component i's samples (same length as t) or empty when absent.
 /// InputError when the times are not increasing or not finite, the motion's
-/// amplitude or frequency is not positive, a component has the wrong length
-/// or a non-finite value, the period spans fewer than kMinStepsPerPeriod mean
-/// sampling steps, or fewer than 3 whole periods remain after the transient
-/// (the message says how many there are).
+/// amplitude or frequency is not positive or A w or A w^2 is not an ordinary
+/// finite number, a component has the wrong length or a non-finite value,
+/// the period spans fewer than kMinStepsPerPeriod mean sampling steps, fewer
+/// than 3 whole periods remain after the transient (the message says how
+/// many there are and names --start), the samples do not resolve the fitted
+/// harmonics (the sampled basis is nearly dependent), or a fitted
+/// coefficient is not finite.
 HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
                                             const std::array<std::span<const double>, 6>& forces,
                                             const HarmonicMotion& motion, const HarmonicFitOptions& options = {});

@@ -392,30 +392,35 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
     std::vector<std::string> pmm_bodies;
     for (const auto& r : pmm)
       if (std::find(pmm_bodies.begin(), pmm_bodies.end(), r.body) == pmm_bodies.end()) pmm_bodies.push_back(r.body);
-    for (const auto& body : pmm_bodies) {
-      const AddedMassAssembly a = assemble_added_mass(body, pmm);
-      h << "<h3>Added mass of " << html_escape(body) << "</h3>\n<div class=\"scroll\"><table><thead><tr><th></th>";
-      for (std::size_t j = 0; j < 6; ++j) h << "<th>" << dof_name(j) << "</th>";
-      h << "</tr></thead><tbody>\n";
-      for (std::size_t i = 0; i < 6; ++i) {
-        h << "<tr><th>" << dof_name(i) << "</th>";
-        for (std::size_t j = 0; j < 6; ++j) {
-          const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
-          h << "<td class=\"num\">"
-            << (a.known[i][j]
-                    ? num(a.added_mass(ii, jj), 5) +
-                          (a.added_mass_se(ii, jj) > 0.0 ? " ± " + num(a.added_mass_se(ii, jj), 2) : std::string())
-                    : std::string("missing"))
-            << "</td>";
+    for (const auto& body : pmm_bodies)
+      for (const double omega : pmm_frequencies(body, pmm)) {  // a matrix per frequency: never mixed
+        AddedMassOptions at_frequency;
+        at_frequency.period = 2.0 * std::numbers::pi / omega;
+        const AddedMassAssembly a = assemble_added_mass(body, pmm, at_frequency);
+        h << "<h3>Added mass of " << html_escape(body) << " at period " << num(*at_frequency.period, 6)
+          << " s</h3>\n<div class=\"scroll\"><table><thead><tr><th></th>";
+        for (std::size_t j = 0; j < 6; ++j) h << "<th>" << dof_name(j) << "</th>";
+        h << "</tr></thead><tbody>\n";
+        for (std::size_t i = 0; i < 6; ++i) {
+          h << "<tr><th>" << dof_name(i) << "</th>";
+          for (std::size_t j = 0; j < 6; ++j) {
+            const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
+            h << "<td class=\"num\">"
+              << (a.known[i][j]
+                      ? num(a.added_mass(ii, jj), 5) +
+                            (a.added_mass_se(ii, jj) > 0.0 ? " ± " + num(a.added_mass_se(ii, jj), 2) : std::string())
+                      : std::string("missing"))
+              << "</td>";
+          }
+          h << "</tr>\n";
         }
-        h << "</tr>\n";
+        h << "</tbody></table></div>\n<p>kg, kg m, kg m² (hydrocoef added-mass " << html_escape(body) << " --period "
+          << num(*at_frequency.period, 6) << "); "
+          << (a.positive_definite ? "positive definite" : "not positive definite")
+          << " over the measured degrees of freedom";
+        if (!a.missing.empty()) h << "; " << a.missing.size() << " entries missing (no run of their DOF)";
+        h << ".</p>\n";
       }
-      h << "</tbody></table></div>\n<p>kg, kg m, kg m² (hydrocoef added-mass " << html_escape(body) << "); "
-        << (a.positive_definite ? "positive definite" : "not positive definite")
-        << " over the measured degrees of freedom";
-      if (!a.missing.empty()) h << "; " << a.missing.size() << " entries missing (no run of their DOF)";
-      h << ".</p>\n";
-    }
     for (const auto& r : pmm)
       page.figure(file_stem("pmm", r.body + "-" + std::string(dof_name(r.dof)) + "-" + std::to_string(r.id)),
                   "force history and harmonic fit: " + r.body + ", " + std::string(dof_name(r.dof)) + " run " +

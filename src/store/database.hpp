@@ -231,6 +231,7 @@ struct SurfaceRecord {
 
 struct PmmRecord;
 struct PmmSaved;
+struct PmmDeleted;
 
 /// What merging one shard did (Database::merge).
 struct MergeOutcome {
@@ -334,6 +335,12 @@ class Database {
   /// empty), by body, degree of freedom, frequency and amplitude; with
   /// `with_history` false their history blobs are left empty.
   std::vector<PmmRecord> pmm_records(const std::optional<std::string>& body = std::nullopt, bool with_history = true);
+  /// Deletes forced-oscillation analyses (pmm_run rows and their
+  /// coefficients) by id in one transaction; an id that is not stored is
+  /// refused (InputError) and nothing is deleted. The rows are not read
+  /// through the checked readers, so a record that every reader refuses can
+  /// still be removed. Returns what was deleted, in the order given.
+  std::vector<PmmDeleted> delete_pmm_runs(const std::vector<std::int64_t>& ids);
 
   /// Merges shard databases (any locations: SQLite files made by cluster
   /// jobs, or PostgreSQL databases) into this one, in one transaction: their

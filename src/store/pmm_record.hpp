@@ -57,6 +57,7 @@ struct PmmRecord {
   std::optional<double> stokes_number;        ///< D^2 / (nu T)
   std::optional<double> rho;                  ///< kg/m^3
   std::optional<double> displaced_volume;     ///< m^3, for the Froude-Krylov force of a stream
+  std::optional<double> restoring;            ///< C of F = -C x removed before the fit (N/m or N m/rad)
   std::string source_path, source_sha256, importer;
   /// The kept window, kPmmHistoryColumns per row (t, X, Y, Z, K, M, N); a
   /// component without a coefficient holds zeros.
@@ -69,6 +70,14 @@ struct PmmRecord {
 struct PmmSaved {
   std::int64_t id = 0;
   bool replaced = false;  ///< the same file with the same motion was stored before; its rows were replaced
+};
+
+/// A deleted record, as stored (not checked: it may be one no reader accepts).
+struct PmmDeleted {
+  std::int64_t id = 0;
+  std::string body;
+  std::int64_t dof = 0;
+  std::string source_path;
 };
 
 }  // namespace hydrocoef

@@ -2,6 +2,7 @@
 // in tables pmm_run and pmm_coefficient (schema/0012_pmm.sql). Every value
 // read back is checked (src/store/checked_row.hpp): a received database is
 // untrusted input.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -46,7 +47,9 @@ std::vector<PmmSaved> Database::save_pmm(const std::vector<PmmRecord>& records) 
       "INSERT INTO pmm_run(body_id, u, v, w, p, q, r, dof, amplitude, omega, phase, medium, motion_source, "
       "window_start, window_end, periods, transient_periods, samples, harmonics, size, keulegan_carpenter, "
       "kinematic_viscosity, stokes_number, rho, displaced_volume, source_path, source_sha256, importer, history, "
-      "created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) "
+      "created_at, restoring) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+      "?, "
+      "?, ?, ?) "
       "RETURNING id");
   auto insert_coefficient = connection_.prepare(
       "INSERT INTO pmm_coefficient(pmm_run_id, component, mean, added_mass, added_mass_se, damping, damping_se, "
@@ -93,6 +96,7 @@ std::vector<PmmSaved> Database::save_pmm(const std::vector<PmmRecord>& records) 
     insert.bind(c++, record.importer);
     insert.bind_doubles(c++, record.history);
     insert.bind(c++, record.created_at.empty() ? utc_timestamp_now() : record.created_at);
+    insert.bind(c++, record.restoring);
     saved.id = store::returned_id(insert);
     for (const auto& coefficient : record.coefficients) {
       insert_coefficient.bind(1, saved.id).bind(2, kForceNames[coefficient.component]);
@@ -117,7 +121,7 @@ std::vector<PmmRecord> Database::pmm_records(const std::optional<std::string>& b
       "window_start, window_end, periods, transient_periods, samples, harmonics, size, keulegan_carpenter, "
       "kinematic_viscosity, stokes_number, rho, displaced_volume, source_path, source_sha256, importer, ";
   sql += with_history ? "history" : "NULL";
-  sql += ", created_at FROM pmm_run JOIN body ON body.id = pmm_run.body_id";
+  sql += ", created_at, restoring FROM pmm_run JOIN body ON body.id = pmm_run.body_id";
   if (body) sql += " WHERE body.name = ?1";
   sql += " ORDER BY body.name, dof, omega, amplitude, pmm_run.id";
   auto select = connection_.prepare(sql);
@@ -162,6 +166,7 @@ std::vector<PmmRecord> Database::pmm_records(const std::optional<std::string>& b
         row.fail(29, "float64 samples in rows of 7 (t, X, Y, Z, K, M, N)");
     }
     record.created_at = row.text(30, 64);
+    record.restoring = row.optional_real(31);
     out.push_back(std::move(record));
   }
   auto coefficients = connection_.prepare(
@@ -187,6 +192,38 @@ std::vector<PmmRecord> Database::pmm_records(const std::optional<std::string>& b
     }
     coefficients.reset();
   }
+  return out;
+}
+
+std::vector<PmmDeleted> Database::delete_pmm_runs(const std::vector<std::int64_t>& ids) {
+  if (read_only_) throw InputError(SourceLocation{path_.string()}, "database opened read-only; cannot delete from it");
+  store::Transaction transaction(connection_);
+  auto find = connection_.prepare(
+      "SELECT pmm_run.id, body.name, dof, source_path FROM pmm_run JOIN body ON body.id = pmm_run.body_id "
+      "WHERE pmm_run.id = ?");
+  auto drop_coefficients = connection_.prepare("DELETE FROM pmm_coefficient WHERE pmm_run_id = ?");
+  auto drop = connection_.prepare("DELETE FROM pmm_run WHERE id = ?");
+  std::vector<PmmDeleted> out;
+  for (const std::int64_t id : ids) {
+    if (std::any_of(out.begin(), out.end(), [&](const PmmDeleted& d) { return d.id == id; })) continue;
+    find.bind(1, id);
+    if (!find.step())
+      throw InputError(SourceLocation{path_.string()}, "no forced-oscillation run " + std::to_string(id) +
+                                                           "; expected an id 'hydrocoef pmm-runs' lists (nothing was "
+                                                           "deleted)");
+    PmmDeleted deleted;
+    deleted.id = id;
+    deleted.body = find.column_type(1) == store::ColumnType::Text ? find.get_text(1) : std::string();
+    deleted.dof = find.column_type(2) == store::ColumnType::Integer ? find.get_int(2) : -1;
+    deleted.source_path = find.column_type(3) == store::ColumnType::Text ? find.get_text(3) : std::string();
+    find.reset();
+    drop_coefficients.bind(1, id).run();
+    drop_coefficients.reset();
+    drop.bind(1, id).run();
+    drop.reset();
+    out.push_back(std::move(deleted));
+  }
+  transaction.commit();
   return out;
 }
 

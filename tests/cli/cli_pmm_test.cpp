@@ -9,12 +9,15 @@
 // database simulating.
 #include <gtest/gtest.h>
 
+#include <sqlite3.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <tuple>
 
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
@@ -133,11 +136,19 @@ TEST(Pmm, OneRunLeavesTheOtherEntriesMissingUntilStated) {
     names_sway = names_sway || m.get<std::string>().find("M_A[sway][sway]") == 0;
   EXPECT_TRUE(names_sway) << result.out;
   // A symmetric body: sway and heave as surge, no rotational added mass.
-  result = run_cli(
-      {"added-mass", "ball", "--same", "sway=surge", "--same", "heave=surge", "--zero", "roll,pitch,yaw", "--json"},
-      dir.path());
+  // The synthetic surge run couples to the rotations stated zero, so the
+  // whole matrix is indefinite: refused unless --allow-indefinite.
+  const std::vector<std::string> stated = {"added-mass", "ball",        "--same", "sway=surge",
+                                           "--same",     "heave=surge", "--zero", "roll,pitch,yaw"};
+  result = run_cli(stated, dir.path());
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_NE(result.err.find("not positive definite"), std::string::npos) << result.err;
+  auto allowed = stated;
+  for (const char* a : {"--allow-indefinite", "--json"}) allowed.push_back(a);
+  result = run_cli(allowed, dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   assembly = json::parse(result.out);
+  EXPECT_FALSE(assembly["positive_definite"].get<bool>());
   EXPECT_TRUE(assembly["missing"].empty()) << result.out;
   EXPECT_NEAR(assembly["added_mass_b"][1][1].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));
   EXPECT_NEAR(assembly["added_mass_b"][2][2].get<double>(), true_added_mass(0, 0), 1e-6 * true_added_mass(0, 0));
@@ -434,6 +445,257 @@ TEST(Pmm, HostileBodyNamesAreDataInTheOutput) {
     }
   }
   EXPECT_GT(tried, 5u);
+}
+
+/// A CSV history (time, body-axis X..N) of DOF j moved as A sin(2 pi t / T)
+/// for 40 periods: F_i = -m[i] x'' - d[i] x' on every component, and the
+/// restoring force -c x on the moved DOF's own component.
+fs::path write_run(const fs::path& dir, const std::string& name, std::size_t j, double amplitude, double period,
+                   const std::array<double, 6>& m, const std::array<double, 6>& d, double c = 0.0) {
+  const fs::path path = dir / name;
+  std::ofstream out(path);
+  out << std::setprecision(17) << "Time [s],X [N],Y [N],Z [N],K [N m],M [N m],N [N m]\n";
+  const double omega = 2.0 * kPi / period, dt = period / 80.0;
+  for (int k = 0; k <= 40 * 80; ++k) {
+    const double t = dt * k;
+    const double x = amplitude * std::sin(omega * t), x_dot = amplitude * omega * std::cos(omega * t);
+    const double x_ddot = -omega * omega * x;
+    out << t;
+    for (std::size_t i = 0; i < 6; ++i) out << ',' << -m[i] * x_ddot - d[i] * x_dot - (i == j ? c * x : 0.0);
+    out << '\n';
+  }
+  return path;
+}
+
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << std::setprecision(17) << value;
+  return text.str();
+}
+
+/// One refusal: exit 2, one line, no "internal error", the database as it was.
+void expect_refused(const TempDir& dir, const std::vector<std::string>& args, const std::string& before,
+                    const std::vector<std::string>& words = {}) {
+  const auto result = run_cli(args, dir.path());
+  std::string joined;
+  for (const auto& a : args) joined += a + " ";
+  EXPECT_EQ(result.exit_code, 2) << joined << result.out << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << joined << result.err;
+  EXPECT_EQ(result.err.find("internal error"), std::string::npos) << joined << result.err;
+  for (const auto& word : words) EXPECT_NE(result.err.find(word), std::string::npos) << joined << result.err;
+  EXPECT_EQ(test::dump_database(dir / "hydrocoef.db"), before) << joined;
+}
+
+TEST(Pmm, AReversedAxisGivesTheSameAddedMassAsTheCaseAxes) {
+  // The sphere's runs with the README's --axes=-x,y,-z (the motion's phase
+  // becomes pi) and with the case's own axes: the periods are counted from
+  // the window start either way, so the fits see the same samples.
+  TempDir dir;
+  const std::string root = HYDROCOEF_SOURCE_DIR "/examples/openfoam-sphere/pmm/";
+  std::map<std::string, json> by_axes;
+  for (const std::string axes : {"x,y,z", "-x,y,-z"}) {
+    const auto result = run_cli({"pmm", root + "surge-A0.015-T2", root + "surge-A0.045-T2", "--body", "sphere",
+                                 "--axes=" + axes, "--no-store", "--json"},
+                                dir.path());
+    ASSERT_EQ(result.exit_code, 0) << axes << ": " << result.err;
+    by_axes[axes] = json::parse(result.out)["runs"];
+  }
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto& forward = by_axes["x,y,z"][k];
+    const auto& reversed = by_axes["-x,y,-z"][k];
+    EXPECT_NEAR(reversed["motion"]["phase_rad"].get<double>(), kPi, 1e-15);
+    EXPECT_EQ(forward["motion"]["phase_rad"].get<double>(), 0.0);
+    EXPECT_EQ(reversed["window_s"], forward["window_s"]);
+    EXPECT_EQ(reversed["periods"], forward["periods"]);
+    const double m_forward = forward["components"][0]["added_mass"].get<double>();
+    const double m_reversed = reversed["components"][0]["added_mass"].get<double>();
+    EXPECT_NEAR(m_reversed, m_forward, 1e-12 * m_forward) << forward["path"];
+    const double d_forward = forward["components"][0]["damping"].get<double>();
+    EXPECT_NEAR(reversed["components"][0]["damping"].get<double>(), d_forward, 1e-12 * d_forward);
+    std::cout << forward["path"].get<std::string>() << ": M_A " << std::setprecision(17) << m_forward << " (x,y,z) "
+              << m_reversed << " (-x,y,-z)\n";
+  }
+}
+
+TEST(Pmm, ARestoringForceIsRemovedBeforeTheAddedMass) {
+  // A floating body's heave: F_z = -M_A z'' - D z' - C z. Without --restoring
+  // the fit sees M_A - C / w^2 = 5 - 64.8 kg, and that is refused.
+  TempDir dir;
+  const double m = 5.0, d = 1.5, c = 1000.0, period = 1.6, amplitude = 0.04;
+  const auto history = write_run(dir.path(), "heave.csv", 2, amplitude, period, {0.1, 0.0, m, 0.0, 0.2, 0.0},
+                                 {0.0, 0.0, d, 0.0, 0.05, 0.0}, c);
+  const std::vector<std::string> args = {
+      "pmm",         history.string(),      "--body", "buoy", "--motion", "heave", "--period", number_text(period),
+      "--amplitude", number_text(amplitude)};
+  ASSERT_EQ(run_cli({"pmm", "--help"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(pmm(dir, write_history(dir.path(), "surge.csv", 0, 0.05), 0, 0.05, "hull"), 0);  // a database to keep
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  expect_refused(dir, args, before, {"M_A[heave][heave] = -", "negative", "--restoring", "--axes"});
+  auto restored = args;
+  for (const char* a : {"--restoring", "1000", "--json"}) restored.push_back(a);
+  const auto result = run_cli(restored, dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto run = json::parse(result.out)["runs"][0];
+  EXPECT_EQ(run["restoring"].get<double>(), c);
+  EXPECT_EQ(run["restoring_unit"], "N/m");
+  const auto& z = run["components"][2];
+  ASSERT_EQ(z["component"], "Z");
+  EXPECT_NEAR(z["added_mass"].get<double>(), m, 1e-6 * m);
+  EXPECT_NEAR(z["damping"].get<double>(), d, 1e-6 * d);
+  // The coupled X and M are not touched by the heave restoring force.
+  EXPECT_NEAR(run["components"][0]["added_mass"].get<double>(), 0.1, 1e-6 * m);
+  EXPECT_NEAR(run["components"][4]["added_mass"].get<double>(), 0.2, 1e-6 * m);
+  // Stored with the record: pmm-runs shows it, readable and as JSON.
+  const auto listed = run_cli({"pmm-runs", "--body", "buoy", "--json"}, dir.path());
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  ASSERT_EQ(json::parse(listed.out).size(), 1u) << listed.out;
+  EXPECT_EQ(json::parse(listed.out)[0]["restoring"].get<double>(), c);
+  const auto text = run_cli({"pmm-runs"}, dir.path());
+  EXPECT_NE(text.out.find("restoring 1000 N/m"), std::string::npos) << text.out;
+  // A restoring coefficient that is not a number, or given for a held body in a stream, is refused.
+  const std::string stored = test::dump_database(dir / "hydrocoef.db");
+  auto nan = args;
+  for (const char* a : {"--restoring", "nan"}) nan.push_back(a);
+  expect_refused(dir, nan, stored, {"--restoring"});
+  auto stream = args;
+  for (const char* a : {"--restoring", "1000", "--stream", "--rho", "1000", "--volume", "0.01"}) stream.push_back(a);
+  expect_refused(dir, stream, stored, {"--restoring", "--stream"});
+}
+
+TEST(Pmm, NumbersThatWouldPoisonTheDatabaseAreRefused) {
+  TempDir dir;
+  const std::array<double, 6> m = {7.0, 0.0, 0.0, 0.0, 0.0, 0.0}, d = {0.7, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const auto history = write_run(dir.path(), "surge.csv", 0, 0.03, 2.0, m, d);  // steps of 0.025 s
+  const auto with = [&](const std::string& amplitude, const std::string& period) {
+    return std::vector<std::string>{"pmm",   history.string(), "--body",  "ball",     "--motion",
+                                    "surge", "--amplitude",    amplitude, "--period", period};
+  };
+  ASSERT_EQ(run_cli(with("0.03", "2"), dir.path()).exit_code, 0);
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  expect_refused(dir, with("5e-324", "2"), before, {"amplitude"});  // M_A was infinite
+  expect_refused(dir, with("1e-12", "2"), before, {"round-off"});   // below the positions' round-off
+  expect_refused(dir, with("1e308", "2"), before, {"A w^2"});       // M_A was 0, "100 % explained"
+  expect_refused(dir, with("0.03", "0.025"), before);               // one sampling step: M_A was -2.6e8 kg
+  expect_refused(dir, with("0.03", "0.05"), before);                // two
+  // --size sets the scale of the round-off: 1e-8 m is fine for a 1 m body, not for a 100 m one.
+  auto large = with("1e-8", "2");
+  for (const char* a : {"--size", "100", "--no-store"}) large.push_back(a);
+  expect_refused(dir, large, before, {"round-off", "1e-07 m"});
+}
+
+TEST(Pmm, PmmRunsListsAndDeletesRecordsEvenOnesNoReaderAccepts) {
+  TempDir dir;
+  const std::array<double, 6> m = {7.0, 0.5, 0.0, 0.0, 0.0, 0.0}, d = {0.7, 0.0, 0.0, 0.0, 0.0, 0.0};
+  ASSERT_EQ(pmm(dir, write_run(dir.path(), "a.csv", 0, 0.03, kPeriod, m, d), 0, 0.03, "ball"), 0);
+  ASSERT_EQ(pmm(dir, write_run(dir.path(), "b.csv", 0, 0.05, kPeriod, m, d), 0, 0.05, "ball"), 0);
+  ASSERT_EQ(run_cli({"pmm-runs", "--help"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_cli({"pmm-runs", "delete", "--help"}, dir.path()).exit_code, 0);
+  auto listed = run_cli({"pmm-runs", "--json"}, dir.path());
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  auto records = json::parse(listed.out);
+  ASSERT_EQ(records.size(), 2u);
+  const std::int64_t first = records[0]["id"].get<std::int64_t>(), second = records[1]["id"].get<std::int64_t>();
+  EXPECT_NEAR(records[0]["added_mass"].get<double>(), 7.0, 1e-6 * 7.0);
+  // An id that is not stored deletes nothing, not even the ids beside it.
+  std::string before = test::dump_database(dir / "hydrocoef.db");
+  expect_refused(dir, {"pmm-runs", "delete", std::to_string(first), "999"}, before, {"no forced-oscillation run 999"});
+  // A record no reader accepts (an infinite added mass, as pmm once stored)
+  // makes added-mass refuse the database; pmm-runs delete still removes it.
+  {
+    sqlite3* raw = nullptr;
+    ASSERT_EQ(sqlite3_open((dir / "hydrocoef.db").string().c_str(), &raw), SQLITE_OK);
+    const std::string sql = "UPDATE pmm_coefficient SET added_mass = 9e999 WHERE pmm_run_id = " + std::to_string(first);
+    ASSERT_EQ(sqlite3_exec(raw, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(raw);
+  }
+  before = test::dump_database(dir / "hydrocoef.db");
+  expect_refused(dir, {"added-mass", "ball"}, before, {"pmm_coefficient"});
+  const auto deleted = run_cli({"pmm-runs", "delete", std::to_string(first), "--json"}, dir.path());
+  ASSERT_EQ(deleted.exit_code, 0) << deleted.err;
+  const auto outcome = json::parse(deleted.out);
+  ASSERT_EQ(outcome["deleted"].size(), 1u);
+  EXPECT_EQ(outcome["deleted"][0]["id"], first);
+  EXPECT_EQ(outcome["deleted"][0]["body"], "ball");
+  EXPECT_EQ(outcome["deleted"][0]["dof"], "surge");
+  listed = run_cli({"pmm-runs", "--json"}, dir.path());
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  records = json::parse(listed.out);
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0]["id"], second);
+  const auto assembled = run_cli({"added-mass", "ball", "--json"}, dir.path());
+  ASSERT_EQ(assembled.exit_code, 0) << assembled.err;
+  EXPECT_EQ(json::parse(assembled.out)["records"], 1);
+  // Readable output names what went.
+  const auto text = run_cli({"pmm-runs", "delete", std::to_string(second)}, dir.path());
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("deleted 1 forced-oscillation run"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("b.csv"), std::string::npos) << text.out;
+  EXPECT_NE(run_cli({"pmm-runs"}, dir.path()).out.find("No forced-oscillation runs"), std::string::npos);
+  // The coefficients went with their runs.
+  EXPECT_EQ(test::dump_database(dir / "hydrocoef.db").find("INSERT INTO pmm_coefficient"), std::string::npos);
+}
+
+TEST(Pmm, AddedMassKeepsFrequenciesApart) {
+  TempDir dir;
+  const std::array<double, 6> m16 = {7.0, 0.0, 0.0, 0.0, 0.0, 0.0}, d16 = {0.7, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const std::array<double, 6> m20 = {7.5, 0.0, 0.0, 0.0, 0.0, 0.0}, d20 = {1.9, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const auto run = [&](const std::string& name, double amplitude, double period, const std::array<double, 6>& m,
+                       const std::array<double, 6>& d) {
+    const auto path = write_run(dir.path(), name, 0, amplitude, period, m, d);
+    const auto result = run_cli({"pmm", path.string(), "--body", "hull", "--motion", "surge", "--amplitude",
+                                 number_text(amplitude), "--period", number_text(period)},
+                                dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+  };
+  run("a.csv", 0.03, 1.6, m16, d16);
+  run("b.csv", 0.05, 1.6, m16, d16);
+  run("c.csv", 0.03, 2.0, m20, d20);
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  // Several frequencies and none chosen: refused, listing them.
+  expect_refused(dir, {"added-mass", "hull"}, before, {"1.6 s (2 runs)", "2 s (1 run)", "--period"});
+  expect_refused(dir, {"added-mass", "hull", "--period", "3"}, before, {"period 3 s", "1.6 s (2 runs)"});
+  for (const auto& [period, m, d, records] : {std::tuple{"1.6", 7.0, 0.7, 2}, std::tuple{"2", 7.5, 1.9, 1}}) {
+    const auto result = run_cli({"added-mass", "hull", "--period", period, "--json"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const auto a = json::parse(result.out);
+    EXPECT_EQ(a["records"], records);
+    EXPECT_EQ(a["other_frequency_records"], 3 - records);
+    EXPECT_NEAR(a["period_s"].get<double>(), std::stod(period), 1e-12);
+    EXPECT_NEAR(a["added_mass_b"][0][0].get<double>(), m, 1e-6 * m);
+    EXPECT_NEAR(a["damping_b"][0][0].get<double>(), d, 1e-6 * d);  // not the mean of the two frequencies
+    // The damping at each frequency, a row each, whatever the period used.
+    ASSERT_EQ(a["by_frequency"].size(), 2u) << result.out;
+    EXPECT_NEAR(a["by_frequency"][0]["period_s"].get<double>(), 2.0, 1e-12);  // the lower frequency first
+    EXPECT_EQ(a["by_frequency"][0]["runs"], 1);
+    EXPECT_NEAR(a["by_frequency"][0]["damping"].get<double>(), 1.9, 1e-6);
+    EXPECT_NEAR(a["by_frequency"][1]["period_s"].get<double>(), 1.6, 1e-12);
+    EXPECT_EQ(a["by_frequency"][1]["runs"], 2);
+    EXPECT_NEAR(a["by_frequency"][1]["damping"].get<double>(), 0.7, 1e-6);
+  }
+  const auto text = run_cli({"added-mass", "hull", "--period", "1.6"}, dir.path());
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("at period 1.6 s"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("1 run at other periods left out"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("T 2 s"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("D = 1.9"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("* surge"), std::string::npos) << text.out;
+}
+
+TEST(Pmm, AddedMassRefusesAMatrixThatIsNotPositiveDefinite) {
+  // Surge and sway runs whose couplings outweigh the diagonal: M_A =
+  // [[1, 5], [5, 1]] has eigenvalue -4.
+  TempDir dir;
+  const auto surge = write_run(dir.path(), "surge.csv", 0, 0.03, kPeriod, {1.0, 5.0, 0, 0, 0, 0}, {0.1, 0, 0, 0, 0, 0});
+  const auto sway = write_run(dir.path(), "sway.csv", 1, 0.03, kPeriod, {5.0, 1.0, 0, 0, 0, 0}, {0, 0.1, 0, 0, 0, 0});
+  ASSERT_EQ(pmm(dir, surge, 0, 0.03, "hull"), 0);
+  ASSERT_EQ(pmm(dir, sway, 1, 0.03, "hull"), 0);
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  expect_refused(dir, {"added-mass", "hull"}, before, {"not positive definite", "-4", "--allow-indefinite"});
+  const auto allowed = run_cli({"added-mass", "hull", "--allow-indefinite", "--json"}, dir.path());
+  ASSERT_EQ(allowed.exit_code, 0) << allowed.err;
+  const auto a = json::parse(allowed.out);
+  EXPECT_FALSE(a["positive_definite"].get<bool>());
+  EXPECT_NEAR(a["smallest_eigenvalue"].get<double>(), -4.0, 1e-5);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include "tests/support/expect_input_error.hpp"
 
 namespace hydrocoef {
@@ -32,19 +34,20 @@ PmmRecord record(const std::string& body, std::size_t dof, double omega, double 
 TEST(AddedMassAssembly, WeightedMeanSymmetryAndMissingEntries) {
   const std::vector<PmmRecord> records = {
       record("hull", 0, 2.0, 0.01, {{0, 10.0}, {1, 1.0}}, 0.1),
-      record("hull", 0, 3.0, 0.01, {{0, 12.0}, {1, 1.0}}, 0.2),  // weight 1/4 of the first
+      record("hull", 0, 2.0, 0.02, {{0, 12.0}, {1, 1.0}}, 0.2),  // weight 1/4 of the first
       record("hull", 1, 2.0, 0.01, {{0, 1.6}, {1, 20.0}}, 0.1),
       record("other", 2, 2.0, 0.01, {{2, 99.0}}),
   };
   const AddedMassAssembly a = assemble_added_mass("hull", records);
   EXPECT_EQ(a.records, 3u);
+  EXPECT_EQ(a.omega, 2.0);
   EXPECT_NEAR(a.added_mass(0, 0), (10.0 / 0.01 + 12.0 / 0.04) / (1.0 / 0.01 + 1.0 / 0.04), 1e-12);
   // 10 +- 0.1 and 12 +- 0.2 disagree (chi^2 = 80 for one degree of freedom):
   // the standard error of the mean grows by the Birge ratio sqrt(80).
   EXPECT_NEAR(a.added_mass_se(0, 0), std::sqrt(80.0 / (1.0 / 0.01 + 1.0 / 0.04)), 1e-12);
   EXPECT_EQ(a.measured[0][0].runs, 2u);
   EXPECT_EQ(a.measured[0][0].omega_min, 2.0);
-  EXPECT_EQ(a.measured[0][0].omega_max, 3.0);
+  EXPECT_EQ(a.measured[0][0].omega_max, 2.0);
   // Both halves measured: their mean on both sides, and a note when they differ.
   EXPECT_NEAR(a.added_mass(0, 1), 0.5 * (1.0 + 1.6), 1e-12);
   EXPECT_EQ(a.added_mass(0, 1), a.added_mass(1, 0));
@@ -78,6 +81,42 @@ TEST(AddedMassAssembly, SameZeroAndPositiveDefiniteness) {
   AddedMassOptions wrong;
   wrong.zero = {0};
   test::expect_input_error([&] { assemble_added_mass("ball", records, wrong); }, {"zero surge", "measure"});
+}
+
+TEST(AddedMassAssembly, RunsAtDifferentFrequenciesAreNeverCombined) {
+  // Surge at omega 2 (two amplitudes) and at omega 3 (2 pi / 3 s): the
+  // matrix is one frequency's; each frequency's in-line entries are listed.
+  std::vector<PmmRecord> records = {
+      record("hull", 0, 2.0, 0.01, {{0, 10.0}}, 0.1),
+      record("hull", 0, 2.0, 0.02, {{0, 10.0}}, 0.1),
+      record("hull", 0, 3.0, 0.01, {{0, 14.0}}, 0.1),
+  };
+  records[2].coefficients[0].damping = 5.0;  // the damping of the other frequency
+  test::expect_input_error([&] { assemble_added_mass("hull", records); },
+                           {"2 periods", "3.14159", "(2 runs)", "2.0943", "(1 run)", "--period"});
+  AddedMassOptions at_three;
+  at_three.period = 2.0 * std::numbers::pi / 3.0;
+  const AddedMassAssembly a = assemble_added_mass("hull", records, at_three);
+  EXPECT_EQ(a.omega, 3.0);
+  EXPECT_EQ(a.records, 1u);
+  EXPECT_EQ(a.other_frequency_records, 2u);
+  EXPECT_EQ(a.added_mass(0, 0), 14.0);
+  EXPECT_EQ(a.damping(0, 0), 5.0);
+  ASSERT_EQ(a.by_frequency.size(), 2u);
+  EXPECT_EQ(a.by_frequency[0].omega, 2.0);
+  EXPECT_EQ(a.by_frequency[0].runs, 2u);
+  EXPECT_EQ(a.by_frequency[0].damping, 1.0);
+  EXPECT_EQ(a.by_frequency[0].amplitude_min, 0.01);
+  EXPECT_EQ(a.by_frequency[0].amplitude_max, 0.02);
+  EXPECT_EQ(a.by_frequency[1].omega, 3.0);
+  EXPECT_EQ(a.by_frequency[1].damping, 5.0);
+  // Two amplitudes at omega 2 give the quadratic damping there, whatever the period chosen.
+  ASSERT_EQ(a.quadratic.size(), 1u);
+  EXPECT_EQ(a.quadratic[0].omega, 2.0);
+  AddedMassOptions nowhere;
+  nowhere.period = 1.0;
+  test::expect_input_error([&] { assemble_added_mass("hull", records, nowhere); }, {"period 1 s", "no run"});
+  EXPECT_EQ(pmm_frequencies("hull", records), (std::vector<double>{2.0, 3.0}));
 }
 
 }  // namespace

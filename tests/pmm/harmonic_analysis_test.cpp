@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "src/core/error.hpp"
@@ -182,6 +183,76 @@ TEST(HarmonicAnalysis, PeriodsShorterThanAFewStepsAreRefusedBeforeTheyAreCounted
   // Four steps are enough to be counted (and many periods are still read).
   const auto result = analyse_forced_oscillation(h.t, h.spans(), HarmonicMotion{0, 0.05, 2.0 * kPi / 0.04, 0.0});
   EXPECT_GE(result.periods + result.transient_periods, 240u);
+}
+
+TEST(HarmonicAnalysis, WholePeriodsAreCountedFromTheWindowStartWhateverThePhase) {
+  // 3.2 periods of a motion of phase pi (a reversed axis): counted from the
+  // motion's phase crossing 2 pi k they were 2 and refused; from the first
+  // sample they are 3, and the fit is the one of phase 0 with the force
+  // reversed (the same window, the basis negated).
+  const double m = 7.0, b = 0.6, omega = 2.0 * kPi / 2.0;
+  const HarmonicMotion reversed{0, 0.03, omega, kPi}, forward{0, 0.03, omega, 0.0};
+  const auto force = [&](const HarmonicMotion& motion) {
+    return sample(
+        6.4, 0.01, [&](double t) { return -m * motion.acceleration(t) - b * motion.velocity(t) + 0.2; }, 0);
+  };
+  const History h_reversed = force(reversed), h_forward = force(forward);
+  const auto r = analyse_forced_oscillation(h_reversed.t, h_reversed.spans(), reversed, {.start_time = 0.0});
+  const auto f = analyse_forced_oscillation(h_forward.t, h_forward.spans(), forward, {.start_time = 0.0});
+  EXPECT_EQ(r.periods, 3u);
+  EXPECT_EQ(r.window_start, 0.0);
+  EXPECT_EQ(r.window_start, f.window_start);
+  EXPECT_EQ(r.window_end, f.window_end);
+  EXPECT_NEAR(r.components[0].added_mass, m, 1e-9 * m);
+  EXPECT_NEAR(r.components[0].added_mass, f.components[0].added_mass, 1e-12 * m);
+  EXPECT_NEAR(r.components[0].damping, f.components[0].damping, 1e-12 * b);
+  // A history too short says where the periods were counted from, and --start.
+  const History short_history = sample(
+      5.0, 0.01, [](double t) { return std::sin(t); }, 0);
+  for (const std::optional<double> start : {std::optional<double>{}, std::optional<double>{0.5}}) {
+    try {
+      (void)analyse_forced_oscillation(short_history.t, short_history.spans(), reversed, {.start_time = start});
+      ADD_FAILURE() << "accepted 2 periods";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("2 whole period(s) of 2 s counted from"), std::string::npos) << what;
+      EXPECT_NE(what.find(start ? "--start 0.5 s" : "first sample at 0 s"), std::string::npos) << what;
+      EXPECT_NE(what.find("--start"), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(HarmonicAnalysis, AmplitudesAndPeriodsThatGiveNoMeaningfulNumbersAreRefused) {
+  const History h = sample(
+      20.0, 0.01, [](double t) { return std::sin(kPi * t); }, 0);
+  // 5e-324 m: A w and A w^2 round to 0 (M_A was infinite); 1e308 m: A w^2 is
+  // infinite (M_A was 0, "100 % explained").
+  for (const double amplitude : {5e-324, 1e-320, 1e308}) {
+    try {
+      (void)analyse_forced_oscillation(h.t, h.spans(), HarmonicMotion{0, amplitude, kPi, 0.0});
+      ADD_FAILURE() << "accepted amplitude " << amplitude;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected both finite and well above zero"), std::string::npos) << e.what();
+    }
+  }
+  // A period of one or two sampling steps puts every sample at one phase:
+  // the sampled sine is zero and M_A meaningless (it was -2.6e8 kg).
+  for (const double period : {0.01, 0.02}) {
+    try {
+      const auto result = analyse_forced_oscillation(h.t, h.spans(), HarmonicMotion{0, 0.05, 2.0 * kPi / period, 0.0});
+      ADD_FAILURE() << "accepted period " << period << ": M_A " << result.components[0].added_mass;
+    } catch (const InputError&) {}
+  }
+  // Ten harmonics of a period of 8 steps are not resolved; one is.
+  const HarmonicMotion coarse{0, 0.05, 2.0 * kPi / 0.08, 0.0};
+  try {
+    (void)analyse_forced_oscillation(h.t, h.spans(), coarse, {.harmonics = 10});
+    ADD_FAILURE() << "accepted 10 harmonics of 8 samples";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("do not resolve 10 harmonics"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("fewer --harmonics"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW((void)analyse_forced_oscillation(h.t, h.spans(), coarse));
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
-// Forced-oscillation records in the database (migration 12): stored and read
-// back exactly, replaced when the same file is analysed with the same motion
-// again, a schema-11 database migrated with none, and a received database's
-// damaged values refused naming the table, row and column.
+// Forced-oscillation records in the database (migrations 12 and 14): stored
+// and read back exactly with their restoring coefficient, replaced when the
+// same file is analysed with the same motion again, deleted by id (all or
+// nothing), schema-11 and schema-13 databases migrated, and a received
+// database's damaged values refused naming the table, row and column.
 #include <gtest/gtest.h>
 
 #include <sqlite3.h>
+
+#include <optional>
 
 #include "src/core/error.hpp"
 #include "src/store/database.hpp"
@@ -85,6 +88,41 @@ TEST(PmmStore, RoundTripAndReplacement) {
   other.amplitude = 0.3;
   EXPECT_FALSE(db.save_pmm({other})[0].replaced);
   EXPECT_EQ(db.pmm_records().size(), 2u);
+  EXPECT_FALSE(db.pmm_records()[0].restoring);
+  // The restoring coefficient removed before the fit is kept (migration 14).
+  PmmRecord floating = r;
+  floating.dof = 2;
+  floating.restoring = 9810.5;
+  db.save_pmm({floating});
+  std::optional<double> restoring;
+  for (const auto& stored : db.pmm_records())
+    if (stored.dof == 2) restoring = stored.restoring;
+  EXPECT_EQ(restoring, 9810.5);
+}
+
+TEST(PmmStore, DeleteRemovesRunsAndTheirCoefficientsOrNothing) {
+  test::TempDir dir;
+  Database db(test::database_location(dir / "a.db"));
+  PmmRecord other = sample_record();
+  other.amplitude = 0.3;
+  const auto saved = db.save_pmm({sample_record(), other});
+  // An id that is not stored: nothing is deleted, not even the ids before it.
+  test::expect_input_error(
+      [&] {
+        db.delete_pmm_runs({saved[0].id, saved[1].id + 100});
+      },
+      {"no forced-oscillation run " + std::to_string(saved[1].id + 100), "nothing was deleted"});
+  EXPECT_EQ(db.pmm_records().size(), 2u);
+  const auto deleted = db.delete_pmm_runs({saved[0].id, saved[0].id});  // an id twice counts once
+  ASSERT_EQ(deleted.size(), 1u);
+  EXPECT_EQ(deleted[0].id, saved[0].id);
+  EXPECT_EQ(deleted[0].body, "ball");
+  EXPECT_EQ(deleted[0].dof, 5);
+  EXPECT_EQ(deleted[0].source_path, "case");
+  const auto left = db.pmm_records();
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].id, saved[1].id);
+  EXPECT_EQ(left[0].coefficients.size(), 1u);
 }
 
 TEST(PmmStore, ASchema11DatabaseOpensAtTheLatestWithNoRecords) {
@@ -101,6 +139,24 @@ TEST(PmmStore, ASchema11DatabaseOpensAtTheLatestWithNoRecords) {
   EXPECT_TRUE(db.pmm_records().empty());
   db.save_pmm({sample_record()});
   EXPECT_EQ(db.pmm_records().size(), 1u);
+}
+
+TEST(PmmStore, ASchema13DatabaseKeepsItsRecordsWithNoRestoringForce) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
+  test::TempDir dir;
+  {
+    Database db(test::database_location(dir / "current.db"));
+    db.save_pmm({sample_record()});
+  }
+  // Schema 13 has no restoring column: drop it from the copy of the current one.
+  test::copy_as_schema_version(dir / "current.db", dir / "v13.db", 13);
+  Database db(test::database_location(dir / "v13.db"));
+  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+  const auto records = db.pmm_records();
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_FALSE(records[0].restoring);
+  EXPECT_EQ(records[0].coefficients[0].added_mass, 0.125);
 }
 
 TEST(PmmStore, DamagedValuesAreRefusedNamingTheTableRowAndColumn) {
