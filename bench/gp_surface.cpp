@@ -1,12 +1,15 @@
 // Gaussian-process surfaces: one evaluation of a 2-D surface of 200 runs with
 // and without its standard deviation (goal: <= 2 us with it), the fit with
-// hyperparameter estimation, and suggesting 10 runs on it (goal: <= 1 s).
+// hyperparameter estimation, and suggesting 10 runs on it (goal: <= 1 s):
+// the design alone, and `hydrocoef suggest`'s whole path (rounded keys, the
+// mirror's fundamental domain, each run counted with its image).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <random>
 #include <vector>
 
+#include "src/pipeline/next_runs.hpp"
 #include "src/surface/gp_design.hpp"
 #include "src/surface/gp_surface.hpp"
 
@@ -72,6 +75,21 @@ void BM_GpSuggest(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_GpSuggest)->Unit(benchmark::kMillisecond);
+
+void BM_SuggestRoundedMirroredKeys(benchmark::State& state) {
+  using hydrocoef::RbfOutOfRange;
+  const hydrocoef::CoefficientSurface surface(hydrocoef::GpSurfaces({surface()}, {-1.0, -1.0}, {1.0, 1.0}, {"u", "v"},
+                                                                    {RbfOutOfRange::Error, RbfOutOfRange::Error}),
+                                              {"u", "v"}, {"X"});
+  hydrocoef::NextRunsRequest request;
+  request.count = 10;
+  request.mirror = hydrocoef::make_mirror_spec({"v"}, {});
+  for (auto _ : state) {
+    auto next = hydrocoef::suggest_next_runs(surface, request);
+    benchmark::DoNotOptimize(next);
+  }
+}
+BENCHMARK(BM_SuggestRoundedMirroredKeys)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

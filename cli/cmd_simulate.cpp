@@ -215,7 +215,8 @@ void run_equilibrium(const EquilibriumArgs& args, const GlobalOptions& global) {
         "no steady state for this force: the residual stays at " +
         significant(eq.residual_b[static_cast<Eigen::Index>(worst)], 3) + " " + force_unit(worst) + " in " +
         std::string(kForceNames[worst]) +
-        " (a DOF with a force but no damping, or a coupling that only a change of attitude could balance)");
+        ", from the start and from where a simulation with the attitude held got to (a DOF with a force but no "
+        "damping, or a coupling that only a change of attitude could balance)");
   }
   EquilibriumReport report{args.vehicle, model.description().name, in, eq, attitude};
   std::optional<EquilibriumSamples> samples;

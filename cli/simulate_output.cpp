@@ -233,6 +233,7 @@ void print_equilibrium(const EquilibriumReport& r, bool json) {
                           {"residual", force_json(r.eq.residual_b)},
                           {"converged", r.eq.converged},
                           {"iterations", r.eq.iterations},
+                          {"continuation_s", r.eq.continuation_s},
                           {"attitude_deg", {{"phi", r.attitude[0]}, {"theta", r.attitude[1]}, {"psi", r.attitude[2]}}},
                           {"units", units_json()},
                           {"sign_convention", kSignNote}};
@@ -257,8 +258,10 @@ void print_equilibrium(const EquilibriumReport& r, bool json) {
       std::cout << " " << kForceNames[i] << " = " << significant(r.in.tau_b[static_cast<Eigen::Index>(i)], 6) << " "
                 << kForceUnits[i];
   if (r.in.tau_b.isZero()) std::cout << " no force";
-  std::cout << " (attitude held; " << r.eq.iterations << " iterations, largest residual "
-            << significant(r.eq.residual_b.cwiseAbs().maxCoeff(), 3) << ")\n";
+  std::cout << " (attitude held; " << r.eq.iterations << " iterations";
+  if (r.eq.continuation_s > 0.0)
+    std::cout << ", from where a simulation of " << significant(r.eq.continuation_s, 3) << " s got to";
+  std::cout << ", largest residual " << significant(r.eq.residual_b.cwiseAbs().maxCoeff(), 3) << ")\n";
   print_velocity_table(r.eq.nu_b, r.eq.forces);
   std::cout << "  (" << kSignNote << ")\n";
   if (!r.samples) return;

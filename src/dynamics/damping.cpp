@@ -150,6 +150,44 @@ Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> di
   return tau;
 }
 
+Vector6 DampingModel::evaluate_with_jacobian(const Vector6& nu_r_b, std::span<const double> disturbances,
+                                             Matrix6& jacobian) const {
+  Vector6 tau = Vector6::Zero();
+  jacobian.setZero();
+  for (const Law& law : laws_) {
+    const auto dof = static_cast<Eigen::Index>(law.dof);
+    const auto variable = static_cast<Eigen::Index>(law.variable);
+    const double x = nu_r_b[variable];
+    tau[dof] +=
+        damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
+    // d/dx of 1, x, x|x|, x^2, x^3, |x| (0 for |x| at x = 0: its mean slope there).
+    const double magnitude = std::abs(x);
+    const std::array<double, 6> slope = {0.0,     1.0,         2.0 * magnitude,
+                                         2.0 * x, 3.0 * x * x, x > 0.0 ? 1.0 : x < 0.0 ? -1.0 : 0.0};
+    for (std::size_t k = 0; k < law.count; ++k)
+      jacobian(dof, variable) += law.coefficients[k] * slope[static_cast<std::size_t>(law.terms[k])];
+  }
+  std::array<double, kMaxOutputs> out{};
+  std::array<double, kMaxOutputs * kMaxAxes> gradient{};
+  std::array<double, kMaxAxes> point{};
+  for (const Lookup& l : lookups_) {
+    for (std::size_t a = 0; a < l.axis_count; ++a)
+      point[a] = l.source[a] < 6 ? nu_r_b[static_cast<Eigen::Index>(l.source[a])] : disturbances[l.source[a] - 6];
+    const std::size_t outputs = l.surface.output_count();
+    l.surface.evaluate_with_gradient(std::span<const double>(point.data(), l.axis_count),
+                                     std::span<double>(out.data(), outputs),
+                                     std::span<double>(gradient.data(), outputs * l.axis_count));
+    for (std::size_t k = 0; k < l.used; ++k) {
+      const auto dof = static_cast<Eigen::Index>(l.dof[k]);
+      tau[dof] += l.sign[k] * out[l.output[k]];
+      for (std::size_t a = 0; a < l.axis_count; ++a)
+        if (l.source[a] < 6)
+          jacobian(dof, static_cast<Eigen::Index>(l.source[a])) += l.sign[k] * gradient[l.output[k] * l.axis_count + a];
+    }
+  }
+  return tau;
+}
+
 void DampingModel::look_up(const Lookup& l, const double* nu_r_b, std::span<const double> disturbances, double* out) {
   std::array<double, kMaxAxes> point;  // written before it is read (hot path)
   for (std::size_t a = 0; a < l.axis_count; ++a)

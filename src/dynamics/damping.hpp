@@ -101,6 +101,11 @@ class DampingModel {
   /// disturbance values (SI, disturbance_names() order). Throws as the
   /// surfaces do (InputError outside a surface's range under policy "error").
   Vector6 evaluate(const Vector6& nu_r_b, std::span<const double> disturbances) const;
+  /// As evaluate, and jacobian(i, j) = d tau_i / d nu_r_j: the laws'
+  /// derivatives and the surfaces' own gradients along the axes bound to
+  /// velocity components (the disturbances are held) [N or N m per m/s or
+  /// rad/s]. For equilibrium solving, not the hot path.
+  Vector6 evaluate_with_jacobian(const Vector6& nu_r_b, std::span<const double> disturbances, Matrix6& jacobian) const;
 
  private:
   struct Law {

@@ -143,6 +143,18 @@ ForceBreakdown VehicleModel::forces(const StateVector& x, const ModelInputs& inp
   return f;
 }
 
+ForceBreakdown VehicleModel::undamped_forces(const StateVector& x, const ModelInputs& inputs) const {
+  motion::Terms<double> terms;
+  motion_terms(
+      x.data(), inputs, [](const double*, double*) {}, terms);
+  ForceBreakdown f;
+  f.control_b = inputs.tau_b;
+  f.nu_r_b = Eigen::Map<const Vector6>(terms.nu_r);
+  f.hydrostatic_b = Eigen::Map<const Vector6>(terms.hydrostatic);
+  f.coriolis_b = Eigen::Map<const Vector6>(terms.coriolis);
+  return f;
+}
+
 void VehicleModel::add_damping(const double* nu_r, const ModelInputs& inputs, double* out) const {
   const Vector6 d = damping_.evaluate(Eigen::Map<const Vector6>(nu_r), inputs.disturbances);
   for (int i = 0; i < 6; ++i) out[i] += d[i];

@@ -110,6 +110,9 @@ class VehicleModel {
 
   /// Every term of the equation of motion at state x.
   ForceBreakdown forces(const StateVector& x, const ModelInputs& inputs) const;
+  /// The same terms without evaluating the damping (damping_b is zero): the
+  /// rigid-body, added-mass and hydrostatic part, which no surface range limits.
+  ForceBreakdown undamped_forces(const StateVector& x, const ModelInputs& inputs) const;
   /// x' at state x. Allocates nothing.
   void derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const;
 

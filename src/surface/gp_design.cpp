@@ -75,43 +75,77 @@ std::vector<SuggestedRun> largest_standard_deviations(const GpSurface& surface, 
   return all;
 }
 
-std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
-                                       const std::vector<double>& upper, std::size_t count, std::size_t candidates,
-                                       double* largest_sd_after) {
-  check_box(surface, lower, upper);
+namespace {
+
+/// Adds x and its distinct images under the reflections as pseudo-runs.
+void add_with_images(GpSurface& design, const double* x, const std::vector<std::vector<double>>& reflections) {
+  const std::size_t d = design.dims();
+  std::vector<std::vector<double>> added{std::vector<double>(x, x + d)};
+  design.add_pseudo_run(x);
+  for (const auto& signs : reflections) {
+    std::vector<double> image(d);
+    for (std::size_t a = 0; a < d; ++a) image[a] = signs[a] * x[a];
+    // A point on the mirror plane is its own image: a second run there adds nothing.
+    if (std::find(added.begin(), added.end(), image) != added.end()) continue;
+    design.add_pseudo_run(image.data());
+    added.push_back(std::move(image));
+  }
+}
+
+}  // namespace
+
+std::vector<SuggestedRun> suggest_among_candidates(const GpSurface& surface, std::span<const double> candidates,
+                                                   std::size_t count, const DesignContext& context,
+                                                   double* largest_sd_after) {
   const std::size_t d = surface.dims();
   if (count == 0 || count > 1000) throw InputError("suggest: count must be 1 to 1000");
-  if (candidates < count) throw InputError("suggest: fewer candidate points than runs asked for");
+  if (candidates.size() % d != 0 || context.in_flight.size() % d != 0)
+    throw InputError("suggest: candidate points of " + std::to_string(d) + " coordinates expected");
+  for (const auto& signs : context.reflections)
+    if (signs.size() != d) throw InputError("suggest: a reflection of " + std::to_string(d) + " signs expected");
+  const std::size_t n = candidates.size() / d;
+  if (n < count) throw InputError("suggest: fewer candidate points than runs asked for");
 
-  const std::vector<double> points = candidate_points(lower, upper, candidates);
-  std::vector<bool> taken(candidates, false);
   GpSurface design = surface;
+  for (std::size_t i = 0; i < context.in_flight.size(); i += d)
+    add_with_images(design, &context.in_flight[i], context.reflections);
+  std::vector<bool> taken(n, false);
   std::vector<SuggestedRun> out;
   for (std::size_t k = 0; k < count; ++k) {
     GpSurface::Workspace workspace(design);
     double best = -1.0;
     std::size_t best_index = 0;
-    for (std::size_t c = 0; c < candidates; ++c) {
+    for (std::size_t c = 0; c < n; ++c) {
       if (taken[c]) continue;
       double sd = 0.0;
-      design.evaluate(&points[c * d], workspace, &sd);
+      design.evaluate(&candidates[c * d], workspace, &sd);
       if (sd > best) best = sd, best_index = c;
     }
     taken[best_index] = true;
-    const double* x = &points[best_index * d];
+    const double* x = &candidates[best_index * d];
     out.push_back({std::vector<double>(x, x + d), best});
-    design.add_pseudo_run(x);
+    add_with_images(design, x, context.reflections);
   }
   if (largest_sd_after) {
     GpSurface::Workspace workspace(design);
     *largest_sd_after = 0.0;
-    for (std::size_t c = 0; c < candidates; ++c) {
+    for (std::size_t c = 0; c < n; ++c) {
       double sd = 0.0;
-      design.evaluate(&points[c * d], workspace, &sd);
+      design.evaluate(&candidates[c * d], workspace, &sd);
       *largest_sd_after = std::max(*largest_sd_after, sd);
     }
   }
   return out;
+}
+
+std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
+                                       const std::vector<double>& upper, std::size_t count, std::size_t candidates,
+                                       double* largest_sd_after) {
+  check_box(surface, lower, upper);
+  if (count == 0 || count > 1000) throw InputError("suggest: count must be 1 to 1000");
+  if (candidates < count) throw InputError("suggest: fewer candidate points than runs asked for");
+  const std::vector<double> points = candidate_points(lower, upper, candidates);
+  return suggest_among_candidates(surface, points, count, {}, largest_sd_after);
 }
 
 }  // namespace hydrocoef

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "src/surface/gp_surface.hpp"
@@ -33,6 +34,27 @@ struct SuggestedRun {
 std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
                                        const std::vector<double>& upper, std::size_t count,
                                        std::size_t candidates = 4096, double* largest_sd_after = nullptr);
+
+/// What a design among given candidates takes into account besides the
+/// surface's own runs.
+struct DesignContext {
+  /// The surface's mirror symmetries on its axes: per reflection, +1 or -1
+  /// per axis. A run at x is also a run at each image s * x (the surface is
+  /// rebuilt with the images beside the runs), so each chosen point is added
+  /// as a pseudo-run together with its distinct images.
+  std::vector<std::vector<double>> reflections;
+  /// Runs asked for but not yet imported (point-major, dims each): added as
+  /// pseudo-runs, with their images, before the first choice.
+  std::vector<double> in_flight;
+};
+
+/// Sequential maximum variance among the given candidate points
+/// (point-major, dims each; distinct), as suggest_runs: `count` of them, no
+/// candidate twice. InputError for count 0 or above 1000, fewer candidates
+/// than count, or sizes that do not match the surface's dims.
+std::vector<SuggestedRun> suggest_among_candidates(const GpSurface& surface, std::span<const double> candidates,
+                                                   std::size_t count, const DesignContext& context = {},
+                                                   double* largest_sd_after = nullptr);
 
 /// The `count` points of the box [lower, upper] (its corners and a Halton
 /// sequence, `candidates` points in all) where the surface's standard

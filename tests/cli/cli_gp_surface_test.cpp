@@ -8,8 +8,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <set>
 #include <sstream>
 
+#include "src/core/numbers.hpp"
 #include "src/store/connection.hpp"
 #include "tests/support/backend_under_test.hpp"
 #include "tests/support/run_cli.hpp"
@@ -196,6 +198,59 @@ TEST_F(GpSurfaceCli, SuggestProposesRunsInsideTheBoundsAndWritesAManifest) {
   }
   EXPECT_EQ(run_cli({"suggest", "--help"}, dir_.path()).exit_code, 0);
   EXPECT_NE(run_cli({"suggest", "--help"}, dir_.path()).out.find("--json"), std::string::npos);
+}
+
+// Through the database: keys where the body has a run (at a coarse
+// resolution, the runs round onto lattice keys) are never proposed, a
+// surface built with --mirror v gets keys with v >= 0 only, keys listed in a
+// --running manifest are not proposed again, and bounds of infinite width
+// are refused with one line.
+TEST_F(GpSurfaceCli, SuggestSkipsRunKeysAndRunningKeysInTheMirrorsDomain) {
+  build_gp();
+  std::set<std::pair<long, long>> covered;  // lattice keys (u / 0.1, v / 0.1) with a run
+  for (const auto& run : runs_) covered.insert({std::lround(run[0] / 0.1), std::lround(run[1] / 0.1)});
+  const std::size_t free = 6 * 5 - covered.size();
+  ASSERT_GT(free, 0u);
+  const auto all = cli({"suggest", "gpxn", "--count", std::to_string(free), "--bounds", "u=0:0.5,v=-0.2:0.2", "--round",
+                        "u=0.1,v=0.1", "--json"});
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  const json out = json::parse(all.out);
+  EXPECT_EQ(out["skipped"]["imported"].get<std::size_t>(), covered.size());
+  for (const auto& run : out["runs"]) {
+    const double u = run["key"]["u"], v = run["key"]["v"];
+    EXPECT_EQ(covered.count({std::lround(u / 0.1), std::lround(v / 0.1)}), 0u) << u << " " << v;
+    EXPECT_EQ(shortest_number(u).size() <= 4, true) << u;  // "0.3", "-0.1": decimals, not round-off
+  }
+  const auto more = cli({"suggest", "gpxn", "--count", std::to_string(free + 1), "--bounds", "u=0:0.5,v=-0.2:0.2",
+                         "--round", "u=0.1,v=0.1"});
+  EXPECT_EQ(more.exit_code, 2);
+  EXPECT_NE(more.err.find("new keys"), std::string::npos) << more.err;
+
+  ASSERT_EQ(cli({"surface", "build", "gpm", "--body", "blob", "--outputs", "X", "--axes", "u,v", "--method", "gp",
+                 "--starts", "2", "--mirror", "v"})
+                .exit_code,
+            0);
+  const auto first = cli({"suggest", "gpm", "--count", "4", "--manifest", "next.csv", "--json"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const json mirrored = json::parse(first.out);
+  EXPECT_EQ(mirrored["domain"], "v >= 0");
+  std::set<std::pair<double, double>> proposed;
+  for (const auto& run : mirrored["runs"]) {
+    EXPECT_GE(run["key"]["v"].get<double>(), 0.0);
+    proposed.insert({run["key"]["u"].get<double>(), run["key"]["v"].get<double>()});
+  }
+  const auto second = cli({"suggest", "gpm", "--count", "4", "--running", "next.csv", "--json"});
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  const json after = json::parse(second.out);
+  EXPECT_EQ(after["skipped"]["running"].get<std::size_t>(), 4u);
+  for (const auto& run : after["runs"])
+    EXPECT_EQ(proposed.count({run["key"]["u"].get<double>(), run["key"]["v"].get<double>()}), 0u);
+
+  const auto huge = cli({"suggest", "gpxn", "--bounds", "u=-1e308:1e308", "--manifest", "huge.csv"});
+  EXPECT_EQ(huge.exit_code, 2);
+  EXPECT_EQ(std::count(huge.err.begin(), huge.err.end(), '\n'), 1) << huge.err;
+  EXPECT_NE(huge.err.find("not a finite number"), std::string::npos) << huge.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "huge.csv"));
 }
 
 // Real OpenFOAM runs: each force is a mean over its history with a standard
