@@ -25,9 +25,11 @@
 #   alone does not settle), or
 #   for at most REF_MAX_ITER (default 3000) iterations; the numbers of that run
 #   go into converged/reference.json (its case folder is not kept).
-# sweep: half domain (symmetry plane z = 0 only, so sway forces exist), mesh 2,
+# sweep: half domain (symmetry plane z = 0 only, so sway forces exist), mesh
+#   SWEEP_MESH (default 1: the coarse one; mesh 2 is 98k cells in the half
+#   domain and its runs that never settle take 10 min each on a shared core),
 #   free stream (U, V, 0). Writes converged/sweep/u<U>_v<V>/. endTime is
-#   SWEEP_END_TIME (default 1500): a run that never meets residualControl stops
+#   SWEEP_END_TIME (default 1000): a run that never meets residualControl stops
 #   there (the script says so).
 #
 # Both: SIMPLE residualControl 1e-4 on p, U, k, omega, endTime 3000 (quarter).
@@ -66,13 +68,14 @@ case $mode in
     reference=${REFERENCE:-1}
     ;;
   sweep)
-    mesh=2
+    mesh=${SWEEP_MESH:-1}
     u=${2:?$usage}
     v=${3:?$usage}
     name=$(awk -v u="$u" -v v="$v" 'BEGIN { printf "u%.2f_v%.2f", u, v }')
     out=${OUT:-"$base/sweep/$name"}
-    end_time=${SWEEP_END_TIME:-1500}
+    end_time=${SWEEP_END_TIME:-1000}
     reference=0
+    [[ $mesh =~ ^[123]$ ]] || { echo "SWEEP_MESH is 1, 2 or 3: $mesh" >&2; exit 2; }
     ;;
   *) echo "$usage" >&2; exit 2 ;;
 esac
