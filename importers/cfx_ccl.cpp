@@ -23,22 +23,6 @@ constexpr std::string_view kCclBanner = "CFX Command Language for Run";
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
 
-/// Runs of blanks as one space, trimmed: CCL names compare this way.
-std::string collapse_blanks(std::string_view text) {
-  std::string out;
-  bool blank = false;
-  for (const char c : trim(text)) {
-    if (is_blank(c)) {
-      blank = true;
-      continue;
-    }
-    if (blank && !out.empty()) out += ' ';
-    blank = false;
-    out += c;
-  }
-  return out;
-}
-
 char lower_ascii(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
@@ -302,6 +286,21 @@ Unit cel_unit(std::string_view text, const SourceLocation& where, std::string_vi
 }
 
 }  // namespace
+
+std::string collapse_blanks(std::string_view text) {
+  std::string out;
+  bool blank = false;
+  for (const char c : trim(text)) {
+    if (is_blank(c)) {
+      blank = true;
+      continue;
+    }
+    if (blank && !out.empty()) out += ' ';
+    blank = false;
+    out += c;
+  }
+  return out;
+}
 
 // --- CclObject ----------------------------------------------------------------
 

@@ -95,6 +95,10 @@ struct CclDocument {
 /// action lines ('>'), and binary data.
 CclDocument parse_ccl(std::string_view text, const std::string& file, std::size_t first_line = 1);
 
+/// Runs of blanks as one space, trimmed: CCL names (and the names of the
+/// solver output's tables) compare this way.
+std::string collapse_blanks(std::string_view text);
+
 /// The CCL a CFX solver output file echoes: its text and the 1-based line of
 /// the .out on which that text starts (pass it to parse_ccl as first_line).
 struct CclExcerpt {

@@ -2,6 +2,8 @@
 // cfx_out.hpp).
 #include "importers/cfx_out.hpp"
 
+#include "importers/cfx_ccl.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -77,20 +79,6 @@ std::optional<double> number_of(std::string_view token) {
 }
 
 /// Runs of blanks as one space, as CFX compares names.
-std::string collapse_blanks(std::string_view text) {
-  std::string out;
-  bool blank = false;
-  for (const char c : trim(text)) {
-    if (c == ' ' || c == '\t') {
-      blank = true;
-      continue;
-    }
-    if (blank && !out.empty()) out += ' ';
-    blank = false;
-    out += c;
-  }
-  return out;
-}
 
 enum class Part { Pressure, Viscous };
 enum class Quantity { Force, Moment };

@@ -491,10 +491,11 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   ImportedInput out;
   out.input = input;
   out.format = format;
-  if (request.require_velocity)
-    require_velocity(settings, input.path.string(),
-                     format == "openfoam-case" ? openfoam_free_stream_search(input.path) : std::string());
+  // The file is read first, so that a broken file is said before a missing key.
   BodyHistory read = body_history_of(input, format, std::move(settings), request);
+  if (request.require_velocity)
+    require_velocity(read.settings, input.path.string(),
+                     format == "openfoam-case" ? openfoam_free_stream_search(input.path) : std::string());
   out.notes = std::move(read.notes);
   settings = std::move(read.settings);
   const ForceHistory& body = read.history;
@@ -759,10 +760,11 @@ ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& 
   check_flow_speed(settings, key, input.path, out.notes);
   const Vec3 reference_b = resolve_reference_point(settings, frame);
   if (format == "cfdpost" || format == "vtk") {
-    if (request.require_velocity) require_velocity(settings, input.path.string(), std::string());
     settings_not_applicable(settings, {"window", "sign"}, "a surface export", out.notes);
     SurfaceRunOptions options = surface_options(settings, format, frame, key, reference_b);
     out.surface = import_surface_run(input.path, options);
+    // After the file is read, so that a broken file is said before a missing key.
+    if (request.require_velocity) require_velocity(settings, input.path.string(), std::string());
     out.batch = out.surface->batch;
     for (const auto& w : out.surface->warnings) out.notes.push_back(w);
   } else if (format == "table") {

@@ -75,7 +75,7 @@ VelocityFile read_velocity_file(const fs::path& file) {
       if (slot && slot->value != stream.value)
         throw InputError(SourceLocation{value.file, value.line, 0},
                          "patches '" + slot->patch + "' (" + slot->where + ") and '" + patch +
-                             "' state different inflow velocities; expected one free stream (give the run's flow "
+                             "' state different free streams; expected one (give the run's flow "
                              "with --flow or a sidecar)");
       if (!slot) slot = stream;
     };

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
 #include "src/core/run_selection.hpp"
@@ -24,6 +25,13 @@ SurfaceBuildResult build_and_store_surface(Database& database, const std::string
   check_name(NameKind::Body, body, {}, "the body");
   if (spec.surface.method != "rbf" && spec.surface.method != "gp")
     (void)parse_interpolation(spec.surface.method);  // before reading runs
+  // What is stored must read back (a NaN threshold was stored as null and
+  // then blocked every rebuild).
+  if (!(spec.surface.far_threshold > 0.0) || !std::isfinite(spec.surface.far_threshold))
+    throw InputError("--far-threshold " + shortest_number(spec.surface.far_threshold) +
+                     ": expected a finite fraction of the runs' range > 0");
+  if (!(spec.surface.rbf.smoothing >= 0.0) || !std::isfinite(spec.surface.rbf.smoothing))
+    throw InputError("--smoothing " + shortest_number(spec.surface.rbf.smoothing) + ": expected a finite number >= 0");
   const RunSelection selection = parse_selection(spec.where, spec.exclude_runs);
   const MirrorSpec mirror = make_mirror_spec(spec.mirror_planes, spec.mirror_odd);
   // Reusing a name replaces what another build made: only when asked.

@@ -601,6 +601,8 @@ TEST(Pmm, PmmRunsListsAndDeletesRecordsEvenOnesNoReaderAccepts) {
   expect_refused(dir, {"pmm-runs", "delete", std::to_string(first), "999"}, before, {"no forced-oscillation run 999"});
   // A record no reader accepts (an infinite added mass, as pmm once stored)
   // makes added-mass refuse the database; pmm-runs delete still removes it.
+  // (The record is tampered with through SQLite's own API.)
+  if (test::on_postgresql()) GTEST_SKIP() << "the rest tampers with an SQLite file";
   {
     sqlite3* raw = nullptr;
     ASSERT_EQ(sqlite3_open((dir / "hydrocoef.db").string().c_str(), &raw), SQLITE_OK);
