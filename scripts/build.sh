@@ -37,6 +37,12 @@ esac
 bash "$root/scripts/install-deps.sh"
 generator=()
 if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+# ccache where present (rebuilds of unchanged sources are cache hits; several
+# work trees of one machine share them through the base directory).
+if command -v ccache >/dev/null 2>&1; then
+  flags+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(dirname "$root")} CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
+fi
 # A test build configured before it was a Clang build with the fuzz targets
 # is made again (a build cannot change its compiler).
 if [[ $kind == test && -f "$dir/CMakeCache.txt" ]] && ! grep -q '^HYDROCOEF_FUZZ_SMOKE:BOOL=ON' "$dir/CMakeCache.txt"; then

@@ -16,7 +16,7 @@ namespace hydrocoef::store {
 namespace {
 
 std::string describe(const SchemaEntry& entry) {
-  std::string text = "a " + entry.type + " '" + printable_text(entry.name, 60) + "'";
+  std::string text = std::string(entry.type == "index" ? "an " : "a ") + entry.type + " '" + printable_text(entry.name, 60) + "'";
   if (entry.type != "table" && !entry.table.empty()) text += " on table '" + printable_text(entry.table, 60) + "'";
   return text;
 }
@@ -61,6 +61,9 @@ std::optional<std::string> schema_difference(const std::vector<SchemaEntry>& exp
              "dropped or changed)";
     wanted.erase(it);
   }
+  // A missing table first: its indexes and triggers go with it.
+  for (const auto& [name, entry] : wanted)
+    if (entry->type == "table") return "lacks " + describe(*entry);
   if (!wanted.empty()) return "lacks " + describe(*wanted.begin()->second);
   return std::nullopt;
 }
