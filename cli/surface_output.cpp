@@ -63,6 +63,11 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
       std::cout << "  (worst: run " << worst->first << ", " << significant(worst->second, 4) << ")";
     std::cout << '\n';
   }
+  if (quality.contains("physical") && quality["physical"].is_array())
+    for (const auto& problem : quality["physical"])
+      if (problem.is_string())
+        std::cout << "  WARNING (energy-producing): " << escape::one_line(problem.get<std::string>())
+                  << "; a simulation with it may run away\n";
   if (quality.contains("grid_points")) {
     const auto far = quality["far_from_data"].size();
     std::cout << "  resampled grid: " << quality["grid_points"].get<std::size_t>() << " points, " << far

@@ -1,5 +1,7 @@
 #include "src/dynamics/damping.hpp"
 
+#include "src/surface/surface_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -98,6 +100,16 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
           throw InputError(dof_context(dof) + ": surface '" + d.surface + "': " + e.what());
         }
         auto bindings = axis_bindings(surface, d, dof);
+        // The output against the axis bound to this DOF's own velocity must
+        // take energy out of that motion.
+        if (!d.allow_unphysical)
+          for (std::size_t a = 0; a < bindings.size(); ++a)
+            if (bindings[a] == kVelocityNames[dof])
+              if (const auto problem = dissipativity_problem(surface, surface.output_index(d.output), a,
+                                                             d.sign == SignConvention::OnBody ? 1.0 : -1.0))
+                throw InputError(dof_context(dof) + ": surface '" + d.surface + "': " + problem->message +
+                                 "; expected damping that takes energy out of the motion (\"allow_unphysical\": "
+                                 "true uses it anyway)");
         for (const auto& b : bindings)
           if (!velocity_index(b)) disturbances.insert(b);
         pending.push_back({dof, surface, std::move(bindings)});

@@ -67,6 +67,10 @@ struct DofDamping {
   /// sign are filled from the database by resolve_stored_records
   /// (src/dynamics/surface_source.hpp) before the model is built.
   std::string fit;
+  /// Surface: use it although its output feeds energy into its own motion
+  /// somewhere in its range (src/surface/surface_checks.hpp); refused
+  /// otherwise.
+  bool allow_unphysical = false;
 };
 
 /// The damping of X, Y, Z, K, M, N in that order.

@@ -116,13 +116,17 @@ SignConvention read_sign(const Json& object, const std::string& file, const std:
 }
 
 DofDamping read_dof_damping(const Json& value, const std::string& file, const std::string& path) {
-  ji::expect_object(value, file, path, {"law", "covariance", "fit", "surface", "output", "axes", "sign"});
+  ji::expect_object(value, file, path,
+                    {"law", "covariance", "fit", "surface", "output", "axes", "sign", "allow_unphysical"});
   DofDamping d;
   const Json* law = ji::find(value, "law");
   const Json* fit = ji::find(value, "fit");
   const Json* surface = ji::find(value, "surface");
   if ((law != nullptr) + (fit != nullptr) + (surface != nullptr) != 1)
     ji::fail(file, path, "expected exactly one of \"law\", \"fit\" and \"surface\"");
+  if (!surface && ji::find(value, "allow_unphysical"))
+    ji::fail(file, ji::join(path, "allow_unphysical"),
+             "belongs to a surface; a law is checked when it is fitted and by export-gazebo");
   if (fit) {
     // A stored fit brings its terms, coefficients, covariance and sign
     // (resolve_stored_records, src/dynamics/surface_source.hpp).
@@ -167,6 +171,11 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
     ji::fail(file, ji::join(path, "covariance"), "a covariance belongs to a law; a surface states its own uncertainty");
   d.kind = DofDamping::Kind::Surface;
   d.surface = ji::string(*surface, file, ji::join(path, "surface"));
+  if (const Json* allow = ji::find(value, "allow_unphysical")) {
+    if (!allow->is_boolean())
+      ji::fail(file, ji::join(path, "allow_unphysical"), "found " + ji::describe(*allow) + ", expected true or false");
+    d.allow_unphysical = allow->get<bool>();
+  }
   d.output = ji::string(ji::require(value, file, path, "output"), file, ji::join(path, "output"));
   if (const Json* axes = ji::find(value, "axes")) {
     if (!axes->is_object())

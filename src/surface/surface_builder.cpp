@@ -1,5 +1,7 @@
 #include "src/surface/surface_builder.hpp"
+
 #include "src/surface/grid_nodes.hpp"
+#include "src/surface/surface_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -435,6 +437,7 @@ std::string SurfaceQuality::to_json(const std::vector<std::string>& outputs) con
       json["outputs"][outputs[k]]["loo_errors"] = errors;
     }
   }
+  if (!physical.empty()) json["physical"] = physical;
   if (grid_points) {
     json["grid_points"] = grid_points;
     json["far_threshold"] = far_threshold;
@@ -459,6 +462,7 @@ BuiltSurface build_surface(const std::vector<StoredRun>& runs, const SurfaceSpec
   BuiltSurface built = spec.method == "rbf"  ? build_rbf(samples, spec)
                        : spec.method == "gp" ? build_gp(samples, spec)
                                              : build_grid(samples, spec);
+  for (const auto& problem : dissipativity_problems(built.surface)) built.quality.physical.push_back(problem.message);
   for (const StoredRun* run : samples.runs) built.run_ids.push_back(run->id);
   // A mirror image carries the id of the run it is the image of: each id once.
   std::sort(built.run_ids.begin(), built.run_ids.end());

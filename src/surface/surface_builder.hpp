@@ -88,6 +88,8 @@ struct SurfaceQuality {
   std::vector<std::size_t> far_from_data;
   double far_threshold = 0.0;
   std::size_t grid_points = 0;
+  /// Physical problems (src/surface/surface_checks.hpp): one line each.
+  std::vector<std::string> physical;
 
   /// As stored in SurfaceRecord::quality.
   std::string to_json(const std::vector<std::string>& outputs) const;

@@ -93,12 +93,12 @@ TEST(DampingModel, SurfaceAxesBindToVelocityOrDisturbance) {
   const std::map<std::string, CoefficientSurface> surfaces{{"s-ur", linear_surface("u", "r")},
                                                            {"s-dist", linear_surface("v", "current_v")}};
   DampingSpec spec;
-  spec[0] = {DofDamping::Kind::Surface, {}, {}, "s-ur", "X", {}, SignConvention::OnBody};
-  spec[5] = {DofDamping::Kind::Surface, {}, {}, "s-ur", "N", {}, SignConvention::OpposingMotion};
+  spec[0] = {DofDamping::Kind::Surface, {}, {}, "s-ur", "X", {}, SignConvention::OnBody, {}, {}, true};
+  spec[5] = {DofDamping::Kind::Surface, {}, {}, "s-ur", "N", {}, SignConvention::OpposingMotion, {}, {}, true};
   // Y reads surface axis "u" from the relative w instead (remapped), "r" by name.
-  spec[1] = {DofDamping::Kind::Surface, {}, {}, "s-ur", "X", {{"u", "w"}}, SignConvention::OnBody};
+  spec[1] = {DofDamping::Kind::Surface, {}, {}, "s-ur", "X", {{"u", "w"}}, SignConvention::OnBody, {}, {}, true};
   // K from a surface over v and the disturbance current_v.
-  spec[3] = {DofDamping::Kind::Surface, {}, {}, "s-dist", "N", {}, SignConvention::OnBody};
+  spec[3] = {DofDamping::Kind::Surface, {}, {}, "s-dist", "N", {}, SignConvention::OnBody, {}, {}, true};
   const DampingModel model(spec, resolver_of(surfaces));
   ASSERT_EQ(model.disturbance_names(), std::vector<std::string>{"current_v"});
   Vector6 nu;
@@ -116,7 +116,7 @@ TEST(DampingModel, SurfaceAxesBindToVelocityOrDisturbance) {
 TEST(DampingModel, BadDescriptionsNameTheDof) {
   const std::map<std::string, CoefficientSurface> surfaces{{"s", linear_surface("u", "r")}};
   DampingSpec spec;
-  spec[5] = {DofDamping::Kind::Surface, {}, {}, "s", "Q", {}, SignConvention::OnBody};
+  spec[5] = {DofDamping::Kind::Surface, {}, {}, "s", "Q", {}, SignConvention::OnBody, {}, {}, true};
   expect_input_error([&] { DampingModel(spec, resolver_of(surfaces)); }, {"damping of N", "'s'", "Q"});
   spec[5].output = "N";
   spec[5].axis_sources = {{"p", "r"}};
