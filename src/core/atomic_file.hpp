@@ -7,6 +7,8 @@
 // the destination instead of writing through it.
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -18,7 +20,8 @@ namespace hydrocoef {
 /// removed by the destructor unless commit() succeeded.
 class AtomicFile {
  public:
-  /// Creates ".NAME.tmp-PID-N" beside `path`. Throws InputError naming `path`
+  /// Creates ".NAME.tmp-PID-N" (O_EXCL, O_NOFOLLOW, mode 0600 until commit)
+  /// beside `path`, skipping names already taken. Throws InputError naming `path`
   /// when its directory is missing, `path` is a directory, or the temporary
   /// cannot be created.
   explicit AtomicFile(std::filesystem::path path);
@@ -32,7 +35,10 @@ class AtomicFile {
   /// The open stream, for producers that write through stdio themselves;
   /// errors are then reported by commit().
   std::FILE* stream() { return file_; }
-  /// Flushes, syncs and closes the temporary and renames it onto `path`.
+  /// Flushes, syncs and closes the temporary without renaming it: every
+  /// write error is known before a companion file is committed.
+  void finish();
+  /// finish() if not yet done, then renames the temporary onto `path`.
   void commit();
 
   const std::filesystem::path& path() const { return path_; }
@@ -43,36 +49,49 @@ class AtomicFile {
   std::filesystem::path path_;
   std::filesystem::path temporary_;
   std::FILE* file_ = nullptr;
+  bool finished_ = false;
   bool committed_ = false;
 };
 
 /// Writes bytes to `path` through an AtomicFile.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
-/// A file written by someone else (matio, VTK's writers, gnuplot) under a
-/// temporary name beside its destination: the temporary is removed by the
-/// destructor unless commit() renamed it onto the destination.
+/// A file written by someone else (matio, gnuplot) under a temporary name
+/// beside its destination. The constructor creates the temporary itself,
+/// exclusively and never through a symbolic link, so the other writer only
+/// truncates and fills a file hydrocoef made; the destructor removes it
+/// unless commit() renamed it onto the destination.
 class TemporaryFile {
  public:
-  /// Names ".NAME.tmp-PID-N" beside `path` (temporary_beside); creates nothing.
+  /// Creates ".NAME.tmp-PID-N" (mode 0600) beside `path`, skipping names
+  /// already taken. Throws InputError as AtomicFile does.
   explicit TemporaryFile(std::filesystem::path path);
   ~TemporaryFile();
   TemporaryFile(const TemporaryFile&) = delete;
   TemporaryFile& operator=(const TemporaryFile&) = delete;
 
-  /// Renames the temporary onto `path` (commit_temporary).
+  /// Checks that the temporary is still the regular file created here and
+  /// not empty, syncs it (reporting "disk full" and the like), gives it the
+  /// mode a new file gets (0666 less the umask) and renames it onto `path`.
+  /// Throws InputError naming `path` and removes the temporary otherwise.
   void commit();
 
   const std::filesystem::path& path() const { return path_; }
   const std::filesystem::path& temporary() const { return temporary_; }
 
  private:
+  void discard();
+  [[noreturn]] void fail(const std::string& what);
   std::filesystem::path path_;
   std::filesystem::path temporary_;
+  int fd_ = -1;
+  dev_t device_ = 0;
+  ino_t inode_ = 0;
   bool committed_ = false;
 };
 
 /// A temporary name beside `path`: ".NAME.tmp-PID-N" in the same directory.
+/// Only names; AtomicFile and TemporaryFile create the file.
 /// Throws InputError when the directory does not exist or `path` names a
 /// directory.
 std::filesystem::path temporary_beside(const std::filesystem::path& path);

@@ -89,6 +89,24 @@ class MatFile {
   mat_t* mat_;
 };
 
+// libmatio does not report every failed fwrite (a full disk, a file-size
+// limit), so the closed file is read back: every variable must be there
+// whole, with the dimensions written.
+bool reads_back(const std::filesystem::path& path, const std::vector<std::pair<std::string, std::size_t>>& expected) {
+  mat_t* mat = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
+  if (!mat) return false;
+  bool ok = true;
+  for (const auto& [name, elements] : expected) {
+    matvar_t* variable = Mat_VarRead(mat, name.c_str());
+    ok = variable && variable->data && variable->nbytes > 0 &&
+         static_cast<std::size_t>(variable->nbytes) / Mat_SizeOf(variable->data_type) == elements;
+    Mat_VarFree(variable);
+    if (!ok) break;
+  }
+  Mat_Close(mat);
+  return ok;
+}
+
 std::string script_text(const GridTable& table, const ExportMetadata& metadata, const SimulinkSettings& settings,
                         const std::string& function_name, const std::string& mat_name,
                         const std::vector<std::string>& table_names) {
@@ -214,8 +232,10 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
   const std::string script =
       script_text(table, metadata, settings, function_name, path.filename().string(), table_names);
 
-  // Both files go through temporaries; the .mat is renamed first, the script second.
+  // Both files go through temporaries; the .mat is renamed first, the script
+  // second. libmatio truncates and fills the temporary TemporaryFile created.
   TemporaryFile mat_file(path);
+  std::vector<std::pair<std::string, std::size_t>> written;
   {
     MatFile mat(mat_file.temporary());
     if (!mat.ok()) {
@@ -228,6 +248,7 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
     for (std::size_t a = 0; a < n && ok; ++a) {
       const std::vector<double>& x = table.axes()[a].breakpoints;
       ok = mat.write("bp" + std::to_string(a + 1), MAT_C_DOUBLE, MAT_T_DOUBLE, {x.size(), 1}, x.data());
+      written.emplace_back("bp" + std::to_string(a + 1), x.size());
     }
     std::vector<std::size_t> dims;
     for (const GridAxis& axis : table.axes()) dims.push_back(axis.breakpoints.size());
@@ -235,13 +256,19 @@ std::vector<std::filesystem::path> write_mat(const GridTable& table, const Expor
     for (std::size_t k = 0; k < n_out && ok; ++k) {
       for (std::size_t node = 0; node < table.node_count(); ++node) columns[k][node] = table.values()[node * n_out + k];
       ok = mat.write(table_names[k], MAT_C_DOUBLE, MAT_T_DOUBLE, dims, columns[k].data());
+      written.emplace_back(table_names[k], table.node_count());
     }
     if (ok) ok = mat.write("info", MAT_C_CHAR, MAT_T_UINT8, {1, info_text.size()}, info_text.data());
+    written.emplace_back("info", info_text.size());
     ok = mat.close() && ok;
     if (!ok) throw InputError("cannot write '" + path.string() + "': libmatio failed while writing it");
   }
-  TemporaryFile script_file(script_path);
-  write_file_atomically(script_file.temporary(), script);
+  if (!reads_back(mat_file.temporary(), written))
+    throw InputError("cannot write '" + path.string() +
+                     "': the file libmatio wrote is incomplete (a full disk or a file-size limit?)");
+  AtomicFile script_file(script_path);
+  script_file.write(script);
+  script_file.finish();
   mat_file.commit();
   script_file.commit();
   return {path, script_path};

@@ -1,6 +1,7 @@
 #include "src/export/vtk_export.hpp"
 
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -11,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/version.hpp"
@@ -40,8 +42,6 @@ void write_vtk(const GridTable& table, const ExportMetadata& metadata, const std
                      "); a VTK grid has at most 3 dimensions; expected 1 to 3 axes (use --format csv, json "
                      "or c for more)");
   }
-  TemporaryFile file(path);
-
   vtkNew<vtkRectilinearGrid> grid;
   int dims[3] = {1, 1, 1};
   vtkNew<vtkDoubleArray> coordinates[3];
@@ -92,26 +92,35 @@ void write_vtk(const GridTable& table, const ExportMetadata& metadata, const std
   add_strings(field_data, "output_units", metadata.output_units);
   add_strings(field_data, "hydrocoef_info", {escape::json_text(info)});
 
+  // VTK writes into memory and AtomicFile writes the bytes: no path is handed
+  // to VTK, and a full disk is reported as for every other hydrocoef file.
+  std::string bytes;
   int written = 0;
+  unsigned long error_code = 0;
   if (path.extension() == ".vtk") {
     vtkNew<vtkRectilinearGridWriter> writer;
-    writer->SetFileName(file.temporary().c_str());
+    writer->WriteToOutputStringOn();
     writer->SetInputData(grid);
     writer->SetFileTypeToBinary();
     writer->SetHeader(("hydrocoef surface " + metadata.surface_name).substr(0, 200).c_str());
     written = writer->Write();
+    error_code = writer->GetErrorCode();
+    if (writer->GetOutputString())
+      bytes.assign(writer->GetOutputString(), static_cast<std::size_t>(writer->GetOutputStringLength()));
   } else {
     vtkNew<vtkXMLRectilinearGridWriter> writer;
-    writer->SetFileName(file.temporary().c_str());
+    writer->WriteToOutputStringOn();
     writer->SetInputData(grid);
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
     written = writer->Write();
+    error_code = writer->GetErrorCode();
+    bytes = writer->GetOutputString();
   }
-  std::error_code ec;
-  if (written != 1 || !std::filesystem::exists(file.temporary(), ec))
-    throw InputError("cannot write '" + path.string() + "': VTK's writer failed (is the directory writable?)");
-  file.commit();
+  if (written != 1 || error_code != 0 || bytes.empty())
+    throw InputError("cannot write '" + path.string() + "': VTK's writer failed (" +
+                     (error_code ? vtkErrorCode::GetStringFromErrorCode(error_code) : "no output") + ")");
+  write_file_atomically(path, bytes);
 }
 
 }  // namespace hydrocoef

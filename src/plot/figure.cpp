@@ -99,13 +99,14 @@ BlockIndex block_index(const Figure& figure) {
 
 void write_file(const std::filesystem::path& path, const std::string& text) { write_file_atomically(path, text); }
 
-/// Runs `program script` with stdout and stderr to `log`; returns the exit
-/// status, or throws when the program cannot be started.
+/// Runs `program script` with stdout and stderr to `log`, an existing file
+/// (a TemporaryFile, never followed if a link); returns the exit status, or
+/// throws when the program cannot be started.
 int run_gnuplot(const std::string& program, const std::filesystem::path& script, const std::filesystem::path& log) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_TRUNC | O_NOFOLLOW, 0);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   std::string arg0 = program;
   std::string arg1 = script.string();
@@ -125,6 +126,17 @@ int run_gnuplot(const std::string& program, const std::filesystem::path& script,
   }
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+/// Whether an image ends as a whole file of its format does: PNG with its
+/// IEND chunk, SVG with its closing tag.
+bool image_is_whole(const std::string& bytes, ImageFormat format) {
+  if (format == ImageFormat::Png) {
+    static const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+    return bytes.size() >= iend.size() && bytes.compare(bytes.size() - iend.size(), iend.size(), iend) == 0;
+  }
+  const std::size_t end = bytes.rfind("</svg>");
+  return end != std::string::npos && bytes.find_first_not_of(" \t\r\n", end + 6) == std::string::npos;
 }
 
 std::string read_all(const std::filesystem::path& path) {
@@ -307,16 +319,17 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
   // gnuplot draws into a temporary beside the image, renamed onto it only
   // when gnuplot succeeded: the image is whole or not there. The script kept
   // for the user names the image itself; the one run names the temporary.
+  // Every temporary is created here first (TemporaryFile): gnuplot only
+  // truncates files hydrocoef made, never a link planted at their names.
   TemporaryFile drawing(files.image);
   const TemporaryFile run_script(files.script);  // never committed: removed at the end
   write_file(run_script.temporary(), script_text(figure, files.data, drawing.temporary(), files.format, options));
 
   const char* configured = std::getenv("HYDROCOEF_GNUPLOT");
   const std::string program = configured && *configured ? configured : "gnuplot";
-  const std::filesystem::path log = std::filesystem::path(absolute).replace_extension(".gnuplot.log");
-  const int status = run_gnuplot(program, run_script.temporary(), log);
-  const std::string messages = read_all(log);
-  std::filesystem::remove(log, ec);
+  const TemporaryFile log(std::filesystem::path(absolute).replace_extension(".gnuplot.log"));  // never committed
+  const int status = run_gnuplot(program, run_script.temporary(), log.temporary());
+  const std::string messages = read_all(log.temporary());
   if (status == 127)
     throw InputError("cannot run gnuplot ('" + program +
                      "' not found); install Debian's gnuplot-nox package or "
@@ -327,6 +340,11 @@ RenderedFiles render(const Figure& figure, const std::filesystem::path& image, c
   if (!std::filesystem::exists(drawing.temporary()) || std::filesystem::file_size(drawing.temporary()) == 0)
     throw InputError("gnuplot wrote no image " + files.image.string() + ": " +
                      printable_text(first_error_line(messages), 300));
+  // gnuplot may exit 0 after a failed write (a full disk): the image must end
+  // as its format ends.
+  if (!image_is_whole(read_all(drawing.temporary()), files.format))
+    throw InputError("cannot write '" + files.image.string() +
+                     "': gnuplot left it incomplete (a full disk or a file-size limit?)");
   drawing.commit();
   return files;
 }

@@ -1,6 +1,7 @@
 #include "src/report/report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -12,6 +13,7 @@
 #include "src/core/atomic_file.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/source_file.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/plot/plots.hpp"
 #include "src/plot/pmm_plot.hpp"
@@ -22,6 +24,19 @@
 #include "src/surface/surface_builder.hpp"
 
 namespace hydrocoef::report {
+
+std::string plot_file_stem(const std::string& kind, const std::string& name) {
+  // Sanitizing alone maps "S 1" and "S_1" to one file and lets a long
+  // non-ASCII name outgrow NAME_MAX; a hash of the whole name keeps them apart.
+  constexpr std::size_t kPrefixBytes = 60;
+  std::string out = kind + "-";
+  for (char c : name) {
+    if (out.size() >= kind.size() + 1 + kPrefixBytes) break;
+    out += (std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 0x80) || c == '-' ? c : '_';
+  }
+  return out + "-" + sha256_hex(name).substr(0, 12);
+}
+
 namespace {
 
 constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
@@ -76,13 +91,6 @@ std::string read_file(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-/// A file name for a plot from a fit or surface name ("asr-v:X(1,u,u|u|)" -> "asr-v_X_1_u_u_u__").
-std::string file_stem(const std::string& kind, const std::string& name) {
-  std::string out = kind + "-";
-  for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.') ? c : '_';
-  return out;
 }
 
 /// The stored leave-one-out figures of a surface, per output in its unit.
@@ -310,11 +318,12 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
     }
     for (const auto& g : order) {
       h << "<h3>" << html_escape(g) << "</h3>\n";
-      page.figure(file_stem("fit", g), "force against velocity: " + g, [&] { return plot::fit_figure(database, g); });
+      page.figure(plot_file_stem("fit", g), "force against velocity: " + g,
+                  [&] { return plot::fit_figure(database, g); });
       if (levels[g] >= 2) {
         const int degree = static_cast<int>(std::min<std::size_t>(2, levels[g] - 1));
         page.figure(
-            file_stem("curves", g), "coefficient curves of " + g,
+            plot_file_stem("curves", g), "coefficient curves of " + g,
             [&] { return plot::curves_figure(database, g, CurveKind::Polynomial, degree); }, 720);
       }
     }
@@ -353,7 +362,7 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
       }
       for (std::size_t k = 0; k < outputs.size() && k < 6; ++k) {
         const std::string output = outputs[k];
-        page.figure(file_stem("surface", s.name + (outputs.size() > 1 ? "-" + output : std::string())),
+        page.figure(plot_file_stem("surface", s.name + (outputs.size() > 1 ? "-" + output : std::string())),
                     "surface " + s.name + ", output " + output,
                     [&] { return plot::surface_figure(database, s.name, output); });
       }
@@ -422,7 +431,7 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
         h << ".</p>\n";
       }
     for (const auto& r : pmm)
-      page.figure(file_stem("pmm", r.body + "-" + std::string(dof_name(r.dof)) + "-" + std::to_string(r.id)),
+      page.figure(plot_file_stem("pmm", r.body + "-" + std::string(dof_name(r.dof)) + "-" + std::to_string(r.id)),
                   "force history and harmonic fit: " + r.body + ", " + std::string(dof_name(r.dof)) + " run " +
                       std::to_string(r.id),
                   [&] { return plot::pmm_figure(r); });
@@ -436,7 +445,7 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
          "hydrocoef simulate --out).</p>\n";
   for (const auto& trajectory : options.trajectories) {
     const std::string stem = trajectory.stem().string();
-    page.figure(file_stem("simulation", stem + "-" + options.component),
+    page.figure(plot_file_stem("simulation", stem + "-" + options.component),
                 options.component + " against time: " + trajectory.filename().string(),
                 [&] { return plot::simulation_figure(trajectory, options.experiment, options.component); });
   }

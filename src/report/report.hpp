@@ -46,6 +46,13 @@ struct ReportResult {
   std::size_t runs = 0, fits = 0, surfaces = 0;
 };
 
+/// The file stem of a report plot (plots/STEM.svg) for a fit, surface or run
+/// name: KIND-, at most 60 bytes of the name with every byte outside
+/// [A-Za-z0-9-] as '_', then '-' and 12 hex digits of the name's SHA-256, so
+/// names that sanitize alike get different files and every stem fits a file
+/// name.
+std::string plot_file_stem(const std::string& kind, const std::string& name);
+
 /// Writes the report into `dir` (created if needed; index.html replaced).
 /// InputError when the database (or the body) has no runs, naming the bodies
 /// there are, or when a file cannot be written. A plot that cannot be drawn

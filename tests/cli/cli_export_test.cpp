@@ -189,5 +189,81 @@ TEST(CliExport, AnOutputUnderARegularFileIsRefused) {
   EXPECT_EQ(kept, "kept\n");
 }
 
+// make_database plus a linear surface "surge-linear", which Simulink's
+// lookup table (--format mat) can reproduce.
+void make_database_with_linear(const TempDir& dir) {
+  make_database(dir);
+  auto built = run_cli({"surface", "build", "surge-linear", "--body", "asr-v", "--outputs", "X", "--axes", "u",
+                        "--method", "linear", "--extrapolate", "linear"},
+                       dir.path());
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+}
+
+// A shell prefix that plants links at the temporary names the CLI will use
+// for `file` (".FILE.tmp-PID-N", counters 0 to 198 in steps of `step`) and
+// then execs the CLI, so that PID is the shell's $$.
+std::string plant_links_then_exec(const std::string& file, int step) {
+  return "for n in $(seq 0 " + std::to_string(step) + " 198); do ln -s victim ." + file +
+         ".tmp-$$-$n || exit 9; done; exec ";
+}
+
+// Links planted at every other temporary name are skipped: the export lands
+// at its target and the victim keeps its bytes. Links at every name make the
+// export refuse with one line.
+TEST(CliExport, LinksAtTheTemporaryNamesAreNeverWrittenThrough) {
+  TempDir dir;
+  make_database_with_linear(dir);
+  for (const std::string file : {"s.vtr", "s.vtk", "s.mat"}) {
+    { std::ofstream(dir / "victim") << "precious\n"; }
+    const std::string format = file == "s.mat" ? "mat" : "vtk";
+    const std::string surface = file == "s.mat" ? "surge-linear" : "surge";
+    const auto some = run_cli({"export", surface, "--format", format, "-o", file}, dir.path(), "/dev/null",
+                              plant_links_then_exec(file, 2));
+    EXPECT_EQ(some.exit_code, 0) << file << ": " << some.err;
+    EXPECT_EQ(test::read_text(dir / "victim"), "precious\n") << file;
+    EXPECT_FALSE(std::filesystem::is_symlink(dir / file));
+    EXPECT_GT(std::filesystem::file_size(dir / file), 100u) << file;
+    std::filesystem::remove(dir / file);
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+      if (entry.is_symlink()) std::filesystem::remove(entry.path());
+
+    const auto all = run_cli({"export", surface, "--format", format, "-o", file}, dir.path(), "/dev/null",
+                             plant_links_then_exec(file, 1));
+    EXPECT_EQ(all.exit_code, 2) << file << ": " << all.err;
+    EXPECT_NE(all.err.find("cannot write '" + file + "'"), std::string::npos) << all.err;
+    EXPECT_EQ(std::count(all.err.begin(), all.err.end(), '\n'), 1) << all.err;
+    EXPECT_EQ(test::read_text(dir / "victim"), "precious\n") << file;
+    EXPECT_FALSE(std::filesystem::exists(dir / file)) << file;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+      if (entry.is_symlink()) std::filesystem::remove(entry.path());
+  }
+}
+
+// A write that fails part-way (here a one-block file-size limit, which fails
+// writes as a full disk does, with SIGXFSZ ignored) is exit 2 with one line,
+// and nothing at the target: neither VTK nor libmatio may leave a truncated
+// file behind.
+TEST(CliExport, AFailedLibraryWriteLeavesNoTruncatedFile) {
+  TempDir dir;
+  make_database_with_linear(dir);
+  for (const std::string file : {"s.vtr", "s.vtk", "s.mat"}) {
+    const std::string format = file == "s.mat" ? "mat" : "vtk";
+    const std::string surface = file == "s.mat" ? "surge-linear" : "surge";
+    const auto full = run_cli({"export", surface, "--format", format, "-o", file}, dir.path(), "/dev/null",
+                              "trap '' XFSZ; ulimit -f 1; exec ");
+    EXPECT_EQ(full.exit_code, 2) << file << ": " << full.err;
+    EXPECT_NE(full.err.find("cannot write '" + file + "'"), std::string::npos) << full.err;
+    EXPECT_EQ(std::count(full.err.begin(), full.err.end(), '\n'), 1) << full.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / file)) << file;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+    // The same export without the limit is larger than the limit.
+    const auto whole = run_cli({"export", surface, "--format", format, "-o", file}, dir.path());
+    EXPECT_EQ(whole.exit_code, 0) << whole.err;
+    EXPECT_GT(std::filesystem::file_size(dir / file), 1024u) << file;  // a block is 512 or 1024 bytes
+    std::filesystem::remove(dir / file);
+  }
+}
+
 }  // namespace
 }  // namespace hydrocoef

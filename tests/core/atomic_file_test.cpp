@@ -6,6 +6,7 @@
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -123,6 +124,85 @@ TEST(AtomicFile, DirectoryRemovedBeforeCommitLeavesNothing) {
   fs::remove(sub);
   EXPECT_THROW(file.commit(), InputError);
   EXPECT_FALSE(fs::exists(sub));
+}
+
+// Links at the temporary names of `path` in this process, counters 0 to
+// count-1 in steps of `step`, all pointing at `victim`.
+void plant_links(const fs::path& path, const fs::path& victim, int count, int step) {
+  for (int n = 0; n < count; n += step)
+    fs::create_symlink(victim, path.parent_path() / ("." + path.filename().string() + ".tmp-" +
+                                                     std::to_string(::getpid()) + "-" + std::to_string(n)));
+}
+
+// A link planted at a temporary's name is skipped, never written through: the
+// writer (here a library reopening the name with O_TRUNC) fills a file
+// hydrocoef created, and the victim keeps its bytes.
+TEST(TemporaryFile, ALinkPlantedAtItsNameIsSkippedNotFollowed) {
+  test::TempDir dir;
+  write_file_atomically(dir / "victim", "precious");
+  plant_links(dir / "out.vtr", dir / "victim", 4000, 2);
+  for (int i = 0; i < 3; ++i) {
+    TemporaryFile file(dir / "out.vtr");
+    EXPECT_FALSE(fs::is_symlink(file.temporary())) << file.temporary();
+    struct stat created {};
+    ASSERT_EQ(::lstat(file.temporary().c_str(), &created), 0);
+    EXPECT_EQ(created.st_mode & 0777, 0600u);
+    std::ofstream(file.temporary(), std::ios::trunc) << "new " << i;
+    file.commit();
+  }
+  for (int i = 0; i < 3; ++i) {
+    AtomicFile file(dir / "out.vtr");
+    EXPECT_FALSE(fs::is_symlink(file.temporary()));
+    file.write("atomic");
+    file.commit();
+  }
+  EXPECT_EQ(read_all(dir / "victim"), "precious");
+  EXPECT_EQ(read_all(dir / "out.vtr"), "atomic");
+  EXPECT_FALSE(fs::is_symlink(dir / "out.vtr"));
+}
+
+TEST(TemporaryFile, EveryNameTakenIsOneInputErrorAndTheVictimIsKept) {
+  test::TempDir dir;
+  write_file_atomically(dir / "victim", "precious");
+  plant_links(dir / "out.mat", dir / "victim", 4000, 1);
+  try {
+    TemporaryFile file(dir / "out.mat");
+    ADD_FAILURE() << "created " << file.temporary() << " where every name was a link";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("cannot write '" + (dir / "out.mat").string() + "'"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  EXPECT_THROW(write_file_atomically(dir / "out.mat", "x"), InputError);
+  EXPECT_EQ(read_all(dir / "victim"), "precious");
+  EXPECT_FALSE(fs::exists(dir / "out.mat"));
+}
+
+// The temporary is private while written and gets a new file's mode (0666
+// less the umask) when committed.
+TEST(TemporaryFile, CommittedFileHasTheModeOfANewFile) {
+  test::TempDir dir;
+  const mode_t mask = ::umask(022);
+  ::umask(mask);
+  TemporaryFile file(dir / "out.mat");
+  std::ofstream(file.temporary(), std::ios::trunc) << "bytes";
+  file.commit();
+  struct stat committed {};
+  ASSERT_EQ(::stat((dir / "out.mat").c_str(), &committed), 0);
+  EXPECT_EQ(committed.st_mode & 0777, 0666u & ~mask);
+}
+
+// A temporary replaced behind hydrocoef's back (here by a link) is not
+// renamed onto the destination.
+TEST(TemporaryFile, AReplacedTemporaryIsNotCommitted) {
+  test::TempDir dir;
+  write_file_atomically(dir / "victim", "precious");
+  TemporaryFile file(dir / "out.vtr");
+  fs::remove(file.temporary());
+  fs::create_symlink(dir / "victim", file.temporary());
+  EXPECT_THROW(file.commit(), InputError);
+  EXPECT_FALSE(fs::exists(dir / "out.vtr"));
+  EXPECT_EQ(read_all(dir / "victim"), "precious");
 }
 
 }  // namespace

@@ -187,5 +187,22 @@ TEST_F(ReportTest, RendersInHeadlessChromiumWithoutErrors) {
   EXPECT_EQ(bad.find("data-broken-images=\"0\""), std::string::npos);
 }
 
+// Names that sanitize alike ("S 1", "S_1") get different plot files, and a
+// 128-character non-ASCII name still fits a file name.
+TEST(Report, PlotFileStemsDoNotCollideAndFit) {
+  EXPECT_NE(plot_file_stem("surface", "S 1"), plot_file_stem("surface", "S_1"));
+  EXPECT_EQ(plot_file_stem("surface", "S 1"), plot_file_stem("surface", "S 1"));
+  std::string long_name;
+  for (int i = 0; i < 128; ++i) long_name += "\xc3\xa9";  // 128 × 'é'
+  std::string other = long_name;
+  other.back() = '\xa8';  // ... 'è' at the end: same sanitized prefix
+  const std::string stem = plot_file_stem("surface", long_name);
+  EXPECT_LE(stem.size() + 4, 255u) << stem;  // with ".svg"
+  EXPECT_NE(stem, plot_file_stem("surface", other));
+  EXPECT_EQ(stem.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_"),
+            std::string::npos)
+      << stem;
+}
+
 }  // namespace
 }  // namespace hydrocoef::report
