@@ -121,14 +121,16 @@ void print_import(const ImportResult& result, const std::string& database, bool 
     return;
   }
   if (!quiet) {
-    for (std::size_t i = 0; i < outcomes.size(); ++i) std::cout << input_line(inputs[i], outcomes[i]) << '\n';
+    // Paths, previous paths, bodies and notes come from outside: one printable line each.
+    for (std::size_t i = 0; i < outcomes.size(); ++i)
+      std::cout << escape::one_line(input_line(inputs[i], outcomes[i])) << '\n';
     for (const auto& [text, count] : notes)
-      std::cout << "note" << (count > 1 ? " (" + std::to_string(count) + " inputs)" : std::string()) << ": " << text
-                << '\n';
+      std::cout << "note" << (count > 1 ? " (" + std::to_string(count) + " inputs)" : std::string()) << ": "
+                << escape::one_line(text) << '\n';
   }
-  std::cout << "imported " << outcomes.size() << (outcomes.size() == 1 ? " input" : " inputs") << " into " << database
-            << ": " << created << " new " << (created == 1 ? "run" : "runs") << ", " << extended << " extended, "
-            << already << " already imported"
+  std::cout << "imported " << outcomes.size() << (outcomes.size() == 1 ? " input" : " inputs") << " into "
+            << escape::one_line(database) << ": " << created << " new " << (created == 1 ? "run" : "runs") << ", "
+            << extended << " extended, " << already << " already imported"
             << (replaced ? ", " + std::to_string(replaced) + " replaced" : std::string())
             << (plan.excluded ? ", " + std::to_string(plan.excluded) + " left out by the filters" : std::string())
             << ", " << notes.size() << (notes.size() == 1 ? " note" : " notes") << '\n';

@@ -39,7 +39,7 @@ nlohmann::json import_json(const ImportRecord& record) {
 
 }  // namespace
 
-/// The runs as CSV (RFC 4180; names through escape::csv_field): id, body,
+/// The runs as CSV (RFC 4180; names through escape::csv_text): id, body,
 /// u..r, one column per disturbance any run has, X..N (forces on the body,
 /// SI), the force sources. Empty cells where a run has no such value.
 void print_runs_csv(const std::vector<StoredRun>& runs) {
@@ -48,11 +48,11 @@ void print_runs_csv(const std::vector<StoredRun>& runs) {
     for (const auto& [name, value] : run.key.disturbances) disturbance_names.insert(name);
   std::string out = "id,body";
   for (const auto name : kVelocityNames) out += "," + std::string(name);
-  for (const auto& name : disturbance_names) out += "," + escape::csv_field(name);
+  for (const auto& name : disturbance_names) out += "," + escape::csv_text(name);
   for (const auto name : kForceNames) out += "," + std::string(name);
   out += ",sources\n";
   for (const auto& run : runs) {
-    out += std::to_string(run.id) + "," + escape::csv_field(run.key.body);
+    out += std::to_string(run.id) + "," + escape::csv_text(run.key.body);
     // Numbers are appended in place (GCC 12 at -O3 warned falsely on "," + a temporary string here).
     for (const double v : run.key.nu_b) {
       out += ',';
@@ -73,7 +73,7 @@ void print_runs_csv(const std::vector<StoredRun>& runs) {
     }
     std::string list;
     for (const auto& source : sources) list += (list.empty() ? "" : ";") + source;
-    out += "," + escape::csv_field(list) + "\n";
+    out += "," + escape::csv_text(list) + "\n";
   }
   std::cout << out;
 }
@@ -123,7 +123,8 @@ nlohmann::json run_json(const StoredRun& run) {
 void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<std::string>& body,
                       const std::string& database) {
   if (runs.empty()) {
-    std::cout << "no runs" << (body ? " of body '" + *body + "'" : std::string()) << " in " << database << '\n';
+    std::cout << "no runs" << (body ? " of body '" + escape::one_line(*body) + "'" : std::string()) << " in "
+              << escape::one_line(database) << '\n';
     return;
   }
   // Only the velocity and force columns some run uses are shown.
@@ -148,7 +149,7 @@ void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<st
   if (any_history) table << std::setw(12) << "history";
   table << "disturbances\n";
   for (const auto& run : runs) {
-    table << cell(std::to_string(run.id), 6) << cell(run.key.body, 12);
+    table << cell(std::to_string(run.id), 6) << cell(escape::one_line(run.key.body), 12);
     for (std::size_t i = 0; i < 6; ++i)
       if (velocity_used[i]) table << cell(significant(run.key.nu_b[i], 6), 11);
     for (std::size_t i = 0; i < 6; ++i) {
@@ -167,7 +168,11 @@ void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<st
       for (const auto& force : run.tau_b)
         if (force && force->statistics && !force->statistics->convergence.empty())
           kind = force->statistics->convergence;
-      table << cell(!averaged ? "-" : !flags.empty() ? flags : kind == "converged" ? "converged" : "ok", 12);
+      table << cell(escape::one_line(!averaged             ? "-"
+                                     : !flags.empty()      ? flags
+                                     : kind == "converged" ? "converged"
+                                                           : "ok"),
+                    12);
     }
     std::string disturbances;
     for (const auto& [name, value] : run.key.disturbances)
@@ -193,7 +198,8 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "run " << run.id << ": " << describe(run.key) << '\n';
+  // Text read back from the database (bodies, paths, versions, flags) is printed through escape::one_line.
+  std::cout << "run " << run.id << ": " << escape::one_line(describe(run.key)) << '\n';
   std::cout << "  fluid: rho "
             << (run.fluid.density_kg_m3 ? significant(*run.fluid.density_kg_m3, 6) + " kg m^-3" : "not given")
             << ", nu "
@@ -206,7 +212,7 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
     if (!run.tau_b[i]) continue;
     const auto& f = *run.tau_b[i];
     std::cout << "  " << kForceNames[i] << " = " << significant(f.value.total, 8) << (i < 3 ? " N" : " N m") << " ("
-              << to_string(f.sign) << "), from " << f.source_path
+              << to_string(f.sign) << "), from " << escape::one_line(f.source_path)
               << (f.source_line ? ":" + std::to_string(f.source_line) : "")
               << (f.import_id ? ", import " + std::to_string(f.import_id) : std::string()) << '\n';
     if (f.statistics) {
@@ -215,43 +221,49 @@ void print_run(const StoredRun& run, const std::map<std::int64_t, ImportRecord>&
       std::string flags;
       for (const auto& flag : st.flags) flags += (flags.empty() ? "" : ", ") + flag;
       if (st.convergence == "converged")
-        std::cout << "      final iterate, " << st.abscissa << " " << significant(st.window_last, 8)
+        std::cout << "      final iterate, " << escape::one_line(st.abscissa) << " " << significant(st.window_last, 8)
                   << ": iterative error " << significant(st.values.standard_error, 3) << unit << " (change per "
                   << "iteration " << significant(st.values.drift, 3) << unit << ", fluctuation "
                   << significant(st.values.spread, 3) << unit << ")\n";
       else
-        std::cout << "      mean over " << st.abscissa << " " << significant(st.window_first, 8) << " to "
-                  << significant(st.window_last, 8) << " (" << st.samples << " samples, "
+        std::cout << "      mean over " << escape::one_line(st.abscissa) << " " << significant(st.window_first, 8)
+                  << " to " << significant(st.window_last, 8) << " (" << st.samples << " samples, "
                   << escape::one_line(st.window_method) << "): standard error "
                   << significant(st.values.standard_error, 3) << unit << " ("
                   << significant(st.values.effective_samples, 3) << " effective samples), spread "
                   << significant(st.values.spread, 3) << unit << ", drift " << significant(st.values.drift, 3) << unit
-                  << (flags.empty() ? "" : ", flags: " + flags) << '\n';
+                  << (flags.empty() ? "" : ", flags: " + escape::one_line(flags)) << '\n';
     }
   }
   for (const auto& force : run.tau_b)
     if (force && force->statistics) {
       const auto& st = *force->statistics;
       std::cout << "  convergence: "
-                << (st.convergence.empty() ? std::string("not recorded (imported by an older hydrocoef)")
-                                           : st.convergence + (st.convergence_reason.empty()
-                                                                   ? std::string()
-                                                                   : ": " + escape::one_line(st.convergence_reason)))
+                << (st.convergence.empty()
+                        ? std::string("not recorded (imported by an older hydrocoef)")
+                        : escape::one_line(st.convergence) + (st.convergence_reason.empty()
+                                                                  ? std::string()
+                                                                  : ": " + escape::one_line(st.convergence_reason)))
                 << '\n';
       break;
     }
   for (const auto& [id, record] : imports) {
-    std::cout << "  import " << id << ": " << record.path << " ("
-              << (record.resolved_path.empty() ? "path not resolved" : record.resolved_path) << "), sha256 "
-              << record.sha256.substr(0, 16) << "..., " << record.importer << " " << record.importer_version
-              << ", hydrocoef " << (record.hydrocoef_version.empty() ? "(older)" : record.hydrocoef_version) << ", "
-              << record.imported_at << (record.reading.empty() ? "" : ", reading '" + record.reading + "'") << '\n';
+    // One line of database text: every field through escape::one_line at once.
+    std::cout << "  import " << id << ": "
+              << escape::one_line(
+                     record.path + " (" + (record.resolved_path.empty() ? "path not resolved" : record.resolved_path) +
+                     "), sha256 " + record.sha256.substr(0, 16) + "..., " + record.importer + " " +
+                     record.importer_version + ", hydrocoef " +
+                     (record.hydrocoef_version.empty() ? "(older)" : record.hydrocoef_version) + ", " +
+                     record.imported_at + (record.reading.empty() ? "" : ", reading '" + record.reading + "'"))
+              << '\n';
     const auto settings = nlohmann::json::parse(record.settings.empty() ? "{}" : record.settings, nullptr, false);
     if (settings.is_object())
       for (const auto& [name, setting] : settings.items())
         if (setting.is_object())
-          std::cout << "    " << name << " = " << escape::json_text(setting.value("value", nlohmann::json())) << "  ("
-                    << setting.value("source", std::string())
+          std::cout << "    " << escape::one_line(name) << " = "
+                    << escape::json_text(setting.value("value", nlohmann::json())) << "  ("
+                    << escape::one_line(setting.value("source", std::string()))
                     << (setting.contains("where") ? ": " + escape::one_line(setting.value("where", std::string())) : "")
                     << ")\n";
   }

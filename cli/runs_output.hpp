@@ -11,7 +11,7 @@
 
 namespace hydrocoef::cli {
 
-/// The runs as CSV (RFC 4180; names through escape::csv_field): id, body,
+/// The runs as CSV (RFC 4180; names through escape::csv_text): id, body,
 /// u..r, one column per disturbance any run has, X..N (forces on the body,
 /// SI), the force sources. Empty cells where a run has no such value.
 void print_runs_csv(const std::vector<StoredRun>& runs);

@@ -118,10 +118,23 @@ std::string c_string(std::string_view text) {
   return out + "\"";
 }
 
-std::string csv_field(std::string_view text) {
-  const std::string line = one_line(text);
-  const bool quote =
-      line.find_first_of(",\"") != std::string::npos || (!line.empty() && (line.front() == ' ' || line.back() == ' '));
+namespace {
+
+/// Whether a spreadsheet would evaluate a cell of this text (OWASP, CSV
+/// injection), or csv_text_value would take its first quote for the guard.
+bool formula_like(std::string_view text) {
+  while (!text.empty() && text.front() == '\'') text.remove_prefix(1);
+  return !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos;
+}
+
+}  // namespace
+
+std::string csv_text(std::string_view text) {
+  std::string line = one_line(text);
+  const bool guard = formula_like(line);
+  if (guard) line.insert(line.begin(), '\'');
+  const bool quote = guard || line.find_first_of(",\"") != std::string::npos ||
+                     (!line.empty() && (line.front() == ' ' || line.back() == ' '));
   if (!quote) return line;
   std::string out = "\"";
   for (const char c : line) {
@@ -129,6 +142,11 @@ std::string csv_field(std::string_view text) {
     out += c;
   }
   return out + "\"";
+}
+
+std::string csv_text_value(std::string_view cell) {
+  if (!cell.empty() && cell.front() == '\'' && formula_like(cell)) cell.remove_prefix(1);
+  return std::string(cell);
 }
 
 std::string csv_comment(std::string_view text) { return one_line(text); }

@@ -52,9 +52,20 @@ std::string c_comment(std::string_view text);
 std::string c_string(std::string_view text);
 
 // --- CSV -------------------------------------------------------------------
-/// One CSV field (RFC 4180): quoted when it holds a comma, quote, or starts
-/// or ends with a space; one line always.
-std::string csv_field(std::string_view text);
+/// One CSV text cell (RFC 4180): one line always; quoted when it holds a
+/// comma or a quote, or starts or ends with a space. A cell a spreadsheet
+/// would take for a formula (starting with '=', '+', '-', '@', tab or
+/// carriage return, as OWASP's CSV-injection guidance lists) gets a single
+/// quote before it and is quoted: "=1+1" is written "'=1+1". A cell already
+/// starting with a quote before such a character gets one more quote, so
+/// that csv_text_value gives every text back exactly. Numbers never come
+/// here: a number cell is written by shortest_number (src/core/numbers.hpp),
+/// so -0.5 stays a number; only names and other texts are neutralized.
+std::string csv_text(std::string_view text);
+/// The text a csv_text cell was written for (after RFC 4180 unquoting): the
+/// cell without the single quote csv_text put before a formula-like text.
+/// For readers of CSV hydrocoef wrote (a sweep manifest read back).
+std::string csv_text_value(std::string_view cell);
 /// Text for a '#' comment line of a CSV file: one line.
 std::string csv_comment(std::string_view text);
 

@@ -9,13 +9,13 @@ namespace hydrocoef {
 
 namespace {
 
-// Names reach the file only through escape::csv_field (header cells) and
+// Names reach the file only through escape::csv_text (header cells) and
 // escape::csv_comment ('#' lines): none adds a row or a column.
 std::string column_text(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : name + " [" + unit + "]";
 }
 std::string column(const std::string& name, const std::string& unit) {
-  return escape::csv_field(column_text(name, unit));
+  return escape::csv_text(column_text(name, unit));
 }
 std::string comment(const std::string& text) { return escape::csv_comment(text); }
 
@@ -78,13 +78,13 @@ std::string csv_wide_text(const GridTable& table, const ExportMetadata& metadata
   std::string text = csv_comment_block(table, metadata);
   text += "# per output, one row per " + comment(table.axes()[0].name) + " breakpoint, one column per " +
           comment(table.axes()[1].name) + " breakpoint\n";
-  text += "output," + escape::csv_field(column_text(table.axes()[0].name, metadata.axis_units[0]) + " \\ " +
+  text += "output," + escape::csv_text(column_text(table.axes()[0].name, metadata.axis_units[0]) + " \\ " +
                                         column_text(table.axes()[1].name, metadata.axis_units[1]));
   for (double x : x1) text += "," + shortest_number(x);
   text += "\n";
   for (std::size_t k = 0; k < n_out; ++k) {
     for (std::size_t i = 0; i < x0.size(); ++i) {
-      text += escape::csv_field(table.outputs()[k]) + "," + shortest_number(x0[i]);
+      text += escape::csv_text(table.outputs()[k]) + "," + shortest_number(x0[i]);
       for (std::size_t j = 0; j < x1.size(); ++j)
         text += "," + shortest_number(table.values()[(j * x0.size() + i) * n_out + k]);
       text += "\n";

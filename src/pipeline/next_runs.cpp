@@ -367,12 +367,12 @@ MirrorSpec surface_mirror(const SurfaceRecord& record) {
 
 void write_next_runs_manifest(const NextRuns& next, const std::string& body, const std::filesystem::path& file) {
   std::string text = "path,body";
-  for (const auto& axis : next.axes) text += "," + escape::csv_field(axis);
+  for (const auto& axis : next.axes) text += "," + escape::csv_text(axis);
   text += '\n';
   for (std::size_t i = 0; i < next.runs.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "next-%02zu", i + 1);
-    text += std::string(name) + "," + escape::csv_field(body);
+    text += std::string(name) + "," + escape::csv_text(body);
     for (const double x : next.runs[i].point) {
       text += ',';
       append_shortest_number(text, x);

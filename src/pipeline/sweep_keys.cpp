@@ -6,6 +6,7 @@
 
 #include "importers/text_table.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/names.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/units.hpp"
@@ -111,8 +112,10 @@ Manifest Manifest::read(const fs::path& file) {
       if (field.text.empty() || name == "path") continue;
       const SourceLocation at{where, line.number, field.column};
       if (is_text_column(name)) {
-        if (name == "body") check_name(NameKind::Body, field.text, at, "the manifest");
-        layer.set(name, field.text);
+        // Without the quote escape::csv_text puts before a formula-like text ("'=x" is "=x").
+        const std::string text = escape::csv_text_value(field.text);
+        if (name == "body") check_name(NameKind::Body, text, at, "the manifest");
+        layer.set(name, text);
         continue;
       }
       const double value = parse_number(field, where, line.number, name) * columns[c].scale;

@@ -7,10 +7,15 @@
 
 #include <algorithm>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
+#include "src/core/escape.hpp"
+#include "src/core/names.hpp"
 #include "tests/support/csv_record.hpp"
+#include "tests/support/hostile_names.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -138,6 +143,75 @@ TEST_F(Selection, RunsAsCsvHaveOneRowPerRunWithForcesOnTheBody) {
     ASSERT_EQ(rows[i].size(), rows[0].size());
     EXPECT_LT(std::stod(rows[i][8]), 0.0);  // drag on a body moving forward: X < 0
   }
+}
+
+// runs --csv with hostile body names (the corpus holds =HYPERLINK(...), +1+1,
+// -2+3, @SUM(A1), -0.5): after RFC 4180 parsing no cell starts like a
+// formula, each body cell is its name (less the guard quote) and every other
+// cell of a run's row is a plain number or empty, negative forces included.
+TEST(RunsCsv, HostileBodyNamesAreTextAndNumbersStayNumbers) {
+  TempDir dir;
+  std::set<std::string> bodies;
+  for (const std::string& name : test::hostile_names()) {
+    if (name_problem(NameKind::Body, name)) continue;  // a name no body can have
+    // Other bytes for each body: the same file again would be another reading of it.
+    const auto table = dir / "table.csv";
+    std::ofstream(table) << "u [m s^-1],X [N]\n0.5," << 1.0 + static_cast<double>(bodies.size()) << "\n";
+    const auto imported = run_cli({"import", table.string(), "--body=" + name, "--sign", "opposing"}, dir.path());
+    ASSERT_EQ(imported.exit_code, 0) << name << ": " << imported.err;
+    bodies.insert(name);
+  }
+  ASSERT_GT(bodies.size(), 20u);
+  const auto csv = run_cli({"runs", "--csv"}, dir.path());
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  std::istringstream lines(csv.out);
+  std::string line;
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(lines, line)) {
+    const auto record = test::csv_record(line);
+    ASSERT_TRUE(record) << line;
+    rows.push_back(*record);
+  }
+  ASSERT_EQ(rows.size(), 1 + bodies.size());
+  ASSERT_EQ(rows[0][8], "X");
+  std::set<std::string> seen;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    ASSERT_EQ(row.size(), rows[0].size()) << csv.out;
+    for (const auto& cell : row) EXPECT_FALSE(test::formula_cell(cell) && !test::number_cell(cell)) << cell;
+    seen.insert(escape::csv_text_value(row[1]));
+    for (std::size_t j = 2; j + 1 < row.size(); ++j) EXPECT_TRUE(row[j].empty() || test::number_cell(row[j])) << row[j];
+    EXPECT_LT(std::stod(row[8]), 0.0);  // drag on the body: X < 0, written as a number
+  }
+  EXPECT_EQ(seen, bodies);
+}
+
+// A file name holding a terminal escape sequence reaches the terminal only
+// through escape::one_line: import's per-file line, the runs table and runs
+// show's sources and import records (read back from the database) hold no ESC.
+TEST(TerminalText, EscapeSequencesInFileNamesNeverReachTheTerminal) {
+  TempDir dir;
+  const auto table = dir / "red\x1b[31m\x1b]0;title\x07.csv";
+  std::ofstream(table) << "u [m s^-1],X [N]\n0.5,1.5\n";
+  const auto has_esc = [](const test::CliResult& result) {
+    return result.out.find('\x1b') != std::string::npos || result.err.find('\x1b') != std::string::npos;
+  };
+  const auto imported = run_cli({"import", table.string(), "--body", "hull", "--sign", "opposing"}, dir.path());
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  EXPECT_NE(imported.out.find("red"), std::string::npos) << imported.out;  // the line is there, made printable
+  EXPECT_FALSE(has_esc(imported)) << imported.out;
+  const auto again = run_cli({"import", table.string(), "--body", "hull", "--sign", "opposing"}, dir.path());
+  EXPECT_FALSE(has_esc(again)) << again.out;  // "already imported (... as PATH ...)"
+  const auto listed = run_cli({"runs"}, dir.path());
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_FALSE(has_esc(listed)) << listed.out;
+  const auto runs = nlohmann::json::parse(run_cli({"runs", "--json"}, dir.path()).out);
+  ASSERT_EQ(runs.size(), 1u);
+  const auto shown = run_cli({"runs", "show", std::to_string(runs[0].at("id").get<std::int64_t>())}, dir.path());
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_NE(shown.out.find("  import "), std::string::npos) << shown.out;
+  EXPECT_NE(shown.out.find("red"), std::string::npos) << shown.out;
+  EXPECT_FALSE(has_esc(shown)) << shown.out;
 }
 
 }  // namespace

@@ -136,14 +136,33 @@ TEST(Escape, CStringsAreOneLiteralOfTheSameBytes) {
 
 TEST(Escape, CsvFieldsAreOneFieldOnOneLine) {
   for (const auto& name : test::hostile_names()) {
-    const std::string field = escape::csv_field(name);
+    const std::string field = escape::csv_text(name);
     EXPECT_TRUE(clean_line(field));
     const auto record = test::csv_record(field + ",next");
     ASSERT_TRUE(record) << field;
     ASSERT_EQ(record->size(), 2u) << field;
-    EXPECT_EQ((*record)[0], escape::one_line(name));
+    EXPECT_FALSE(test::formula_cell((*record)[0])) << field;
+    EXPECT_EQ(escape::csv_text_value((*record)[0]), escape::one_line(name));
     EXPECT_TRUE(clean_line(escape::csv_comment(name)));
   }
+}
+
+// A text a spreadsheet would evaluate gets one quote before it (OWASP); a
+// text that already starts with quotes before such a character one more, so
+// that csv_text_value gives every text back; other texts are unchanged.
+TEST(Escape, CsvTextThatLooksLikeAFormulaIsQuotedAsText) {
+  EXPECT_EQ(escape::csv_text("=HYPERLINK(\"http://x\")"), "\"'=HYPERLINK(\"\"http://x\"\")\"");
+  EXPECT_EQ(escape::csv_text("+1+1"), "\"'+1+1\"");
+  EXPECT_EQ(escape::csv_text("-2+3"), "\"'-2+3\"");
+  EXPECT_EQ(escape::csv_text("-0.5"), "\"'-0.5\"");  // a text, not a number: numbers never come here
+  EXPECT_EQ(escape::csv_text("@SUM(A1)"), "\"'@SUM(A1)\"");
+  EXPECT_EQ(escape::csv_text("'=1"), "\"''=1\"");
+  EXPECT_EQ(escape::csv_text("'a"), "'a");
+  EXPECT_EQ(escape::csv_text("a=1"), "a=1");
+  EXPECT_EQ(escape::csv_text_value("'=1"), "=1");
+  EXPECT_EQ(escape::csv_text_value("''=1"), "'=1");
+  EXPECT_EQ(escape::csv_text_value("'a"), "'a");
+  EXPECT_EQ(escape::csv_text_value("=1"), "=1");
 }
 
 TEST(Escape, XmlTextHoldsNoMarkupAndOnlyXmlCharacters) {

@@ -88,15 +88,32 @@ TEST(HostileNames, CsvHasExactlyTheExpectedRowsAndColumns) {
         ASSERT_TRUE(record) << line;
         rows.push_back(*record);
       }
+      // No text cell a spreadsheet would evaluate; every number cell a plain number
+      // (the axis starts at -1, and most values are negative).
+      for (const auto& row : rows)
+        for (const auto& cell : row) EXPECT_FALSE(test::formula_cell(cell) && !test::number_cell(cell)) << cell;
+      std::size_t negative = 0;
       if (format == ExportFormat::Csv) {
         ASSERT_EQ(rows.size(), 1 + table.node_count());
         for (const auto& row : rows) EXPECT_EQ(row.size(), 4u);
-        EXPECT_EQ(rows[0][0], escape::one_line(name + " [" + name + "]"));
+        EXPECT_EQ(escape::csv_text_value(rows[0][0]), escape::one_line(name + " [" + name + "]"));
+        for (std::size_t i = 1; i < rows.size(); ++i)
+          for (const auto& cell : rows[i]) {
+            EXPECT_TRUE(test::number_cell(cell)) << cell;
+            negative += cell.front() == '-';
+          }
       } else {
         ASSERT_EQ(rows.size(), 1 + 2 * 3u);
         for (const auto& row : rows) EXPECT_EQ(row.size(), 4u);
-        EXPECT_EQ(rows[1][0], escape::one_line(name));
+        EXPECT_EQ(escape::csv_text_value(rows[1][0]), escape::one_line(name));
+        for (std::size_t j = 2; j < rows[0].size(); ++j) EXPECT_TRUE(test::number_cell(rows[0][j])) << rows[0][j];
+        for (std::size_t i = 1; i < rows.size(); ++i)
+          for (std::size_t j = 1; j < rows[i].size(); ++j) {
+            EXPECT_TRUE(test::number_cell(rows[i][j])) << rows[i][j];
+            negative += rows[i][j].front() == '-';
+          }
       }
+      EXPECT_GT(negative, 0u);
     }
   }
   EXPECT_EQ(files_in(dir.path()), std::set<std::string>{"table.csv"});

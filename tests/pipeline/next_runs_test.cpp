@@ -273,7 +273,7 @@ TEST(NextRuns, TheManifestIsReadBackByTheSweepImporter) {
   }
 }
 
-// A body's name goes into the manifest's CSV through escape::csv_field:
+// A body's name goes into the manifest's CSV through escape::csv_text:
 // every hostile name a body may have comes back from Manifest::read as it was.
 TEST(NextRuns, HostileBodyNamesSurviveTheManifest) {
   const CoefficientSurface surface = surface_of_runs(8);

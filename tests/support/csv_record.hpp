@@ -3,7 +3,9 @@
 #pragma once
 
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hydrocoef::test {
@@ -38,6 +40,25 @@ inline std::optional<std::vector<std::string>> csv_record(const std::string& lin
   }
   if (quoted) return std::nullopt;
   return fields;
+}
+
+/// True when a spreadsheet would evaluate this (unquoted) cell as a formula:
+/// it starts with '=', '+', '-', '@', tab or carriage return (OWASP).
+inline bool formula_cell(const std::string& cell) {
+  return !cell.empty() && std::string_view("=+-@\t\r").find(cell.front()) != std::string_view::npos;
+}
+
+/// True when the cell is a plain number, as a spreadsheet reads one: the whole
+/// cell parses as a double (no quote before it, nothing after it).
+inline bool number_cell(const std::string& cell) {
+  if (cell.empty() || cell.front() == '\'') return false;
+  std::size_t used = 0;
+  try {
+    (void)std::stod(cell, &used);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return used == cell.size();
 }
 
 }  // namespace hydrocoef::test
