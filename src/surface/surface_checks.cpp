@@ -38,8 +38,13 @@ std::optional<SurfaceProblem> dissipativity_problem(const CoefficientSurface& su
   for (std::size_t index = 0; index < total; ++index) {
     std::size_t rest = index;
     for (std::size_t a = 0; a < d; ++a) {
-      const double t = static_cast<double>(rest % per_axis) / static_cast<double>(per_axis - 1);
-      point[a] = surface.lower(a) + (surface.upper(a) - surface.lower(a)) * t;
+      const std::size_t i = rest % per_axis;
+      const double t = static_cast<double>(i) / static_cast<double>(per_axis - 1);
+      // The ends exactly (a sum can round past the upper end, which a surface
+      // whose policy is error refuses).
+      point[a] = i + 1 == per_axis
+                     ? surface.upper(a)
+                     : std::min(surface.upper(a), surface.lower(a) + (surface.upper(a) - surface.lower(a)) * t);
       rest /= per_axis;
     }
     surface.evaluate(point, values);
