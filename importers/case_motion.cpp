@@ -103,31 +103,42 @@ namespace {
 bool identifier_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-/// `text` with every identifier outside unit brackets replaced by what
-/// `replace` returns for it (nullopt keeps it).
-template <typename Replace>
-std::string replace_identifiers(std::string_view text, Replace&& replace) {
-  std::string out;
+/// Walks `text` in pieces: `on_text` gets what is copied as written (unit
+/// brackets, numbers, operators), `on_identifier` every identifier outside
+/// unit brackets (one not glued to a number such as the e of 1e3).
+template <typename OnText, typename OnIdentifier>
+void for_each_piece(std::string_view text, OnText&& on_text, OnIdentifier&& on_identifier) {
   for (std::size_t i = 0; i < text.size();) {
     const char c = text[i];
     if (c == '[') {  // a unit: copied as written
       const std::size_t end = text.find(']', i);
       const std::size_t stop = end == std::string_view::npos ? text.size() : end + 1;
-      out.append(text.substr(i, stop - i));
+      on_text(text.substr(i, stop - i));
       i = stop;
     } else if (identifier_start(c) &&
                (i == 0 || !(std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.'))) {
       std::size_t j = i;
       while (j < text.size() && identifier_char(text[j])) ++j;
-      const std::string name(text.substr(i, j - i));
-      const auto replacement = replace(name);
-      out += replacement ? *replacement : name;
+      on_identifier(std::string(text.substr(i, j - i)));
       i = j;
     } else {
-      out += c;
+      on_text(text.substr(i, 1));
       ++i;
     }
   }
+}
+
+/// `text` with every identifier outside unit brackets replaced by what
+/// `replace` returns for it (nullopt keeps it).
+template <typename Replace>
+std::string replace_identifiers(std::string_view text, Replace&& replace) {
+  std::string out;
+  for_each_piece(
+      text, [&](std::string_view piece) { out.append(piece); },
+      [&](const std::string& name) {
+        const auto replacement = replace(name);
+        out += replacement ? *replacement : name;
+      });
   return out;
 }
 
@@ -178,36 +189,22 @@ class ExpressionExpander {
   int expand_into(std::string& out, std::string_view text, std::size_t line, int depth) {
     if (depth > kMaxDepth) too_deep(line);
     int height = 0;
-    for (std::size_t i = 0; i < text.size();) {
-      const char c = text[i];
-      if (c == '[') {  // a unit: copied as written
-        const std::size_t end = text.find(']', i);
-        const std::size_t stop = end == std::string_view::npos ? text.size() : end + 1;
-        append(out, text.substr(i, stop - i), line);
-        i = stop;
-      } else if (identifier_start(c) &&
-                 (i == 0 || !(std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.'))) {
-        std::size_t j = i;
-        while (j < text.size() && identifier_char(text[j])) ++j;
-        const std::string name(text.substr(i, j - i));
-        i = j;
-        const auto found = named_.find(name);
-        if (name == "pi") {
-          append(out, "(" + shortest_number(std::numbers::pi) + ")", line);
-        } else if (!cel_.has_expression(name) || found == named_.end()) {
-          append(out, name, line);
-        } else {
-          const Written& written = written_out(name, *found->second, depth + 1);
-          height = std::max(height, written.height + 1);
-          append(out, "(", line);
-          append(out, written.text, line);
-          append(out, ")", line);
-        }
-      } else {
-        append(out, std::string_view(&text[i], 1), line);
-        ++i;
-      }
-    }
+    for_each_piece(
+        text, [&](std::string_view piece) { append(out, piece, line); },
+        [&](const std::string& name) {
+          const auto found = named_.find(name);
+          if (name == "pi") {
+            append(out, "(" + shortest_number(std::numbers::pi) + ")", line);
+          } else if (!cel_.has_expression(name) || found == named_.end()) {
+            append(out, name, line);
+          } else {
+            const Written& written = written_out(name, *found->second, depth + 1);
+            height = std::max(height, written.height + 1);
+            append(out, "(", line);
+            append(out, written.text, line);
+            append(out, ")", line);
+          }
+        });
     return height;
   }
 
