@@ -494,8 +494,9 @@ ImportedInput read_history(const PlannedInput& input, const std::string& format,
   // The file is read first, so that a broken file is said before a missing key.
   BodyHistory read = body_history_of(input, format, std::move(settings), request);
   if (request.require_velocity)
-    require_velocity(read.settings, input.path.string(),
-                     format == "openfoam-case" ? openfoam_free_stream_search(input.path) : std::string());
+    require_velocity(read.settings, input.path.string(), [&] {
+      return format == "openfoam-case" ? openfoam_free_stream_search(input.path) : std::string();
+    });
   out.notes = std::move(read.notes);
   settings = std::move(read.settings);
   const ForceHistory& body = read.history;
@@ -764,7 +765,7 @@ ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& 
     SurfaceRunOptions options = surface_options(settings, format, frame, key, reference_b);
     out.surface = import_surface_run(input.path, options);
     // After the file is read, so that a broken file is said before a missing key.
-    if (request.require_velocity) require_velocity(settings, input.path.string(), std::string());
+    if (request.require_velocity) require_velocity(settings, input.path.string());
     out.batch = out.surface->batch;
     for (const auto& w : out.surface->warnings) out.notes.push_back(w);
   } else if (format == "table") {

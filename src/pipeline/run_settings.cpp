@@ -237,7 +237,8 @@ RunKey resolve_key(const RunSettings& settings, const FrameTransform& frame, con
   return key;
 }
 
-void require_velocity(const RunSettings& settings, const std::string& file, const std::string& looked) {
+void require_velocity(const RunSettings& settings, const std::string& file,
+                      const std::function<std::string()>& looked) {
   const Setting* velocity = settings.find("flow");
   for (std::size_t i = 0; i < 6 && !velocity; ++i) velocity = settings.find(kVelocityNames[i]);
   const Setting* at_rest = settings.find("at_rest");
@@ -245,9 +246,10 @@ void require_velocity(const RunSettings& settings, const std::string& file, cons
     throw InputError(SourceLocation{file}, where_text(*at_rest) + " says the body is at rest and " +
                                                where_text(*velocity) + " gives its velocity; expected one of them");
   if (velocity || at_rest || settings.find("flow_speed")) return;
+  const std::string where = looked ? looked() : std::string();
   throw InputError(SourceLocation{file},
                    "no body velocity found (" +
-                       (looked.empty() ? std::string("no file of this kind states it") : looked) +
+                       (where.empty() ? std::string("no file of this kind states it") : where) +
                        "); expected it from --flow U,V,W (the free stream, CFD axes), --set u=... (body axes), a "
                        "sidecar FILE.json {\"u\": ...}, a manifest row or --key-from-name, or --at-rest for a body "
                        "at rest");

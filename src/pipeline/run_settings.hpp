@@ -39,6 +39,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -120,8 +121,9 @@ RunKey resolve_key(const RunSettings& settings, const FrameTransform& frame, con
 /// check_flow_speed asks for) and the settings do not say the body is at
 /// rest (`at_rest`, from --at-rest or a sidecar's "at_rest": true), or when
 /// both are said. `looked`: where the input's own files were searched, in
-/// words.
-void require_velocity(const RunSettings& settings, const std::string& file, const std::string& looked);
+/// words (called only to word the refusal).
+void require_velocity(const RunSettings& settings, const std::string& file,
+                      const std::function<std::string()>& looked = {});
 
 /// The moment reference point in body axes: `ref_point`, else the solver's
 /// `cofr` brought into body axes, else the body origin.
