@@ -303,12 +303,25 @@ nlohmann::json surface_json(const SurfaceRecord& record, const CoefficientSurfac
     for (std::size_t a = 0; a < node.size(); ++a) point[surface.axis_names()[a]] = node[a];
     out["far_from_data_points"].push_back(point);
   }
+  if (!surface.symmetry().empty())
+    out["symmetry"] = surface.symmetry().describe(surface.axis_names(), surface.output_names());
   if (surface.gp()) out["gp"] = gp_json(surface);
   if (!surface.gp() && surface.has_standard_deviation()) out["uncertainty"] = run_uncertainty_json(surface);
   const auto definition = nlohmann::json::parse(record.definition);
   if (definition.contains("build_spec")) out["build_spec"] = definition["build_spec"];
   return out;
 }
+
+namespace {
+
+/// The symmetry imposed, in words, when there is one.
+void print_symmetry(const CoefficientSurface& surface) {
+  if (surface.symmetry().empty()) return;
+  std::cout << "  symmetry imposed: " << surface.symmetry().describe(surface.axis_names(), surface.output_names())
+            << " (an odd output is 0 on its plane, an even one flat across it)\n";
+}
+
+}  // namespace
 
 void print_surface_list(const std::vector<SurfaceRecord>& records, const std::string& database, bool json) {
   if (json) {
@@ -351,6 +364,7 @@ void print_surface(const StoredSurface& stored, bool json) {
                              : std::string("current"))
             << "\n  axes:\n";
   print_axes(stored.surface);
+  print_symmetry(stored.surface);
   std::cout << "  outputs (forces on the body):\n";
   for (std::size_t k = 0; k < stored.surface.output_count(); ++k)
     std::cout << "    " << stored.surface.output_names()[k] << " [" << stored.surface.output_units()[k] << "]\n";
@@ -381,6 +395,7 @@ void print_surface_build(const SurfaceBuildResult& result, const std::string& da
                       : std::string());
   std::cout << "\n  axes:\n";
   print_axes(surface);
+  print_symmetry(surface);
   std::cout << "  outputs: ";
   for (std::size_t k = 0; k < surface.output_count(); ++k)
     std::cout << (k ? ", " : "") << surface.output_names()[k] << " [" << surface.output_units()[k] << "]";

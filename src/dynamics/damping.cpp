@@ -206,7 +206,7 @@ void DampingModel::look_up(const Lookup& l, const double* nu_r_b, std::span<cons
     point[a] = l.source[a] < 6 ? nu_r_b[l.source[a]] : disturbances[l.source[a] - 6];
   // A table of one axis (a draw of a GP surface, a 1-D CFD table) skips the span checks.
   const GridTable* grid = l.surface.grid();
-  if (grid && l.axis_count == 1)
+  if (grid && l.axis_count == 1 && l.surface.symmetry().empty())
     grid->evaluate_one_axis(point[0], out);
   else
     l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),

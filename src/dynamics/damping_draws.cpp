@@ -179,8 +179,10 @@ DampingModel DampingDraws::draw(std::uint64_t seed, std::uint64_t index) const {
     }
     auto& lookup = model.lookups_[s.lookup];
     const CoefficientSurface& nominal = lookup.surface;
+    // A draw of the interpolant; the nominal surface's symmetry projects it as it projects the mean.
     lookup.surface = CoefficientSurface(GridTable(s.axes, s.outputs, std::move(values), Interpolation::NaturalSpline),
-                                        nominal.axis_units(), nominal.output_units());
+                                        nominal.axis_units(), nominal.output_units())
+                         .with_symmetry(nominal.symmetry());
   }
   return model;
 }

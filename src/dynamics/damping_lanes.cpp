@@ -39,9 +39,13 @@ DampingLanes::DampingLanes(const std::array<const DampingModel*, kLanes>& models
   }
   for (std::size_t i = 0; i < first.lookups_.size(); ++i) {
     std::array<const GridTable*, kLanes> tables{};
-    bool together = first.lookups_[i].axis_count == 1 && first.lookups_[i].surface.grid();
+    // One-axis tables without a symmetry (whose projection the table alone is not).
+    const auto plain_grid = [](const CoefficientSurface& surface) {
+      return surface.symmetry().empty() ? surface.grid() : nullptr;
+    };
+    bool together = first.lookups_[i].axis_count == 1 && plain_grid(first.lookups_[i].surface);
     for (std::size_t l = 0; l < models_.size(); ++l) {
-      tables[l] = models_[l]->lookups_[i].surface.grid();
+      tables[l] = plain_grid(models_[l]->lookups_[i].surface);
       together = together && tables[l] && tables[l]->shares_axis(*first.lookups_[i].surface.grid());
     }
     if (!together) tables.fill(nullptr);

@@ -68,12 +68,12 @@ struct AxisLattice {
 /// their compositions), reflections that change no axis left out, and the
 /// order in which the fundamental domain compares the axes: the planes' own
 /// velocity components first.
-struct SurfaceSymmetry {
+struct KeySymmetry {
   std::vector<std::vector<double>> reflections;
   std::vector<std::size_t> order;
   std::string domain;
 
-  SurfaceSymmetry(const MirrorSpec& mirror, const std::vector<std::string>& axes) {
+  KeySymmetry(const MirrorSpec& mirror, const std::vector<std::string>& axes) {
     const std::size_t d = axes.size();
     std::set<std::vector<double>> seen;
     for (const auto& chain : mirror.images()) {
@@ -216,7 +216,7 @@ NextRuns suggest_next_runs(const CoefficientSurface& surface, const NextRunsRequ
                        next.axes[a] + "; expected wider bounds or a finer --round");
   }
 
-  const SurfaceSymmetry symmetry(request.mirror, next.axes);
+  const KeySymmetry symmetry(request.mirror, next.axes);
   next.mirror = request.mirror.text();
   next.domain = symmetry.domain;
   const auto key_of = [&](const std::vector<double>& point, const char* what) {

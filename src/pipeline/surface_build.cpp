@@ -8,6 +8,7 @@
 #include "src/core/names.hpp"
 #include "src/core/run_selection.hpp"
 #include "src/pipeline/fit_runs.hpp"
+#include "src/pipeline/surface_mirror.hpp"
 #include "src/surface/grid_table.hpp"
 
 namespace hydrocoef {
@@ -51,7 +52,9 @@ SurfaceBuildResult build_and_store_surface(Database& database, const std::string
                      database.path().string());
   std::size_t images_skipped = 0;
   const auto runs = with_mirror_images(measured, mirror, &images_skipped);
-  const BuiltSurface built = build_surface(runs, spec.surface);
+  SurfaceSpec surface_spec = spec.surface;
+  surface_spec.symmetry = mirror_symmetry(mirror, spec.surface.axes, spec.surface.outputs, measured);
+  const BuiltSurface built = build_surface(runs, surface_spec);
   SurfaceRecord record = built.record(name, body);
   auto definition = nlohmann::json::parse(record.definition);
   definition["build_spec"] = build_spec_json(spec);

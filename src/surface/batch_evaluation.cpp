@@ -299,7 +299,7 @@ constexpr std::array<PointsFunction, sizeof...(N)> grid_functions(std::index_seq
 /// How the batch evaluates its points: the fast path for a gridded table with
 /// linear or cubic Hermite interpolation (without gradients), else the surface's own calls.
 PointsFunction points_function(const CoefficientSurface& surface, bool with_gradient, std::optional<GridLayout>& grid) {
-  const GridTable* table = surface.grid();
+  const GridTable* table = surface.symmetry().empty() ? surface.grid() : nullptr;
   if (with_gradient || !table || table->axis_count() < 1 || table->axis_count() > kMaxGridAxes ||
       table->method() == Interpolation::Nearest)
     return &any_points;

@@ -24,6 +24,7 @@
 #include "src/surface/gp_surfaces.hpp"
 #include "src/surface/grid_table.hpp"
 #include "src/surface/rbf_surface.hpp"
+#include "src/surface/surface_symmetry.hpp"
 
 namespace hydrocoef {
 
@@ -34,6 +35,9 @@ std::string default_unit(std::string_view name);
 
 class CoefficientSurface {
  public:
+  /// The most outputs and axes a surface with a symmetry has.
+  static constexpr std::size_t kMaxSymmetricOutputs = 6, kMaxSymmetricAxes = 6;
+
   enum class Kind { Grid, Rbf, Gp };
 
   /// A gridded surface. Axis and output names are the table's; units one per
@@ -121,6 +125,21 @@ class CoefficientSurface {
   /// has its own standard deviation (InputError).
   CoefficientSurface with_run_uncertainty(std::vector<double> sigma, std::vector<double> loo) const;
   CoefficientSurface with_run_uncertainty(RbfSurface sigma, std::vector<double> loo) const;
+  /// The surface with a mirror symmetry imposed (src/surface/surface_symmetry.hpp
+  /// has the projection): every value, gradient and standard deviation is
+  /// then that of the projection, for every method. A GP's standard
+  /// deviation is that of the projected latent function (0 for an odd
+  /// output on its plane); a grid's or an RBF's runs' part is their
+  /// uncertainties' interpolant projected the same way (fully correlated, as
+  /// a run and its image are), its leave-one-out part unchanged. A grid's
+  /// node values are made symmetric too where its breakpoints are symmetric
+  /// about 0 on every reflected axis, so that its table, as exported, is the
+  /// surface. InputError when the symmetry's axis and output counts are not
+  /// the surface's, or for more than 6 outputs.
+  CoefficientSurface with_symmetry(SurfaceSymmetry symmetry) const;
+  /// The symmetry imposed (empty: none).
+  const SurfaceSymmetry& symmetry() const noexcept { return symmetry_; }
+
   /// The parts of that uncertainty: per output loo_k (empty when none is
   /// stated), and the table or RBF of the runs' sigma (nullptr when none).
   const std::vector<double>& loo_standard_deviation() const noexcept { return loo_sd_; }
@@ -128,6 +147,14 @@ class CoefficientSurface {
   const RbfSurface* run_uncertainty_rbf() const noexcept { return sigma_rbf_.get(); }
 
  private:
+  /// The interpolant itself, without the symmetry.
+  void evaluate_unprojected(std::span<const double> point, std::span<double> out, std::span<double> gradient) const;
+  /// The runs' part of a grid's or an RBF's standard deviation, max(0, I[sigma](x)).
+  void run_part(std::span<const double> point, std::span<double> part) const;
+  /// The projection (symmetry_ not empty): values, and when the spans are
+  /// not empty the standard deviation and the gradient.
+  void evaluate_projected(std::span<const double> point, std::span<double> out, std::span<double> standard_deviation,
+                          std::span<double> gradient) const;
   /// Checks the names against the counts of a scattered surface ("an RBF",
   /// "a GP") and sets the units (default_unit where none are given).
   void set_units(const char* kind, std::size_t axes, std::size_t outputs, std::vector<std::string> axis_units,
@@ -139,6 +166,7 @@ class CoefficientSurface {
   std::vector<double> loo_sd_;
   std::shared_ptr<const GridTable> sigma_grid_;
   std::shared_ptr<const RbfSurface> sigma_rbf_;
+  SurfaceSymmetry symmetry_;
   std::vector<std::string> axis_names_;
   std::vector<std::string> output_names_;
   std::vector<std::string> axis_units_;

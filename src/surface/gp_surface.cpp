@@ -581,7 +581,7 @@ std::vector<double> GpSurface::length_scales() const {
 }
 
 GpSurface::Workspace::Workspace(const GpSurface& surface)
-    : k_(surface.samples()), w_(surface.samples()), g_(surface.samples()) {}
+    : k_(surface.samples()), w_(surface.samples()), g_(surface.samples()), sum_(surface.samples()) {}
 
 double GpSurface::evaluate(const double* x, Workspace& ws, double* standard_deviation, double* gradient) const {
   const std::size_t n = state_.samples, d = state_.dims, m = terms_;
@@ -632,6 +632,56 @@ double GpSurface::evaluate(const double* x, Workspace& ws, double* standard_devi
     *standard_deviation = std::sqrt(variance) * state_.value_scale * state_.sd_factor;
   }
   return state_.value_centre + state_.value_scale * mean;
+}
+
+double GpSurface::combination_sd(const double* points, const double* coefficients, std::size_t count,
+                                 Workspace& ws) const {
+  constexpr std::size_t kMaxPoints = 8;
+  const std::size_t n = state_.samples, d = state_.dims, m = terms_;
+  if (ws.k_.size() < n) throw std::logic_error("GpSurface: workspace made for a smaller surface");
+  if (count == 0 || count > kMaxPoints) throw std::logic_error("GpSurface::combination_sd: 1 to 8 points");
+  double xl[kMaxPoints][kMaxDims], hsum[1 + 2 * kMaxDims] = {};
+  double* k = ws.k_.data();
+  double* g = ws.g_.data();
+  double* ksum = ws.sum_.data();
+  std::fill(ksum, ksum + n, 0.0);
+  const double s2 = state_.sigma * state_.sigma;
+  for (std::size_t j = 0; j < count; ++j) {
+    double z[kMaxDims], h[1 + 2 * kMaxDims];
+    for (std::size_t a = 0; a < d; ++a) {
+      z[a] = (points[j * d + a] - state_.axis_centre[a]) / state_.axis_scale[a];
+      xl[j][a] = z[a] / state_.length_scales[a];
+    }
+    std::fill(k, k + n, 0.0);
+    for (std::size_t a = 0; a < d; ++a) {
+      const double* row = state_.points.data() + a * n;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double delta = xl[j][a] - row[i];
+        k[i] += delta * delta;
+      }
+    }
+    kernel_values(state_.kernel, s2, k, g, n);
+    const double c = coefficients[j];
+    for (std::size_t i = 0; i < n; ++i) ksum[i] += c * k[i];
+    mean_basis(state_.mean_degree, d, z, h);
+    for (std::size_t t = 0; t < m; ++t) hsum[t] += c * h[t];
+  }
+  // The prior part: sum_ij c_i c_j k(x_i, x_j).
+  double prior = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = 0; j < count; ++j) {
+      double r2 = 0.0;
+      for (std::size_t a = 0; a < d; ++a) r2 += (xl[i][a] - xl[j][a]) * (xl[i][a] - xl[j][a]);
+      double c = 0.0, dc = 0.0;
+      correlation(state_.kernel, r2, c, dc);
+      prior += coefficients[i] * coefficients[j] * s2 * c;
+    }
+  double* w = ws.w_.data();
+  const double ww = forward_substitute(state_.cholesky.data(), ksum, w, n);
+  double u[1 + 2 * kMaxDims];
+  for (std::size_t t = 0; t < m; ++t) u[t] = hsum[t] - dot_product(state_.basis_solve.data() + t * n, w, n);
+  const double uu = solve_lower_packed(state_.mean_cholesky.data(), u, m);
+  return std::sqrt(std::max(0.0, prior - ww + uu)) * state_.value_scale * state_.sd_factor;
 }
 
 void GpSurface::posterior(std::span<const double> points, std::size_t count, std::vector<double>& mean,

@@ -157,7 +157,7 @@ class GpSurface {
 
    private:
     friend class GpSurface;
-    std::vector<double> k_, w_, g_;
+    std::vector<double> k_, w_, g_, sum_;
   };
 
   /// The mean at x (dims values); optionally its standard deviation (the
@@ -165,6 +165,15 @@ class GpSurface {
   /// values, the value's unit per axis unit).
   double evaluate(const double* x, Workspace& workspace, double* standard_deviation = nullptr,
                   double* gradient = nullptr) const;
+
+  /// The standard deviation of sum_j c_j f(x_j), the latent function at
+  /// `count` points (<= 8; point-major, axis units) with coefficients c,
+  /// times sd_factor: sqrt(c^T C c) with C their joint posterior covariance
+  /// (as posterior gives it), in one triangular solve, O(count n d + n^2/2):
+  /// L^-1 is applied to sum_j c_j k*(x_j) once. What the projection of a
+  /// symmetric surface states (src/surface/surface_symmetry.hpp).
+  double combination_sd(const double* points, const double* coefficients, std::size_t count,
+                        Workspace& workspace) const;
 
   /// The posterior of the latent function at `count` points jointly
   /// (`points`: count x dims, point-major, axis units): mean[j] and

@@ -83,19 +83,11 @@ void GpSurfaces::check() const {
       throw InputError("GP surface: its outputs are not over the same " + std::to_string(d) + " axes and runs");
 }
 
-void GpSurfaces::evaluate(std::span<const double> point, std::span<double> out, std::span<double> standard_deviation,
-                          std::span<double> gradient) const {
-  const std::size_t d = axis_count(), k_count = output_count();
-  if (point.size() != d)
-    throw InputError("GP query point has " + std::to_string(point.size()) + " coordinates; the surface has " +
-                     std::to_string(d) + " axes");
-  if (out.size() != k_count || (!standard_deviation.empty() && standard_deviation.size() != k_count) ||
-      (!gradient.empty() && gradient.size() != k_count * d))
-    throw std::invalid_argument("GpSurfaces::evaluate: output buffers of the wrong size");
-  std::array<double, kMaxAxes> x{};
-  std::array<bool, kMaxAxes> clamped{};
+void GpSurfaces::place(std::span<const double> point, double* x, bool* clamped) const {
+  const std::size_t d = axis_count();
   for (std::size_t a = 0; a < d; ++a) {
     x[a] = point[a];
+    clamped[a] = false;
     if (!std::isfinite(x[a]))
       throw InputError("GP query has " + label(axis_names_, a) + " = " + shortest_number(x[a]) +
                        "; expected a finite value");
@@ -113,13 +105,51 @@ void GpSurfaces::evaluate(std::span<const double> point, std::span<double> out, 
       case RbfOutOfRange::Extrapolate: break;
     }
   }
+}
+
+GpSurface::Workspace& GpSurfaces::workspace() const {
   // One workspace per thread, grown to the largest surface it has served.
   thread_local std::optional<GpSurface::Workspace> workspace;
   if (!workspace || workspace->capacity() < sample_count()) workspace.emplace(outputs_.front());
+  return *workspace;
+}
+
+void GpSurfaces::combination_standard_deviation(std::span<const double> points, std::size_t count,
+                                                std::span<const double> coefficients,
+                                                std::span<double> standard_deviation) const {
+  constexpr std::size_t kMaxPoints = 8;
+  const std::size_t d = axis_count(), k_count = output_count();
+  if (count == 0 || count > kMaxPoints || points.size() != count * d || coefficients.size() != count * k_count ||
+      standard_deviation.size() != k_count)
+    throw std::invalid_argument("GpSurfaces::combination_standard_deviation: buffers of the wrong size");
+  std::array<double, kMaxPoints * kMaxAxes> x{};
+  std::array<bool, kMaxAxes> clamped{};
+  for (std::size_t j = 0; j < count; ++j) place(points.subspan(j * d, d), x.data() + j * d, clamped.data());
+  auto& ws = workspace();
+  std::array<double, kMaxPoints> c{};
+  for (std::size_t k = 0; k < k_count; ++k) {
+    for (std::size_t j = 0; j < count; ++j) c[j] = coefficients[j * k_count + k];
+    standard_deviation[k] = outputs_[k].combination_sd(x.data(), c.data(), count, ws);
+  }
+}
+
+void GpSurfaces::evaluate(std::span<const double> point, std::span<double> out, std::span<double> standard_deviation,
+                          std::span<double> gradient) const {
+  const std::size_t d = axis_count(), k_count = output_count();
+  if (point.size() != d)
+    throw InputError("GP query point has " + std::to_string(point.size()) + " coordinates; the surface has " +
+                     std::to_string(d) + " axes");
+  if (out.size() != k_count || (!standard_deviation.empty() && standard_deviation.size() != k_count) ||
+      (!gradient.empty() && gradient.size() != k_count * d))
+    throw std::invalid_argument("GpSurfaces::evaluate: output buffers of the wrong size");
+  std::array<double, kMaxAxes> x{};
+  std::array<bool, kMaxAxes> clamped{};
+  place(point, x.data(), clamped.data());
+  GpSurface::Workspace& ws = workspace();
   std::array<double, kMaxAxes> slope{};
   for (std::size_t k = 0; k < k_count; ++k) {
     double sd = 0.0;
-    out[k] = outputs_[k].evaluate(x.data(), *workspace, standard_deviation.empty() ? nullptr : &sd,
+    out[k] = outputs_[k].evaluate(x.data(), ws, standard_deviation.empty() ? nullptr : &sd,
                                   gradient.empty() ? nullptr : slope.data());
     if (!standard_deviation.empty()) standard_deviation[k] = sd;
     if (!gradient.empty())

@@ -63,8 +63,22 @@ class GpSurfaces {
   void evaluate(std::span<const double> point, std::span<double> out, std::span<double> standard_deviation = {},
                 std::span<double> gradient = {}) const;
 
+  /// Per output k, the standard deviation of sum_j c_jk f_k(x_j) (the
+  /// latent functions at `count` <= 8 points jointly: GpSurface::
+  /// combination_sd): `points` count x axes, point-major, each placed as
+  /// evaluate places it (clamped or refused by the axes' policies);
+  /// `coefficients` count x outputs, point-major.
+  void combination_standard_deviation(std::span<const double> points, std::size_t count,
+                                      std::span<const double> coefficients,
+                                      std::span<double> standard_deviation) const;
+
  private:
   void check() const;
+  /// x = point, clamped where an axis's policy says so (clamped[a] set) or
+  /// InputError as evaluate says.
+  void place(std::span<const double> point, double* x, bool* clamped) const;
+  /// This thread's scratch space, grown to this surface's run count.
+  GpSurface::Workspace& workspace() const;
   std::vector<GpSurface> outputs_;
   std::vector<double> lower_, upper_;
   std::vector<std::string> axis_names_;

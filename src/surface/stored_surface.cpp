@@ -36,8 +36,15 @@ json common_definition(const CoefficientSurface& surface) {
   for (std::size_t k = 0; k < surface.output_count(); ++k)
     definition["outputs"].push_back({{"name", surface.output_names()[k]}, {"unit", surface.output_units()[k]}});
   definition["sign"] = "on-body";
+  if (const auto& symmetry = surface.symmetry(); !symmetry.empty()) {
+    json reflections = json::array();
+    for (const auto& g : symmetry.generators())
+      reflections.push_back({{"axis_signs", g.axis_signs}, {"output_signs", g.output_signs}});
+    definition["symmetry"] = std::move(reflections);
+  }
   return definition;
 }
+
 
 // Reads a required member of a JSON object, naming the surface and key when
 // it is missing or of the wrong type.
@@ -53,6 +60,22 @@ T member(const json& object, const char* key, const std::string& where) {
     throw InputError(where + ": '" + key + "' is " + printable_text(escape::json_text(object.at(key)), 40) +
                      "; expected a value of another type");
   }
+}
+
+// The symmetry a definition states (none when it has no "symmetry", as
+// every surface stored before symmetries were imposed).
+SurfaceSymmetry stored_symmetry(const json& definition, std::size_t axes, std::size_t outputs,
+                                const std::string& where) {
+  if (!definition.contains("symmetry")) return {};
+  const json& list = definition.at("symmetry");
+  if (!list.is_array() || list.size() > SurfaceSymmetry::kMaxGenerators)
+    throw InputError(where + ": 'symmetry' is not a list of at most " +
+                     std::to_string(SurfaceSymmetry::kMaxGenerators) + " reflections");
+  std::vector<SurfaceReflection> generators;
+  for (const auto& g : list)
+    generators.push_back({member<std::vector<double>>(g, "axis_signs", where),
+                          member<std::vector<double>>(g, "output_signs", where)});
+  return SurfaceSymmetry(axes, outputs, std::move(generators));
 }
 
 // The hash an RBF solution is stored with: SHA-256 of the samples' bytes
@@ -232,6 +255,17 @@ SurfaceRecord record_from_surface(const CoefficientSurface& surface, std::span<c
   return record;
 }
 
+namespace {
+
+// The surface a record describes, without the symmetry its definition may state.
+CoefficientSurface unsymmetric_surface(const SurfaceRecord& record, const json& definition, const json& axes_json,
+                                       const std::vector<std::string>& axis_names,
+                                       const std::vector<std::string>& axis_units,
+                                       const std::vector<std::string>& output_names,
+                                       const std::vector<std::string>& output_units, const std::string& where);
+
+}  // namespace
+
 CoefficientSurface surface_from_record(const SurfaceRecord& record) {
   const std::string where =
       (record.database.empty() ? "" : record.database + ": table 'surface', row " + std::to_string(record.id) + ", ") +
@@ -273,6 +307,23 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
     output_units.push_back(unit(output));
   }
   try {
+    return unsymmetric_surface(record, definition, axes_json, axis_names, axis_units, output_names, output_units, where)
+        .with_symmetry(stored_symmetry(definition, axis_names.size(), output_names.size(), where));
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    if (message.rfind(where, 0) == 0) throw;
+    throw InputError(where + ": " + message);
+  }
+}
+
+namespace {
+
+CoefficientSurface unsymmetric_surface(const SurfaceRecord& record, const json& definition, const json& axes_json,
+                                       const std::vector<std::string>& axis_names,
+                                       const std::vector<std::string>& axis_units,
+                                       const std::vector<std::string>& output_names,
+                                       const std::vector<std::string>& output_units, const std::string& where) {
+  {
     if (record.kind == "grid") {
       std::vector<GridAxis> axes;
       for (const auto& axis : axes_json)
@@ -372,13 +423,11 @@ CoefficientSurface surface_from_record(const SurfaceRecord& record) {
                          std::string(gp_kernel_name(gp.kernel())) + "'");
       return CoefficientSurface(std::move(gp), axis_names, output_names, axis_units, output_units);
     }
-  } catch (const InputError& error) {
-    const std::string message = error.what();
-    if (message.rfind(where, 0) == 0) throw;
-    throw InputError(where + ": " + message);
   }
   throw InputError(where + ": kind '" + printable_text(record.kind, 20) + "'; expected grid, rbf or gp");
 }
+
+}  // namespace
 
 StoredSurface load_surface(Database& database, const std::string& name) {
   SurfaceRecord record = database.surface(name);

@@ -462,6 +462,7 @@ BuiltSurface build_surface(const std::vector<StoredRun>& runs, const SurfaceSpec
   BuiltSurface built = spec.method == "rbf"  ? build_rbf(samples, spec)
                        : spec.method == "gp" ? build_gp(samples, spec)
                                              : build_grid(samples, spec);
+  built.surface = built.surface.with_symmetry(spec.symmetry);
   for (const auto& problem : dissipativity_problems(built.surface)) built.quality.physical.push_back(problem.message);
   for (const StoredRun* run : samples.runs) built.run_ids.push_back(run->id);
   // A mirror image carries the id of the run it is the image of: each id once.

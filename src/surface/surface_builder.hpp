@@ -68,6 +68,9 @@ struct SurfaceSpec {
   /// per axis) and stored as a grid table of resample_method.
   std::optional<std::vector<std::vector<double>>> resample;
   std::string resample_method = "linear";
+  /// A mirror symmetry imposed on the surface (src/surface/surface_symmetry.hpp;
+  /// the runs' images are among the runs given). Empty: none.
+  SurfaceSymmetry symmetry;
   /// Grid points farther than this from every run (in the RBF's scaled units:
   /// a fraction of the runs' range per axis) are reported as far from data.
   double far_threshold = 0.25;
