@@ -39,8 +39,12 @@ Panel window_panel(const StoredStatistics& st, double mean, const std::string& u
                           {w0, w1},
                           {mean - v.standard_error, mean - v.standard_error},
                           {mean + v.standard_error, mean + v.standard_error}});
-  panel.series.push_back(
-      {"stored value (window mean) " + short_number(mean, 6) + " " + unit, Series::Style::Line, 0, {w0, w1}, {mean, mean}, {}});
+  panel.series.push_back({"stored value (window mean) " + short_number(mean, 6) + " " + unit,
+                          Series::Style::Line,
+                          0,
+                          {w0, w1},
+                          {mean, mean},
+                          {}});
   panel.series.push_back({"± spread (standard deviation) " + short_number(v.spread, 3) + " " + unit,
                           Series::Style::DashedLine,
                           7,

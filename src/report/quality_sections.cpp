@@ -77,10 +77,10 @@ void write_run_quality(Page& page, const std::vector<StoredRun>& runs, std::size
       if (force->statistics) {
         const StoredStatistics& st = *force->statistics;
         h << " ± " << num(st.values.standard_error, 3) << "<br><span class=\"note\">"
-          << (st.convergence == "converged" ? html_escape(st.abscissa) + " " + num(st.window_last, 8)
-                                            : html_escape(st.abscissa) + " " + num(st.window_first, 8) + "–" +
-                                                  num(st.window_last, 8) + ", " + std::to_string(st.samples) +
-                                                  " samples")
+          << (st.convergence == "converged"
+                  ? html_escape(st.abscissa) + " " + num(st.window_last, 8)
+                  : html_escape(st.abscissa) + " " + num(st.window_first, 8) + "–" + num(st.window_last, 8) + ", " +
+                        std::to_string(st.samples) + " samples")
           << "</span>";
       } else {
         h << "<br><span class=\"note\">no history</span>";
@@ -103,14 +103,14 @@ void write_run_quality(Page& page, const std::vector<StoredRun>& runs, std::size
     for (const auto& force : run->tau_b) panels += force && force->statistics ? 1 : 0;
     h << "<h3 id=\"history-run-" << run->id << "\">Run " << run->id << ": " << html_escape(describe(run->key))
       << "</h3>\n<p>" << kind_html(first)
-      << (first.convergence_reason.empty() ? std::string() : ": " + html_escape(first.convergence_reason))
-      << "</p>\n";
-    if (page.figure(report::plot_file_stem("history", "run-" + std::to_string(run->id)),
-                    "force history of run " + std::to_string(run->id) +
-                        " as stored: the averaging window, the stored value (window mean or final iterate) with its "
-                        "standard error, the spread and the trend (the samples themselves are not stored)",
-                    [&] { return plot::history_figure(*run); }, static_cast<int>(std::min<std::size_t>(
-                                                                      3600, 200 + 260 * panels))))
+      << (first.convergence_reason.empty() ? std::string() : ": " + html_escape(first.convergence_reason)) << "</p>\n";
+    if (page.figure(
+            report::plot_file_stem("history", "run-" + std::to_string(run->id)),
+            "force history of run " + std::to_string(run->id) +
+                " as stored: the averaging window, the stored value (window mean or final iterate) with its "
+                "standard error, the spread and the trend (the samples themselves are not stored)",
+            [&] { return plot::history_figure(*run); },
+            static_cast<int>(std::min<std::size_t>(3600, 200 + 260 * panels))))
       ++page.result().histories;
     ++drawn;
   }
@@ -193,8 +193,8 @@ void write_mesh_studies(Page& page, const std::vector<NumericalUncertaintyRecord
   auto optional = [](const std::optional<double>& v, int digits) { return v ? num(*v, digits) : std::string("–"); };
   for (const auto& s : studies) {
     const std::size_t c = std::min<std::size_t>(s.component, 5);
-    h << "<tr class=\"gci-row\"><td>" << html_escape(describe(s.key)) << "</td><td>" << kForceNames[c]
-      << "</td><td>" << html_escape(s.mesh_parameter) << " (finest " << num(s.fine_level) << "), " << s.levels
+    h << "<tr class=\"gci-row\"><td>" << html_escape(describe(s.key)) << "</td><td>" << kForceNames[c] << "</td><td>"
+      << html_escape(s.mesh_parameter) << " (finest " << num(s.fine_level) << "), " << s.levels
       << " levels</td><td class=\"num\">" << num(s.h[0], 4) << ", " << num(s.h[1], 4) << ", " << num(s.h[2], 4)
       << "</td><td class=\"num\">" << num(s.phi[0]) << ", " << num(s.phi[1]) << ", " << num(s.phi[2]) << " "
       << kUnits[c] << "</td><td>" << html_escape(s.convergence) << "</td><td class=\"num\">"

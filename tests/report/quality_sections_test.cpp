@@ -92,8 +92,8 @@ class ReportQuality : public ::testing::Test {
     ok({"gci", "--body", "mesh-hull"});
     write_pmm_history(d / "surge.csv");
     ok({"pmm", "surge.csv", "--body", "hull", "--motion", "surge", "--amplitude", "0.05", "--period", "1.6"});
-    ok({"import", (kSource / "examples/asr-v/asr-v-yaw-damping.csv").string(), "--body", "asr-v", "--sign",
-        "on-body", "--quiet"});
+    ok({"import", (kSource / "examples/asr-v/asr-v-yaw-damping.csv").string(), "--body", "asr-v", "--sign", "on-body",
+        "--quiet"});
     ok({"surface", "build", "yaw-gp", "--body", "asr-v", "--outputs", "N", "--axes", "r", "--method", "gp"});
     ok({"surface", "build", "yaw-grid", "--body", "asr-v", "--outputs", "N", "--axes", "r", "--method", "pchip"});
     const auto report = run_cli({"report", "-o", "report", "--json"}, d);
@@ -193,7 +193,8 @@ TEST_F(ReportQuality, TheMeshStudyAndTheForcedOscillationFitAreThere) {
   ASSERT_FALSE(gci.empty());
   EXPECT_EQ((*result_)["mesh_study_rows"], 1);
   std::size_t rows = 0;
-  for (auto at = gci.find("<tr class=\"gci-row\">"); at != std::string::npos; at = gci.find("<tr class=\"gci-row\">", at + 1))
+  for (auto at = gci.find("<tr class=\"gci-row\">"); at != std::string::npos;
+       at = gci.find("<tr class=\"gci-row\">", at + 1))
     ++rows;
   EXPECT_EQ(rows, 1u);
   EXPECT_NE(gci.find("mesh-hull u=0.2"), std::string::npos) << gci;
@@ -216,8 +217,9 @@ TEST_F(ReportQuality, HostileNamesAreEscapedInTheHtmlAndTheGnuplotScripts) {
     const std::string script = read_text(entry.path());
     if (script.find("touch PWNED") == std::string::npos) continue;
     seen = true;
-    EXPECT_NE(script.find("'run 1 (<script>alert(\"x\")</script> '.\"'\".'q'.\"'\".' `touch PWNED` @m $(touch PWNED) ]] >"),
-              std::string::npos)
+    EXPECT_NE(
+        script.find("'run 1 (<script>alert(\"x\")</script> '.\"'\".'q'.\"'\".' `touch PWNED` @m $(touch PWNED) ]] >"),
+        std::string::npos)
         << script.substr(0, 800);
   }
   EXPECT_TRUE(seen);
