@@ -1,6 +1,8 @@
-// hydrocoef plot fit|curves|surface|simulation|steady: PNG or SVG pictures of
-// stored fits, coefficient curves, surfaces and simulations, drawn by gnuplot,
+// hydrocoef plot fit|curves|surface|history|simulation|steady: PNG or SVG
+// pictures of stored fits, coefficient curves, surfaces, a run's force history
+// (its stored window and statistics) and simulations, drawn by gnuplot,
 // with the plotted values beside the image (NAME.dat) and the script (NAME.gp).
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -11,6 +13,7 @@
 #include "src/dynamics/vehicle.hpp"
 #include "src/fit/fit_names.hpp"
 #include "src/pipeline/fit_stored_runs.hpp"
+#include "src/plot/history_plot.hpp"
 #include "src/plot/plots.hpp"
 #include "src/store/database.hpp"
 #include "src/surface/stored_surface.hpp"
@@ -29,6 +32,9 @@ struct CurvesPlotArgs : CommonPlotArgs {
 struct SurfacePlotArgs : CommonPlotArgs {
   std::string name;
   std::optional<std::string> surface_output;
+};
+struct HistoryPlotArgs : CommonPlotArgs {
+  std::int64_t run = 0;
 };
 struct SimulationPlotArgs : CommonPlotArgs {
   std::string trajectory;
@@ -51,8 +57,8 @@ struct SteadyPlotArgs : CommonPlotArgs {
 
 void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   auto* plot_cmd = app.add_subcommand("plot",
-                                      "Draw fits, coefficient curves, surfaces and simulations (PNG or SVG, "
-                                      "through gnuplot)");
+                                      "Draw fits, coefficient curves, surfaces, run histories and simulations "
+                                      "(PNG or SVG, through gnuplot)");
   plot_cmd->require_subcommand(1);
 
   auto fit_args = std::make_shared<FitPlotArgs>();
@@ -106,6 +112,32 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     Database database(global.database, Database::OpenMode::ReadOnly);
     render_and_print(plot::surface_figure(database, surface_args->name, surface_args->surface_output),
                      default_image("surface", surface_args->name), *surface_args);
+  });
+
+  auto history_args = std::make_shared<HistoryPlotArgs>();
+  auto* history = plot_cmd->add_subcommand(
+      "history",
+      "One run's force history as stored: each averaged component's window, its mean (or the final iterate of a "
+      "converged run) with its standard error, spread and trend; the samples themselves are not stored");
+  history->add_option("run", history_args->run, "Run id (hydrocoef runs lists them)")->required();
+  add_common(history, *history_args);
+  history->get_option("--size")
+      ->description("Image size WIDTHxHEIGHT [pixels]; default 900 wide and 260 per panel plus 200")
+      ->default_str("");
+  history->callback([history_args, history, &global] {
+    Database database(global.database, Database::OpenMode::ReadOnly);
+    const std::int64_t id = history_args->run;
+    const auto runs = database.runs();
+    const auto found = std::find_if(runs.begin(), runs.end(), [&](const StoredRun& run) { return run.id == id; });
+    if (found == runs.end())
+      throw InputError(SourceLocation{global.database},
+                       "no run " + std::to_string(id) + "; 'hydrocoef runs' lists them");
+    const plot::Figure figure = plot::history_figure(*found);
+    // Without --size: 260 px per panel (one per averaged component).
+    HistoryPlotArgs args = *history_args;
+    if (history->get_option("--size")->count() == 0)
+      args.size = "900x" + std::to_string(200 + 260 * figure.panels.size());
+    render_and_print(figure, default_image("history", "run-" + std::to_string(id)), args);
   });
 
   auto sim_args = std::make_shared<SimulationPlotArgs>();

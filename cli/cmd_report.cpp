@@ -1,5 +1,6 @@
 // hydrocoef report -o DIR: one self-contained HTML page of the database's
-// runs, fits, surfaces, their quality figures and plots.
+// runs with their convergence and force histories, fits, surfaces with their
+// calibration and sigma maps, mesh studies, forced-oscillation fits, and plots.
 #include <iostream>
 #include <memory>
 
@@ -36,25 +37,33 @@ void run_report(const ReportArgs& args, const GlobalOptions& global) {
                           {"runs", result.runs},
                           {"fits", result.fits},
                           {"surfaces", result.surfaces},
+                          {"histories", result.histories},
+                          {"sigma_maps", result.sigma_maps},
+                          {"mesh_study_rows", result.mesh_study_rows},
+                          {"pmm_fits", result.pmm_fits},
                           {"notes", result.notes}};
     out["plots"] = nlohmann::json::array();
     for (const auto& p : result.plots) out["plots"].push_back(p.string());
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "report of " << global.database << ": " << result.runs << " runs, " << result.fits << " fits, "
-            << result.surfaces << " surfaces, " << result.plots.size() << " plots\n  page " << result.index.string()
-            << " (self-contained: open it in any browser, no network needed)\n "
-               " plots and their values in "
-            << (result.index.parent_path() / "plots").string() << "\n";
-  for (const auto& note : result.notes) std::cout << "  note: " << note << '\n';
+  // The database's name, the paths and the notes (which quote names from
+  // the database) are printed through escape::one_line.
+  std::cout << "report of " << escape::one_line(global.database) << ": " << result.runs << " runs ("
+            << result.histories << " force histories drawn), " << result.fits << " fits, " << result.surfaces
+            << " surfaces (" << result.sigma_maps << " sigma maps), " << result.mesh_study_rows
+            << " mesh-study rows, " << result.pmm_fits << " forced-oscillation fits, " << result.plots.size()
+            << " plots\n  page " << escape::one_line(result.index.string())
+            << " (self-contained: open it in any browser, no network needed)\n  plots and their values in "
+            << escape::one_line((result.index.parent_path() / "plots").string()) << "\n";
+  for (const auto& note : result.notes) std::cout << "  note: " << escape::one_line(note) << '\n';
 }
 
 }  // namespace
 
 void add_report_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<ReportArgs>();
-  auto* command = app.add_subcommand("report", "Write a self-contained HTML report: runs, fits, surfaces and plots");
+  auto* command = app.add_subcommand("report", "Write a self-contained HTML report: runs and their quality, fits, surfaces, mesh studies, forced oscillation and plots");
   command->add_option("-o,--output", args->dir, "Directory to write index.html and plots/ into")->required();
   command->add_option("--body", args->body, "Only this body's runs, fits and surfaces");
   command->add_option("--trajectory", args->trajectories, "Simulated trajectory CSV to plot (repeatable)");

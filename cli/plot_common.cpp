@@ -49,9 +49,12 @@ void print_result(const plot::Figure& figure, const plot::RenderedFiles& files, 
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "plot " << figure.title << "\n  wrote " << files.image.string() << " (" << format << ", " << files.width
-            << "x" << files.height << " px)\n  values " << files.data.string() << ", gnuplot script "
-            << files.script.string() << '\n';
+  // The title holds names read from the database and the paths the user's
+  // file name: each printed through escape::one_line.
+  std::cout << "plot " << escape::one_line(figure.title) << "\n  wrote " << escape::one_line(files.image.string())
+            << " (" << format << ", " << files.width << "x" << files.height << " px)\n  values "
+            << escape::one_line(files.data.string()) << ", gnuplot script " << escape::one_line(files.script.string())
+            << '\n';
 }
 
 }  // namespace

@@ -219,6 +219,10 @@ std::string script_text(const Figure& figure, const std::filesystem::path& data,
   gp << "set output " << quoted(image.string()) << "\n";
   gp << "set grid lc rgb '#E0E0E0'\nset key below left Left reverse samplen "
         "2\nset border lw 1\n";
+  // Tic labels of up to 6 significant digits: gnuplot's default repeats a
+  // label where small values (a moment of 1e-7 N m, an sd of 3.5e-5) differ
+  // in a digit it leaves out.
+  gp << "set format x '%.6g'\nset format y '%.6g'\nset format cb '%.6g'\n";
   gp << "set palette defined (0 '#440154', 1 '#3B528B', 2 '#21918C', 3 "
         "'#5EC962', 4 '#FDE725')\n";
   const std::string file = quoted(data.string());

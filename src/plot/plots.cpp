@@ -344,6 +344,82 @@ Figure surface_figure(Database& database, const std::string& name, const std::op
   return figure;
 }
 
+Figure surface_sigma_figure(Database& database, const std::string& name, const std::optional<std::string>& output) {
+  const StoredSurface stored = load_surface(database, name);
+  const CoefficientSurface& surface = stored.surface;
+  if (surface.axis_count() > 2)
+    throw InputError("surface '" + name + "' has " + std::to_string(surface.axis_count()) + " axes (" +
+                     join(surface.axis_names(), ", ") + "); plots draw 1 or 2 axes");
+  if (!surface.has_standard_deviation())
+    throw InputError("surface '" + name +
+                     "' states no standard deviation (a grid or RBF surface stored by an older hydrocoef: surface "
+                     "rebuild NAME gives it one)");
+  const std::size_t k = output ? surface.output_index(*output) : 0;
+  const std::string out_name = surface.output_names()[k];
+  const std::string sd_label = axis_label("sd of " + out_name, surface.output_units()[k]);
+  std::vector<double> values(surface.output_count()), sd(surface.output_count());
+  auto sd_at = [&](std::span<const double> point) {
+    surface.evaluate_with_standard_deviation(point, values, sd);
+    return sd[k];
+  };
+  const std::string what = surface.gp() ? "the Gaussian process's predictive sd"
+                                        : "the runs' uncertainty interpolated, with the leave-one-out RMS";
+  Figure figure;
+  figure.title = "standard deviation of surface " + name + " (" + stored.record.body + ", " + surface.method_name() +
+                 ")" + (stored.record.stale ? " STALE: forces changed since it was built" : "");
+  Panel panel;
+  const double x0 = surface.lower(0), x1 = surface.upper(0);
+  panel.x_range = std::array<double, 2>{x0, x1};
+  panel.x_label = axis_label(surface.axis_names()[0], surface.axis_units()[0]);
+  Series runs;
+  runs.title = "CFD runs (" + std::to_string(stored.record.run_ids.size()) + ")";
+  runs.style = Series::Style::Points;
+  runs.colour = 6;
+  std::vector<std::vector<double>> run_points;
+  for (const auto& run : runs_by_id(database, stored.record.body, stored.record.run_ids)) {
+    std::vector<double> point;
+    for (const auto& axis : surface.axis_names())
+      if (const auto v = key_value(run.key, axis)) point.push_back(*v);
+    if (point.size() == surface.axis_count()) run_points.push_back(std::move(point));
+  }
+  if (surface.axis_count() == 1) {
+    panel.title = "sd of " + out_name + " against " + surface.axis_names()[0] + ": " + what;
+    panel.y_label = sd_label;
+    Series line;
+    line.title = "standard deviation";
+    line.x = linspace(x0, x1, 201);
+    for (double x : line.x) line.y.push_back(sd_at(std::span<const double>(&x, 1)));
+    panel.series.push_back(std::move(line));
+    for (const auto& point : run_points) {
+      runs.x.push_back(point[0]);
+      runs.y.push_back(sd_at(point));
+    }
+  } else {
+    const double y0 = surface.lower(1), y1 = surface.upper(1);
+    panel.y_range = std::array<double, 2>{y0, y1};
+    panel.y_label = axis_label(surface.axis_names()[1], surface.axis_units()[1]);
+    panel.title = "sd of " + out_name + " over " + surface.axis_names()[0] + ", " + surface.axis_names()[1] + ": " +
+                  what;
+    ColourMap map;
+    map.z_label = sd_label;
+    map.x = linspace(x0, x1, 81);
+    map.y = linspace(y0, y1, 81);
+    for (double y : map.y)
+      for (double x : map.x) {
+        const std::array<double, 2> point{x, y};
+        map.z.push_back(sd_at(point));
+      }
+    panel.map = std::move(map);
+    for (const auto& point : run_points) {
+      runs.x.push_back(point[0]);
+      runs.y.push_back(point[1]);
+    }
+  }
+  panel.series.push_back(std::move(runs));
+  figure.panels.push_back(std::move(panel));
+  return figure;
+}
+
 Figure simulation_figure(const std::filesystem::path& trajectory,
                          const std::optional<std::filesystem::path>& experiment, const std::string& component) {
   const auto index = velocity_index(component);

@@ -47,6 +47,16 @@ Figure curves_figure(Database& database, const std::string& base, CurveKind kind
 /// (listing the names), an unknown output, or more than 2 axes.
 Figure surface_figure(Database& database, const std::string& name, const std::optional<std::string>& output);
 
+/// The standard deviation a stored surface states for an output
+/// (CoefficientSurface::evaluate_with_standard_deviation: a GP's predictive
+/// sd, or a grid or RBF surface's runs' uncertainty interpolated with its
+/// leave-one-out RMS) over its range: 1 axis a curve (201 points), 2 axes a
+/// colour map (81 x 81), with the runs it was built from marked (2 axes: at
+/// their coordinates; 1 axis: on the curve). InputError for a missing surface,
+/// an unknown output, more than 2 axes, or a surface that states no standard
+/// deviation.
+Figure surface_sigma_figure(Database& database, const std::string& name, const std::optional<std::string>& output);
+
 /// Velocity component (u..r) against time from a trajectory CSV
 /// (`hydrocoef simulate --out`), with a measured record (experiment.hpp's
 /// CSV) overlaid as points when given.

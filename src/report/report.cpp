@@ -19,6 +19,8 @@
 #include "src/plot/pmm_plot.hpp"
 #include "src/pmm/added_mass_assembly.hpp"
 #include "src/pmm/imposed_motion.hpp"
+#include "src/report/quality_sections.hpp"
+#include "src/report/report_page.hpp"
 #include "src/store/pmm_record.hpp"
 #include "src/surface/stored_surface.hpp"
 #include "src/surface/surface_builder.hpp"
@@ -38,6 +40,9 @@ std::string plot_file_stem(const std::string& kind, const std::string& name) {
 }
 
 namespace {
+
+using detail::num;
+using detail::Page;
 
 constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
 
@@ -77,22 +82,6 @@ window.addEventListener('load', function () {
 });
 )js";
 
-std::string num(double value, int digits = 6) {
-  if (!std::isfinite(value)) return std::isnan(value) ? "n/a" : (value > 0 ? "inf" : "-inf");
-  std::ostringstream out;
-  out.precision(digits);
-  out << value;
-  return out.str();
-}
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// The stored leave-one-out figures of a surface, per output in its unit.
 std::string quality_html(const SurfaceRecord& surface) {
   nlohmann::json q;
@@ -129,36 +118,6 @@ std::string quality_html(const SurfaceRecord& surface) {
     out << q["far_from_data"].size() << " of " << q.value("grid_points", 0) << " grid points far from every run<br>";
   return out.str();
 }
-
-class Page {
- public:
-  Page(std::filesystem::path plots_dir, ReportResult& result) : plots_dir_(std::move(plots_dir)), result_(result) {}
-  std::ostringstream html;
-
-  /// Renders a figure to plots/STEM.svg and embeds it; a failure becomes a note.
-  template <typename MakeFigure>
-  void figure(const std::string& stem, const std::string& caption, MakeFigure make, int height = 560) {
-    try {
-      const plot::Figure fig = make();
-      plot::RenderOptions options;
-      options.width = 960;
-      options.height = height;
-      const auto files = plot::render(fig, plots_dir_ / (stem + ".svg"), options);
-      result_.plots.push_back(files.image);
-      html << "<figure><img alt=\"" << html_escape(caption) << "\" width=\"" << options.width << "\" height=\""
-           << options.height << "\" src=\"data:image/svg+xml;base64," << base64(read_file(files.image))
-           << "\"><figcaption>" << html_escape(caption) << " (values: <code>plots/" << html_escape(stem)
-           << ".dat</code>)</figcaption></figure>\n";
-    } catch (const InputError& e) {
-      result_.notes.push_back(caption + ": " + e.what());
-      html << "<p class=\"note\">" << html_escape(caption) << ": not drawn (" << html_escape(e.what()) << ")</p>\n";
-    }
-  }
-
- private:
-  std::filesystem::path plots_dir_;
-  ReportResult& result_;
-};
 
 }  // namespace
 
@@ -242,8 +201,8 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
     << html_escape(title) << "</title>\n<style>" << kStyle << "</style>\n<script>" << kCheckScript
     << "</script>\n</head><body>\n";
   h << "<h1>" << html_escape(title) << "</h1>\n";
-  h << "<nav><a href=\"#runs\">Runs</a><a href=\"#fits\">Fits</a><a "
-       "href=\"#surfaces\">Surfaces</a>"
+  h << "<nav><a href=\"#runs\">Runs</a><a href=\"#quality\">Run quality</a><a href=\"#fits\">Fits</a><a "
+       "href=\"#surfaces\">Surfaces</a><a href=\"#gci\">Mesh studies</a>"
        "<a href=\"#pmm\">Forced oscillation</a><a href=\"#simulations\">Simulations</a></nav>\n";
 
   // ---- summary
@@ -286,6 +245,9 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
   if (runs.size() > options.max_run_rows)
     h << "<p class=\"note\">" << runs.size() - options.max_run_rows << " more runs not listed.</p>\n";
   h << "</section>\n";
+
+  // ---- run quality: convergence, flags, standard errors, histories
+  detail::write_run_quality(page, runs, options.max_history_plots);
 
   // ---- fits
   h << "<section id=\"fits\"><h2>Fits</h2>\n";
@@ -338,12 +300,13 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
     h << "<div "
          "class=\"scroll\"><table><thead><tr><th>name</th><th>body</"
          "th><th>kind / method</th><th>runs</th>"
-         "<th>leave-one-out quality</th><th>state</th></tr></thead><tbody>\n";
+         "<th>leave-one-out quality</th><th>calibration / stated uncertainty</th><th>state</th></tr></thead>"
+         "<tbody>\n";
     for (const auto& s : surfaces) {
       h << "<tr><td>" << html_escape(s.name) << "</td><td>" << html_escape(s.body) << "</td><td>" << html_escape(s.kind)
         << " / " << html_escape(s.method) << "</td><td class=\"num\">" << s.run_ids.size() << "</td><td>";
       h << quality_html(s);
-      h << "</td><td>"
+      h << "</td><td>" << detail::calibration_html(s) << "</td><td>"
         << (s.stale ? "<span class=\"stale\">stale</span> (rebuild: hydrocoef "
                       "surface rebuild --stale)"
                     : "current")
@@ -366,13 +329,18 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
                     "surface " + s.name + ", output " + output,
                     [&] { return plot::surface_figure(database, s.name, output); });
       }
+      detail::write_sigma_maps(page, database, s, outputs);
     }
   }
   h << "</section>\n";
 
+  // ---- mesh studies (hydrocoef gci)
+  detail::write_mesh_studies(page, database.numerical_uncertainties(options.body));
+
   // ---- forced oscillation (virtual PMM)
   h << "<section id=\"pmm\"><h2>Forced oscillation</h2>\n";
   const auto pmm = database.pmm_records(options.body);
+  result.pmm_fits = pmm.size();
   if (pmm.empty()) {
     h << "<p>No forced-oscillation runs stored (hydrocoef pmm).</p>\n";
   } else {

@@ -1,15 +1,23 @@
 // A shareable report of a run database: one self-contained HTML page (no
 // network access needed: inline CSS, plots embedded as SVG data URIs) with the
-// runs, the fitted laws with their coefficients and R², the coefficient
-// surfaces with their leave-one-out errors and stale flags, and the plots of
-// src/plot (fits, coefficient curves, surfaces, simulations).
+// runs, the quality of each run averaged from a force history (its
+// convergence kind and why, its flags, each component's standard error, and
+// its history figure: the stored window and statistics,
+// src/plot/history_plot.hpp), the fitted laws with their coefficients and R²,
+// the coefficient surfaces with their leave-one-out errors, calibration,
+// sigma maps and stale flags, the stored mesh studies (GCI), the
+// forced-oscillation fits, and the plots of src/plot (fits, coefficient
+// curves, surfaces, simulations).
 //
 // Layout of DIR: index.html (the page; it alone is enough to share) and
 // plots/NAME.svg with NAME.dat and NAME.gp (the plotted values and the gnuplot
-// script, as src/plot writes them).
+// script, as src/plot writes them). Each embedded figure is a <figure
+// id="NAME">; a run's history is plots/history-run-ID-HASH.svg
+// (plot_file_stem("history", "run-ID")), a surface's sigma map
+// plots/sigma-....svg.
 //
-// The page's sections have the ids "summary", "runs", "fits", "surfaces" and
-// "simulations". A small inline script records JavaScript errors and images
+// The page's sections have the ids "summary", "runs", "quality", "fits",
+// "surfaces", "gci", "pmm" and "simulations". A small inline script records JavaScript errors and images
 // that failed to load in the page itself (element "report-status":
 // data-ready, data-images, data-broken-images, and li.js-error entries), so a
 // headless browser can check the page.
@@ -37,6 +45,9 @@ struct ReportOptions {
   std::optional<std::filesystem::path> experiment;
   std::string component = "r";
   std::size_t max_run_rows = 1000;  ///< longer run tables are cut, with a note
+  /// At most this many runs' history figures (gnuplot runs once per figure);
+  /// the rest are named in a note.
+  std::size_t max_history_plots = 200;
 };
 
 struct ReportResult {
@@ -44,6 +55,10 @@ struct ReportResult {
   std::vector<std::filesystem::path> plots;  ///< the SVG files embedded
   std::vector<std::string> notes;            ///< plots that could not be drawn, and why
   std::size_t runs = 0, fits = 0, surfaces = 0;
+  std::size_t histories = 0;        ///< runs' history figures drawn
+  std::size_t sigma_maps = 0;       ///< surfaces' standard-deviation figures drawn
+  std::size_t mesh_study_rows = 0;  ///< rows of the mesh-study (GCI) table
+  std::size_t pmm_fits = 0;         ///< forced-oscillation analyses listed
 };
 
 /// The file stem of a report plot (plots/STEM.svg) for a fit, surface or run

@@ -1,7 +1,8 @@
 // The domain plots against numbers computed here independently: the fitted
 // curves against a least-squares fit done in the test, per-level curves and
 // coefficient curves against the generating law, a linear surface against
-// hand interpolation, steady yaw rates against the quadratic's root.
+// hand interpolation, a sigma map against the stated uncertainty and the
+// stored leave-one-out RMS, steady yaw rates against the quadratic's root.
 #include "src/plot/plots.hpp"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
 
@@ -294,6 +296,49 @@ TEST(Plots, SimulationAgainstExperimentAndSteadyYawRate) {
   EXPECT_EQ(sb.back().second[1], (std::vector<double>{0.0045, 0.21}));
   write(dir / "bad.csv", "tau,r\n0.1,abc\n");
   EXPECT_NE(error_of([&] { read_steady_points(dir / "bad.csv"); }).find("bad.csv:2"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hydrocoef::plot
+
+namespace hydrocoef::plot {
+namespace {
+
+// Runs of a stated uncertainty 0.01 N on a u x current_v grid: a linear
+// surface's stated sd is that uncertainty interpolated (0.01 everywhere) and
+// its leave-one-out RMS, in quadrature; the sigma map is that number at
+// every point, the RMS read from the surface's stored quality.
+TEST(Plots, SigmaMapIsTheStatedStandardDeviationOverTheRange) {
+  TempDir dir;
+  std::ostringstream table;
+  table.precision(17);
+  table << "u [m s^-1],current_v [m s^-1],X [N]\n";
+  for (double c : {0.0, 0.1, 0.2})
+    for (double u : {-0.2, 0.1, 0.2, 0.3}) table << u << "," << c << "," << (0.1 + c) * u + 11 * u * std::abs(u) << "\n";
+  write(dir / "sweep.csv", table.str());
+  ASSERT_EQ(run_cli({"import", "sweep.csv", "--body", "b", "--disturbance", "current_v", "--uncertainty", "X=0.01"},
+                    dir.path())
+                .exit_code,
+            0);
+  ASSERT_EQ(run_cli({"surface", "build", "s2", "--body", "b", "--outputs", "X", "--axes", "u,current_v", "--method",
+                     "linear"},
+                    dir.path())
+                .exit_code,
+            0);
+  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  const auto quality = nlohmann::json::parse(database.surface("s2").quality);
+  const double loo = quality["outputs"]["X"]["loo_rms"];
+  ASSERT_GT(loo, 0.0);
+  const Figure figure = surface_sigma_figure(database, "s2", std::nullopt);
+  ASSERT_EQ(figure.panels.size(), 1u);
+  EXPECT_NE(figure.panels[0].title.find("runs' uncertainty interpolated"), std::string::npos);
+  const auto blocks = read_blocks(render(figure, dir / "sigma.svg").data);
+  ASSERT_EQ(blocks.size(), 2u);  // the map, the runs
+  ASSERT_EQ(blocks[0].second.size(), 81u * 81u);
+  for (const auto& row : blocks[0].second) EXPECT_NEAR(row[2], std::hypot(0.01, loo), 1e-12) << row[0] << ", " << row[1];
+  EXPECT_EQ(blocks[1].second.size(), 12u);
+  // A missing surface is named.
+  EXPECT_NE(error_of([&] { surface_sigma_figure(database, "nope", std::nullopt); }).find("nope"), std::string::npos);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ using test::run_cli;
 using test::TempDir;
 
 const std::string kExamples = std::string(HYDROCOEF_SOURCE_DIR) + "/examples/asr-v/";
-const std::vector<std::string> kSections{"summary", "runs", "fits", "surfaces", "simulations"};
+const std::vector<std::string> kSections{"summary", "runs", "quality", "fits", "surfaces", "gci", "pmm", "simulations"};
 
 std::string base64_decode(const std::string& text) {
   static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -80,9 +80,12 @@ TEST_F(ReportTest, PageHasEverySectionAndEmbedsThePlotsItWrote) {
   EXPECT_EQ(result.runs, database.runs().size());
   EXPECT_EQ(result.fits, 5u);  // two ASR-V fits, three levels
   EXPECT_EQ(result.surfaces, 2u);
-  // Fits: asr-v X, asr-v N, b per level + its coefficient curves; surfaces: 2;
-  // simulation: 1.
-  EXPECT_EQ(result.plots.size(), 7u);
+  // Fits: asr-v X, asr-v N, b per level + its coefficient curves; surfaces: 2,
+  // and their sigma maps (both state a standard deviation): 2; simulation: 1.
+  // The runs come from force tables: no history figures.
+  EXPECT_EQ(result.plots.size(), 9u);
+  EXPECT_EQ(result.sigma_maps, 2u);
+  EXPECT_EQ(result.histories, 0u);
   const std::string html = read_text(result.index);
   for (const auto& id : kSections) EXPECT_NE(html.find("<section id=\"" + id + "\">"), std::string::npos) << id;
   for (const auto& name :

@@ -1,0 +1,133 @@
+#include "src/plot/history_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "src/core/error.hpp"
+#include "src/core/sign_convention.hpp"
+
+namespace hydrocoef::plot {
+namespace {
+
+std::string short_number(double value, int digits = 4) {
+  std::ostringstream out;
+  out.precision(digits);
+  out << value;
+  return out.str();
+}
+
+/// A y range that shows every drawn value with a margin, never empty (a
+/// component with zero spread, error and drift).
+std::array<double, 2> y_range(double mean, double half_width) {
+  double half = 1.6 * half_width;
+  if (!(half > 0.0)) half = std::max(0.05 * std::abs(mean), 1e-9);
+  return {mean - half, mean + half};
+}
+
+Panel window_panel(const StoredStatistics& st, double mean, const std::string& unit) {
+  const ComponentStatistics& v = st.values;
+  const double w0 = st.window_first, w1 = st.window_last, span = w1 - w0;
+  Panel panel;
+  panel.x_range = std::array<double, 2>{w0 - 0.3 * span, w1 + 0.1 * span};
+  panel.y_range = y_range(mean, std::max({v.spread, v.standard_error, std::abs(v.drift) / 2.0}));
+  panel.shaded.push_back({w0, w1, std::nullopt, std::nullopt});
+  panel.shaded_title = "averaging window (" + std::to_string(st.samples) + " samples)";
+  panel.series.push_back({"stored value ± standard error " + short_number(v.standard_error, 3) + " " + unit,
+                          Series::Style::Band,
+                          0,
+                          {w0, w1},
+                          {mean - v.standard_error, mean - v.standard_error},
+                          {mean + v.standard_error, mean + v.standard_error}});
+  panel.series.push_back({"stored value (window mean) " + short_number(mean, 6) + " " + unit,
+                          Series::Style::Line,
+                          0,
+                          {w0, w1},
+                          {mean, mean},
+                          {}});
+  panel.series.push_back({"± spread (standard deviation) " + short_number(v.spread, 3) + " " + unit,
+                          Series::Style::DashedLine,
+                          7,
+                          {w0, w1},
+                          {mean + v.spread, mean + v.spread},
+                          {}});
+  panel.series.push_back({"", Series::Style::DashedLine, 7, {w0, w1}, {mean - v.spread, mean - v.spread}, {}});
+  panel.series.push_back({"trend across the window (drift " + short_number(v.drift, 3) + " " + unit + ")",
+                          Series::Style::DashedLine,
+                          1,
+                          {w0, w1},
+                          {mean - v.drift / 2.0, mean + v.drift / 2.0},
+                          {}});
+  return panel;
+}
+
+Panel final_iterate_panel(const StoredStatistics& st, double value, const std::string& unit) {
+  const ComponentStatistics& v = st.values;
+  const double last = st.window_last;
+  const double pad = std::max(1.0, 0.05 * std::abs(last));
+  Panel panel;
+  panel.x_range = std::array<double, 2>{last - pad, last + pad / 4.0};
+  panel.y_range = y_range(value, std::max(v.standard_error, std::abs(v.drift) * pad));
+  panel.series.push_back({"± iterative error " + short_number(v.standard_error, 3) + " " + unit,
+                          Series::Style::Band,
+                          0,
+                          {last - pad / 2.0, last + pad / 8.0},
+                          {value - v.standard_error, value - v.standard_error},
+                          {value + v.standard_error, value + v.standard_error}});
+  panel.series.push_back({"change per iteration at the end " + short_number(v.drift, 3) + " " + unit,
+                          Series::Style::DashedLine,
+                          1,
+                          {last - pad, last},
+                          {value - v.drift * pad, value},
+                          {}});
+  panel.series.push_back({"final iterate (stored value) " + short_number(value, 6) + " " + unit,
+                          Series::Style::Points,
+                          0,
+                          {last},
+                          {value},
+                          {}});
+  return panel;
+}
+
+}  // namespace
+
+bool has_history(const StoredRun& run) {
+  return std::any_of(run.tau_b.begin(), run.tau_b.end(),
+                     [](const std::optional<StoredForce>& force) { return force && force->statistics; });
+}
+
+Figure history_figure(const StoredRun& run) {
+  if (!has_history(run))
+    throw InputError("run " + std::to_string(run.id) +
+                     ": no force component is a mean over a force history (its values came from a force table or a "
+                     "surface export): no history to draw");
+  std::string kind;
+  for (const auto& force : run.tau_b)
+    if (force && force->statistics && kind.empty()) kind = force->statistics->convergence;
+  Figure figure;
+  figure.title = "run " + std::to_string(run.id) + " (" + describe(run.key) + "), " +
+                 (kind.empty() ? std::string("convergence not recorded") : kind) +
+                 ": the stored window and statistics (the history's samples are not stored)";
+  for (std::size_t i = 0; i < run.tau_b.size(); ++i) {
+    const auto& force = run.tau_b[i];
+    if (!force || !force->statistics) continue;
+    const StoredStatistics& st = *force->statistics;
+    const std::string unit = i < 3 ? "N" : "N m";
+    const double value = force->value.total;
+    const bool final_iterate = st.convergence == "converged" || !(st.window_last > st.window_first);
+    Panel panel = final_iterate ? final_iterate_panel(st, value, unit) : window_panel(st, value, unit);
+    std::string flags;
+    for (const auto& flag : st.flags) flags += (flags.empty() ? "" : ", ") + flag;
+    panel.title = std::string(kForceNames[i]) + ": " +
+                  (final_iterate ? "final iterate at " + st.abscissa + " " + short_number(st.window_last, 8)
+                                 : "mean over " + st.abscissa + " " + short_number(st.window_first, 8) + " to " +
+                                       short_number(st.window_last, 8) + " (" + st.window_method + ")") +
+                  (flags.empty() ? std::string() : "; flags: " + flags);
+    panel.x_label = st.abscissa == "time" ? "time [s]" : st.abscissa;
+    panel.y_label = std::string(kForceNames[i]) + " [" + unit + "] (" + std::string(to_string(force->sign)) + ")";
+    figure.panels.push_back(std::move(panel));
+  }
+  return figure;
+}
+
+}  // namespace hydrocoef::plot
