@@ -78,6 +78,19 @@ std::string axis_label(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : name + " [" + unit + "]";
 }
 
+
+/// f over an 81 x 81 grid of [x0, x1] x [y0, y1] (x fastest), as a colour map.
+template <typename F>
+ColourMap sampled_map(double x0, double x1, double y0, double y1, std::string z_label, const F& f) {
+  ColourMap map;
+  map.z_label = std::move(z_label);
+  map.x = linspace(x0, x1, 81);
+  map.y = linspace(y0, y1, 81);
+  for (double y : map.y)
+    for (double x : map.x) map.z.push_back(f(std::array<double, 2>{x, y}));
+  return map;
+}
+
 }  // namespace
 
 double evaluate_fit(const FitRecord& fit, double x) {
@@ -323,16 +336,7 @@ Figure surface_figure(Database& database, const std::string& name, const std::op
     panel.y_label = axis_label(surface.axis_names()[1], surface.axis_units()[1]);
     panel.title = out_name + " over " + surface.axis_names()[0] + ", " + surface.axis_names()[1] +
                   "; outside: " + surface.out_of_range_name(0) + " / " + surface.out_of_range_name(1);
-    ColourMap map;
-    map.z_label = out_label;
-    map.x = linspace(x0, x1, 81);
-    map.y = linspace(y0, y1, 81);
-    for (double y : map.y)
-      for (double x : map.x) {
-        const std::array<double, 2> point{x, y};
-        map.z.push_back(eval(point));
-      }
-    panel.map = std::move(map);
+    panel.map = sampled_map(x0, x1, y0, y1, out_label, eval);
     panel.shaded.push_back({x0 - xm, x1 + xm, y0 - ym, y0});
     panel.shaded.push_back({x0 - xm, x1 + xm, y1, y1 + ym});
   }
@@ -400,16 +404,7 @@ Figure surface_sigma_figure(Database& database, const std::string& name, const s
     panel.y_label = axis_label(surface.axis_names()[1], surface.axis_units()[1]);
     panel.title = "sd of " + out_name + " over " + surface.axis_names()[0] + ", " + surface.axis_names()[1] + ": " +
                   what;
-    ColourMap map;
-    map.z_label = sd_label;
-    map.x = linspace(x0, x1, 81);
-    map.y = linspace(y0, y1, 81);
-    for (double y : map.y)
-      for (double x : map.x) {
-        const std::array<double, 2> point{x, y};
-        map.z.push_back(sd_at(point));
-      }
-    panel.map = std::move(map);
+    panel.map = sampled_map(x0, x1, y0, y1, sd_label, sd_at);
     for (const auto& point : run_points) {
       runs.x.push_back(point[0]);
       runs.y.push_back(point[1]);
