@@ -6,7 +6,9 @@
 #   LIBDIR/cmake/hydrocoef/                 the CMake package: find_package(hydrocoef 0.1 CONFIG REQUIRED)
 #   LIBDIR/pkgconfig/hydrocoef.pc           pkg-config --cflags --libs hydrocoef (the shared library)
 #   share/hydrocoef/schema/*.sql            the database schema migrations (also compiled into the library)
-#   share/doc/hydrocoef/                    README.md, the data's PROVENANCE.md
+#   share/doc/hydrocoef/                    README.md, the user guide (docs/*.md), the data's PROVENANCE.md
+#   share/man/man1/hydrocoef*.1             a man page per command, made from its --help (optimized builds;
+#                                           cmake/man_pages.cmake), and hydrocoef.1
 #   lib/python3/dist-packages/hydrocoef/    the Python module, when it is built (python/CMakeLists.txt installs
 #                                           it into HYDROCOEF_PYTHON_INSTALL_DIR)
 # LIBDIR is lib/<multiarch triplet> (lib/x86_64-linux-gnu), Debian's layout, whatever the prefix.
@@ -43,6 +45,24 @@ install(FILES ${PROJECT_BINARY_DIR}/generated/include/hydrocoef/version.hpp
 install(FILES ${HYDROCOEF_MIGRATIONS} DESTINATION ${CMAKE_INSTALL_DATADIR}/hydrocoef/schema)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/data/PROVENANCE.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# The user guide beside the README, where the README's links (docs/NAME.md) find it.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
+        FILES_MATCHING PATTERN "*.md" PATTERN "reference" EXCLUDE)
+
+# Man pages: one per command from the built CLI's --help (cmake/man_pages.cmake), made at build time by the
+# optimized builds; the sanitizer build is never installed and does not make them.
+if(NOT HYDROCOEF_SANITIZE)
+  set(HYDROCOEF_MAN_DIR ${PROJECT_BINARY_DIR}/man/man1)
+  add_custom_command(
+    OUTPUT ${HYDROCOEF_MAN_DIR}/hydrocoef.1
+    COMMAND ${CMAKE_COMMAND} -DHYDROCOEF_CLI=$<TARGET_FILE:hydrocoef_cli> -DOUTPUT_DIR=${HYDROCOEF_MAN_DIR}
+            -DVERSION=${PROJECT_VERSION} -P ${CMAKE_CURRENT_LIST_DIR}/man_pages.cmake
+    DEPENDS hydrocoef_cli ${CMAKE_CURRENT_LIST_DIR}/man_pages.cmake
+    COMMENT "Man pages from hydrocoef --help"
+    VERBATIM)
+  add_custom_target(hydrocoef_man_pages ALL DEPENDS ${HYDROCOEF_MAN_DIR}/hydrocoef.1)
+  install(DIRECTORY ${HYDROCOEF_MAN_DIR}/ DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 FILES_MATCHING PATTERN "*.1")
+endif()
 
 # The CMake package: the targets, the config that finds their dependencies, and the version file
 # (0.x: a consumer asking for 0.1 accepts 0.1.y only).

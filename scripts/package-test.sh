@@ -2,7 +2,7 @@
 # hydrocoef as a library others build on, checked from an optimized build directory (default build/heavy,
 # which scripts/test.sh builds first; nothing is compiled again but the consumers):
 #   1. cmake --install into a temporary prefix: the layout (public headers only, both libraries, the CLI,
-#      the CMake package, pkg-config, schema, docs);
+#      the CMake package, pkg-config, schema, docs, the man pages made from --help);
 #   2. the installed CLI makes a database (the ASR-V surge table) and a surface, and queries it (--json);
 #   3. tests/package/consumer, configured with find_package(hydrocoef 0.1 CONFIG REQUIRED) against the prefix,
 #      built against the shared and the static library, opens that database and gets the CLI's number;
@@ -58,6 +58,7 @@ expected=(
   "$multiarch/pkgconfig/hydrocoef.pc"
   include/hydrocoef/hydrocoef.hpp include/hydrocoef/error.hpp include/hydrocoef/version.hpp
   share/hydrocoef/schema/0001_initial.sql share/doc/hydrocoef/README.md share/doc/hydrocoef/PROVENANCE.md
+  share/doc/hydrocoef/docs/importing.md share/man/man1/hydrocoef.1 share/man/man1/hydrocoef-import.1
 )
 for file in "${expected[@]}"; do
   [[ -e $prefix/$file ]] || fail "cmake --install did not install $file"
@@ -70,7 +71,10 @@ for header in "$prefix"/include/hydrocoef/*.hpp; do
     fail "the public header $(basename "$header") includes an internal header"
   fi
 done
-say "ok: cmake --install $(find "$prefix" -type f | wc -l) files under the prefix: CLI, libhydrocoef.so.$version and .a, $(find "$prefix/include/hydrocoef" -name "*.hpp" | wc -l) public headers, CMake package, pkg-config, schema, docs"
+# A man page made from the CLI's --help: the command's page holds its options.
+grep -q -- '\\-\\-key\\-from\\-name' "$prefix/share/man/man1/hydrocoef-import.1" ||
+  fail "share/man/man1/hydrocoef-import.1 does not hold import's --help (--key-from-name)"
+say "ok: cmake --install $(find "$prefix" -type f | wc -l) files under the prefix: CLI, libhydrocoef.so.$version and .a, $(find "$prefix/include/hydrocoef" -name "*.hpp" | wc -l) public headers, CMake package, pkg-config, schema, docs, man pages"
 
 # --- 2. the installed CLI makes the database the consumers read --------------------------------------
 # query_value CLI DB SURFACE AXIS=VALUE OUTPUT: the output's value from `hydrocoef query --json`.
