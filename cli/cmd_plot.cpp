@@ -117,8 +117,9 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   auto history_args = std::make_shared<HistoryPlotArgs>();
   auto* history = plot_cmd->add_subcommand(
       "history",
-      "One run's force history as stored: each averaged component's window, its mean (or the final iterate of a "
-      "converged run) with its standard error, spread and trend; the samples themselves are not stored");
+      "One run's force history as stored: the history in brief (each bin's least and largest value), each averaged "
+      "component's window, its mean (or the final iterate of a converged run) with its standard error, spread and "
+      "trend");
   history->add_option("run", history_args->run, "Run id (hydrocoef runs lists them)")->required();
   add_common(history, *history_args);
   history->get_option("--size")
@@ -132,7 +133,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     if (found == runs.end())
       throw InputError(SourceLocation{global.database},
                        "no run " + std::to_string(id) + "; 'hydrocoef runs' lists them");
-    const plot::Figure figure = plot::history_figure(*found);
+    const plot::Figure figure = plot::history_figure(*found, database.run_trace(id));
     // Without --size: 260 px per panel (one per averaged component).
     HistoryPlotArgs args = *history_args;
     if (history->get_option("--size")->count() == 0)

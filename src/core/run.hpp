@@ -119,6 +119,21 @@ struct RunStatistics {
   std::array<ComponentWindow, 6> windows;                        ///< X..N, where components are
 };
 
+/// A force history in brief, kept with its run so that its picture can be
+/// drawn from the database alone (the report's run quality section, `plot
+/// history`): the total force and moment components over the whole record,
+/// in at most kMaxBins bins of consecutive samples, each bin's least and
+/// largest value and the abscissa of its last sample. A record of at most
+/// kMaxBins samples is kept whole (low = high). src/history/history_trace.hpp
+/// makes one.
+struct HistoryTrace {
+  static constexpr std::size_t kMaxBins = 256;
+  std::string abscissa_name;  ///< "time" [s] or "iteration"
+  std::size_t samples = 0;    ///< in the whole record
+  std::vector<double> abscissa;                  ///< per bin: its last sample's abscissa, increasing
+  std::array<std::vector<double>, 6> low, high;  ///< X..N in body axes, on the body; empty where absent
+};
+
 /// One run as an importer produced it.
 struct ImportedRun {
   RunKey key;
@@ -129,6 +144,7 @@ struct ImportedRun {
   std::size_t source_line = 0;              ///< 1-based line in the source, 0 if n/a
   std::optional<SurfaceIntegrals> surface;  ///< when the forces came from a surface
   std::optional<RunStatistics> statistics;  ///< when the forces are means over a history
+  std::optional<HistoryTrace> trace;        ///< that history in brief
 };
 
 /// Where a batch of runs came from.

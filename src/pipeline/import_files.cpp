@@ -24,6 +24,7 @@
 #include "src/core/parallel.hpp"
 #include "src/core/source_file.hpp"
 #include "src/core/version.hpp"
+#include "src/history/history_trace.hpp"
 #include "src/loads/symmetry.hpp"
 #include "src/pipeline/given_uncertainty.hpp"
 #include "src/pipeline/openfoam_case.hpp"
@@ -420,8 +421,8 @@ ImportedRun run_from_history(const ForceHistory& history, const HistoryAnalysis&
     statistics.windows[c] = ComponentWindow{component.window_method, component.first_abscissa, component.last_abscissa,
                                             component.sample_count, flag_names(component.flags)};
   }
-  (void)history;
   run.statistics = std::move(statistics);
+  run.trace = trace_of(history);
   return run;
 }
 

@@ -89,6 +89,36 @@ Panel final_iterate_panel(const StoredStatistics& st, double value, const std::s
   return panel;
 }
 
+/// The panel's history from the trace: its bins' extremes as a band (the
+/// samples as a line when the record is kept whole), the x range the whole
+/// record, the y range the history from `from` on with the stored value.
+void add_trace(Panel& panel, const HistoryTrace& trace, std::size_t c, double from, double value,
+               double half_width) {
+  const auto& low = trace.low[c];
+  const auto& high = trace.high[c];
+  if (low.empty()) return;
+  const bool whole = trace.abscissa.size() == trace.samples;
+  Series history{whole ? "history (" + std::to_string(trace.samples) + " samples)"
+                       : "history: least and largest of each bin of " +
+                             std::to_string(trace.samples / trace.abscissa.size()) + "-" +
+                             std::to_string((trace.samples + trace.abscissa.size() - 1) / trace.abscissa.size()) +
+                             " samples",
+                 whole ? Series::Style::Line : Series::Style::Band,
+                 6,
+                 trace.abscissa,
+                 low,
+                 whole ? std::vector<double>{} : high};
+  panel.series.insert(panel.series.begin(), std::move(history));
+  const double first = trace.abscissa.front(), last = trace.abscissa.back();
+  const double span = last > first ? last - first : 1.0;
+  panel.x_range = std::array<double, 2>{first, last + 0.02 * span};
+  double lo = value - half_width, hi = value + half_width;
+  for (std::size_t b = 0; b < trace.abscissa.size(); ++b)
+    if (trace.abscissa[b] >= from) lo = std::min(lo, low[b]), hi = std::max(hi, high[b]);
+  const double margin = hi > lo ? 0.15 * (hi - lo) : std::max(0.05 * std::abs(value), 1e-9);
+  panel.y_range = std::array<double, 2>{lo - margin, hi + margin};
+}
+
 }  // namespace
 
 bool has_history(const StoredRun& run) {
@@ -96,7 +126,7 @@ bool has_history(const StoredRun& run) {
                      [](const std::optional<StoredForce>& force) { return force && force->statistics; });
 }
 
-Figure history_figure(const StoredRun& run) {
+Figure history_figure(const StoredRun& run, const std::optional<HistoryTrace>& trace) {
   if (!has_history(run))
     throw InputError("run " + std::to_string(run.id) +
                      ": no force component is a mean over a force history (its values came from a force table or a "
@@ -107,7 +137,8 @@ Figure history_figure(const StoredRun& run) {
   Figure figure;
   figure.title = "run " + std::to_string(run.id) + " (" + describe(run.key) + "), " +
                  (kind.empty() ? std::string("convergence not recorded") : kind) +
-                 ": the stored window and statistics (the history's samples are not stored)";
+                 (trace ? ": the history in brief, the window and the stored value"
+                        : ": the stored window and statistics (stored before histories were kept: the samples are not stored)");
   for (std::size_t i = 0; i < run.tau_b.size(); ++i) {
     const auto& force = run.tau_b[i];
     if (!force || !force->statistics) continue;
@@ -116,6 +147,11 @@ Figure history_figure(const StoredRun& run) {
     const double value = force->value.total;
     const bool final_iterate = st.convergence == "converged" || !(st.window_last > st.window_first);
     Panel panel = final_iterate ? final_iterate_panel(st, value, unit) : window_panel(st, value, unit);
+    if (trace) {
+      // From the window's start (a converged run: the last half of its record) on.
+      const double from = final_iterate ? trace->abscissa[trace->abscissa.size() / 2] : st.window_first;
+      add_trace(panel, *trace, i, from, value, st.values.standard_error);
+    }
     std::string flags;
     for (const auto& flag : st.flags) flags += (flags.empty() ? "" : ", ") + flag;
     panel.title = std::string(kForceNames[i]) + ": " +

@@ -35,7 +35,7 @@ bool gp_calibrated(const GpState& state) {
 
 }  // namespace
 
-void write_run_quality(Page& page, const std::vector<StoredRun>& runs, std::size_t max_plots) {
+void write_run_quality(Page& page, Database& database, const std::vector<StoredRun>& runs, std::size_t max_plots) {
   auto& h = page.html;
   h << "<section id=\"quality\"><h2>Run quality</h2>\n";
   std::vector<const StoredRun*> averaged;
@@ -107,9 +107,9 @@ void write_run_quality(Page& page, const std::vector<StoredRun>& runs, std::size
     if (page.figure(
             report::plot_file_stem("history", "run-" + std::to_string(run->id)),
             "force history of run " + std::to_string(run->id) +
-                " as stored: the averaging window, the stored value (window mean or final iterate) with its "
-                "standard error, the spread and the trend (the samples themselves are not stored)",
-            [&] { return plot::history_figure(*run); },
+                ": the history in brief (each bin's least and largest value), the averaging window, the stored "
+                "value (window mean or final iterate) with its standard error, the spread and the trend",
+            [&] { return plot::history_figure(*run, database.run_trace(run->id)); },
             static_cast<int>(std::min<std::size_t>(3600, 200 + 260 * panels))))
       ++page.result().histories;
     ++drawn;

@@ -16,8 +16,9 @@ namespace hydrocoef::report::detail {
 /// (convergence kind and its reason, flags, each component's value ± its
 /// standard error and window), then per run its history figure
 /// (src/plot/history_plot.hpp, plots/history-...svg), at most `max_plots` of
-/// them (the rest named in a note). Runs without a history are counted.
-void write_run_quality(Page& page, const std::vector<StoredRun>& runs, std::size_t max_plots);
+/// them (the rest named in a note), each with its trace from `database`
+/// (Database::run_trace). Runs without a history are counted.
+void write_run_quality(Page& page, Database& database, const std::vector<StoredRun>& runs, std::size_t max_plots);
 
 /// A surface's calibration and stated uncertainty, for its table cell: a GP's
 /// leave-one-out standardized residuals per output (RMS and largest, with

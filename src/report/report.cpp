@@ -247,7 +247,7 @@ ReportResult write_report(Database& database, const std::filesystem::path& dir, 
   h << "</section>\n";
 
   // ---- run quality: convergence, flags, standard errors, histories
-  detail::write_run_quality(page, runs, options.max_history_plots);
+  detail::write_run_quality(page, database, runs, options.max_history_plots);
 
   // ---- fits
   h << "<section id=\"fits\"><h2>Fits</h2>\n";

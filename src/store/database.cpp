@@ -488,6 +488,11 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
       }
       if (extended && !created) ++outcome.runs_extended;
       if (run.surface) rows.write_surface(run_id, source_id, *run.surface);
+      // The trace of the latest history; a component without one takes an earlier one away.
+      if (run.trace && run.statistics)
+        rows.write_trace(run_id, *run.trace);
+      else if (extended)
+        rows.drop_trace(run_id);
     }
     outcomes.push_back(outcome);
   }
@@ -1065,6 +1070,10 @@ void Database::remove_import_forces(std::int64_t import_id) {
           "f.run_id = run_force_statistics.run_id AND f.component = run_force_statistics.component)")
       .bind(1, import_id)
       .run();
+  connection_
+      .prepare("DELETE FROM run_force_trace WHERE run_id IN (SELECT run_id FROM run_force WHERE import_id = ?)")
+      .bind(1, import_id)
+      .run();
   connection_.prepare("DELETE FROM run_force WHERE import_id = ?").bind(1, import_id).run();
   // A run left with no force component is no run.
   auto remaining = connection_.prepare("SELECT count(*) FROM run_force WHERE run_id = ?");
@@ -1108,6 +1117,7 @@ DeleteOutcome Database::delete_runs(const std::vector<std::int64_t>& ids) {
     outcome.components += static_cast<std::size_t>(components.get_int(0));
     components.reset();
     connection_.prepare("DELETE FROM run_force_statistics WHERE run_id = ?").bind(1, id).run();
+    connection_.prepare("DELETE FROM run_force_trace WHERE run_id = ?").bind(1, id).run();
     connection_.prepare("DELETE FROM run_force WHERE run_id = ?").bind(1, id).run();
     connection_.prepare("DELETE FROM run_surface WHERE run_id = ?").bind(1, id).run();
     connection_.prepare("DELETE FROM run WHERE id = ?").bind(1, id).run();

@@ -327,6 +327,13 @@ class Database {
   std::vector<NumericalUncertaintyRecord> numerical_uncertainties(
       const std::optional<std::string>& body = std::nullopt);
 
+  /// A run's force history in brief (schema/0016_run_force_trace.sql), as
+  /// its latest history import left it; nullopt for a run imported from a
+  /// table, or stored before traces were kept. InputError naming the table
+  /// and row when the stored trace is damaged (src/history/history_trace.hpp
+  /// trace_problem).
+  std::optional<HistoryTrace> run_trace(std::int64_t run_id);
+
   /// Stores forced-oscillation analyses in one transaction (all or none);
   /// the same file analysed with the same motion replaces its earlier rows.
   /// The bodies are created when missing. (PmmRecord: src/store/pmm_record.hpp.)

@@ -218,6 +218,13 @@ MergeOutcome Database::merge_one(Database& shard) {
       extended = true;
     }
     if (extended && !created) ++outcome.runs_extended;
+    // The shard's trace comes with the components it merged (as an import's does).
+    if (extended) {
+      if (const auto trace = shard.run_trace(run.id))
+        rows.write_trace(here, *trace);
+      else
+        rows.drop_trace(here);
+    }
     if (run.surface && surface_source.count(run.id)) {
       // A run's surface integrals come from one file, as its forces do.
       const std::int64_t source = mapped_source(surface_source.at(run.id));

@@ -43,7 +43,12 @@ RunRows::RunRows(Connection& connection)
           "x_cross_n_dA_z = excluded.x_cross_n_dA_z, reference_pressure = excluded.reference_pressure, "
           "pressure_array = excluded.pressure_array, shear_array = excluded.shear_array, "
           "pressure_kind = excluded.pressure_kind, shear_convention = excluded.shear_convention, axes = "
-          "excluded.axes")) {}
+          "excluded.axes")),
+      trace_(connection.prepare(
+          "INSERT INTO run_force_trace(run_id, abscissa, samples, components, data) VALUES (?, ?, ?, ?, ?) "
+          "ON CONFLICT (run_id) DO UPDATE SET abscissa = excluded.abscissa, samples = excluded.samples, "
+          "components = excluded.components, data = excluded.data")),
+      drop_trace_(connection.prepare("DELETE FROM run_force_trace WHERE run_id = ?")) {}
 
 void RunRows::check_and_fill(std::int64_t run_id, const RunKey& key, const Fluid& fluid,
                              const std::array<double, 3>& reference_point_b, const SourceLocation& where) {
@@ -140,5 +145,28 @@ void RunRows::write_surface(std::int64_t run_id, std::int64_t source_id, const S
       .bind(21, g.axes)
       .run();
 }
+
+void RunRows::write_trace(std::int64_t run_id, const HistoryTrace& trace) {
+  if (trace.samples == 0) {
+    drop_trace(run_id);
+    return;
+  }
+  std::string components;
+  std::vector<double> data = trace.abscissa;
+  for (std::size_t c = 0; c < 6; ++c) {
+    if (trace.low[c].empty()) continue;
+    components += (components.empty() ? "" : ",") + std::string(kForceNames[c]);
+    data.insert(data.end(), trace.low[c].begin(), trace.low[c].end());
+    data.insert(data.end(), trace.high[c].begin(), trace.high[c].end());
+  }
+  trace_.bind(1, run_id)
+      .bind(2, trace.abscissa_name)
+      .bind(3, static_cast<std::int64_t>(trace.samples))
+      .bind(4, components)
+      .bind_doubles(5, data)
+      .run();
+}
+
+void RunRows::drop_trace(std::int64_t run_id) { drop_trace_.bind(1, run_id).run(); }
 
 }  // namespace hydrocoef::store

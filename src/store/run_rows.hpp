@@ -45,9 +45,14 @@ class RunRows {
   void write_statistics(std::int64_t run_id, std::size_t component, const StoredStatistics& statistics);
   /// The integrals of the surface the run's forces came from (replacing the run's).
   void write_surface(std::int64_t run_id, std::int64_t source_id, const SurfaceIntegrals& g);
+  /// The run's force history in brief (schema/0016_run_force_trace.sql), replacing any it had.
+  void write_trace(std::int64_t run_id, const HistoryTrace& trace);
+  /// Takes a run's trace away (a component written without a history).
+  void drop_trace(std::int64_t run_id);
 
  private:
-  Statement details_, update_fluid_, insert_run_, insert_disturbance_, force_, statistics_, surface_;
+  Statement details_, update_fluid_, insert_run_, insert_disturbance_, force_, statistics_, surface_, trace_,
+      drop_trace_;
 };
 
 }  // namespace hydrocoef::store

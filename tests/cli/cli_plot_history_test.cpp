@@ -70,7 +70,9 @@ TEST_F(CliPlotHistory, WritesTheImageAndSaysWhatWasWritten) {
   EXPECT_EQ(png_size(read_text(image)), (std::pair<unsigned, unsigned>{900, 720}));
   EXPECT_TRUE(fs::exists(dir / "history-run-1.dat"));
   EXPECT_TRUE(fs::exists(dir / "history-run-1.gp"));
-  EXPECT_NE(text.out.find("transient-window: the stored window and statistics"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("transient-window: the history in brief, the window and the stored value"),
+            std::string::npos)
+      << text.out;
   EXPECT_NE(text.out.find("wrote " + (dir / "history-run-1.png").string() + " (png, 900x720 px)"), std::string::npos)
       << text.out;
   EXPECT_TRUE(test::terminal_safe(text.out)) << text.out;
@@ -99,7 +101,15 @@ TEST_F(CliPlotHistory, JsonNamesTheFilesAndSizeAndOutputAreHonoured) {
   std::size_t x_panels = 0;
   for (const auto& series : out["series"])
     x_panels += series["panel"].get<std::string>().rfind("X: mean over time", 0) == 0;
-  EXPECT_EQ(x_panels, 5u);  // the band, the value, the two spread lines, the trend
+  EXPECT_EQ(x_panels, 6u);  // the history (its trace), the band, the value, the two spread lines, the trend
+  // The history is the imported record in brief: its 1001 samples in 256 bins.
+  std::size_t traces = 0;
+  for (const auto& series : out["series"])
+    if (series["title"].get<std::string>().rfind("history: least and largest", 0) == 0) {
+      ++traces;
+      EXPECT_EQ(series["points"], 256);
+    }
+  EXPECT_EQ(traces, 2u) << out["series"].dump();  // X and Y
 }
 
 TEST_F(CliPlotHistory, AnUnknownRunOrOneWithoutAHistoryIsOneLineAndExitCode2) {

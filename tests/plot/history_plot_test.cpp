@@ -105,6 +105,46 @@ TEST(HistoryPlot, AConvergedRunDrawsItsFinalIterateAndIterativeError) {
   EXPECT_GT((*panel.x_range)[1], 145.0);
 }
 
+TEST(HistoryPlot, WithItsTraceTheWholeRecordIsDrawnAndTheRangeFitsTheWindow) {
+  const StoredRun run = transient_run();
+  // A record of 1000 samples in 256 bins; a start-up transient up to 50 N
+  // before the window, values within 1.5..2.5 N from the window on.
+  HistoryTrace trace;
+  trace.abscissa_name = "time";
+  trace.samples = 1000;
+  for (std::size_t b = 0; b < HistoryTrace::kMaxBins; ++b) {
+    const double t = 9.0 * static_cast<double>(b + 1) / 256.0;
+    trace.abscissa.push_back(t);
+    trace.low[0].push_back(t < 3.0 ? 40.0 : 1.5);
+    trace.high[0].push_back(t < 3.0 ? 50.0 : 2.5);
+  }
+  const Figure figure = history_figure(run, trace);
+  EXPECT_NE(figure.title.find("the history in brief"), std::string::npos) << figure.title;
+  ASSERT_EQ(figure.panels.size(), 1u);
+  const Panel& panel = figure.panels[0];
+  ASSERT_FALSE(panel.series.empty());
+  const Series& history = panel.series.front();
+  EXPECT_EQ(history.style, Series::Style::Band);
+  EXPECT_EQ(history.x, trace.abscissa);
+  EXPECT_EQ(history.y, trace.low[0]);
+  EXPECT_EQ(history.y_high, trace.high[0]);
+  EXPECT_NE(history.title.find("bin of 3-4 samples"), std::string::npos) << history.title;
+  // The whole record across, the window's values up and down (the transient leaves the panel).
+  ASSERT_TRUE(panel.x_range && panel.y_range);
+  EXPECT_EQ((*panel.x_range)[0], trace.abscissa.front());
+  EXPECT_GE((*panel.x_range)[1], 9.0);
+  EXPECT_LT((*panel.y_range)[0], 1.5);
+  EXPECT_GT((*panel.y_range)[1], 2.5);
+  EXPECT_LT((*panel.y_range)[1], 40.0);
+  // Rendered: the band's rows are the trace's numbers.
+  test::TempDir dir;
+  const auto files = render(figure, dir / "history.svg", {600, 400});
+  const auto blocks = test::read_plot_blocks(files.data);
+  ASSERT_EQ(blocks.size(), 6u);
+  ASSERT_EQ(blocks[0].second.size(), HistoryTrace::kMaxBins);
+  EXPECT_EQ(blocks[0].second[100], (std::vector<double>{trace.abscissa[100], 1.5, 2.5}));
+}
+
 TEST(HistoryPlot, ARunWithoutAHistoryIsRefusedByName) {
   StoredRun run;
   run.id = 12;
