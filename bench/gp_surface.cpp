@@ -78,14 +78,14 @@ BENCHMARK(BM_GpSuggest)->Unit(benchmark::kMillisecond);
 
 void BM_SuggestRoundedMirroredKeys(benchmark::State& state) {
   using hydrocoef::RbfOutOfRange;
-  const hydrocoef::CoefficientSurface surface(hydrocoef::GpSurfaces({surface()}, {-1.0, -1.0}, {1.0, 1.0}, {"u", "v"},
-                                                                    {RbfOutOfRange::Error, RbfOutOfRange::Error}),
-                                              {"u", "v"}, {"X"});
+  const hydrocoef::CoefficientSurface gp(hydrocoef::GpSurfaces({surface()}, {-1.0, -1.0}, {1.0, 1.0}, {"u", "v"},
+                                                               {RbfOutOfRange::Error, RbfOutOfRange::Error}),
+                                         {"u", "v"}, {"X"});
   hydrocoef::NextRunsRequest request;
   request.count = 10;
   request.mirror = hydrocoef::make_mirror_spec({"v"}, {});
   for (auto _ : state) {
-    auto next = hydrocoef::suggest_next_runs(surface, request);
+    auto next = hydrocoef::suggest_next_runs(gp, request);
     benchmark::DoNotOptimize(next);
   }
 }
