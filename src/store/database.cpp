@@ -496,12 +496,34 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
   return outcomes;
 }
 
+namespace {
+
+/// A run's key as read: its disturbance_key column must be the canonical text
+/// of its run_disturbance rows (the column, with the velocity, keeps each key
+/// once in the table; the rows are what every reader uses). A run whose
+/// column and rows disagree could be another run's key, and merge into it or
+/// be listed as it; it is refused naming its table and row.
+void check_run_keys(const std::string& db, const std::vector<StoredRun>& runs, const std::vector<std::string>& keys) {
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const StoredRun& run = runs[i];
+    const std::string signature = disturbance_signature(run.key.disturbances);
+    if (keys[i] != signature)
+      throw InputError(SourceLocation{db},
+                       "table 'run', row " + std::to_string(run.id) + ": column 'disturbance_key' is '" +
+                           printable_text(keys[i], 80) + "' but its rows in table 'run_disturbance' give '" +
+                           printable_text(signature, 80) +
+                           "'; expected the key of its disturbances (a database changed by another program)");
+  }
+}
+
+}  // namespace
+
 std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
-      "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z, body.id "
-      "FROM run JOIN body ON body.id = run.body_id WHERE TRUE";
+      "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z, body.id, "
+      "disturbance_key FROM run JOIN body ON body.id = run.body_id WHERE TRUE";
   if (body) sql += " AND run.body_id = ?1";
   if (run) sql += " AND run.id = ?2";
   sql += " ORDER BY body.name, u, v, w, p, q, r, disturbance_key";
@@ -510,6 +532,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   if (run) select.bind(2, *run);
 
   std::vector<StoredRun> out;
+  std::vector<std::string> stored_keys;  // each run's disturbance_key column, by position in out
   std::unordered_map<std::int64_t, std::size_t> index;
   const std::string db = path_.string();
   while (select.step()) {
@@ -521,6 +544,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     stored.fluid.density_kg_m3 = row.optional_positive(8);
     stored.fluid.kinematic_viscosity_m2_s = row.optional_positive(9);
     for (int i = 0; i < 3; ++i) stored.reference_point_b[static_cast<std::size_t>(i)] = row.real(10 + i);
+    stored_keys.push_back(row.text(14, std::size_t{1} << 20));
     index[stored.id] = out.size();
     out.push_back(std::move(stored));
   }
@@ -531,8 +555,12 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     const auto found = index.find(disturbances.get_int(0));
     if (found == index.end()) continue;
     const store::CheckedRow row(disturbances, db, "run_disturbance", disturbances.get_int(0));
-    out[found->second].key.disturbances[row.name(1, NameKind::Parameter)] = row.real(2);
+    std::string name = row.name(1, NameKind::Parameter);
+    if (std::find(kVelocityNames.begin(), kVelocityNames.end(), name) != kVelocityNames.end())
+      row.fail(1, "a disturbance parameter, not a velocity component (u v w p q r are columns of table 'run')");
+    out[found->second].key.disturbances[std::move(name)] = row.real(2);
   }
+  check_run_keys(db, out, stored_keys);
   auto forces = connection_.prepare(
       "SELECT f.run_id, f.component, f.total, f.pressure, f.viscous, f.sign_convention, f.source_id, s.path, "
       "coalesce(f.source_line, 0), coalesce(f.import_id, 0), f.uncertainty FROM run_force f JOIN source_file s ON "

@@ -1,0 +1,69 @@
+// What the CLI does with databases it only reads (src/store/database.cpp):
+// a shard whose run key columns disagree with its disturbances, a -wal file
+// a read-only share keeps from being read, and the refusal of an older
+// PostgreSQL database are each one line and exit 2, the target left byte for
+// byte as it was; an older SQLite database is listed and merged without
+// being written, and `hydrocoef migrate` upgrades it in place.
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "src/store/database.hpp"
+#include "tests/support/backend_under_test.hpp"
+#include "tests/support/file_bytes.hpp"
+#include "tests/support/import_batch.hpp"
+#include "tests/support/older_database.hpp"
+#include "tests/support/run_cli.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace hydrocoef {
+namespace {
+
+using test::run_cli;
+using test::TempDir;
+
+ImportedRun make_run(double u, double x) {
+  ImportedRun run;
+  run.key.body = "hull";
+  run.key.nu_b = {u, 0, 0, 0, 0, 0};
+  run.key.disturbances = {{"current_v", 0.05}};
+  run.tau_b[0] = ForceComponent{x, std::nullopt, std::nullopt};
+  run.source_line = 1;
+  return run;
+}
+
+void fill(const std::filesystem::path& path, int first_id = 1) {
+  Database db(path);
+  db.import(
+      {test::one_run_batch(first_id, make_run(0.1, -1.0)), test::one_run_batch(first_id + 1, make_run(0.2, -4.0))},
+      ConflictPolicy::Error);
+}
+
+void expect_one_line_refusal(const test::CliResult& result, const std::vector<std::string>& pieces) {
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_EQ(result.err.find("internal error"), std::string::npos) << result.err;
+  for (const auto& piece : pieces) EXPECT_NE(result.err.find(piece), std::string::npos) << result.err;
+}
+
+TEST(CliStoreReads, AShardWithAMadeUpRunKeyIsRefusedAndTheTargetKeepsItsBytes) {
+  HYDROCOEF_SQLITE_FILE_ONLY("the target's bytes");
+  TempDir dir;
+  fill(dir / "shard.db");
+  fill(dir / "into.db", 10);
+  {
+    store::Connection shard((dir / "shard.db").string(), store::Access::ReadWrite);
+    shard.execute("UPDATE run SET u = 0.1, disturbance_key = 'junk' WHERE u = 0.2");
+  }
+  const std::string before = test::read_bytes(dir / "into.db");
+  const auto result = run_cli({"merge", "shard.db", "--into", "into.db"}, dir.path());
+  expect_one_line_refusal(result, {"shard.db", "table 'run', row 2", "disturbance_key", "junk"});
+  EXPECT_EQ(test::read_bytes(dir / "into.db"), before);
+}
+
+}  // namespace
+}  // namespace hydrocoef
