@@ -106,6 +106,23 @@ store::Connection open_connection(const store::DatabaseLocation& location, Datab
   return {path.string(), store::Access::ReadOnly};
 }
 
+/// A database that cannot be opened normally where it is read-only (its WAL
+/// index, the -shm file, is missing and cannot be made) is read as immutable,
+/// which ignores the -wal file: refused instead when a -wal file that is not
+/// empty is beside it, as its committed changes would go unread.
+void refuse_unread_wal(const std::filesystem::path& path) {
+  const std::filesystem::path wal = path.string() + "-wal";
+  std::error_code error;
+  const auto size = std::filesystem::file_size(wal, error);
+  if (error || size == 0) return;
+  throw InputError(SourceLocation{path.string()},
+                   "a write-ahead log (" + printable_text(wal.string(), 200) + ", " + std::to_string(size) +
+                       " bytes) beside the database cannot be read here (no -shm file, and none can be made in a "
+                       "read-only folder), so its changes would be left unread; expected it checkpointed: open the "
+                       "database once where its folder is writable, or have its owner run sqlite3 " +
+                       printable_text(path.string(), 200) + " 'PRAGMA wal_checkpoint(TRUNCATE)'");
+}
+
 /// What every connection of a Database runs first.
 void configure(store::Connection& connection) {
   if (connection.backend() != store::Backend::SQLite) return;
@@ -147,10 +164,12 @@ Database::Database(const store::DatabaseLocation& location, OpenMode mode)
     : path_(location.display), connection_(open_connection(location, mode)), read_only_(mode == OpenMode::ReadOnly) {
   if (read_only_ && connection_.backend() == store::Backend::SQLite) {
     // A WAL database in a folder where the -shm file cannot be made (a
-    // read-only share) cannot be opened normally: read it as immutable.
+    // read-only share) cannot be opened normally: read it as immutable,
+    // unless a -wal file beside it holds changes that would go unread.
     try {
       (void)schema_version();
     } catch (const InputError&) {
+      refuse_unread_wal(path_);
       connection_ = store::Connection(path_.string(), store::Access::Immutable);
     }
   }

@@ -50,6 +50,12 @@ void expect_one_line_refusal(const test::CliResult& result, const std::vector<st
   for (const auto& piece : pieces) EXPECT_NE(result.err.find(piece), std::string::npos) << result.err;
 }
 
+std::size_t runs_listed(const std::filesystem::path& dir, const std::string& db) {
+  const auto result = run_cli({"--db", db, "runs", "--json"}, dir);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  return nlohmann::json::parse(result.out).size();
+}
+
 TEST(CliStoreReads, AShardWithAMadeUpRunKeyIsRefusedAndTheTargetKeepsItsBytes) {
   HYDROCOEF_SQLITE_FILE_ONLY("the target's bytes");
   TempDir dir;
@@ -63,6 +69,33 @@ TEST(CliStoreReads, AShardWithAMadeUpRunKeyIsRefusedAndTheTargetKeepsItsBytes) {
   const auto result = run_cli({"merge", "shard.db", "--into", "into.db"}, dir.path());
   expect_one_line_refusal(result, {"shard.db", "table 'run', row 2", "disturbance_key", "junk"});
   EXPECT_EQ(test::read_bytes(dir / "into.db"), before);
+}
+
+TEST(CliStoreReads, AWalFileLeftUnreadableOnAShareIsRefusedInOneLine) {
+  HYDROCOEF_SQLITE_FILE_ONLY("SQLite's WAL and -shm files");
+  TempDir dir;
+  fill(dir / "runs.db");
+  // Another connection keeps the next writer from checkpointing its import.
+  sqlite3* reader = nullptr;
+  ASSERT_EQ(sqlite3_open((dir / "runs.db").c_str(), &reader), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(reader, "SELECT count(*) FROM run", nullptr, nullptr, nullptr), SQLITE_OK);
+  {
+    Database db(dir / "runs.db");
+    db.import({test::one_run_batch(5, make_run(0.3, -9.0))}, ConflictPolicy::Error);
+  }
+  std::filesystem::create_directory(dir / "share");
+  std::filesystem::copy_file(dir / "runs.db", dir / "share" / "runs.db");
+  std::filesystem::copy_file(dir / "runs.db-wal", dir / "share" / "runs.db-wal");
+  sqlite3_close(reader);
+  // Where a read-only folder would refuse the -shm file, even to root: a
+  // dangling link (SQLite opens it with O_NOFOLLOW).
+  std::filesystem::create_symlink("/nonexistent/hydrocoef-shm", dir / "share" / "runs.db-shm");
+  const std::string before = test::read_bytes(dir / "share" / "runs.db");
+  const auto result = run_cli({"--db", "share/runs.db", "runs"}, dir.path());
+  expect_one_line_refusal(result, {"share/runs.db", "runs.db-wal", "wal_checkpoint(TRUNCATE)"});
+  EXPECT_EQ(test::read_bytes(dir / "share" / "runs.db"), before);
+  std::filesystem::remove(dir / "share" / "runs.db-shm");
+  EXPECT_EQ(runs_listed(dir.path(), "share/runs.db"), 3u);
 }
 
 }  // namespace

@@ -119,5 +119,68 @@ TEST(ReceivedDatabaseReads, ADisturbanceNamedAsAVelocityComponentOrNotFiniteIsRe
                            {row, "column 'value'", "a finite number"});
 }
 
+/// Leaves `path` with a committed import in its -wal file: the writer closes
+/// while another connection still has the file open, so nothing checkpoints
+/// it; then copies the database and its -wal (not its -shm) to `copy`.
+void copy_with_committed_wal(const std::filesystem::path& path, const std::filesystem::path& copy) {
+  {
+    Database db(path);
+    fill(db);
+  }
+  sqlite3* reader = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &reader), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(reader, "SELECT count(*) FROM run", nullptr, nullptr, nullptr), SQLITE_OK);
+  {
+    Database db(path);
+    db.import({test::one_run_batch(7, make_run(0.4, 0.05, -16.0))}, ConflictPolicy::Error);
+  }
+  ASSERT_GT(std::filesystem::file_size(path.string() + "-wal"), 0u);
+  std::filesystem::copy_file(path, copy);
+  std::filesystem::copy_file(path.string() + "-wal", copy.string() + "-wal");
+  sqlite3_close(reader);
+}
+
+/// Where a read-only folder keeps SQLite from making or opening the -shm
+/// file, even for root: a dangling link there (SQLite opens it with
+/// O_NOFOLLOW). (A directory would not do: SQLite opens it read-only and
+/// reads the WAL with an index in memory.)
+void block_shm(const std::filesystem::path& database) {
+  std::filesystem::create_symlink("/nonexistent/hydrocoef-shm", database.string() + "-shm");
+}
+
+// The trial's share: a read-only folder with the database and its -wal but
+// no -shm listed 3 runs of 4.
+TEST(ReceivedDatabaseReads, AWalFileThatCannotBeReadIsRefusedNotIgnored) {
+  HYDROCOEF_SQLITE_FILE_ONLY("SQLite's WAL and -shm files");
+  TempDir dir;
+  std::filesystem::create_directory(dir / "share");
+  const auto copy = dir / "share" / "runs.db";
+  copy_with_committed_wal(dir / "runs.db", copy);
+  block_shm(copy);
+  const std::string bytes = test::read_bytes(copy), wal = test::read_bytes(copy.string() + "-wal");
+  test::expect_input_error([&] { Database db(copy, Database::OpenMode::ReadOnly); },
+                           {copy.string(), "runs.db-wal", "cannot be read here", "wal_checkpoint(TRUNCATE)"});
+  EXPECT_EQ(test::read_bytes(copy), bytes);
+  EXPECT_EQ(test::read_bytes(copy.string() + "-wal"), wal);
+  // Where the -shm file can be made, every run is read.
+  std::filesystem::remove(copy.string() + "-shm");
+  Database db(copy, Database::OpenMode::ReadOnly);
+  EXPECT_EQ(db.runs().size(), 4u);
+}
+
+// An empty -wal file holds nothing to lose: read as immutable, as before.
+TEST(ReceivedDatabaseReads, AnEmptyWalFileBesideAReadOnlyShareIsNoObstacle) {
+  HYDROCOEF_SQLITE_FILE_ONLY("SQLite's WAL and -shm files");
+  TempDir dir;
+  {
+    Database db(dir / "runs.db");
+    fill(db);
+  }
+  test::write_bytes(dir / "runs.db-wal", "");
+  block_shm(dir / "runs.db");
+  Database db(dir / "runs.db", Database::OpenMode::ReadOnly);
+  EXPECT_EQ(db.runs().size(), 3u);
+}
+
 }  // namespace
 }  // namespace hydrocoef
