@@ -190,25 +190,27 @@ Database::Database(const store::DatabaseLocation& location, OpenMode mode)
     throw InputError(SourceLocation{path_.string()},
                      "an empty database (no hydrocoef data yet); expected one made by 'hydrocoef import'");
   }
+  opened_at_version_ = version;
   if (version < latest_schema_version()) {
     if (read_only_) {
-      // Reading needs the current schema: upgrade in place when the file can
-      // be written, as a writing command would.
-      try {
-        connection_ = open_connection(location, OpenMode::MustExist);
-        configure(connection_);
-      } catch (const InputError&) {}
-      if (connection_.read_only())
-        throw InputError(
-            SourceLocation{path_.string()},
-            "database is at schema version " + std::to_string(version) +
-                " and read-only here; this "
-                "hydrocoef reads version " +
-                std::to_string(latest_schema_version()) +
-                ": upgrade it once with a writing command (hydrocoef import, fit) where it can be written");
-      read_only_ = false;
+      // Reading never writes, so never upgrades: an SQLite file is read
+      // through an upgraded private copy (the file stays byte for byte as it
+      // was); a PostgreSQL database is refused with how to upgrade it.
+      check_schema(version);
+      if (connection_.backend() != store::Backend::SQLite)
+        throw InputError(SourceLocation{path_.string()},
+                         "database is at schema version " + std::to_string(version) + ", this hydrocoef reads " +
+                             std::to_string(latest_schema_version()) +
+                             " and a reading command does not upgrade it: run 'hydrocoef --db " +
+                             printable_text(path_.string(), 200) + " migrate' (or any writing command) once");
+      connection_ = store::Connection::sqlite_private_copy(connection_);
+      configure(connection_);
+      migrate();
+      // Writes through the copy would be lost: it refuses them.
+      connection_.execute("PRAGMA query_only = ON");
+    } else {
+      migrate();
     }
-    migrate();
   } else {
     check_schema(version);
   }

@@ -98,5 +98,35 @@ TEST(CliStoreReads, AWalFileLeftUnreadableOnAShareIsRefusedInOneLine) {
   EXPECT_EQ(runs_listed(dir.path(), "share/runs.db"), 3u);
 }
 
+TEST(CliStoreReads, AnOlderDatabaseIsListedAndMergedUnchangedAndMigrateUpgradesIt) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
+  TempDir dir;
+  fill(dir / "current.db");
+  test::copy_as_schema_version(dir / "current.db", dir / "old.db", 11);
+  const std::string before = test::read_bytes(dir / "old.db");
+  EXPECT_EQ(runs_listed(dir.path(), "old.db"), 2u);
+  EXPECT_EQ(run_cli({"--db", "old.db", "runs", "show", "1"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(run_cli({"--db", "old.db", "fits"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(test::read_bytes(dir / "old.db"), before);
+  const auto merged = run_cli({"merge", "old.db", "--into", "into.db"}, dir.path());
+  EXPECT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_EQ(test::read_bytes(dir / "old.db"), before);
+  EXPECT_EQ(runs_listed(dir.path(), "into.db"), 2u);
+
+  const auto migrated = run_cli({"--db", "old.db", "migrate", "--json"}, dir.path());
+  ASSERT_EQ(migrated.exit_code, 0) << migrated.err;
+  const auto json = nlohmann::json::parse(migrated.out);
+  EXPECT_EQ(json.at("from"), 11);
+  EXPECT_EQ(json.at("to"), Database::latest_schema_version());
+  EXPECT_NE(test::read_bytes(dir / "old.db"), before);
+  const auto again = run_cli({"--db", "old.db", "migrate"}, dir.path());
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("already"), std::string::npos) << again.out;
+  // No database there: refused, nothing made.
+  expect_one_line_refusal(run_cli({"--db", "none.db", "migrate"}, dir.path()), {"none.db", "no database here"});
+  EXPECT_FALSE(std::filesystem::exists(dir / "none.db"));
+}
+
 }  // namespace
 }  // namespace hydrocoef

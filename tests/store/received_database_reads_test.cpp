@@ -182,5 +182,46 @@ TEST(ReceivedDatabaseReads, AnEmptyWalFileBesideAReadOnlyShareIsNoObstacle) {
   EXPECT_EQ(db.runs().size(), 3u);
 }
 
+// Reading an older database upgrades a private copy; the file keeps its
+// bytes and its version, whether it is read or merged as a shard.
+TEST(ReceivedDatabaseReads, AnOlderDatabaseIsReadAndMergedWithoutBeingWritten) {
+  HYDROCOEF_SQLITE_FILE_ONLY(
+      "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
+  TempDir dir;
+  {
+    Database db(dir / "current.db");
+    fill(db);
+  }
+  const auto old = dir / "v11.db";
+  test::copy_as_schema_version(dir / "current.db", old, 11);
+  const std::string bytes = test::read_bytes(old);
+  {
+    Database db(old, Database::OpenMode::ReadOnly);
+    EXPECT_EQ(db.opened_at_version(), 11);
+    EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+    EXPECT_EQ(db.runs().size(), 3u);
+    EXPECT_EQ(db.fits().size(), 1u);
+    // The copy takes no write: it would be lost when it closes.
+    EXPECT_THROW(db.import({test::one_run_batch(8, make_run(0.6, 0.0, -1.0))}, ConflictPolicy::Error), InputError);
+  }
+  EXPECT_EQ(test::read_bytes(old), bytes);
+  EXPECT_FALSE(std::filesystem::exists(old.string() + "-wal"));
+  {
+    Database into(dir / "into.db");
+    const auto outcomes = into.merge({old.string()});
+    ASSERT_EQ(outcomes.size(), 1u);
+    EXPECT_EQ(outcomes[0].runs_created, 3u);
+    EXPECT_EQ(outcomes[0].fits_added, 1u);
+    EXPECT_EQ(into.runs().size(), 3u);
+  }
+  EXPECT_EQ(test::read_bytes(old), bytes);
+  // A writing opening upgrades it in place.
+  {
+    Database db(old, Database::OpenMode::MustExist);
+    EXPECT_EQ(db.opened_at_version(), 11);
+  }
+  EXPECT_EQ(Database(old, Database::OpenMode::ReadOnly).opened_at_version(), Database::latest_schema_version());
+}
+
 }  // namespace
 }  // namespace hydrocoef
