@@ -1,6 +1,8 @@
 // hydrocoef merge SHARD... --into DB: the databases cluster jobs wrote, one
 // each, merged into one; hydrocoef copy --from A --to B: a whole database
-// moved to another place or backend (src/store/merge.cpp, copy.cpp).
+// moved to another place or backend (src/store/merge.cpp, copy.cpp);
+// hydrocoef migrate: a database's schema brought up to date in place (what
+// reading commands never do).
 #include <unistd.h>
 
 #include <iostream>
@@ -22,6 +24,10 @@ struct MergeArgs {
 
 struct CopyArgs {
   std::string from, to;
+  bool json = false;
+};
+
+struct MigrateArgs {
   bool json = false;
 };
 
@@ -87,6 +93,29 @@ void add_merge_command(CLI::App& app, const GlobalOptions& global) {
     });
     if (progress) std::cerr << "\r\033[K" << std::flush;
     print_merge(outcomes, database.path().string(), args->json);
+  });
+
+  auto migrate = std::make_shared<MigrateArgs>();
+  auto* migrate_command = app.add_subcommand(
+      "migrate",
+      "Bring the database (--db) up to this hydrocoef's schema in place, in one transaction. Writing commands do "
+      "the same when they open a database; reading commands (runs, query, export, merge's shards...) never change "
+      "one: they read an older SQLite file through an upgraded private copy and refuse an older PostgreSQL "
+      "database");
+  migrate_command->add_flag("--json", migrate->json, "Print JSON");
+  migrate_command->callback([migrate, &global] {
+    Database database(global.database, Database::OpenMode::MustExist);
+    const int from = database.opened_at_version();
+    const int to = database.schema_version();
+    if (migrate->json) {
+      std::cout << escape::json_text({{"database", database.path().string()}, {"from", from}, {"to", to}}, 2) << '\n';
+      return;
+    }
+    std::cout << printable_text(database.path().string(), 120) << ": ";
+    if (from == to)
+      std::cout << "at schema version " << to << " already; nothing changed\n";
+    else
+      std::cout << "schema version " << from << " upgraded to " << to << '\n';
   });
 
   auto copy = std::make_shared<CopyArgs>();

@@ -56,6 +56,10 @@ class ConnectionBackend {
 };
 
 std::unique_ptr<ConnectionBackend> open_sqlite(const std::string& path, Access access);
+/// A private temporary SQLite database holding a copy of `source` (an SQLite
+/// connection), which is only read: what a reader may change (migrate) without
+/// writing the file. Deleted when closed.
+std::unique_ptr<ConnectionBackend> sqlite_private_copy(ConnectionBackend& source);
 std::unique_ptr<ConnectionBackend> open_postgresql(const std::string& url, const std::string& display, Access access);
 
 /// A consistent read for the guard's lifetime (ConnectionBackend::begin_read).

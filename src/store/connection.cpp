@@ -30,6 +30,10 @@ Connection Connection::postgresql(const std::string& url, const std::string& dis
   return Connection(detail::open_postgresql(url, display, access), display);
 }
 
+Connection Connection::sqlite_private_copy(Connection& source) {
+  return Connection(detail::sqlite_private_copy(*source.backend_), source.name_);
+}
+
 Connection::Connection(std::unique_ptr<detail::ConnectionBackend> backend, std::string name)
     : backend_(std::move(backend)), name_(std::move(name)) {}
 

@@ -56,6 +56,11 @@ class Connection {
   /// Connects to a PostgreSQL server with a libpq connection URL
   /// ("postgresql://host/db?..."); `display` names it in messages.
   static Connection postgresql(const std::string& url, const std::string& display, Access access);
+  /// A private copy of an SQLite database (`source`, only read) in a
+  /// temporary database of SQLite's own, deleted when the connection closes;
+  /// named as `source` in messages. What a reader opens to bring an older
+  /// schema up to date without writing the file.
+  static Connection sqlite_private_copy(Connection& source);
   ~Connection();
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;

@@ -141,8 +141,9 @@ std::vector<std::pair<std::string, std::size_t>> Database::copy_from(Database& s
   if (connection_.backend() == store::Backend::PostgreSQL)
     for (const auto& table : tables)
       if (table.integer_id)
-        connection_.execute("SELECT setval(pg_get_serial_sequence('" + table.table + "', 'id'), max(id)) FROM " +
-                            table.table + " HAVING max(id) IS NOT NULL");
+        connection_.execute("SELECT pg_catalog.setval(pg_catalog.pg_get_serial_sequence('" + table.table +
+                            "', 'id'), pg_catalog.max(id)) FROM " + table.table +
+                            " HAVING pg_catalog.max(id) IS NOT NULL");
   transaction.commit();
   use_wal();
   return copied;

@@ -106,6 +106,23 @@ store::Connection open_connection(const store::DatabaseLocation& location, Datab
   return {path.string(), store::Access::ReadOnly};
 }
 
+/// A database that cannot be opened normally where it is read-only (its WAL
+/// index, the -shm file, is missing and cannot be made) is read as immutable,
+/// which ignores the -wal file: refused instead when a -wal file that is not
+/// empty is beside it, as its committed changes would go unread.
+void refuse_unread_wal(const std::filesystem::path& path) {
+  const std::filesystem::path wal = path.string() + "-wal";
+  std::error_code error;
+  const auto size = std::filesystem::file_size(wal, error);
+  if (error || size == 0) return;
+  throw InputError(SourceLocation{path.string()},
+                   "a write-ahead log (" + printable_text(wal.string(), 200) + ", " + std::to_string(size) +
+                       " bytes) beside the database cannot be read here (no -shm file, and none can be made in a "
+                       "read-only folder), so its changes would be left unread; expected it checkpointed: open the "
+                       "database once where its folder is writable, or have its owner run sqlite3 " +
+                       printable_text(path.string(), 200) + " 'PRAGMA wal_checkpoint(TRUNCATE)'");
+}
+
 /// What every connection of a Database runs first.
 void configure(store::Connection& connection) {
   if (connection.backend() != store::Backend::SQLite) return;
@@ -147,10 +164,12 @@ Database::Database(const store::DatabaseLocation& location, OpenMode mode)
     : path_(location.display), connection_(open_connection(location, mode)), read_only_(mode == OpenMode::ReadOnly) {
   if (read_only_ && connection_.backend() == store::Backend::SQLite) {
     // A WAL database in a folder where the -shm file cannot be made (a
-    // read-only share) cannot be opened normally: read it as immutable.
+    // read-only share) cannot be opened normally: read it as immutable,
+    // unless a -wal file beside it holds changes that would go unread.
     try {
       (void)schema_version();
     } catch (const InputError&) {
+      refuse_unread_wal(path_);
       connection_ = store::Connection(path_.string(), store::Access::Immutable);
     }
   }
@@ -171,25 +190,27 @@ Database::Database(const store::DatabaseLocation& location, OpenMode mode)
     throw InputError(SourceLocation{path_.string()},
                      "an empty database (no hydrocoef data yet); expected one made by 'hydrocoef import'");
   }
+  opened_at_version_ = version;
   if (version < latest_schema_version()) {
     if (read_only_) {
-      // Reading needs the current schema: upgrade in place when the file can
-      // be written, as a writing command would.
-      try {
-        connection_ = open_connection(location, OpenMode::MustExist);
-        configure(connection_);
-      } catch (const InputError&) {}
-      if (connection_.read_only())
-        throw InputError(
-            SourceLocation{path_.string()},
-            "database is at schema version " + std::to_string(version) +
-                " and read-only here; this "
-                "hydrocoef reads version " +
-                std::to_string(latest_schema_version()) +
-                ": upgrade it once with a writing command (hydrocoef import, fit) where it can be written");
-      read_only_ = false;
+      // Reading never writes, so never upgrades: an SQLite file is read
+      // through an upgraded private copy (the file stays byte for byte as it
+      // was); a PostgreSQL database is refused with how to upgrade it.
+      check_schema(version);
+      if (connection_.backend() != store::Backend::SQLite)
+        throw InputError(SourceLocation{path_.string()},
+                         "database is at schema version " + std::to_string(version) + ", this hydrocoef reads " +
+                             std::to_string(latest_schema_version()) +
+                             " and a reading command does not upgrade it: run 'hydrocoef --db " +
+                             printable_text(path_.string(), 200) + " migrate' (or any writing command) once");
+      connection_ = store::Connection::sqlite_private_copy(connection_);
+      configure(connection_);
+      migrate();
+      // Writes through the copy would be lost: it refuses them.
+      connection_.execute("PRAGMA query_only = ON");
+    } else {
+      migrate();
     }
-    migrate();
   } else {
     check_schema(version);
   }
@@ -501,12 +522,34 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
   return outcomes;
 }
 
+namespace {
+
+/// A run's key as read: its disturbance_key column must be the canonical text
+/// of its run_disturbance rows (the column, with the velocity, keeps each key
+/// once in the table; the rows are what every reader uses). A run whose
+/// column and rows disagree could be another run's key, and merge into it or
+/// be listed as it; it is refused naming its table and row.
+void check_run_keys(const std::string& db, const std::vector<StoredRun>& runs, const std::vector<std::string>& keys) {
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const StoredRun& run = runs[i];
+    const std::string signature = disturbance_signature(run.key.disturbances);
+    if (keys[i] != signature)
+      throw InputError(SourceLocation{db},
+                       "table 'run', row " + std::to_string(run.id) + ": column 'disturbance_key' is '" +
+                           printable_text(keys[i], 80) + "' but its rows in table 'run_disturbance' give '" +
+                           printable_text(signature, 80) +
+                           "'; expected the key of its disturbances (a database changed by another program)");
+  }
+}
+
+}  // namespace
+
 std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
-      "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z, body.id "
-      "FROM run JOIN body ON body.id = run.body_id WHERE TRUE";
+      "SELECT run.id, body.name, u, v, w, p, q, r, density, kinematic_viscosity, ref_x, ref_y, ref_z, body.id, "
+      "disturbance_key FROM run JOIN body ON body.id = run.body_id WHERE TRUE";
   if (body) sql += " AND run.body_id = ?1";
   if (run) sql += " AND run.id = ?2";
   sql += " ORDER BY body.name, u, v, w, p, q, r, disturbance_key";
@@ -515,6 +558,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   if (run) select.bind(2, *run);
 
   std::vector<StoredRun> out;
+  std::vector<std::string> stored_keys;  // each run's disturbance_key column, by position in out
   std::unordered_map<std::int64_t, std::size_t> index;
   const std::string db = path_.string();
   while (select.step()) {
@@ -526,6 +570,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     stored.fluid.density_kg_m3 = row.optional_positive(8);
     stored.fluid.kinematic_viscosity_m2_s = row.optional_positive(9);
     for (int i = 0; i < 3; ++i) stored.reference_point_b[static_cast<std::size_t>(i)] = row.real(10 + i);
+    stored_keys.push_back(row.text(14, std::size_t{1} << 20));
     index[stored.id] = out.size();
     out.push_back(std::move(stored));
   }
@@ -536,8 +581,12 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
     const auto found = index.find(disturbances.get_int(0));
     if (found == index.end()) continue;
     const store::CheckedRow row(disturbances, db, "run_disturbance", disturbances.get_int(0));
-    out[found->second].key.disturbances[row.name(1, NameKind::Parameter)] = row.real(2);
+    std::string name = row.name(1, NameKind::Parameter);
+    if (std::find(kVelocityNames.begin(), kVelocityNames.end(), name) != kVelocityNames.end())
+      row.fail(1, "a disturbance parameter, not a velocity component (u v w p q r are columns of table 'run')");
+    out[found->second].key.disturbances[std::move(name)] = row.real(2);
   }
+  check_run_keys(db, out, stored_keys);
   auto forces = connection_.prepare(
       "SELECT f.run_id, f.component, f.total, f.pressure, f.viscous, f.sign_convention, f.source_id, s.path, "
       "coalesce(f.source_line, 0), coalesce(f.import_id, 0), f.uncertainty FROM run_force f JOIN source_file s ON "

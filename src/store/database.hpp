@@ -251,7 +251,10 @@ class Database {
  public:
   /// CreateIfMissing and MustExist open for writing; ReadOnly never writes
   /// (a database on a read-only share or in a read-only folder is read as
-  /// immutable when SQLite cannot make its -shm file there).
+  /// immutable when SQLite cannot make its -shm file there, and refused when
+  /// a -wal file beside it would then go unread). A ReadOnly database of an
+  /// older schema is not upgraded: an SQLite file is read through a private
+  /// upgraded copy (deleted on close), a PostgreSQL database is refused.
   enum class OpenMode { CreateIfMissing, MustExist, ReadOnly };
 
   /// Opens the database and brings its schema up to date (schema/ migrations,
@@ -273,6 +276,10 @@ class Database {
 
   /// The migration number the database is at.
   int schema_version();
+  /// The migration number the database was at when opened (before it was
+  /// brought up to date; a read-only database is upgraded only in a private
+  /// copy, see OpenMode).
+  int opened_at_version() const { return opened_at_version_; }
   /// The number of migrations this build knows.
   static int latest_schema_version();
 
@@ -409,6 +416,7 @@ class Database {
   std::filesystem::path path_;
   store::Connection connection_;
   bool read_only_ = false;
+  int opened_at_version_ = 0;
 };
 
 /// Now as UTC ISO 8601 ("2026-11-22T10:04:05Z").

@@ -106,9 +106,55 @@ std::string translate_types(const std::vector<std::string>& t, std::size_t from,
   return out;
 }
 
+/// The built-in functions the store's statements call, which PostgreSQL gets
+/// as pg_catalog.name (not the SQL keywords that look like calls: coalesce,
+/// nullif, greatest, least, exists, cast).
+bool builtin_function(std::string_view word) {
+  // Space-separated, with a space at each end.
+  static constexpr std::string_view kNames =
+      " abs array_agg avg count current_schema current_setting currval hashtext length lower max min nextval now "
+      "pg_advisory_xact_lock pg_get_constraintdef pg_get_serial_sequence quote_ident replace round set_config setval "
+      "sqrt string_agg substr sum to_regclass unnest upper ";
+  std::string key = " ";
+  for (const char c : word) key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  key += ' ';
+  return kNames.find(key) != std::string_view::npos;
+}
+
 }  // namespace
 
-NumberedStatement postgresql_statement(std::string_view sql) {
+std::string qualify_builtin_functions(std::string_view sql) {
+  std::string out;
+  out.reserve(sql.size() + 32);
+  for (std::size_t i = 0; i < sql.size();) {
+    const char c = sql[i];
+    if (c == '\'' || c == '"') {
+      i = copy_quoted(sql, i, out);
+      continue;
+    }
+    if (!word_char(c)) {
+      out += c;
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < sql.size() && word_char(sql[end])) ++end;
+    const std::string_view word = sql.substr(i, end - i);
+    std::size_t after = end;
+    while (after < sql.size() && std::isspace(static_cast<unsigned char>(sql[after]))) ++after;
+    std::size_t before = i;
+    while (before > 0 && std::isspace(static_cast<unsigned char>(sql[before - 1]))) --before;
+    const bool qualified = before > 0 && sql[before - 1] == '.';
+    if (after < sql.size() && sql[after] == '(' && !qualified && builtin_function(word)) out += "pg_catalog.";
+    out += word;
+    i = end;
+  }
+  return out;
+}
+
+NumberedStatement postgresql_statement(std::string_view text) {
+  const std::string qualified = qualify_builtin_functions(text);
+  const std::string_view sql = qualified;
   NumberedStatement out;
   out.sql.reserve(sql.size() + 16);
   const auto note = [&](int k) {

@@ -13,7 +13,14 @@
 
 namespace hydrocoef::store {
 
-/// A statement with its parameters numbered for PostgreSQL: '?' and '?N'
+/// The SQL with every call of a built-in function the store uses (count,
+/// max, setval, current_schema, ...) outside quotes written pg_catalog.name:
+/// a function of the same name planted in another schema of the search_path
+/// is never called instead (CVE-2018-1058).
+std::string qualify_builtin_functions(std::string_view sql);
+
+/// A statement for PostgreSQL: its built-in function calls qualified
+/// (qualify_builtin_functions) and its parameters numbered: '?' and '?N'
 /// outside quotes become '$N' ('?' after '?N' is N + 1, as in SQLite).
 struct NumberedStatement {
   std::string sql;

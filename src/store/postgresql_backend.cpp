@@ -321,7 +321,7 @@ PgConnection::PgConnection(const std::string& url, std::string display, Access a
     if (read_only_) execute("SET default_transaction_read_only = on");
     // A search_path that names no existing schema leaves nowhere to read or
     // write (and no schema to key the writers' lock by).
-    PGresult* schema = PQexec(connection_, "SELECT current_schema()");
+    PGresult* schema = PQexec(connection_, "SELECT pg_catalog.current_schema()");
     const bool none =
         PQresultStatus(schema) == PGRES_TUPLES_OK && PQntuples(schema) == 1 && PQgetisnull(schema, 0, 0) == 1;
     PQclear(schema);
@@ -329,6 +329,27 @@ PgConnection::PgConnection(const std::string& url, std::string display, Access a
       throw InputError(SourceLocation{display_},
                        "the search_path names no schema that exists on the server; expected an existing schema "
                        "(CREATE SCHEMA, or options=-csearch_path%3DNAME in the URL)");
+    // The search_path pinned to the schema in use alone (pg_catalog, searched
+    // first when not named, stays first): a function or operator planted in
+    // another schema of the user's search_path is never chosen for one of
+    // the store's calls (CVE-2018-1058; the calls are qualified as well,
+    // dialect.hpp), and the schema check covers every schema searched.
+    execute("SELECT pg_catalog.set_config('search_path', pg_catalog.quote_ident(pg_catalog.current_schema()), false)");
+    // session_replication_role other than origin (e.g. options=-c
+    // session_replication_role=replica in the URL) switches off the triggers
+    // that mark fits and surfaces stale when their forces change.
+    PGresult* role = PQexec(connection_, "SELECT pg_catalog.current_setting('session_replication_role')");
+    const std::string value =
+        PQresultStatus(role) == PGRES_TUPLES_OK && PQntuples(role) == 1 && !PQgetisnull(role, 0, 0)
+            ? std::string(PQgetvalue(role, 0, 0))
+            : std::string("(unreadable)");
+    PQclear(role);
+    if (value != "origin")
+      throw InputError(SourceLocation{display_},
+                       "the session's session_replication_role is '" + printable_text(value, 40) +
+                           "', which switches off the triggers that mark fits and surfaces stale; expected 'origin' "
+                           "(remove session_replication_role from the URL's options, PGOPTIONS or the role's "
+                           "settings)");
   } catch (...) {
     PQfinish(connection_);
     connection_ = nullptr;
@@ -362,8 +383,8 @@ void PgConnection::begin_write() {
   }
   execute("BEGIN");
   try {
-    execute("SELECT pg_advisory_xact_lock(" + std::to_string(kWriteLock) +
-            ", hashtext(current_schema()) & 2147483647)");
+    execute("SELECT pg_catalog.pg_advisory_xact_lock(" + std::to_string(kWriteLock) +
+            ", pg_catalog.hashtext(pg_catalog.current_schema()) & 2147483647)");
   } catch (...) {
     rollback();
     throw;

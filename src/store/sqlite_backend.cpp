@@ -119,6 +119,11 @@ class SqliteConnection final : public ConnectionBackend {
   }
   void use_wal() override;
 
+  /// A private temporary database (SQLite's "" file: pages in memory,
+  /// spilled to a temporary file when large, deleted on close) that holds a
+  /// copy of `source`'s pages; messages name `display`.
+  static std::unique_ptr<SqliteConnection> private_copy(const SqliteConnection& source);
+
   sqlite3* handle() const { return db_; }
   /// Throws the right exception for SQLite result code `rc` (with context).
   [[noreturn]] void fail(int rc, std::string_view what) const;
@@ -141,6 +146,18 @@ bool SqliteStatement::step() {
   if (rc == SQLITE_ROW) return true;
   if (rc == SQLITE_DONE) return false;
   connection_->fail(rc, "running '" + std::string(sqlite3_sql(statement_)).substr(0, 60) + "'");
+}
+
+std::unique_ptr<SqliteConnection> SqliteConnection::private_copy(const SqliteConnection& source) {
+  auto copy = std::make_unique<SqliteConnection>("", Access::ReadWriteCreate);
+  copy->path_ = source.path_;
+  sqlite3_backup* backup = sqlite3_backup_init(copy->db_, "main", source.db_, "main");
+  if (!backup) copy->fail(sqlite3_extended_errcode(copy->db_), "copying the database to read it");
+  const int stepped = sqlite3_backup_step(backup, -1);
+  const int finished = sqlite3_backup_finish(backup);
+  if (stepped != SQLITE_DONE) source.fail(stepped, "copying the database to read it");
+  if (finished != SQLITE_OK) copy->fail(finished, "copying the database to read it");
+  return copy;
 }
 
 SqliteConnection::SqliteConnection(const std::string& path, Access access) : path_(path) {
@@ -233,6 +250,12 @@ void SqliteConnection::use_wal() {
 
 std::unique_ptr<ConnectionBackend> open_sqlite(const std::string& path, Access access) {
   return std::make_unique<SqliteConnection>(path, access);
+}
+
+std::unique_ptr<ConnectionBackend> sqlite_private_copy(ConnectionBackend& source) {
+  const auto* sqlite = dynamic_cast<const SqliteConnection*>(&source);
+  if (!sqlite) throw std::logic_error("a private copy of a database that is not an SQLite file");
+  return SqliteConnection::private_copy(*sqlite);
 }
 
 }  // namespace hydrocoef::store::detail

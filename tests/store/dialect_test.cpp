@@ -45,5 +45,23 @@ TEST(Dialect, ATriggerBecomesAFunctionAndARowTrigger) {
             "run_force FOR EACH ROW EXECUTE FUNCTION stales();\nCREATE INDEX i ON t(x);");
 }
 
+// CVE-2018-1058: a call PostgreSQL resolves through the search_path could
+// reach a function planted in another schema; the store's calls are
+// pg_catalog's. Keywords that look like calls, names in quotes, qualified
+// names and words not followed by '(' are left alone.
+TEST(Dialect, BuiltInFunctionCallsAreQualifiedWithPgCatalog) {
+  EXPECT_EQ(qualify_builtin_functions("SELECT count(*), MAX (id), coalesce(a, 0), exists(SELECT 1) FROM t"),
+            "SELECT pg_catalog.count(*), pg_catalog.MAX (id), coalesce(a, 0), exists(SELECT 1) FROM t");
+  EXPECT_EQ(qualify_builtin_functions("SELECT setval(pg_get_serial_sequence('run', 'id'), max(id)) FROM run"),
+            "SELECT pg_catalog.setval(pg_catalog.pg_get_serial_sequence('run', 'id'), pg_catalog.max(id)) FROM run");
+  EXPECT_EQ(qualify_builtin_functions("SELECT 'count(x)', \"max\"(y), pg_catalog.min(z), s.sum (w), count FROM t"),
+            "SELECT 'count(x)', \"max\"(y), pg_catalog.min(z), s.sum (w), count FROM t");
+  EXPECT_EQ(qualify_builtin_functions("WHERE schemaname = current_schema() AND length(name) > 0"),
+            "WHERE schemaname = pg_catalog.current_schema() AND pg_catalog.length(name) > 0");
+  // Every statement the PostgreSQL backend prepares gets the same.
+  EXPECT_EQ(postgresql_statement("SELECT count(*) FROM run WHERE id = ?").sql,
+            "SELECT pg_catalog.count(*) FROM run WHERE id = $1");
+}
+
 }  // namespace
 }  // namespace hydrocoef::store

@@ -19,6 +19,8 @@
 
 #include "src/core/error.hpp"
 #include "src/store/database.hpp"
+#include "src/store/dialect.hpp"
+#include "src/store/migrations.hpp"
 #include "src/store/pmm_record.hpp"
 #include "tests/support/expect_input_error.hpp"
 #include "tests/support/import_batch.hpp"
@@ -620,6 +622,127 @@ TEST(PostgreSqlConnection, AServerThatDoesNotAnswerIsGivenUpAfterTheTimeout) {
   unsetenv("PGCONNECT_TIMEOUT");
   unsetenv("HYDROCOEF_DB_TIMEOUT");
   close(listener);
+}
+
+/// Two schemas of the test server's own, dropped at the end: the data's and
+/// an attacker's, whose functions share names with PostgreSQL's built-ins.
+class PlantedSchemas {
+ public:
+  explicit PlantedSchemas(std::string server) : server_(std::move(server)) {
+    const std::string id = std::to_string(::getpid());
+    data_ = "hcdata_" + id;
+    evil_ = "hcevil_" + id;
+    admin().execute("DROP SCHEMA IF EXISTS " + data_ + " CASCADE; CREATE SCHEMA " + data_ + "; DROP SCHEMA IF EXISTS " +
+                    evil_ + " CASCADE; CREATE SCHEMA " + evil_);
+  }
+  ~PlantedSchemas() {
+    try {
+      admin().execute("DROP SCHEMA IF EXISTS " + data_ + " CASCADE; DROP SCHEMA IF EXISTS " + evil_ + " CASCADE");
+    } catch (...) {}
+  }
+  PlantedSchemas(const PlantedSchemas&) = delete;
+  PlantedSchemas& operator=(const PlantedSchemas&) = delete;
+  store::Connection admin() const { return store::Connection::postgresql(server_, server_, store::Access::ReadWrite); }
+  const std::string& data() const { return data_; }
+  const std::string& evil() const { return evil_; }
+
+ private:
+  std::string server_, data_, evil_;
+};
+
+// CVE-2018-1058: a function planted in a schema of the user's search_path
+// that matches a call's argument types better than the built-in (setval(text,
+// bigint) for the text pg_get_serial_sequence gives) would run as the user
+// who copies. The copy's calls are pg_catalog's, and the session's
+// search_path is the data's schema alone.
+TEST(PostgreSqlConnection, AFunctionPlantedOnTheSearchPathIsNeverCalled) {
+  const auto server = test::postgresql_test_server();
+  if (!server) {
+    if (std::getenv("HYDROCOEF_TEST_POSTGRESQL_REQUIRED")) FAIL() << "HYDROCOEF_TEST_POSTGRESQL is not set";
+    GTEST_SKIP() << "no PostgreSQL test server";
+  }
+  PlantedSchemas schemas(*server);
+  const std::string evil = schemas.evil();
+  schemas.admin().execute("CREATE TABLE " + evil + ".calls (name text); CREATE FUNCTION " + evil +
+                          ".setval(text, bigint) RETURNS bigint LANGUAGE sql AS $$ INSERT INTO " + evil +
+                          ".calls VALUES ('setval'); SELECT $2 $$; CREATE FUNCTION " + evil +
+                          ".current_schema() RETURNS name LANGUAGE sql AS $$ INSERT INTO " + evil +
+                          ".calls VALUES ('current_schema'); SELECT 'x'::name $$; CREATE FUNCTION " + evil +
+                          ".hashtext(name) RETURNS integer LANGUAGE sql AS $$ INSERT INTO " + evil +
+                          ".calls VALUES ('hashtext'); SELECT 1 $$");
+  TestDatabase source(store::Backend::SQLite);
+  {
+    Database db(source.location());
+    db.import(sweep_batches(), ConflictPolicy::Error);
+  }
+  const std::string url = test::url_with_schema(*server, schemas.data() + "%2C" + evil);
+  {
+    Database from(source.location(), Database::OpenMode::ReadOnly);
+    Database target(url);
+    EXPECT_FALSE(target.copy_from(from).empty());
+    // A write after the copy: the next id comes after the copied ones.
+    target.import({test::one_run_batch(500, make_run({3, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
+    EXPECT_EQ(target.runs().size(), sweep_batches().size() + 1);
+  }
+  auto admin = schemas.admin();
+  auto calls = admin.prepare("SELECT name FROM " + evil + ".calls");
+  std::string called;
+  while (calls.step()) called += calls.get_text(0) + " ";
+  EXPECT_EQ(called, "");
+}
+
+// session_replication_role = replica switches off every ordinary trigger,
+// among them those that mark fits and surfaces stale: refused on connecting.
+TEST(PostgreSqlConnection, ASessionThatSwitchesOffTriggersIsRefused) {
+  const auto server = test::postgresql_test_server();
+  if (!server) {
+    if (std::getenv("HYDROCOEF_TEST_POSTGRESQL_REQUIRED")) FAIL() << "HYDROCOEF_TEST_POSTGRESQL is not set";
+    GTEST_SKIP() << "no PostgreSQL test server";
+  }
+  PlantedSchemas schemas(*server);
+  const std::string url = test::url_with_schema(*server, schemas.data() + "%20-csession_replication_role%3Dreplica");
+  for (const auto mode : {Database::OpenMode::CreateIfMissing, Database::OpenMode::ReadOnly})
+    test::expect_input_error([&] { Database db(url, mode); },
+                             {"session_replication_role is 'replica'", "stale", "expected 'origin'"});
+  // Nothing was made in the schema.
+  auto admin = schemas.admin();
+  auto tables = admin.prepare("SELECT count(*) FROM pg_catalog.pg_tables WHERE schemaname = ?");
+  tables.bind(1, schemas.data());
+  ASSERT_TRUE(tables.step());
+  EXPECT_EQ(tables.get_int(0), 0);
+}
+
+// A reading command never upgrades a database: one of an older schema on a
+// server is refused saying how to upgrade it, and `migrate` (a writing
+// opening) does.
+TEST(PostgreSqlConnection, AnOlderDatabaseIsRefusedByReadersAndUpgradedByAWriter) {
+  const auto server = test::postgresql_test_server();
+  if (!server) {
+    if (std::getenv("HYDROCOEF_TEST_POSTGRESQL_REQUIRED")) FAIL() << "HYDROCOEF_TEST_POSTGRESQL is not set";
+    GTEST_SKIP() << "no PostgreSQL test server";
+  }
+  PlantedSchemas schemas(*server);
+  const std::string url = test::url_with_schema(*server, schemas.data());
+  const int older = Database::latest_schema_version() - 1;
+  {
+    auto connection = store::Connection::postgresql(url, url, store::Access::ReadWrite);
+    connection.execute("CREATE TABLE hydrocoef_schema (version BIGINT NOT NULL)");
+    for (int i = 0; i < older; ++i)
+      connection.execute(
+          store::postgresql_migration(store::migrations()[static_cast<std::size_t>(i)].postgresql_sql()));
+    connection.execute("INSERT INTO hydrocoef_schema VALUES (" + std::to_string(older) + ")");
+  }
+  test::expect_input_error([&] { Database db(url, Database::OpenMode::ReadOnly); },
+                           {"schema version " + std::to_string(older), "does not upgrade it", "migrate"});
+  {
+    auto admin = schemas.admin();
+    auto version = admin.prepare("SELECT version FROM " + schemas.data() + ".hydrocoef_schema");
+    ASSERT_TRUE(version.step());
+    EXPECT_EQ(version.get_int(0), older);
+  }
+  Database db(url, Database::OpenMode::MustExist);
+  EXPECT_EQ(db.opened_at_version(), older);
+  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, StoreBackends, testing::Values(store::Backend::SQLite, store::Backend::PostgreSQL),
