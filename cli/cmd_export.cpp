@@ -74,24 +74,27 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "exported surface " << metadata.surface_name << " (" << interpolation_name(table.method()) << ", "
-            << table.node_count() << " nodes) as " << export_format_name(format) << "\n";
+  std::cout << "exported surface " << escape::one_line(metadata.surface_name) << " ("
+            << interpolation_name(table.method()) << ", " << table.node_count() << " nodes) as "
+            << export_format_name(format) << "\n";
   for (std::size_t a = 0; a < table.axis_count(); ++a) {
     const GridAxis& axis = table.axes()[a];
-    std::cout << "  axis " << axis.name << " [" << metadata.axis_units[a] << "] in ["
-              << shortest_number(axis.breakpoints.front()) << ", " << shortest_number(axis.breakpoints.back())
-              << "], outside: " << extrapolation_name(axis.extrapolation) << '\n';
+    std::cout << "  axis " << escape::one_line(axis.name) << " [" << escape::one_line(metadata.axis_units[a])
+              << "] in [" << shortest_number(axis.breakpoints.front()) << ", "
+              << shortest_number(axis.breakpoints.back()) << "], outside: " << extrapolation_name(axis.extrapolation)
+              << '\n';
   }
   std::cout << "  outputs";
   for (std::size_t k = 0; k < table.output_count(); ++k)
-    std::cout << ' ' << table.outputs()[k] << " [" << metadata.output_units[k] << "]";
-  std::cout << ", forces on the body\n  content sha256 " << metadata.content_sha256 << '\n';
-  for (const auto& file : files) std::cout << "  wrote " << file.string() << '\n';
-  for (const auto& note : refusals) std::cout << "  note: " << note << '\n';
+    std::cout << ' ' << escape::one_line(table.outputs()[k]) << " [" << escape::one_line(metadata.output_units[k])
+              << "]";
+  std::cout << ", forces on the body\n  content sha256 " << escape::one_line(metadata.content_sha256) << '\n';
+  for (const auto& file : files) std::cout << "  wrote " << escape::one_line(file.string()) << '\n';
+  for (const auto& note : refusals) std::cout << "  note: " << escape::one_line(note) << '\n';
   if (metadata.stale)
     std::cout << "  note: the body's forces changed since this surface was built; rebuild it with "
                  "hydrocoef surface rebuild "
-              << metadata.surface_name << '\n';
+              << escape::one_line(metadata.surface_name) << '\n';
 }
 
 }  // namespace

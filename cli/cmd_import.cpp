@@ -72,7 +72,8 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
   const bool progress = isatty(STDERR_FILENO) && !args.quiet;
   if (progress)
     request.progress = [](std::size_t done, std::size_t total, const std::filesystem::path& path) {
-      std::cerr << "\r\033[K[" << done << "/" << total << "] " << path.filename().string() << std::flush;
+      std::cerr << "\r\033[K[" << done << "/" << total << "] " << escape::one_line(path.filename().string())
+                << std::flush;
     };
 
   // Everything is read before the database is opened: a bad input leaves it

@@ -41,10 +41,10 @@ void run_integrate(const IntegrateArgs& args) {
     return;
   }
   std::cout << surface_run_text(*input.surface);
-  std::cout << "  run key: " << describe(key) << '\n';
+  std::cout << "  run key: " << escape::one_line(describe(key)) << '\n';
   for (const auto& [name, setting] : input.settings.values)
     if (setting.origin.source != SettingSource::CommandLine)
-      std::cout << "  setting " << name << " from " << setting.origin.where << '\n';
+      std::cout << "  setting " << escape::one_line(name) << " from " << escape::one_line(setting.origin.where) << '\n';
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "cli/common.hpp"
 #include "cli/pmm_output.hpp"
 #include "cli/surface_options.hpp"
+#include "src/core/escape.hpp"
 #include "src/pipeline/pmm_runs.hpp"
 #include "src/pmm/imposed_motion.hpp"
 
@@ -58,7 +59,8 @@ void run_pmm(const PmmArgs& args, const GlobalOptions& global) {
   const bool progress = isatty(STDERR_FILENO) != 0;
   if (progress)
     request.import.progress = [](std::size_t done, std::size_t total, const std::filesystem::path& path) {
-      std::cerr << "\r\033[K[" << done << "/" << total << "] " << path.filename().string() << std::flush;
+      std::cerr << "\r\033[K[" << done << "/" << total << "] " << escape::one_line(path.filename().string())
+                << std::flush;
     };
   // Everything is read and analysed before the database is opened: a bad
   // input leaves it as it was.

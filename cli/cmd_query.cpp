@@ -33,9 +33,9 @@ struct QueryArgs {
 
 void warn_if_stale(const SurfaceRecord& record) {
   if (record.stale)
-    std::cerr << "hydrocoef: warning: surface '" << record.name
-              << "' is stale: forces of its body changed since it was built (hydrocoef surface rebuild " << record.name
-              << ")\n";
+    std::cerr << "hydrocoef: warning: surface '" << escape::one_line(record.name)
+              << "' is stale: forces of its body changed since it was built (hydrocoef surface rebuild "
+              << escape::one_line(record.name) << ")\n";
 }
 
 void query_point(const QueryArgs& args, const StoredSurface& stored) {
@@ -78,15 +78,15 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
     std::cout << escape::json_text(json, 2) << '\n';
     return;
   }
-  std::cout << args.name << " at";
+  std::cout << escape::one_line(args.name) << " at";
   for (std::size_t a = 0; a < n_axes; ++a)
-    std::cout << " " << surface.axis_names()[a] << "=" << significant(point[a], 8);
+    std::cout << " " << escape::one_line(surface.axis_names()[a]) << "=" << significant(point[a], 8);
   std::cout << " (forces on the body)\n";
   for (std::size_t k = 0; k < n_out; ++k) {
-    std::cout << "  " << std::left << std::setw(4) << surface.output_names()[k] << std::setw(16)
-              << significant(out[k], 9) << surface.output_units()[k];
+    std::cout << "  " << std::left << std::setw(4) << escape::one_line(surface.output_names()[k]) << std::setw(16)
+              << significant(out[k], 9) << escape::one_line(surface.output_units()[k]);
     if (args.uncertainty)
-      std::cout << "  +/- " << significant(sd[k], 3) << " " << surface.output_units()[k] << " (1 sd"
+      std::cout << "  +/- " << significant(sd[k], 3) << " " << escape::one_line(surface.output_units()[k]) << " (1 sd"
                 << (surface.gp() ? "; a new run there: +/- " + significant(surface.gp()->output(k).run_sd(sd[k]), 3)
                                  : std::string())
                 << ")";
@@ -94,9 +94,10 @@ void query_point(const QueryArgs& args, const StoredSurface& stored) {
     if (args.gradient)
       for (std::size_t a = 0; a < n_axes; ++a) {
         const std::string& unit = surface.axis_units()[a];
-        std::cout << "      d" << surface.output_names()[k] << "/d" << std::setw(10) << surface.axis_names()[a]
-                  << std::setw(16) << significant(gradient[k * n_axes + a], 9) << surface.output_units()[k]
-                  << (unit.empty() ? "" : " per " + unit) << '\n';
+        std::cout << "      d" << escape::one_line(surface.output_names()[k]) << "/d" << std::setw(10)
+                  << escape::one_line(surface.axis_names()[a]) << std::setw(16)
+                  << significant(gradient[k * n_axes + a], 9) << escape::one_line(surface.output_units()[k])
+                  << (unit.empty() ? "" : " per " + escape::one_line(unit)) << '\n';
       }
   }
 }
@@ -105,8 +106,8 @@ void query_batch(const QueryArgs& args, const StoredSurface& stored) {
   const std::size_t points = query_csv_batch(
       stored.surface, CsvBatchRequest{args.name, args.input, args.output, args.gradient, args.uncertainty});
   if (args.output != "-" && !args.json)
-    std::cerr << "hydrocoef: " << points << " points of surface '" << args.name << "' written to " << args.output
-              << '\n';
+    std::cerr << "hydrocoef: " << points << " points of surface '" << escape::one_line(args.name) << "' written to "
+              << escape::one_line(args.output) << '\n';
   if (args.json && args.output != "-")
     std::cout << escape::json_text(nlohmann::json{{"surface", args.name}, {"points", points}, {"output", args.output}},
                                    2)

@@ -86,8 +86,9 @@ void run_delete(const DeleteArgs& args, const GlobalOptions& global) {
     return;
   }
   std::cout << "deleted " << outcome.runs << (outcome.runs == 1 ? " run" : " runs") << " (" << outcome.components
-            << " force components) from " << global.database << "; " << outcome.fits_made_stale << " fits and "
-            << outcome.surfaces_made_stale << " surfaces became stale (hydrocoef fits / surface list show them; "
+            << " force components) from " << escape::one_line(global.database) << "; " << outcome.fits_made_stale
+            << " fits and " << outcome.surfaces_made_stale
+            << " surfaces became stale (hydrocoef fits / surface list show them; "
             << "surface rebuild --stale builds the surfaces again)\n";
 }
 

@@ -45,36 +45,38 @@ void print_next_runs(const SuggestArgs& args, const NextRuns& next) {
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "next runs for surface " << args.name << ": where the standard deviation of " << next.output
-            << " is largest, each run counted before the next is chosen\n  bounds:";
+  std::cout << "next runs for surface " << escape::one_line(args.name) << ": where the standard deviation of "
+            << escape::one_line(next.output) << " is largest, each run counted before the next is chosen\n  bounds:";
   for (std::size_t a = 0; a < next.axes.size(); ++a)
-    std::cout << " " << next.axes[a] << "=" << significant(next.lower[a], 6) << ":" << significant(next.upper[a], 6);
+    std::cout << " " << escape::one_line(next.axes[a]) << "=" << significant(next.lower[a], 6) << ":"
+              << significant(next.upper[a], 6);
   std::cout << "\n  keys rounded to:";
   for (std::size_t a = 0; a < next.axes.size(); ++a)
-    std::cout << " " << next.axes[a] << "=" << shortest_number(next.resolution[a])
+    std::cout << " " << escape::one_line(next.axes[a]) << "=" << shortest_number(next.resolution[a])
               << (next.resolution_given[a] ? "" : " (default: 1/100 of the bounds, 1-2-5)");
   std::cout << '\n';
   if (!next.mirror.empty())
-    std::cout << "  mirror " << next.mirror << ": "
-              << (next.domain.empty() ? "changes none of the surface's axes"
-                                      : "keys with " + next.domain + ", each standing for its mirror image too")
+    std::cout << "  mirror " << escape::one_line(next.mirror) << ": "
+              << (next.domain.empty()
+                      ? "changes none of the surface's axes"
+                      : "keys with " + escape::one_line(next.domain) + ", each standing for its mirror image too")
               << '\n';
   std::cout << "  " << next.candidates << " new keys searched";
   if (next.imported_skipped + next.running_skipped > 0)
     std::cout << " (left out: " << next.imported_skipped << " where the body has a run, " << next.running_skipped
               << " running)";
   std::cout << "\n  #   ";
-  for (const auto& axis : next.axes) std::cout << std::left << std::setw(14) << axis;
-  std::cout << "sd of " << next.output << " there before [" << next.unit << "]\n";
+  for (const auto& axis : next.axes) std::cout << std::left << std::setw(14) << escape::one_line(axis);
+  std::cout << "sd of " << escape::one_line(next.output) << " there before [" << escape::one_line(next.unit) << "]\n";
   for (std::size_t i = 0; i < next.runs.size(); ++i) {
     std::cout << "  " << std::left << std::setw(4) << i + 1;
     for (const double x : next.runs[i].point) std::cout << std::setw(14) << shortest_number(x);
     std::cout << significant(next.runs[i].standard_deviation, 4) << '\n';
   }
   std::cout << "  largest sd in the bounds: " << significant(next.runs.front().standard_deviation, 4) << " now, "
-            << significant(next.largest_sd_after, 4) << " " << next.unit << " with these runs\n";
+            << significant(next.largest_sd_after, 4) << " " << escape::one_line(next.unit) << " with these runs\n";
   if (args.manifest)
-    std::cout << "  manifest " << *args.manifest
+    std::cout << "  manifest " << escape::one_line(*args.manifest)
               << " (fill in each case's path; hydrocoef import --manifest reads it)\n";
 }
 

@@ -25,7 +25,8 @@ nlohmann::json warnings_json(const std::vector<FitWarning>& warnings) {
 }
 
 void print_warnings(const std::vector<FitWarning>& warnings) {
-  for (const auto& warning : warnings) std::cout << "  warning (" << warning.kind << "): " << warning.message << '\n';
+  for (const auto& warning : warnings)
+    std::cout << "  warning (" << escape::one_line(warning.kind) << "): " << escape::one_line(warning.message) << '\n';
 }
 
 }  // namespace
@@ -80,7 +81,8 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
     law << (k == 0 ? (c < 0 ? " -" : " ") : (c < 0 ? " - " : " + ")) << significant(std::abs(c), 6);
     if (spec.terms[k] != DampingTerm::Constant) law << " " << term_name(spec.terms[k], spec.variable);
   }
-  std::cout << "fit " << result.name << "\n  " << law.str() << "\n  sign convention: "
+  std::cout << "fit " << escape::one_line(result.name) << "\n  " << escape::one_line(law.str())
+            << "\n  sign convention: "
             << (samples.sign == SignConvention::OnBody ? "force on the body (damping is negative)"
                                                        : "as tabulated, positive opposes motion")
             << "\n\n";
@@ -91,18 +93,18 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
     std::cout << "  " << std::setw(8) << term_name(spec.terms[k], spec.variable) << std::setw(16)
               << significant(fit.coefficients[k], 7) << std::setw(14)
               << (std::isfinite(fit.std_errors[k]) ? significant(fit.std_errors[k], 3) : "n/a")
-              << setup.coefficient_units[k] << '\n';
+              << escape::one_line(setup.coefficient_units[k]) << '\n';
   if (images > 0 || samples.images_skipped > 0)
-    std::cout << "\n  mirror " << setup.mirror.text() << ": " << samples.runs.size() << " runs and " << images
-              << " mirror images (never stored as runs)"
+    std::cout << "\n  mirror " << escape::one_line(setup.mirror.text()) << ": " << samples.runs.size() << " runs and "
+              << images << " mirror images (never stored as runs)"
               << (samples.images_skipped
                       ? "; " + std::to_string(samples.images_skipped) + " images left out at the keys of measured runs"
                       : std::string())
               << '\n';
   std::cout << "\n  n = " << fit.n << " samples, RMSE = " << significant(fit.rmse, 4) << " " << force_unit(setup.dof)
             << ", R^2 = " << significant(fit.r2, 8)
-            << (std::isnan(fit.r2) ? " (the force does not vary over these runs)" : "") << ", loss " << fit.loss
-            << '\n';
+            << (std::isnan(fit.r2) ? " (the force does not vary over these runs)" : "") << ", loss "
+            << escape::one_line(fit.loss) << '\n';
   if (fit.weighted) {
     std::cout << "  weighted by each run's uncertainty (1/s^2); reduced chi^2 = "
               << (std::isfinite(fit.chi2_reduced) ? significant(fit.chi2_reduced, 4) : std::string("n/a"));
@@ -117,10 +119,11 @@ void print_fit(const FitResult& result, const std::string& dof, const std::strin
   if (!result.varying_conditions.empty()) {
     std::string names;
     for (const auto& v : result.varying_conditions) names += (names.empty() ? "" : ", ") + v;
-    std::cout << "  note: the runs differ in " << names << "; add --where NAME=VALUE to fit one condition\n";
+    std::cout << "  note: the runs differ in " << escape::one_line(names)
+              << "; add --where NAME=VALUE to fit one condition\n";
   }
   print_warnings(setup.warnings);
-  if (result.fit_id) std::cout << "  stored as fit " << *result.fit_id << " in " << database << '\n';
+  if (result.fit_id) std::cout << "  stored as fit " << *result.fit_id << " in " << escape::one_line(database) << '\n';
 }
 
 void print_level_fit(const LevelFitResult& result, const LevelFitRequest& request, const std::string& database,
@@ -173,8 +176,8 @@ void print_level_fit(const LevelFitResult& result, const LevelFitRequest& reques
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "fit " << result.base_name << " at each level of " << by << " (" << fits.size() << " levels)\n\n  "
-            << std::left << std::setw(12) << by;
+  std::cout << "fit " << escape::one_line(result.base_name) << " at each level of " << escape::one_line(by) << " ("
+            << fits.size() << " levels)\n\n  " << std::left << std::setw(12) << escape::one_line(by);
   for (std::size_t k = 0; k < spec.terms.size(); ++k)
     std::cout << std::setw(16) << term_name(spec.terms[k], spec.variable);
   std::cout << std::setw(6) << "n"
@@ -184,27 +187,29 @@ void print_level_fit(const LevelFitResult& result, const LevelFitRequest& reques
     for (double c : level.fit.coefficients) std::cout << std::setw(16) << significant(c, 7);
     std::cout << std::setw(6) << level.fit.n << significant(level.fit.r2, 6) << '\n';
   }
-  std::cout << "\n  coefficient curves over " << by << " (" << request.curve << "):\n";
+  std::cout << "\n  coefficient curves over " << escape::one_line(by) << " (" << escape::one_line(request.curve)
+            << "):\n";
   for (std::size_t k = 0; k < curves.size(); ++k) {
-    std::cout << "    " << std::setw(8) << curves[k].term;
+    std::cout << "    " << std::setw(8) << escape::one_line(curves[k].term);
     if (curves[k].kind == CurveKind::Pchip) {
       std::cout << "PCHIP through the " << curves[k].levels.size() << " per-level values";
     } else {
       for (std::size_t j = 0; j < curves[k].polynomial.size(); ++j) {
         const double c = curves[k].polynomial[j];
         std::cout << (j == 0 ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ")) << significant(std::abs(c), 6);
-        if (j >= 1) std::cout << " " << by;
+        if (j >= 1) std::cout << " " << escape::one_line(by);
         if (j >= 2) std::cout << "^" << j;
       }
       std::cout << "   (RMSE " << significant(curves[k].rmse, 3) << ")";
     }
-    std::cout << "  [" << setup.coefficient_units[k] << "]\n";
+    std::cout << "  [" << escape::one_line(setup.coefficient_units[k]) << "]\n";
   }
   for (const auto& level : result.skipped)
-    std::cout << "  note: level " << by << "=" << significant(level.level, 6) << " skipped: " << level.reason
-              << " (--strict refuses the fit instead)\n";
+    std::cout << "  note: level " << escape::one_line(by) << "=" << significant(level.level, 6)
+              << " skipped: " << escape::one_line(level.reason) << " (--strict refuses the fit instead)\n";
   print_warnings(setup.warnings);
-  if (request.fit.store) std::cout << "  stored " << fits.size() << " per-level fits in " << database << '\n';
+  if (request.fit.store)
+    std::cout << "  stored " << fits.size() << " per-level fits in " << escape::one_line(database) << '\n';
 }
 
 void print_refit(const RefitResult& result, const std::string& database, bool json) {
@@ -226,21 +231,22 @@ void print_refit(const RefitResult& result, const std::string& database, bool js
     return;
   }
   if (made.empty()) {
-    std::cout << "no stale fits in " << database << "; nothing to fit again\n";
+    std::cout << "no stale fits in " << escape::one_line(database) << "; nothing to fit again\n";
     return;
   }
   for (std::size_t i = 0; i < made.size(); ++i) {
-    std::cout << "fit " << made[i].name << " made again from " << made[i].run_ids.size() << " runs (was "
-              << chosen[i].run_ids.size() << ")\n   ";
+    std::cout << "fit " << escape::one_line(made[i].name) << " made again from " << made[i].run_ids.size()
+              << " runs (was " << chosen[i].run_ids.size() << ")\n   ";
     for (std::size_t k = 0; k < made[i].coefficients.size(); ++k) {
       const auto& c = made[i].coefficients[k];
-      std::cout << " " << c.term << " = " << significant(c.value, 7);
+      std::cout << " " << escape::one_line(c.term) << " = " << significant(c.value, 7);
       if (k < chosen[i].coefficients.size())
         std::cout << " (was " << significant(chosen[i].coefficients[k].value, 7) << ")";
     }
     std::cout << '\n';
   }
-  std::cout << made.size() << (made.size() == 1 ? " fit" : " fits") << " stored in " << database << '\n';
+  std::cout << made.size() << (made.size() == 1 ? " fit" : " fits") << " stored in " << escape::one_line(database)
+            << '\n';
 }
 
 void print_fits(const std::vector<FitRecord>& fits, const std::string& database, bool json) {
@@ -278,11 +284,11 @@ void print_fits(const std::vector<FitRecord>& fits, const std::string& database,
     return;
   }
   if (fits.empty()) {
-    std::cout << "no fits in " << database << '\n';
+    std::cout << "no fits in " << escape::one_line(database) << '\n';
     return;
   }
   for (const auto& fit : fits) {
-    std::cout << fit.id << "  " << fit.name << "  [" << to_string(fit.sign) << ", n=" << fit.n
+    std::cout << fit.id << "  " << escape::one_line(fit.name) << "  [" << to_string(fit.sign) << ", n=" << fit.n
               << ", RMSE=" << significant(fit.rmse, 4) << ", R^2=" << significant(fit.r2, 8)
               << (fit.weighting == "none"
                       ? std::string()
@@ -292,9 +298,10 @@ void print_fits(const std::vector<FitRecord>& fits, const std::string& database,
               << (fit.stale ? "  STALE: a force of its runs changed or was deleted since; fit --refit makes it again"
                             : "")
               << "\n    from " << fit.run_ids.size() << (fit.run_ids.size() == 1 ? " run" : " runs")
-              << (fit.run_filter.empty() ? "" : " where " + fit.run_filter)
-              << (fit.mirror.empty() ? "" : ", with mirror images (" + fit.mirror + ")") << "\n    ";
-    for (const auto& c : fit.coefficients) std::cout << c.term << "=" << significant(c.value, 7) << "  ";
+              << (fit.run_filter.empty() ? "" : " where " + escape::one_line(fit.run_filter))
+              << (fit.mirror.empty() ? "" : ", with mirror images (" + escape::one_line(fit.mirror) + ")") << "\n    ";
+    for (const auto& c : fit.coefficients)
+      std::cout << escape::one_line(c.term) << "=" << significant(c.value, 7) << "  ";
     std::cout << '\n';
   }
 }

@@ -52,8 +52,8 @@ void print_gazebo_export(const GazeboCoefficients& coefficients, const std::vect
     return;
   }
 
-  std::cout << "exported body " << coefficients.body << " as "
-            << (gz ? "gz-sim Hydrodynamics parameters (link '" + options.link_name + "', link axes " +
+  std::cout << "exported body " << escape::one_line(coefficients.body) << " as "
+            << (gz ? "gz-sim Hydrodynamics parameters (link '" + escape::one_line(options.link_name) + "', link axes " +
                          (options.link_axes == GazeboLinkAxes::Flu ? "FLU" : "FRD") + ")"
                    : std::string("a uuv_simulator fossen model (FRD)"))
             << ", on-body SNAME signs (damping negative)\n";
@@ -64,7 +64,8 @@ void print_gazebo_export(const GazeboCoefficients& coefficients, const std::vect
       bool first = true;
       for (const GazeboElement& e : elements) {
         if (kForceLetters.find(e.name.front()) != dof) continue;
-        std::cout << (first ? " " : ", ") << e.name << " = " << significant(e.values.front()) << " " << e.unit;
+        std::cout << (first ? " " : ", ") << escape::one_line(e.name) << " = " << significant(e.values.front()) << " "
+                  << escape::one_line(e.unit);
         first = false;
       }
     } else {
@@ -77,14 +78,15 @@ void print_gazebo_export(const GazeboCoefficients& coefficients, const std::vect
     for (const GazeboFitSource& s : coefficients.sources) {
       if (s.dof != dof) continue;
       std::cout << "     " << gazebo_dof_name(s.dof) << " in " << gazebo_velocity_name(s.variable) << " from fit '"
-                << s.fit_name << "' (" << to_string(s.stored_sign)
+                << escape::one_line(s.fit_name) << "' (" << to_string(s.stored_sign)
                 << (s.stored_sign == SignConvention::OpposingMotion ? ", negated to on-body" : "") << ", "
                 << s.run_ids.size() << " runs)\n";
     }
   }
-  std::cout << "  added mass: " << coefficients.added_mass_source << "; symmetric positive semi-definite\n";
-  for (const std::string& note : coefficients.notes) std::cout << "  note: " << note << '\n';
-  std::cout << "  wrote " << output << '\n';
+  std::cout << "  added mass: " << escape::one_line(coefficients.added_mass_source)
+            << "; symmetric positive semi-definite\n";
+  for (const std::string& note : coefficients.notes) std::cout << "  note: " << escape::one_line(note) << '\n';
+  std::cout << "  wrote " << escape::one_line(output) << '\n';
 }
 
 }  // namespace hydrocoef::cli

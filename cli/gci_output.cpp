@@ -98,8 +98,9 @@ void print_study(const GridConvergenceStudy& study, const GridConvergenceRequest
     }
     if (!key.components.empty()) {
       const auto& kinds = key.components.front().convergence;
-      std::cout << "  values of " << escape::one_line(describe(key.key)) << ", fine to coarse: " << kinds[0] << ", "
-                << kinds[1] << ", " << kinds[2] << '\n';
+      std::cout << "  values of " << escape::one_line(describe(key.key))
+                << ", fine to coarse: " << escape::one_line(kinds[0]) << ", " << escape::one_line(kinds[1]) << ", "
+                << escape::one_line(kinds[2]) << '\n';
     }
     for (const auto& note : key.notes)
       std::cout << "  note: " << escape::one_line(describe(key.key)) << ": " << escape::one_line(note) << '\n';

@@ -53,13 +53,14 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "hydrocoef: " << e.what() << " (see hydrocoef --help)\n";
+    // CLI11 quotes the arguments it refuses as given.
+    std::cerr << "hydrocoef: " << printable_text(e.what(), kMaxMessageCharacters) << " (see hydrocoef --help)\n";
     return 2;
   } catch (const InputError& e) {
     std::cerr << "hydrocoef: error: " << e.what() << '\n';
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "hydrocoef: internal error: " << e.what() << '\n';
+    std::cerr << "hydrocoef: internal error: " << printable_text(e.what(), kMaxMessageCharacters) << '\n';
     return 1;
   }
   return 0;

@@ -363,7 +363,7 @@ void print_added_mass(const AddedMassAssembly& a, bool json) {
                 << pmm_damping_unit(q.dof, q.dof) << ", b2 = " << significant(q.fit.quadratic, 5) << " +- "
                 << significant(q.fit.quadratic_se, 2) << (q.dof < 3 ? " N s^2/m^2" : " N m s^2") << "\n";
   }
-  for (const auto& m : a.missing) std::cout << "missing: " << m << "\n";
+  for (const auto& m : a.missing) std::cout << "missing: " << escape::one_line(m) << "\n";
   for (const auto& n : a.notes) std::cout << "note: " << escape::one_line(n) << "\n";
 }
 

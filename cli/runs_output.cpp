@@ -177,7 +177,7 @@ void print_runs_table(const std::vector<StoredRun>& runs, const std::optional<st
     std::string disturbances;
     for (const auto& [name, value] : run.key.disturbances)
       disturbances += (disturbances.empty() ? "" : " ") + name + "=" + significant(value, 6);
-    table << disturbances << '\n';
+    table << escape::one_line(disturbances) << '\n';
   }
   std::cout << table.str() << runs.size() << (runs.size() == 1 ? " run" : " runs")
             << "; SI units (m/s, rad/s, N, N m); forces on the body"

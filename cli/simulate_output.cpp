@@ -99,10 +99,10 @@ void print_bands(const SimulationReport& r) {
   for (std::size_t q = 0; q < b.quantities.size(); ++q) {
     // Quantities that do not move in any draw are left out of the table.
     if (b.value(q, 0, last) == b.value(q, b.percentiles.size() - 1, last) && b.value(q, 0, last) == 0.0) continue;
-    std::cout << "  " << std::setw(7) << b.quantities[q];
+    std::cout << "  " << std::setw(7) << escape::one_line(b.quantities[q]);
     for (std::size_t j = 0; j < b.percentiles.size(); ++j)
       std::cout << std::setw(14) << significant(b.value(q, j, last), 6);
-    std::cout << b.units[q] << '\n';
+    std::cout << escape::one_line(b.units[q]) << '\n';
   }
   std::cout << std::right;
   if (r.measured && b.percentiles.size() >= 2) {
@@ -192,10 +192,11 @@ void print_simulation(const SimulationReport& r, bool json) {
     return;
   }
 
-  std::cout << "simulate " << (r.scenario.name.empty() ? r.scenario_path : r.scenario.name) << "\n  vehicle "
-            << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " (" << r.vehicle << "), scenario "
-            << r.scenario_path << "\n  " << significant(r.scenario.duration_s, 6) << " s, "
-            << integrator_text(r.scenario.integrator) << ": " << r.result.steps << " steps";
+  std::cout << "simulate " << escape::one_line(r.scenario.name.empty() ? r.scenario_path : r.scenario.name)
+            << "\n  vehicle " << escape::one_line(r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " ("
+            << escape::one_line(r.vehicle) << "), scenario " << escape::one_line(r.scenario_path) << "\n  "
+            << significant(r.scenario.duration_s, 6) << " s, " << integrator_text(r.scenario.integrator) << ": "
+            << r.result.steps << " steps";
   if (r.result.rejected_steps) std::cout << " (" << r.result.rejected_steps << " rejected)";
   std::cout << ", " << r.result.evaluations << " evaluations, " << significant(r.wall_s, 3) << " s wall\n\n";
   std::cout << "  at t = " << significant(last.t_s, 6) << " s: position (" << significant(last.p_n.x(), 6) << ", "
@@ -205,16 +206,17 @@ void print_simulation(const SimulationReport& r, bool json) {
             << significant(last.euler_rad[2] * 180.0 / std::numbers::pi, 5) << ") deg\n";
   print_velocity_table(last.nu_b, last.forces);
   std::cout << "  (" << kSignNote << ")\n";
-  for (const auto& note : r.result.notes) std::cout << "  note: " << note << '\n';
-  if (r.out) std::cout << "  trajectory: " << *r.out << " (" << r.result.samples.size() << " rows)\n";
+  for (const auto& note : r.result.notes) std::cout << "  note: " << escape::one_line(note) << '\n';
+  if (r.out) std::cout << "  trajectory: " << escape::one_line(*r.out) << " (" << r.result.samples.size() << " rows)\n";
   if (r.experiment) {
-    std::cout << "\n  comparison with " << *r.experiment << " (measured - simulated; steady = mean of the last "
-              << significant(100.0 * r.steady_fraction, 3) << " %)\n  " << std::left << std::setw(6) << ""
-              << std::setw(8) << "rows" << std::setw(14) << "RMS" << std::setw(14) << "steady meas." << std::setw(14)
-              << "steady sim." << std::setw(14) << "steady error" << std::setw(10) << "t63 meas."
+    std::cout << "\n  comparison with " << escape::one_line(*r.experiment)
+              << " (measured - simulated; steady = mean of the last " << significant(100.0 * r.steady_fraction, 3)
+              << " %)\n  " << std::left << std::setw(6) << "" << std::setw(8) << "rows" << std::setw(14) << "RMS"
+              << std::setw(14) << "steady meas." << std::setw(14) << "steady sim." << std::setw(14) << "steady error"
+              << std::setw(10) << "t63 meas."
               << "t63 sim. [s]\n";
     for (const auto& c : r.comparison)
-      std::cout << "  " << std::setw(6) << c.component << std::setw(8) << c.samples << std::setw(14)
+      std::cout << "  " << std::setw(6) << escape::one_line(c.component) << std::setw(8) << c.samples << std::setw(14)
                 << significant(c.rms_error, 4) << std::setw(14) << significant(c.steady_measured, 5) << std::setw(14)
                 << significant(c.steady_simulated, 5) << std::setw(14) << significant(c.steady_error, 4)
                 << std::setw(10) << significant(c.t63_measured_s, 4) << significant(c.t63_simulated_s, 4) << '\n';
@@ -252,7 +254,7 @@ void print_equilibrium(const EquilibriumReport& r, bool json) {
     std::cout << escape::json_text(out, 2) << '\n';
     return;
   }
-  std::cout << "equilibrium of " << (r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " under";
+  std::cout << "equilibrium of " << escape::one_line(r.vehicle_name.empty() ? r.vehicle : r.vehicle_name) << " under";
   for (std::size_t i = 0; i < 6; ++i)
     if (r.in.tau_b[static_cast<Eigen::Index>(i)] != 0.0)
       std::cout << " " << kForceNames[i] << " = " << significant(r.in.tau_b[static_cast<Eigen::Index>(i)], 6) << " "

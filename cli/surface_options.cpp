@@ -4,6 +4,7 @@
 
 #include "cli/common.hpp"
 #include "src/core/error.hpp"
+#include "src/core/escape.hpp"
 #include "src/core/names.hpp"
 #include "src/core/text.hpp"
 #include "src/loads/symmetry.hpp"
@@ -172,11 +173,13 @@ std::string surface_run_text(const SurfaceRun& run) {
     for (const double x : v) out << std::right << std::setw(15) << significant(x, 7);
     out << "  " << unit << '\n';
   };
-  out << run.batch.source.path << " (" << run.format << "; pressure '" << run.pressure_array << "' "
+  // The path, array names and axes come from the file and its sidecar: one printable line each.
+  out << escape::one_line(run.batch.source.path) << " (" << escape::one_line(run.format) << "; pressure '"
+      << escape::one_line(run.pressure_array) << "' "
       << (run.pressure_kind == PressureKind::Static ? "static" : "kinematic") << ", shear '"
-      << (run.shear_array.empty() ? "none" : run.shear_array) << "' "
+      << (run.shear_array.empty() ? "none" : escape::one_line(run.shear_array)) << "' "
       << (run.shear_convention == ShearConvention::OnWall ? "on-wall" : "on-fluid") << ")\n";
-  out << "  body axes (" << run.batch.runs.front().surface->axes << "), moments about ("
+  out << "  body axes (" << escape::one_line(run.batch.runs.front().surface->axes) << "), moments about ("
       << significant(l.reference_point[0]) << ", " << significant(l.reference_point[1]) << ", "
       << significant(l.reference_point[2]) << ") m; forces on the body\n";
   out << "  " << std::setw(18) << "" << std::right << std::setw(15) << "x" << std::setw(15) << "y" << std::setw(15)
@@ -191,7 +194,7 @@ std::string surface_run_text(const SurfaceRun& run) {
       << " poly), area " << significant(g.area, 7) << " m^2, " << (g.closed ? "closed" : "open") << " ("
       << g.boundary_edges << " boundary edges), volume " << significant(g.signed_volume, 7) << " m^3"
       << (g.normals_flipped ? ", normals flipped to outward" : "") << '\n';
-  for (const auto& w : run.warnings) out << "  note: " << w << '\n';
+  for (const auto& w : run.warnings) out << "  note: " << escape::one_line(w) << '\n';
   return out.str();
 }
 

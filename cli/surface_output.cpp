@@ -56,9 +56,10 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
     const auto& name = surface.output_names()[k];
     const auto entry = quality.contains("outputs") && quality["outputs"].contains(name) ? quality["outputs"][name]
                                                                                         : nlohmann::json::object();
-    std::cout << "    " << std::left << std::setw(4) << name << "max " << std::setw(12)
+    std::cout << "    " << std::left << std::setw(4) << escape::one_line(name) << "max " << std::setw(12)
               << json_number_text(entry.value("loo_max", nlohmann::json()), 4) << "RMS " << std::setw(12)
-              << json_number_text(entry.value("loo_rms", nlohmann::json()), 4) << surface.output_units()[k];
+              << json_number_text(entry.value("loo_rms", nlohmann::json()), 4)
+              << escape::one_line(surface.output_units()[k]);
     if (const auto worst = worst_run(quality, name))
       std::cout << "  (worst: run " << worst->first << ", " << significant(worst->second, 4) << ")";
     std::cout << '\n';
@@ -77,7 +78,8 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
     for (std::size_t i = 0; i < nodes.size() && i < 20; ++i) {
       std::cout << "    (";
       for (std::size_t a = 0; a < nodes[i].size(); ++a)
-        std::cout << (a ? ", " : "") << surface.axis_names()[a] << " = " << significant(nodes[i][a], 6);
+        std::cout << (a ? ", " : "") << escape::one_line(surface.axis_names()[a]) << " = "
+                  << significant(nodes[i][a], 6);
       std::cout << ")\n";
     }
     if (nodes.size() > 20) std::cout << "    ... and " << nodes.size() - 20 << " more (--json lists them all)\n";
@@ -86,9 +88,9 @@ void print_quality(const SurfaceRecord& record, const CoefficientSurface& surfac
 
 void print_axes(const CoefficientSurface& surface) {
   for (std::size_t a = 0; a < surface.axis_count(); ++a) {
-    std::cout << "    " << std::left << std::setw(12) << surface.axis_names()[a] << "["
+    std::cout << "    " << std::left << std::setw(12) << escape::one_line(surface.axis_names()[a]) << "["
               << significant(surface.lower(a), 6) << ", " << significant(surface.upper(a), 6) << "] "
-              << (surface.axis_units()[a].empty() ? "(SI)" : surface.axis_units()[a]);
+              << (surface.axis_units()[a].empty() ? "(SI)" : escape::one_line(surface.axis_units()[a]));
     if (const GridTable* grid = surface.grid())
       std::cout << ", " << grid->axes()[a].breakpoints.size() << " breakpoints"
                 << (grid->evenly_spaced(a) ? " (even)" : "");
@@ -145,7 +147,7 @@ void print_largest_sd(const CoefficientSurface& surface, const nlohmann::json& l
   for (const auto& where : largest) {
     std::cout << "      sd " << std::setw(12) << significant(where["sd"].get<double>(), 4) << "at";
     for (std::size_t a = 0; a < surface.axis_count(); ++a)
-      std::cout << " " << surface.axis_names()[a] << "="
+      std::cout << " " << escape::one_line(surface.axis_names()[a]) << "="
                 << significant(where["point"][surface.axis_names()[a]].get<double>(), 5);
     std::cout << '\n';
   }
@@ -154,16 +156,16 @@ void print_largest_sd(const CoefficientSurface& surface, const nlohmann::json& l
 void print_gp(const CoefficientSurface& surface) {
   if (!surface.gp()) return;
   const nlohmann::json gp = gp_json(surface);
-  std::cout << "  Gaussian process: " << gp["kernel"].get<std::string>() << " kernel, mean of degree "
+  std::cout << "  Gaussian process: " << escape::one_line(gp["kernel"].get<std::string>()) << " kernel, mean of degree "
             << gp["mean_degree"].get<int>() << "; standard deviation largest at:\n";
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const auto& name = surface.output_names()[k];
     const auto& entry = gp["outputs"][name];
-    std::cout << "    " << std::left << std::setw(4) << name << "signal sd "
-              << significant(entry["signal_sd"].get<double>(), 4) << " " << surface.output_units()[k]
+    std::cout << "    " << std::left << std::setw(4) << escape::one_line(name) << "signal sd "
+              << significant(entry["signal_sd"].get<double>(), 4) << " " << escape::one_line(surface.output_units()[k])
               << ", length scales";
     for (std::size_t a = 0; a < surface.axis_count(); ++a)
-      std::cout << " " << surface.axis_names()[a] << " "
+      std::cout << " " << escape::one_line(surface.axis_names()[a]) << " "
                 << significant(entry["length_scales"][surface.axis_names()[a]].get<double>(), 3);
     std::cout << ", discrepancy sd " << significant(entry["discrepancy_sd"].get<double>(), 3) << '\n';
     const GpState& state = surface.gp()->output(k).state();
@@ -260,8 +262,9 @@ void print_run_uncertainty(const CoefficientSurface& surface) {
   for (std::size_t k = 0; k < surface.output_count(); ++k) {
     const auto& name = surface.output_names()[k];
     const auto& entry = uncertainty["outputs"][name];
-    std::cout << "    " << std::left << std::setw(4) << name << "leave-one-out part "
-              << significant(entry["loo_sd"].get<double>(), 4) << " " << surface.output_units()[k] << '\n';
+    std::cout << "    " << std::left << std::setw(4) << escape::one_line(name) << "leave-one-out part "
+              << significant(entry["loo_sd"].get<double>(), 4) << " " << escape::one_line(surface.output_units()[k])
+              << '\n';
     print_largest_sd(surface, entry["largest_sd"]);
   }
 }
@@ -331,7 +334,7 @@ void print_surface_list(const std::vector<SurfaceRecord>& records, const std::st
     return;
   }
   if (records.empty()) {
-    std::cout << "no surfaces in " << database << '\n';
+    std::cout << "no surfaces in " << escape::one_line(database) << '\n';
     return;
   }
   std::cout << std::left << std::setw(20) << "name" << std::setw(10) << "body" << std::setw(6) << "kind"
@@ -343,10 +346,11 @@ void print_surface_list(const std::vector<SurfaceRecord>& records, const std::st
     std::string axes, outputs;
     for (const auto& a : surface.axis_names()) axes += (axes.empty() ? "" : ",") + a;
     for (const auto& o : surface.output_names()) outputs += (outputs.empty() ? "" : ",") + o;
-    std::cout << std::setw(20) << record.name << std::setw(10) << record.body << std::setw(6) << record.kind
-              << std::setw(16) << surface.method_name() << std::setw(18) << axes << std::setw(14) << outputs
-              << std::setw(6) << record.run_ids.size() << std::setw(22)
-              << (record.stale ? "STALE (runs changed)" : "current") << built_from(record) << '\n';
+    std::cout << std::setw(20) << escape::one_line(record.name) << std::setw(10) << escape::one_line(record.body)
+              << std::setw(6) << escape::one_line(record.kind) << std::setw(16)
+              << escape::one_line(surface.method_name()) << std::setw(18) << escape::one_line(axes) << std::setw(14)
+              << escape::one_line(outputs) << std::setw(6) << record.run_ids.size() << std::setw(22)
+              << (record.stale ? "STALE (runs changed)" : "current") << escape::one_line(built_from(record)) << '\n';
   }
 }
 
@@ -356,18 +360,21 @@ void print_surface(const StoredSurface& stored, bool json) {
     return;
   }
   const auto& record = stored.record;
-  std::cout << "surface " << record.name << " of body " << record.body << "\n  kind: " << record.kind
-            << ", method: " << stored.surface.method_name() << "\n  built: " << record.created_at << " from "
-            << record.run_ids.size() << " runs\n  state: "
+  std::cout << "surface " << escape::one_line(record.name) << " of body " << escape::one_line(record.body)
+            << "\n  kind: " << escape::one_line(record.kind)
+            << ", method: " << escape::one_line(stored.surface.method_name())
+            << "\n  built: " << escape::one_line(record.created_at) << " from " << record.run_ids.size()
+            << " runs\n  state: "
             << (record.stale ? "STALE: forces of this body changed since it was built (hydrocoef surface rebuild " +
-                                   record.name + ")"
+                                   escape::one_line(record.name) + ")"
                              : std::string("current"))
             << "\n  axes:\n";
   print_axes(stored.surface);
   print_symmetry(stored.surface);
   std::cout << "  outputs (forces on the body):\n";
   for (std::size_t k = 0; k < stored.surface.output_count(); ++k)
-    std::cout << "    " << stored.surface.output_names()[k] << " [" << stored.surface.output_units()[k] << "]\n";
+    std::cout << "    " << escape::one_line(stored.surface.output_names()[k]) << " ["
+              << escape::one_line(stored.surface.output_units()[k]) << "]\n";
   print_quality(record, stored.surface);
   print_gp(stored.surface);
   print_run_uncertainty(stored.surface);
@@ -384,12 +391,13 @@ nlohmann::json surface_build_json(const SurfaceBuildResult& result) {
 
 void print_surface_build(const SurfaceBuildResult& result, const std::string& database) {
   const auto& [record, surface] = result.stored;
-  std::cout << "surface " << record.name << " of body " << record.body << ": " << record.kind << ", " << record.method
-            << ", " << record.run_ids.size() << " runs";
+  std::cout << "surface " << escape::one_line(record.name) << " of body " << escape::one_line(record.body) << ": "
+            << escape::one_line(record.kind) << ", " << escape::one_line(record.method) << ", " << record.run_ids.size()
+            << " runs";
   if (result.runs_skipped) std::cout << " (" << result.runs_skipped << " runs without every output skipped)";
   if (!result.mirror.empty())
-    std::cout << "\n  mirror " << result.mirror << ": " << result.runs_measured << " runs and " << result.mirror_images
-              << " mirror images (never stored as runs)"
+    std::cout << "\n  mirror " << escape::one_line(result.mirror) << ": " << result.runs_measured << " runs and "
+              << result.mirror_images << " mirror images (never stored as runs)"
               << (result.images_skipped
                       ? ", " + std::to_string(result.images_skipped) + " images left out at measured keys"
                       : std::string());
@@ -398,12 +406,13 @@ void print_surface_build(const SurfaceBuildResult& result, const std::string& da
   print_symmetry(surface);
   std::cout << "  outputs: ";
   for (std::size_t k = 0; k < surface.output_count(); ++k)
-    std::cout << (k ? ", " : "") << surface.output_names()[k] << " [" << surface.output_units()[k] << "]";
+    std::cout << (k ? ", " : "") << escape::one_line(surface.output_names()[k]) << " ["
+              << escape::one_line(surface.output_units()[k]) << "]";
   std::cout << " (forces on the body)\n";
   print_quality(record, surface);
   print_gp(surface);
   print_run_uncertainty(surface);
-  std::cout << "  stored as surface " << record.id << " in " << database << '\n';
+  std::cout << "  stored as surface " << record.id << " in " << escape::one_line(database) << '\n';
 }
 
 }  // namespace hydrocoef::cli

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <tuple>
 #include <utility>
 
 #include "src/core/error.hpp"
@@ -18,6 +19,7 @@
 #include "src/core/names.hpp"
 #include "src/core/text.hpp"
 #include "src/core/units.hpp"
+#include "src/mesh/duplicate_faces.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -705,15 +707,34 @@ SurfaceMesh parse_cfdpost_export(std::string_view text, const std::string& file,
   reserve_with_huge_pages(mesh.face_indices, 3 * faces);  // triangles; quads grow it once
 
   std::size_t offset = 0;
+  std::vector<std::pair<std::size_t, const Block*>> first_faces;  // the first face of each block with faces
   for (std::size_t b = 0; b < kept.size(); ++b) {
     const Block& block = *kept[b];
     parse_nodes(block, headers[b], file, mesh);
     if (block.has_faces) {
       const auto location = static_cast<std::uint32_t>(
           std::find(mesh.location_names.begin(), mesh.location_names.end(), block.name) - mesh.location_names.begin());
+      first_faces.emplace_back(mesh.face_count(), &block);
       parse_faces(block, file, static_cast<std::uint32_t>(offset), location, mesh);
     }
     offset += block.data.rows;
+  }
+  if (const auto twice = find_duplicate_face(mesh)) {
+    // The block of a face, its number there (from 1) and its line.
+    const auto place = [&first_faces](std::size_t face) {
+      auto it = std::prev(std::upper_bound(first_faces.begin(), first_faces.end(), face,
+                                           [](std::size_t f, const auto& entry) { return f < entry.first; }));
+      const std::size_t number = face - it->first;
+      return std::make_tuple(it->second, number + 1, it->second->faces.first_line + number);
+    };
+    const auto [block, number, line] = place(twice->second);
+    const auto [first_block, first_number, first_line] = place(twice->first);
+    throw InputError(SourceLocation{file, line, 1}, block_label(block->name) + ", face " + std::to_string(number) +
+                                                        ": the nodes of face " + std::to_string(first_number) + " of " +
+                                                        block_label(first_block->name) + " (line " +
+                                                        std::to_string(first_line) +
+                                                        ") again, in the same or another order; expected each face "
+                                                        "once (a face listed twice counts twice in the forces)");
   }
   // Checked last so that a file cut inside its data says so first.
   if (std::none_of(kept.begin(), kept.end(), [](const Block* block) { return block->has_faces; }))

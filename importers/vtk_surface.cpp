@@ -45,6 +45,7 @@
 #include "importers/vtk_xml_polydata.hpp"
 #include "src/core/error.hpp"
 #include "src/core/huge_pages.hpp"
+#include "src/mesh/duplicate_faces.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -525,6 +526,22 @@ SurfaceMesh read_vtk_surface(const std::filesystem::path& file, const VtkSurface
   // SurfaceMesh::find_field returns the first array of a name.
   append_fields(parts, mesh.location_names, FieldAssociation::Face, file_name, mesh);
   append_fields(parts, mesh.location_names, FieldAssociation::Point, file_name, mesh);
+  if (const auto twice = find_duplicate_face(mesh)) {
+    // The block and the cell of a face (a triangle strip's faces share their cell).
+    const auto place = [&parts, &mesh](std::size_t face) {
+      for (const auto& part : parts) {
+        if (face < part.face_count())
+          return in_quotes(mesh.location_names[part.location]) + " cell " +
+                 std::to_string(part.cells_are_faces ? static_cast<vtkIdType>(face) : part.face_cell[face]);
+        face -= part.face_count();
+      }
+      return std::string("?");
+    };
+    throw InputError(SourceLocation{file_name}, "block " + place(twice->second) + ": the points of block " +
+                                                    place(twice->first) +
+                                                    " again, in the same or another order; expected each face once (a "
+                                                    "face listed twice counts twice in the forces)");
+  }
   return mesh;
 }
 

@@ -29,6 +29,7 @@
 #include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
 #include "src/core/parallel.hpp"
+#include "src/mesh/duplicate_faces.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -985,6 +986,11 @@ std::optional<SurfaceMesh> parse_vtp_surface(std::string_view bytes, const std::
                                               std::to_string(*point_count) + " points)"));
   }
   mesh.face_indices.resize(index_count);
+  if (const auto twice = find_duplicate_face(mesh))
+    fail(format, block + "cell " + std::to_string(twice->second) + ": the points of cell " +
+                     std::to_string(twice->first) +
+                     " again, in the same or another order; expected each face once (a face listed twice counts twice "
+                     "in the forces)");
   return mesh;
 }
 

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -51,27 +52,55 @@ py::array to_numpy_strings(const std::vector<std::string>& texts) {
   return py::module_::import("numpy").attr("array")(list, "dtype"_a = "object");
 }
 
-/// The Database of a method's self. pybind11 would run a method on an
-/// instance whose C++ object was never made (Database.__new__(Database)
-/// without __init__) on uninitialised memory; this refuses it instead.
-Database& database_of(py::handle self) {
+/// Whether `self` holds its C++ Database: false for an object made by
+/// __new__ alone (Database.__new__(Database), object.__new__, a base class's
+/// __new__), whose storage pybind11 never filled.
+bool holds_database(py::handle self) {
+  if (!py::isinstance<Database>(self))
+    throw py::type_error("expected a hydrocoef.Database, got " +
+                         py::str(py::type::handle_of(self).attr("__name__")).cast<std::string>());
   auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
   auto holder = instance->get_value_and_holder(py::detail::get_type_info(typeid(Database)), false);
-  if (!holder || !holder.holder_constructed())
+  return holder && holder.holder_constructed();
+}
+
+/// The Database of a method's self. pybind11 would run a method on an
+/// instance whose C++ object was never made on uninitialised memory; this
+/// refuses it instead (and a self of another type, given to a method called
+/// from the class).
+Database& database_of(py::handle self) {
+  if (!holds_database(self))
     throw py::type_error(
         "this hydrocoef.Database was made by __new__ without __init__; open one with "
         "hydrocoef.Database(path)");
-  return *holder.value_ptr<Database>();
+  auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
+  return *instance->get_value_and_holder(py::detail::get_type_info(typeid(Database)), false).value_ptr<Database>();
 }
 
-/// Classes whose objects only the module makes (Surface, Fit, ...): __new__
-/// refuses, so that no object exists without its C++ part (pybind11 would run
-/// methods on uninitialised memory).
-void made_by_the_module_only(py::handle cls, const char* how) {
-  const std::string message = std::string(how);
-  cls.attr("__new__") =
-      py::cpp_function([message](const py::args&, const py::kwargs&) -> py::object { throw py::type_error(message); },
-                       py::name("__new__"));
+/// tp_new of the classes whose objects only the module makes (Surface, Fit,
+/// SurfaceInfo, ImportedFile, ImportSummary): refuses. It is the type's own
+/// slot (py::custom_type_setup), not a Python __new__ attribute, so that
+/// every way to one (Surface(), Surface.__new__(Surface), object.__new__ or
+/// Surface.__mro__[1].__new__(Surface), whose "is not safe" check compares
+/// the slots) raises TypeError: no such object exists without its C++ part,
+/// on which pybind11 would run methods on uninitialised memory.
+PyObject* refuse_new(PyTypeObject* type, PyObject*, PyObject*) {
+  const char* dot = std::strrchr(type->tp_name, '.');
+  const std::string name = dot ? dot + 1 : type->tp_name;
+  const std::string from = name == "Surface"       ? "Database.surface(name)"
+                           : name == "Fit"         ? "Database.fit(...) and Database.fits()"
+                           : name == "SurfaceInfo" ? "Database.surfaces() and Database.build_surface(...)"
+                                                   : "Database.import_files(...)";
+  PyErr_SetString(PyExc_TypeError,
+                  ("hydrocoef." + name + " objects come from " + from + "; they cannot be made directly").c_str());
+  return nullptr;
+}
+
+/// The attributes of a class whose objects only the module makes: its
+/// __new__ refuses, and it cannot be subclassed (a subclass's __new__ could
+/// reach pybind11's).
+py::custom_type_setup made_by_the_module_only() {
+  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new; });
 }
 
 std::string fspath(const py::handle& path) {
@@ -375,7 +404,8 @@ PYBIND11_MODULE(_hydrocoef, m) {
 
   // ---- Surface ----
   // Surface.__call__ takes **axes: its docstring gives the signature, not pybind11's "*args, **kwargs".
-  auto surface_class = py::class_<Surface>(m, "Surface", R"doc(A coefficient surface read from a run database.
+  auto surface_class = py::class_<Surface>(m, "Surface", py::is_final(), made_by_the_module_only(),
+                                           R"doc(A coefficient surface read from a run database.
 
 Call it with one value or numpy array per axis, by name, to get every output at
 every point, as numpy arrays shaped like the inputs:
@@ -393,16 +423,25 @@ output_units. A point outside an axis whose policy is "error", or a NaN,
 raises hydrocoef.InputError with the message `hydrocoef query` prints
 (prefixed "point I: " for arrays, I the 0-based flat index of the first such
 point). A Surface is immutable and stays valid after its Database is closed.)doc");
-  surface_class.def_property_readonly("name", &Surface::name, "The surface's name in its database.")
-      .def_property_readonly("body", &Surface::body, "The body whose runs it was built from.")
-      .def_property_readonly("method", &Surface::method,
-                             "'nearest', 'linear', 'pchip', 'makima', 'natural-spline' (gridded tables) or 'rbf'.")
-      .def_property_readonly("stale", &Surface::stale,
-                             "True when forces of the body changed since the surface was built.")
-      .def_property_readonly("axes", &Surface::axes, "Axis names, in order.")
-      .def_property_readonly("outputs", &Surface::outputs, "Output names, in order.")
-      .def_property_readonly("axis_units", &Surface::axis_units, "One unit per axis ('m/s', 'rad/s', ...).")
-      .def_property_readonly("output_units", &Surface::output_units, "One unit per output ('N', 'N m', ...).")
+  surface_class
+      .def_property_readonly(
+          "name", [](const Surface& s) { return s.name(); }, "The surface's name in its database.")
+      .def_property_readonly(
+          "body", [](const Surface& s) { return s.body(); }, "The body whose runs it was built from.")
+      .def_property_readonly(
+          "method", [](const Surface& s) { return s.method(); },
+          "'nearest', 'linear', 'pchip', 'makima', 'natural-spline' (gridded tables) or 'rbf'.")
+      .def_property_readonly(
+          "stale", [](const Surface& s) { return s.stale(); },
+          "True when forces of the body changed since the surface was built.")
+      .def_property_readonly(
+          "axes", [](const Surface& s) { return s.axes(); }, "Axis names, in order.")
+      .def_property_readonly(
+          "outputs", [](const Surface& s) { return s.outputs(); }, "Output names, in order.")
+      .def_property_readonly(
+          "axis_units", [](const Surface& s) { return s.axis_units(); }, "One unit per axis ('m/s', 'rad/s', ...).")
+      .def_property_readonly(
+          "output_units", [](const Surface& s) { return s.output_units(); }, "One unit per output ('N', 'N m', ...).")
       .def_property_readonly(
           "bounds",
           [](const Surface& s) {
@@ -452,7 +491,8 @@ different shapes.)doc");
   }
 
   // ---- records ----
-  py::class_<hydrocoef::FitSummary>(m, "Fit", "A fitted damping law F_output(x) = sum_k c_k term_k(x).")
+  py::class_<hydrocoef::FitSummary>(m, "Fit", py::is_final(), made_by_the_module_only(),
+                                    "A fitted damping law F_output(x) = sum_k c_k term_k(x).")
       .def_readonly("name", &hydrocoef::FitSummary::name)
       .def_readonly("body", &hydrocoef::FitSummary::body)
       .def_readonly("output", &hydrocoef::FitSummary::output, "Force component X..N.")
@@ -498,7 +538,8 @@ different shapes.)doc");
       .def_readonly("created_at", &hydrocoef::FitSummary::created_at)
       .def("__repr__", &repr_fit);
 
-  py::class_<hydrocoef::SurfaceInfo>(m, "SurfaceInfo", "A stored surface, as `hydrocoef surface list` shows it.")
+  py::class_<hydrocoef::SurfaceInfo>(m, "SurfaceInfo", py::is_final(), made_by_the_module_only(),
+                                     "A stored surface, as `hydrocoef surface list` shows it.")
       .def_readonly("name", &hydrocoef::SurfaceInfo::name)
       .def_readonly("body", &hydrocoef::SurfaceInfo::body)
       .def_readonly("kind", &hydrocoef::SurfaceInfo::kind, "'grid' or 'rbf'.")
@@ -513,7 +554,8 @@ different shapes.)doc");
                s.method + ", " + std::to_string(s.run_count) + " runs" + (s.stale ? ", STALE" : "") + ">";
       });
 
-  py::class_<hydrocoef::ImportedFile>(m, "ImportedFile", "What an import did with one input.")
+  py::class_<hydrocoef::ImportedFile>(m, "ImportedFile", py::is_final(), made_by_the_module_only(),
+                                      "What an import did with one input.")
       .def_readonly("path", &hydrocoef::ImportedFile::path)
       .def_readonly("format", &hydrocoef::ImportedFile::format)
       .def_readonly("runs", &hydrocoef::ImportedFile::runs, "Runs the input holds.")
@@ -528,7 +570,8 @@ different shapes.)doc");
                (f.already_imported ? ", already imported" : "") + ")>";
       });
 
-  py::class_<hydrocoef::ImportSummary>(m, "ImportSummary", "What Database.import_files did.")
+  py::class_<hydrocoef::ImportSummary>(m, "ImportSummary", py::is_final(), made_by_the_module_only(),
+                                       "What Database.import_files did.")
       .def_readonly("files", &hydrocoef::ImportSummary::files, "One ImportedFile per input (folders expanded).")
       .def_readonly("notes", &hydrocoef::ImportSummary::notes)
       .def_readonly("excluded", &hydrocoef::ImportSummary::excluded, "Files left out by include/exclude.")
@@ -758,10 +801,23 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
                (d.is_open() ? (d.read_only() ? ", read only" : "") : ", closed") + ">";
       });
 
-  made_by_the_module_only(m.attr("Surface"), "hydrocoef.Surface objects come from Database.surface(name)");
-  for (const char* name : {"Fit", "SurfaceInfo", "ImportedFile", "ImportSummary"})
-    made_by_the_module_only(m.attr(name),
-                            (std::string("hydrocoef.") + name + " objects come from Database calls").c_str());
+  // __init__ on a Database that has one already (open or closed): pybind11
+  // runs a constructor once and ignores a second call silently; this
+  // refuses it. The wrapper is not named __init__, a name pybind11 takes for
+  // a constructor (and ignores again).
+  {
+    py::object database_class = m.attr("Database");
+    py::object construct = database_class.attr("__init__");
+    database_class.attr("__init__") = py::cpp_function(
+        [construct](py::handle self, const py::object& path, const py::object& mode) {
+          if (holds_database(self))
+            throw std::runtime_error("this hydrocoef.Database has been opened already (on " + database_of(self).path() +
+                                     "); __init__ runs once: make a new hydrocoef.Database(path)");
+          construct(self, path, mode);
+        },
+        py::name("open"), py::is_method(database_class), "path"_a, "mode"_a = "create",
+        "Opens the database at path (mode: 'r', 'rw' or 'create'); once per object.");
+  }
 
   // The public classes say they are hydrocoef's (help(), repr of the type), not the extension's
   // (Database is: hydrocoef.Database is its Python subclass in __init__.py).

@@ -159,3 +159,76 @@ def test_objects_without_their_cpp_part_are_refused(db_path):
         with pytest.raises(TypeError):
             copy.copy(db)
     assert surface(r=0.1)["N"] < 0
+
+
+VALUE_CLASSES = (hydrocoef.Surface, hydrocoef.Fit, hydrocoef.SurfaceInfo, hydrocoef.ImportedFile,
+                 hydrocoef.ImportSummary)
+
+
+def test_no_value_object_without_its_cpp_part(db_path):
+    """Every way to __new__ a Surface, Fit, ... (its own, object's, its
+    pybind11 base's, a subclass's) raises TypeError: an object without its
+    C++ part, on which a method or repr() would crash the interpreter, never
+    exists."""
+    for cls in VALUE_CLASSES:
+        base = cls.__mro__[1]
+        for make in (lambda: cls(), lambda: cls.__new__(cls), lambda: object.__new__(cls),
+                     lambda: base.__new__(cls), lambda: super(cls, cls).__new__(cls)):
+            with pytest.raises(TypeError):
+                made = make()
+                repr(made)  # not reached; it would crash if it were
+        with pytest.raises(TypeError):
+            type("Sub", (cls,), {})  # final: no subclass could reach the base's __new__
+    with hydrocoef.Database(db_path, mode="r") as db:
+        surface = db.surface("asr-v-yaw")
+        assert repr(surface).startswith("<hydrocoef.Surface 'asr-v-yaw'")
+        assert surface.name == "asr-v-yaw" and surface.axes == ["r"]
+        assert surface(r=0.1)["N"] < 0
+
+
+def test_database_methods_refuse_an_object_without_its_database(db_path):
+    """A Database made by __new__ alone (its own, object's, or its pybind11
+    base's): every method, property and repr raises TypeError; so does a
+    method given an object of another type as self."""
+    compiled = hydrocoef._hydrocoef.Database
+    for bare in (compiled.__new__(compiled), compiled.__mro__[1].__new__(compiled),
+                 hydrocoef.Database.__mro__[2].__new__(hydrocoef.Database)):
+        calls = [lambda: repr(bare), lambda: bare.path, lambda: bare.closed, lambda: bare.read_only,
+                 lambda: bare.close(), lambda: bare.__enter__(), lambda: bare.__exit__(None, None, None),
+                 lambda: bare.surface("x"), lambda: bare.surfaces(), lambda: bare.fits(),
+                 lambda: bare.import_files("x"), lambda: bare.rebuild_surfaces()]
+        if hasattr(bare, "runs"):
+            calls.append(lambda: bare.runs())
+        for call in calls:
+            with pytest.raises(TypeError, match="__new__ without __init__"):
+                call()
+    for method in ("close", "surfaces", "__repr__"):
+        with pytest.raises(TypeError, match="expected a hydrocoef.Database, got int"):
+            getattr(compiled, method)(5)
+    with pytest.raises(TypeError, match="expected a hydrocoef.Database"):
+        compiled.path.fget("not a database")
+
+
+def test_init_runs_once(db_path, tmp_path):
+    """__init__ on a Database that was opened already (open or closed) raises
+    instead of being ignored; the object keeps its first database."""
+    other = tmp_path / "other.db"
+    db = hydrocoef.Database(db_path, mode="r")
+    with pytest.raises(RuntimeError, match="opened already"):
+        db.__init__(other)
+    with pytest.raises(RuntimeError, match="opened already"):
+        hydrocoef._hydrocoef.Database.__init__(db, other, "create")
+    assert not other.exists()
+    assert db.path.endswith(db_path.name) and db.read_only
+    assert db.surface("asr-v-yaw").name == "asr-v-yaw"
+    db.close()
+    with pytest.raises(RuntimeError, match="opened already"):
+        db.__init__(db_path)
+    assert db.closed
+    # __init__ on an object made by __new__ alone opens it, once.
+    bare = hydrocoef.Database.__new__(hydrocoef.Database)
+    bare.__init__(db_path, "r")
+    assert bare.surface("asr-v-yaw").name == "asr-v-yaw"
+    with pytest.raises(RuntimeError, match="opened already"):
+        bare.__init__(db_path, "r")
+    bare.close()

@@ -62,6 +62,19 @@ inline void kill_group(pid_t pid) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
 
+/// Polls `ready` every 200 us until it holds or no process of the group is
+/// left (the script ended first); true when it held. Events, not the clock,
+/// decide: the 10-minute backstop only ends a wait on a hung child.
+template <typename Ready>
+bool wait_for_event(pid_t group, Ready&& ready) {
+  const auto backstop = std::chrono::steady_clock::now() + std::chrono::minutes(10);
+  while (!ready()) {
+    if (live_processes(group).empty() || std::chrono::steady_clock::now() > backstop) return ready();
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  return true;
+}
+
 inline std::set<std::string> lines_of(const std::filesystem::path& path) {
   std::set<std::string> out;
   std::ifstream in(path);
