@@ -341,7 +341,7 @@ inline constexpr const char* kCommitMayHaveStored = "the write may or may not ha
 
 /// How a test makes faults: arm the N-th counted event (1-based) to fail
 /// (N = 0: count events, fail none), disarm, and say how many events were
-/// counted and how many failed since armed.
+/// counted and how many failed since armed (hits is asked once after each N).
 struct FaultSwitch {
   std::function<void(long n)> arm;
   std::function<void()> disarm;
