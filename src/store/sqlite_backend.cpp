@@ -24,18 +24,18 @@ class SqliteStatement final : public StatementBackend {
   SqliteStatement(const SqliteStatement&) = delete;
   SqliteStatement& operator=(const SqliteStatement&) = delete;
 
-  void bind_double(int index, double value) override { sqlite3_bind_double(statement_, index, value); }
-  void bind_int(int index, std::int64_t value) override { sqlite3_bind_int64(statement_, index, value); }
+  void bind_double(int index, double value) override { check(sqlite3_bind_double(statement_, index, value), index); }
+  void bind_int(int index, std::int64_t value) override { check(sqlite3_bind_int64(statement_, index, value), index); }
   void bind_text(int index, std::string_view value) override {
-    sqlite3_bind_text64(statement_, index, value.data(), value.size(), SQLITE_TRANSIENT, SQLITE_UTF8);
+    check(sqlite3_bind_text64(statement_, index, value.data(), value.size(), SQLITE_TRANSIENT, SQLITE_UTF8), index);
   }
   void bind_blob(int index, const void* data, std::size_t size) override {
     if (size == 0)
-      sqlite3_bind_zeroblob(statement_, index, 0);  // a blob of no bytes, not NULL
+      check(sqlite3_bind_zeroblob(statement_, index, 0), index);  // a blob of no bytes, not NULL
     else
-      sqlite3_bind_blob64(statement_, index, data, size, SQLITE_TRANSIENT);
+      check(sqlite3_bind_blob64(statement_, index, data, size, SQLITE_TRANSIENT), index);
   }
-  void bind_null(int index) override { sqlite3_bind_null(statement_, index); }
+  void bind_null(int index) override { check(sqlite3_bind_null(statement_, index), index); }
   bool step() override;
   void reset() override {
     sqlite3_reset(statement_);
@@ -65,6 +65,10 @@ class SqliteStatement final : public StatementBackend {
   const char* column_name(int column) const override { return sqlite3_column_name(statement_, column); }
 
  private:
+  /// A value that could not be bound (no memory for its copy, too big)
+  /// would leave the parameter NULL: the statement must not run.
+  void check(int rc, int index) const;
+
   const SqliteConnection* connection_;
   sqlite3_stmt* statement_ = nullptr;
 };
@@ -109,7 +113,10 @@ class SqliteConnection final : public ConnectionBackend {
     }
   }
   void commit() override {
-    if (depth_ == 1) execute("COMMIT");
+    if (depth_ == 1) {
+      const int rc = sqlite3_exec(db_, "COMMIT", nullptr, nullptr, nullptr);
+      if (rc != SQLITE_OK) fail_commit(rc);
+    }
     if (depth_ > 0) --depth_;
   }
   void rollback() noexcept override {
@@ -127,6 +134,8 @@ class SqliteConnection final : public ConnectionBackend {
   sqlite3* handle() const { return db_; }
   /// Throws the right exception for SQLite result code `rc` (with context).
   [[noreturn]] void fail(int rc, std::string_view what) const;
+  /// The same for a COMMIT that failed.
+  [[noreturn]] void fail_commit(int rc) const;
 
  private:
   sqlite3* db_ = nullptr;
@@ -139,6 +148,12 @@ SqliteStatement::SqliteStatement(const SqliteConnection& connection, std::string
   const int rc =
       sqlite3_prepare_v2(connection.handle(), sql.data(), static_cast<int>(sql.size()), &statement_, nullptr);
   if (rc != SQLITE_OK) connection.fail(rc, "preparing '" + std::string(sql.substr(0, 60)) + "'");
+}
+
+void SqliteStatement::check(int rc, int index) const {
+  if (rc != SQLITE_OK)
+    connection_->fail(rc, "binding parameter " + std::to_string(index) + " of '" +
+                              std::string(sqlite3_sql(statement_)).substr(0, 60) + "'");
 }
 
 bool SqliteStatement::step() {
@@ -225,23 +240,39 @@ void SqliteConnection::fail(int rc, std::string_view what) const {
   throw std::runtime_error(path_ + ": database: " + std::string(what) + ": " + detail);
 }
 
+// A COMMIT whose sync fails may have reached the disk all the same: SQLite
+// syncs the WAL after writing its commit frame, and reports the failed sync
+// although the frame is there, for the next opening of the file to replay.
+// So the message cannot say that nothing was changed. (A write that fails
+// before the sync leaves no commit frame, so the file is as it was, as
+// fail() says; in rollback-journal mode the commit is the journal's
+// deletion, after every sync, and a failed sync there is answered with the
+// same caution.)
+void SqliteConnection::fail_commit(int rc) const {
+  if (rc != SQLITE_IOERR_FSYNC) fail(rc, "committing");
+  throw InputError(SourceLocation{path_}, "database: the disk failed to sync the commit (" +
+                                              std::string(sqlite3_errmsg(db_)) +
+                                              "): the write may or may not have been stored; look at the database "
+                                              "before trying again");
+}
+
 // The switch to write-ahead logging needs every other connection to let go
 // of the file, and SQLite answers "busy" at once (without its busy handler)
 // while one reads it. The write before has committed, so the switch is tried
-// for up to 2 s and otherwise left to the next writer: the file is whole in
-// either mode, and the command that wrote it must not fail saying nothing
-// was changed.
+// for up to 2 s and otherwise left to the next writer, as is a switch that
+// the disk or memory fails: the file is whole in either mode, and the
+// command that wrote it must not fail saying nothing was changed.
 void SqliteConnection::use_wal() {
   if (read_only() || depth_ > 0) return;  // not inside a transaction: after the outermost one
-  {
+  try {
     SqliteStatement mode_now(*this, "PRAGMA journal_mode");
-    mode_now.step();
-    if (mode_now.get_text(0) == "wal") return;
+    if (mode_now.step() && mode_now.get_text(0) == "wal") return;
+  } catch (const InputError&) {
+    return;
   }
   for (int attempt = 0; attempt < 200; ++attempt) {
     const int rc = sqlite3_exec(db_, "PRAGMA journal_mode = WAL", nullptr, nullptr, nullptr);
-    if (rc == SQLITE_OK) return;
-    if ((rc & 0xff) != SQLITE_BUSY && (rc & 0xff) != SQLITE_LOCKED) fail(rc, "switching to WAL");
+    if (rc == SQLITE_OK || ((rc & 0xff) != SQLITE_BUSY && (rc & 0xff) != SQLITE_LOCKED)) return;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
 }
