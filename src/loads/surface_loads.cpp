@@ -10,11 +10,13 @@
 #include <thread>
 
 #include "src/core/error.hpp"
-#include "src/core/huge_pages.hpp"
-#include "src/core/parallel.hpp"
+#include "src/loads/surface_input.hpp"
+#include "src/loads/surface_topology.hpp"
 
 namespace hydrocoef {
 namespace {
+
+using namespace loads_detail;
 
 // ---- small vector helpers (Vec3 is a plain array so the hot loop stays inline)
 inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
@@ -31,95 +33,6 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-
-/// A scalar or vector array seen through stride and offsets, so that a
-/// 3-component array and three scalar arrays are read the same way.
-struct FieldView {
-  const double* component[3] = {nullptr, nullptr, nullptr};
-  std::size_t stride = 1;
-  bool per_point = true;
-  const FieldArray* arrays[3] = {nullptr, nullptr, nullptr};  ///< the distinct arrays behind it
-  const char* role = "";
-  bool present() const { return component[0] != nullptr; }
-  double scalar(std::size_t i) const { return component[0][i * stride]; }
-  Vec3 vector(std::size_t i) const {
-    return {component[0][i * stride], component[1][i * stride], component[2][i * stride]};
-  }
-};
-
-std::string available_arrays(const SurfaceMesh& mesh) {
-  std::string out;
-  for (const auto& field : mesh.fields) {
-    if (!out.empty()) out += ", ";
-    out += "'" + field.name + "'";
-    if (field.components == 3) out += " (vector)";
-  }
-  return out.empty() ? "none" : out;
-}
-
-const FieldArray& find_array(const SurfaceMesh& mesh, const std::string& name, int components, const char* role) {
-  const FieldArray* field = mesh.find_field(name);
-  if (!field)
-    throw InputError(std::string(role) + " array '" + name +
-                     "' is not in the file; arrays there: " + available_arrays(mesh));
-  if (field->components != components)
-    throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->components) +
-                     " components, expected " + std::to_string(components));
-  const std::size_t expected = field->association == FieldAssociation::Point ? mesh.point_count() : mesh.face_count();
-  if (field->size() != expected)
-    throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->size()) +
-                     " values, expected " + std::to_string(expected) + " (one per " +
-                     (field->association == FieldAssociation::Point ? "point" : "face") + ")");
-  return *field;
-}
-
-/// The InputError for the first value of `field` that is NaN or Inf.
-[[noreturn]] void throw_not_finite(const FieldArray& field, const char* role) {
-  std::size_t i = 0;
-  while (i < field.values.size() && std::isfinite(field.values[i])) ++i;
-  if (i == field.values.size()) throw std::logic_error("throw_not_finite: every value is finite");
-  throw InputError(std::string(role) + " array '" + field.name + "' holds " +
-                   (std::isnan(field.values[i]) ? "NaN" : "Inf") + " at " +
-                   (field.association == FieldAssociation::Point ? "point " : "face ") +
-                   std::to_string(i / static_cast<std::size_t>(field.components)) + "; expected finite values");
-}
-
-FieldView pressure_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
-  const FieldArray& field = find_array(mesh, options.pressure_field, 1, "pressure");
-  FieldView view;
-  view.component[0] = field.values.data();
-  view.per_point = field.association == FieldAssociation::Point;
-  view.arrays[0] = &field;
-  view.role = "pressure";
-  return view;
-}
-
-FieldView shear_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
-  FieldView view;
-  view.role = "wall shear";
-  if (options.shear_fields.empty()) return view;
-  if (options.shear_fields.size() == 1) {
-    const FieldArray& field = find_array(mesh, options.shear_fields[0], 3, "wall shear");
-    for (int c = 0; c < 3; ++c) view.component[c] = field.values.data() + c;
-    view.stride = 3;
-    view.per_point = field.association == FieldAssociation::Point;
-    view.arrays[0] = &field;
-    return view;
-  }
-  if (options.shear_fields.size() != 3)
-    throw InputError("wall shear: expected one vector array or three scalar arrays x,y,z, got " +
-                     std::to_string(options.shear_fields.size()) + " names");
-  for (int c = 0; c < 3; ++c) {
-    const FieldArray& field = find_array(mesh, options.shear_fields[static_cast<std::size_t>(c)], 1, "wall shear");
-    view.component[c] = field.values.data();
-    view.arrays[c] = &field;
-    const bool per_point = field.association == FieldAssociation::Point;
-    if (c > 0 && per_point != view.per_point)
-      throw InputError("wall shear arrays mix point and face data; expected all three alike");
-    view.per_point = per_point;
-  }
-  return view;
-}
 
 /// Running sums of one block of faces; blocks are then summed, which keeps
 /// the rounding error of millions of faces near that of a few thousand.
@@ -152,30 +65,6 @@ struct Sums {
     degenerate += o.degenerate;
   }
 };
-
-/// A 64-bit mix of a vertex index (splitmix64's finalizer).
-inline std::uint64_t mix64(std::uint64_t x) {
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-/// The face's share of Sums::edge_residue, with h = mix64 and g the index
-/// itself: h(a) b - h(b) a is antisymmetric in (a, b), which is all the
-/// cancellation needs, at one hash per vertex.
-inline std::uint64_t edge_residue(const std::uint32_t* indices, std::size_t k) {
-  std::uint64_t residue = 0;
-  const std::uint64_t g_first = indices[0], h_first = mix64(g_first);
-  std::uint64_t h_prev = h_first, g_prev = g_first;
-  for (std::size_t i = 1; i <= k; ++i) {
-    const std::uint64_t g = i < k ? indices[i] : g_first;
-    const std::uint64_t h = i < k ? mix64(g) : h_first;
-    residue += h_prev * g - h * g_prev;
-    h_prev = h;
-    g_prev = g;
-  }
-  return residue;
-}
 
 // ---- triangles with point data, eight at a time ---------------------------
 //
@@ -659,130 +548,6 @@ bool all_finite(const Sums& s) {
   return finite;
 }
 
-/// The checks that cost nothing per face; the rest (offsets that go back,
-/// point indices out of range) are made block by block while integrating.
-void check_mesh_shape(const SurfaceMesh& mesh) {
-  if (mesh.face_count() == 0) throw InputError("the surface has no faces; expected a body surface of polygons");
-  if (mesh.points_xyz.size() % 3 != 0) throw InputError("point coordinates are not a multiple of 3");
-  if (mesh.face_offsets.front() != 0)
-    throw InputError("face offsets start at " + std::to_string(mesh.face_offsets.front()) + "; expected 0");
-  if (mesh.face_offsets.back() != mesh.face_indices.size())
-    throw InputError("face offsets end at " + std::to_string(mesh.face_offsets.back()) + " but there are " +
-                     std::to_string(mesh.face_indices.size()) + " face indices");
-  // Edge entries pack a point index and a direction bit into 32 bits.
-  if (mesh.point_count() >= (std::size_t{1} << 31))
-    throw InputError("the surface has " + std::to_string(mesh.point_count()) + " points; expected fewer than 2^31");
-}
-
-/// The InputError for the first face a block could not read.
-/// The offsets first (only offsets that never go back keep the index reads
-/// inside the array), then the indices.
-[[noreturn]] void throw_unreadable_faces(const SurfaceMesh& mesh) {
-  for (std::size_t f = 0; f < mesh.face_count(); ++f)
-    if (mesh.face_offsets[f + 1] < mesh.face_offsets[f])
-      throw InputError("face offsets go back at face " + std::to_string(f) + " (" +
-                       std::to_string(mesh.face_offsets[f + 1]) + " after " + std::to_string(mesh.face_offsets[f]) +
-                       "); expected offsets that never decrease");
-  const std::size_t points = mesh.point_count();
-  for (std::size_t f = 0; f < mesh.face_count(); ++f)
-    for (std::size_t i = mesh.face_offsets[f]; i < mesh.face_offsets[f + 1]; ++i)
-      if (mesh.face_indices[i] >= points)
-        throw InputError("face " + std::to_string(f) + " refers to point " + std::to_string(mesh.face_indices[i]) +
-                         " but the surface has " + std::to_string(points) + " points");
-  throw std::logic_error("throw_unreadable_faces: every face can be read");
-}
-
-/// The InputError for the first point with a coordinate that is NaN or Inf.
-[[noreturn]] void throw_not_finite_point(const SurfaceMesh& mesh) {
-  for (std::size_t i = 0; i < mesh.points_xyz.size(); ++i)
-    if (!std::isfinite(mesh.points_xyz[i]))
-      throw InputError("point " + std::to_string(i / 3) + " has " + "xyz"[i % 3] + " = " +
-                       (std::isnan(mesh.points_xyz[i]) ? "NaN" : "Inf") + "; expected finite coordinates");
-  throw std::logic_error("throw_not_finite_point: every coordinate is finite");
-}
-
-/// True when V - E + F = 2 with E = (sum of face sizes) / 2 and V the number
-/// of points, and every point is used by a face.
-bool genus_zero_closed(const SurfaceMesh& mesh) {
-  const auto corners = static_cast<std::int64_t>(mesh.face_indices.size());
-  if (corners % 2 != 0) return false;
-  const auto points = static_cast<std::int64_t>(mesh.point_count());
-  const auto faces = static_cast<std::int64_t>(mesh.face_count());
-  if (points - corners / 2 + faces != 2) return false;
-  std::vector<std::uint8_t> used(mesh.point_count(), 0);
-  for (const std::uint32_t i : mesh.face_indices) used[i] = 1;
-  return std::find(used.begin(), used.end(), std::uint8_t{0}) == used.end();
-}
-
-/// Edge counts of the edges whose smaller vertex lies in [first, last).
-struct EdgeCounts {
-  std::size_t boundary = 0, nonmanifold = 0, inconsistent = 0;
-};
-
-/// Edge topology: each edge (a, b) is filed under its smaller vertex with
-/// the direction the face walks it; two passes of counting, no sort of the
-/// whole edge list, so this stays linear in the number of faces. Working on a
-/// vertex range lets two threads share the work; entries are 32 bits (the
-/// other vertex and the direction), uninitialised and on huge pages, since
-/// filling them is random access over tens of MB.
-EdgeCounts count_edges(const SurfaceMesh& mesh, std::uint32_t first, std::uint32_t last) {
-  EdgeCounts counts;
-  if (last <= first) return counts;
-  const std::size_t vertices = last - first;
-  std::vector<std::uint32_t> start;
-  reserve_with_huge_pages(start, vertices + 1);
-  start.assign(vertices + 1, 0);
-  const std::size_t faces = mesh.face_count();
-  const std::uint32_t* offsets = mesh.face_offsets.data();
-  const std::uint32_t* indices = mesh.face_indices.data();
-  auto for_each_edge = [&](auto&& visit) {
-    for (std::size_t f = 0; f < faces; ++f) {
-      const std::uint32_t begin = offsets[f], end = offsets[f + 1];
-      for (std::uint32_t i = begin; i < end; ++i) {
-        const std::uint32_t a = indices[i], b = indices[i + 1 < end ? i + 1 : begin];
-        const std::uint32_t low = a < b ? a : b;
-        if (a != b && low >= first && low < last) visit(a, b, low - first);
-      }
-    }
-  };
-  for_each_edge([&](std::uint32_t, std::uint32_t, std::uint32_t v) { ++start[v + 1]; });
-  for (std::size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
-  const std::size_t total = start[vertices];
-  const std::unique_ptr<std::uint32_t[]> entries(new std::uint32_t[total]);
-  prefer_huge_pages(entries.get(), total * sizeof(std::uint32_t));
-  for_each_edge([&](std::uint32_t a, std::uint32_t b, std::uint32_t v) {
-    entries[start[v]++] = ((a < b ? b : a) << 1) | (a < b ? 1u : 0u);
-  });
-  // start[v] now holds the end of v's entries, start[v - 1] their beginning.
-  std::uint32_t begin = 0;
-  for (std::size_t v = 0; v < vertices; ++v) {
-    const std::uint32_t end = start[v];
-    std::uint32_t* list = entries.get() + begin;
-    const std::size_t n = end - begin;
-    if (n <= 16) {  // lists hold a handful of edges on any sensible mesh
-      for (std::size_t i = 1; i < n; ++i)
-        for (std::size_t j = i; j > 0 && list[j] < list[j - 1]; --j) std::swap(list[j], list[j - 1]);
-    } else {  // a vertex shared by very many faces: O(n log n), whatever the mesh
-      std::sort(list, list + n);
-    }
-    for (std::size_t i = 0; i < n;) {
-      std::size_t j = i;
-      unsigned walked_forward = 0;
-      while (j < n && (list[j] >> 1) == (list[i] >> 1)) walked_forward += list[j++] & 1u;
-      const std::size_t uses = j - i;
-      if (uses == 1)
-        ++counts.boundary;
-      else if (uses > 2)
-        ++counts.nonmanifold;
-      else if (walked_forward != 1)
-        ++counts.inconsistent;
-      i = j;
-    }
-    begin = end;
-  }
-  return counts;
-}
-
 SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& options, bool with_fields) {
   check_mesh_shape(mesh);
   Integrator integrator{mesh, mesh.points_xyz.data(), options.reference_point, {}, {}, 0.0, 1.0, 0.0};
@@ -820,18 +585,10 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   // faces). So the shortcut is taken only for residue 0, chi = 2 and no unused
   // point; anything else is counted exactly, edge by edge, on both threads.
   if (!(sums.edge_residue == 0 && genus_zero_closed(mesh))) {
-    const auto points = static_cast<std::uint32_t>(mesh.point_count());
-    const auto split = static_cast<std::uint32_t>(0.4 * points);  // lower vertices own more edges
-    EdgeCounts low_edges, high_edges;
-    parallel_for(2, 2, [&](std::size_t half) {
-      if (half == 0)
-        low_edges = count_edges(mesh, 0, split);
-      else
-        high_edges = count_edges(mesh, split, points);
-    });
-    loads.geometry.boundary_edges = low_edges.boundary + high_edges.boundary;
-    loads.geometry.nonmanifold_edges = low_edges.nonmanifold + high_edges.nonmanifold;
-    loads.geometry.inconsistent_edges = low_edges.inconsistent + high_edges.inconsistent;
+    const EdgeCounts edges = count_edges(mesh);
+    loads.geometry.boundary_edges = edges.boundary;
+    loads.geometry.nonmanifold_edges = edges.nonmanifold;
+    loads.geometry.inconsistent_edges = edges.inconsistent;
   }
   loads.geometry.closed = loads.geometry.boundary_edges == 0 && loads.geometry.nonmanifold_edges == 0;
   loads.reference_point = options.reference_point;
