@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -71,8 +72,8 @@ struct Sums {
 // Most surfaces are all triangles with point data. Their faces are gathered
 // eight at a time into plain arrays, lane by lane, and the arithmetic of
 // Integrator::triangle_point_data then runs on whole arrays, which the
-// compiler turns into SIMD instructions (AVX2 and FMA where the processor
-// has them, chosen when the program starts). Each lane keeps its own sums,
+// compiler turns into SIMD instructions (AVX-512, or AVX2 and FMA, where
+// the processor has them, chosen when the program starts). Each lane keeps its own sums,
 // added in lane order at the end of a block, so results do not depend on
 // the instruction set beyond rounding, nor on threads at all.
 
@@ -150,7 +151,8 @@ template <bool Shear>
     // The triangle's share of the edge residue (see edge_residue()).
     const std::uint64_t g0 = in.ids[0][j], g1 = in.ids[1][j], g2 = in.ids[2][j];
     const std::uint64_t h0 = mix64(g0), h1 = mix64(g1), h2 = mix64(g2);
-    s.edge_residue[j] += (h0 * g1 - h1 * g0) + (h1 * g2 - h2 * g1) + (h2 * g0 - h0 * g2);
+    // (h0 g1 - h1 g0) + (h1 g2 - h2 g1) + (h2 g0 - h0 g2), in three products.
+    s.edge_residue[j] += h0 * (g1 - g2) + h1 * (g2 - g0) + h2 * (g0 - g1);
     if constexpr (Shear) {
       const double t0x = in.tau[0][0][j], t0y = in.tau[0][1][j], t0z = in.tau[0][2][j];
       const double t1x = in.tau[1][0][j], t1y = in.tau[1][1][j], t1z = in.tau[1][2][j];
@@ -171,17 +173,56 @@ template <bool Shear>
   }
 }
 
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_with_shear(const TriangleLanes& in,
-                                                                                   double shear_sign,
-                                                                                   double degenerate_area,
-                                                                                   LaneSums& s) {
-  triangle_lanes<true>(in, shear_sign, degenerate_area, s);
+/// Where a group's values come from: the point arrays, read through the
+/// faces' point indices.
+struct TriangleSources {
+  const double* xyz;
+  const double* pressure;
+  const double* tau[3];  ///< null without shear
+  std::size_t tau_stride;
+  double x_ref[3];
+  double p_ref;
+};
+
+/// `groups` groups of kLanes triangles from `ids` (3 indices a triangle):
+/// gathered lane by lane (inside the clones, so that the gathers are
+/// compiled for the same processor as the arithmetic), integrated, and their
+/// points marked in `used` when there is one.
+template <bool Shear>
+[[gnu::always_inline]] inline void triangle_groups(const std::uint32_t* __restrict ids, std::size_t groups,
+                                                   const TriangleSources& src, double shear_sign,
+                                                   double degenerate_area, LaneSums& __restrict s, PointsUsed* used) {
+  for (std::size_t g = 0; g < groups; ++g, ids += 3 * kLanes) {
+    TriangleLanes in;
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < kLanes; ++j) {
+        const std::size_t i = ids[3 * j + k];
+        in.y[k][0][j] = src.xyz[3 * i] - src.x_ref[0];
+        in.y[k][1][j] = src.xyz[3 * i + 1] - src.x_ref[1];
+        in.y[k][2][j] = src.xyz[3 * i + 2] - src.x_ref[2];
+        in.p[k][j] = src.pressure[i] - src.p_ref;
+        in.ids[k][j] = i;
+        if constexpr (Shear)
+          for (int c = 0; c < 3; ++c) in.tau[k][c][j] = src.tau[c][i * src.tau_stride];
+      }
+    if (used)
+      for (int c = 0; c < 3 * kLanes; ++c) used->mark(ids[c]);
+    triangle_lanes<Shear>(in, shear_sign, degenerate_area, s);
+  }
 }
 
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_pressure_only(const TriangleLanes& in,
-                                                                                      double degenerate_area,
-                                                                                      LaneSums& s) {
-  triangle_lanes<false>(in, 1.0, degenerate_area, s);
+// AVX-512 where the processor has it (eight lanes in one register, and
+// 64-bit multiplies for the edge residue), else AVX2 and FMA.
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void triangle_groups_with_shear(
+    const std::uint32_t* ids, std::size_t groups, const TriangleSources& src, double shear_sign, double degenerate_area,
+    LaneSums& s, PointsUsed* used) {
+  triangle_groups<true>(ids, groups, src, shear_sign, degenerate_area, s, used);
+}
+
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void triangle_groups_pressure_only(
+    const std::uint32_t* ids, std::size_t groups, const TriangleSources& src, double degenerate_area, LaneSums& s,
+    PointsUsed* used) {
+  triangle_groups<false>(ids, groups, src, 1.0, degenerate_area, s, used);
 }
 
 /// Everything a face contributes, computed by one of the rules below.
@@ -325,9 +366,11 @@ struct Integrator {
     return (1.0 / static_cast<double>(end - begin)) * sum;
   }
 
-  void face(std::size_t f, Sums& s) const {
+  void face(std::size_t f, Sums& s, PointsUsed* used) const {
     const std::size_t begin = mesh.face_offsets[f], end = mesh.face_offsets[f + 1];
     const std::size_t k = end - begin;
+    if (used)
+      for (std::size_t i = begin; i < end; ++i) used->mark(mesh.face_indices[i]);
     if (k < 3) {
       ++s.degenerate;
       if (k > 0) s.edge_residue += edge_residue(mesh.face_indices.data() + begin, k);
@@ -401,31 +444,19 @@ struct Integrator {
     s.add(parts);
   }
 
-  /// Faces [f, f + kLanes), all triangles with point pressure (and point
-  /// shear when there is shear), through the lane kernel.
-  void triangle_group(std::size_t f, LaneSums& lanes, Sums& s) const {
-    TriangleLanes in;
+  /// Faces [f, f + groups kLanes), all triangles with point pressure (and
+  /// point shear when there is shear), through the lane kernel.
+  void triangle_groups(std::size_t f, std::size_t groups, LaneSums& lanes, Sums& s, PointsUsed* used) const {
     const std::uint32_t* ids = mesh.face_indices.data() + mesh.face_offsets[f];
-    const bool with_shear = shear.present();
-    for (int j = 0; j < kLanes; ++j) {
-      const std::uint32_t* v = ids + 3 * j;
-      for (int k = 0; k < 3; ++k) {
-        const std::size_t i = v[k];
-        const double* x = xyz + 3 * i;
-        in.y[k][0][j] = x[0] - x_ref[0];
-        in.y[k][1][j] = x[1] - x_ref[1];
-        in.y[k][2][j] = x[2] - x_ref[2];
-        in.p[k][j] = pressure.component[0][i] - p_ref;
-        in.ids[k][j] = i;
-        if (with_shear)
-          for (int c = 0; c < 3; ++c) in.tau[k][c][j] = shear.component[c][i * shear.stride];
-      }
+    TriangleSources src{xyz,          pressure.component[0],          {nullptr, nullptr, nullptr},
+                        shear.stride, {x_ref[0], x_ref[1], x_ref[2]}, p_ref};
+    if (shear.present()) {
+      for (int c = 0; c < 3; ++c) src.tau[c] = shear.component[c];
+      triangle_groups_with_shear(ids, groups, src, shear_sign, degenerate_area, lanes, used);
+    } else {
+      triangle_groups_pressure_only(ids, groups, src, degenerate_area, lanes, used);
     }
-    if (with_shear)
-      triangle_lanes_with_shear(in, shear_sign, degenerate_area, lanes);
-    else
-      triangle_lanes_pressure_only(in, degenerate_area, lanes);
-    s.triangles += kLanes;
+    s.triangles += groups * kLanes;
   }
 
   static constexpr std::size_t kBlock = 4096;
@@ -435,7 +466,7 @@ struct Integrator {
   /// stored once: the block results of neighbouring blocks share cache
   /// lines, and updating them in place from two threads made every face
   /// bounce a line between the cores.
-  void run_block(std::size_t block, Sums& out) const {
+  void run_block(std::size_t block, Sums& out, PointsUsed* used) const {
     const std::size_t start = block * kBlock;
     const std::size_t stop = std::min(mesh.face_count(), start + kBlock);
     const std::uint32_t* offsets = mesh.face_offsets.data();
@@ -462,10 +493,12 @@ struct Integrator {
         triangles_only && pressure.present() && pressure.per_point && (!shear.present() || shear.per_point);
     if (lanes_apply) {
       LaneSums lanes;
-      for (; f + kLanes <= stop; f += kLanes) triangle_group(f, lanes, local);
+      const std::size_t groups = (stop - f) / kLanes;
+      triangle_groups(f, groups, lanes, local, used);
+      f += groups * kLanes;
       lanes.add_to(local);
     }
-    for (; f < stop; ++f) face(f, local);
+    for (; f < stop; ++f) face(f, local, used);
     out = local;
   }
 };
@@ -507,8 +540,10 @@ PointScan scan_points(const SurfaceMesh& mesh, std::size_t part, std::size_t par
 /// second one. Each first scans its share of the points; they meet, since
 /// the degenerate-face threshold needs the whole bounding box;
 /// then both take blocks of faces. Block results are summed in block order,
-/// so the totals do not depend on which thread ran what.
-Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
+/// so the totals do not depend on which thread ran what. With mark_points,
+/// each thread also marks the points its faces use, in a set of its own, and
+/// `used` receives their union.
+Sums integrate_blocks(Integrator& integrator, PointScan& scanned, bool mark_points, std::optional<PointsUsed>& used) {
   const SurfaceMesh& mesh = integrator.mesh;
   const std::size_t faces = mesh.face_count();
   const std::size_t blocks = (faces + Integrator::kBlock - 1) / Integrator::kBlock;
@@ -523,10 +558,13 @@ Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
   };
   std::barrier<decltype(meet)> sync(static_cast<std::ptrdiff_t>(threads), meet);
   std::atomic<std::size_t> next{0};
+  std::optional<PointsUsed> marked[2];
   auto work = [&](std::size_t thread) {
+    if (mark_points) marked[thread].emplace(mesh.point_count());
+    PointsUsed* mine = marked[thread] ? &*marked[thread] : nullptr;
     parts[thread] = scan_points(mesh, thread, threads);
     sync.arrive_and_wait();
-    for (std::size_t b = next++; b < blocks; b = next++) integrator.run_block(b, block_sums[b]);
+    for (std::size_t b = next++; b < blocks; b = next++) integrator.run_block(b, block_sums[b], mine);
   };
   if (threads == 2) {
     std::thread helper(work, 1);
@@ -534,6 +572,10 @@ Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
     helper.join();
   } else {
     work(0);
+  }
+  if (mark_points) {
+    used = std::move(marked[0]);
+    if (threads == 2) used->merge(*marked[1]);
   }
   Sums total;
   for (const auto& block : block_sums) total.add(block);
@@ -560,7 +602,10 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
 
   SurfaceLoads loads;
   PointScan scanned;
-  const Sums sums = integrate_blocks(integrator, scanned);
+  // The points used are marked only where the shortcut below could be taken.
+  std::optional<PointsUsed> used;
+  const bool euler_two = euler_characteristic_two(mesh);
+  const Sums sums = integrate_blocks(integrator, scanned, euler_two, used);
   if (sums.invalid) throw_unreadable_faces(mesh);
   if (!scanned.coordinates_finite) throw_not_finite_point(mesh);
   // A NaN or Inf in a value that a face uses makes its sums NaN or Inf (times
@@ -583,8 +628,12 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   // closed, consistently oriented surface of genus 0 is 2, and any set of
   // faces listed twice lowers it (a closed set of faces has more edges than
   // faces). So the shortcut is taken only for residue 0, chi = 2 and no unused
-  // point; anything else is counted exactly, edge by edge, on both threads.
-  if (!(sums.edge_residue == 0 && genus_zero_closed(mesh))) {
+  // point (marked by the kernel as it goes, one bit a point); anything else is
+  // counted exactly, edge by edge, on both threads. What the shortcut cannot
+  // see: closed pieces that share an edge and add up to chi = 2 (two spheres
+  // on one edge: that edge has four faces); telling those apart needs every
+  // edge's identity, which is the exact count's cost.
+  if (!(sums.edge_residue == 0 && euler_two && used->all())) {
     const EdgeCounts edges = count_edges(mesh);
     loads.geometry.boundary_edges = edges.boundary;
     loads.geometry.nonmanifold_edges = edges.nonmanifold;

@@ -88,15 +88,23 @@ EdgeCounts count_edges(const SurfaceMesh& mesh) {
           halves[0].inconsistent + halves[1].inconsistent};
 }
 
-bool genus_zero_closed(const SurfaceMesh& mesh) {
+bool euler_characteristic_two(const SurfaceMesh& mesh) {
   const auto corners = static_cast<std::int64_t>(mesh.face_indices.size());
-  if (corners % 2 != 0) return false;
   const auto points = static_cast<std::int64_t>(mesh.point_count());
   const auto faces = static_cast<std::int64_t>(mesh.face_count());
-  if (points - corners / 2 + faces != 2) return false;
-  std::vector<std::uint8_t> used(mesh.point_count(), 0);
-  for (const std::uint32_t i : mesh.face_indices) used[i] = 1;
-  return std::find(used.begin(), used.end(), std::uint8_t{0}) == used.end();
+  return corners % 2 == 0 && points - corners / 2 + faces == 2;
+}
+
+void PointsUsed::merge(const PointsUsed& other) {
+  for (std::size_t w = 0; w < words_.size(); ++w) words_[w] |= other.words_[w];
+}
+
+bool PointsUsed::all() const {
+  const std::size_t full = points_ / 64;
+  for (std::size_t w = 0; w < full; ++w)
+    if (words_[w] != ~std::uint64_t{0}) return false;
+  const std::size_t rest = points_ % 64;
+  return rest == 0 || words_[full] == (std::uint64_t{1} << rest) - 1;
 }
 
 }  // namespace hydrocoef::loads_detail
