@@ -2,7 +2,9 @@
 //
 //   BM_IntegrateTriangles      integrate_surface_loads on a closed surface of
 //                              1.3 million triangles with point pressure and
-//                              point wall shear (goal: >= 50 M triangles/s)
+//                              point wall shear and every geometry check
+//                              (goal: >= 100 M triangles/s; the rate is per
+//                              second of the calling thread's CPU time)
 //   BM_VtpReadOnly             vtkXMLPolyDataReader alone on that surface as
 //                              a .vtp: the floor the goal below is set against
 //   BM_VtpImportAndIntegrate   hydrocoef's path: read_vtk_surface (the direct

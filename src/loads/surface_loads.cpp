@@ -6,15 +6,18 @@
 #include <cmath>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
 #include "src/core/error.hpp"
-#include "src/core/huge_pages.hpp"
-#include "src/core/parallel.hpp"
+#include "src/loads/surface_input.hpp"
+#include "src/loads/surface_topology.hpp"
 
 namespace hydrocoef {
 namespace {
+
+using namespace loads_detail;
 
 // ---- small vector helpers (Vec3 is a plain array so the hot loop stays inline)
 inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
@@ -31,95 +34,6 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-
-/// A scalar or vector array seen through stride and offsets, so that a
-/// 3-component array and three scalar arrays are read the same way.
-struct FieldView {
-  const double* component[3] = {nullptr, nullptr, nullptr};
-  std::size_t stride = 1;
-  bool per_point = true;
-  const FieldArray* arrays[3] = {nullptr, nullptr, nullptr};  ///< the distinct arrays behind it
-  const char* role = "";
-  bool present() const { return component[0] != nullptr; }
-  double scalar(std::size_t i) const { return component[0][i * stride]; }
-  Vec3 vector(std::size_t i) const {
-    return {component[0][i * stride], component[1][i * stride], component[2][i * stride]};
-  }
-};
-
-std::string available_arrays(const SurfaceMesh& mesh) {
-  std::string out;
-  for (const auto& field : mesh.fields) {
-    if (!out.empty()) out += ", ";
-    out += "'" + field.name + "'";
-    if (field.components == 3) out += " (vector)";
-  }
-  return out.empty() ? "none" : out;
-}
-
-const FieldArray& find_array(const SurfaceMesh& mesh, const std::string& name, int components, const char* role) {
-  const FieldArray* field = mesh.find_field(name);
-  if (!field)
-    throw InputError(std::string(role) + " array '" + name +
-                     "' is not in the file; arrays there: " + available_arrays(mesh));
-  if (field->components != components)
-    throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->components) +
-                     " components, expected " + std::to_string(components));
-  const std::size_t expected = field->association == FieldAssociation::Point ? mesh.point_count() : mesh.face_count();
-  if (field->size() != expected)
-    throw InputError(std::string(role) + " array '" + name + "' has " + std::to_string(field->size()) +
-                     " values, expected " + std::to_string(expected) + " (one per " +
-                     (field->association == FieldAssociation::Point ? "point" : "face") + ")");
-  return *field;
-}
-
-/// The InputError for the first value of `field` that is NaN or Inf.
-[[noreturn]] void throw_not_finite(const FieldArray& field, const char* role) {
-  std::size_t i = 0;
-  while (i < field.values.size() && std::isfinite(field.values[i])) ++i;
-  if (i == field.values.size()) throw std::logic_error("throw_not_finite: every value is finite");
-  throw InputError(std::string(role) + " array '" + field.name + "' holds " +
-                   (std::isnan(field.values[i]) ? "NaN" : "Inf") + " at " +
-                   (field.association == FieldAssociation::Point ? "point " : "face ") +
-                   std::to_string(i / static_cast<std::size_t>(field.components)) + "; expected finite values");
-}
-
-FieldView pressure_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
-  const FieldArray& field = find_array(mesh, options.pressure_field, 1, "pressure");
-  FieldView view;
-  view.component[0] = field.values.data();
-  view.per_point = field.association == FieldAssociation::Point;
-  view.arrays[0] = &field;
-  view.role = "pressure";
-  return view;
-}
-
-FieldView shear_view(const SurfaceMesh& mesh, const SurfaceLoadOptions& options) {
-  FieldView view;
-  view.role = "wall shear";
-  if (options.shear_fields.empty()) return view;
-  if (options.shear_fields.size() == 1) {
-    const FieldArray& field = find_array(mesh, options.shear_fields[0], 3, "wall shear");
-    for (int c = 0; c < 3; ++c) view.component[c] = field.values.data() + c;
-    view.stride = 3;
-    view.per_point = field.association == FieldAssociation::Point;
-    view.arrays[0] = &field;
-    return view;
-  }
-  if (options.shear_fields.size() != 3)
-    throw InputError("wall shear: expected one vector array or three scalar arrays x,y,z, got " +
-                     std::to_string(options.shear_fields.size()) + " names");
-  for (int c = 0; c < 3; ++c) {
-    const FieldArray& field = find_array(mesh, options.shear_fields[static_cast<std::size_t>(c)], 1, "wall shear");
-    view.component[c] = field.values.data();
-    view.arrays[c] = &field;
-    const bool per_point = field.association == FieldAssociation::Point;
-    if (c > 0 && per_point != view.per_point)
-      throw InputError("wall shear arrays mix point and face data; expected all three alike");
-    view.per_point = per_point;
-  }
-  return view;
-}
 
 /// Running sums of one block of faces; blocks are then summed, which keeps
 /// the rounding error of millions of faces near that of a few thousand.
@@ -153,37 +67,13 @@ struct Sums {
   }
 };
 
-/// A 64-bit mix of a vertex index (splitmix64's finalizer).
-inline std::uint64_t mix64(std::uint64_t x) {
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-/// The face's share of Sums::edge_residue, with h = mix64 and g the index
-/// itself: h(a) b - h(b) a is antisymmetric in (a, b), which is all the
-/// cancellation needs, at one hash per vertex.
-inline std::uint64_t edge_residue(const std::uint32_t* indices, std::size_t k) {
-  std::uint64_t residue = 0;
-  const std::uint64_t g_first = indices[0], h_first = mix64(g_first);
-  std::uint64_t h_prev = h_first, g_prev = g_first;
-  for (std::size_t i = 1; i <= k; ++i) {
-    const std::uint64_t g = i < k ? indices[i] : g_first;
-    const std::uint64_t h = i < k ? mix64(g) : h_first;
-    residue += h_prev * g - h * g_prev;
-    h_prev = h;
-    g_prev = g;
-  }
-  return residue;
-}
-
 // ---- triangles with point data, eight at a time ---------------------------
 //
 // Most surfaces are all triangles with point data. Their faces are gathered
 // eight at a time into plain arrays, lane by lane, and the arithmetic of
 // Integrator::triangle_point_data then runs on whole arrays, which the
-// compiler turns into SIMD instructions (AVX2 and FMA where the processor
-// has them, chosen when the program starts). Each lane keeps its own sums,
+// compiler turns into SIMD instructions (AVX-512, or AVX2 and FMA, where
+// the processor has them, chosen when the program starts). Each lane keeps its own sums,
 // added in lane order at the end of a block, so results do not depend on
 // the instruction set beyond rounding, nor on threads at all.
 
@@ -261,7 +151,8 @@ template <bool Shear>
     // The triangle's share of the edge residue (see edge_residue()).
     const std::uint64_t g0 = in.ids[0][j], g1 = in.ids[1][j], g2 = in.ids[2][j];
     const std::uint64_t h0 = mix64(g0), h1 = mix64(g1), h2 = mix64(g2);
-    s.edge_residue[j] += (h0 * g1 - h1 * g0) + (h1 * g2 - h2 * g1) + (h2 * g0 - h0 * g2);
+    // (h0 g1 - h1 g0) + (h1 g2 - h2 g1) + (h2 g0 - h0 g2), in three products.
+    s.edge_residue[j] += h0 * (g1 - g2) + h1 * (g2 - g0) + h2 * (g0 - g1);
     if constexpr (Shear) {
       const double t0x = in.tau[0][0][j], t0y = in.tau[0][1][j], t0z = in.tau[0][2][j];
       const double t1x = in.tau[1][0][j], t1y = in.tau[1][1][j], t1z = in.tau[1][2][j];
@@ -282,17 +173,56 @@ template <bool Shear>
   }
 }
 
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_with_shear(const TriangleLanes& in,
-                                                                                   double shear_sign,
-                                                                                   double degenerate_area,
-                                                                                   LaneSums& s) {
-  triangle_lanes<true>(in, shear_sign, degenerate_area, s);
+/// Where a group's values come from: the point arrays, read through the
+/// faces' point indices.
+struct TriangleSources {
+  const double* xyz;
+  const double* pressure;
+  const double* tau[3];  ///< null without shear
+  std::size_t tau_stride;
+  double x_ref[3];
+  double p_ref;
+};
+
+/// `groups` groups of kLanes triangles from `ids` (3 indices a triangle):
+/// gathered lane by lane (inside the clones, so that the gathers are
+/// compiled for the same processor as the arithmetic), integrated, and their
+/// points marked in `used` when there is one.
+template <bool Shear>
+[[gnu::always_inline]] inline void triangle_groups(const std::uint32_t* __restrict ids, std::size_t groups,
+                                                   const TriangleSources& src, double shear_sign,
+                                                   double degenerate_area, LaneSums& __restrict s, PointsUsed* used) {
+  for (std::size_t g = 0; g < groups; ++g, ids += 3 * kLanes) {
+    TriangleLanes in;
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < kLanes; ++j) {
+        const std::size_t i = ids[3 * j + k];
+        in.y[k][0][j] = src.xyz[3 * i] - src.x_ref[0];
+        in.y[k][1][j] = src.xyz[3 * i + 1] - src.x_ref[1];
+        in.y[k][2][j] = src.xyz[3 * i + 2] - src.x_ref[2];
+        in.p[k][j] = src.pressure[i] - src.p_ref;
+        in.ids[k][j] = i;
+        if constexpr (Shear)
+          for (int c = 0; c < 3; ++c) in.tau[k][c][j] = src.tau[c][i * src.tau_stride];
+      }
+    if (used)
+      for (int c = 0; c < 3 * kLanes; ++c) used->mark(ids[c]);
+    triangle_lanes<Shear>(in, shear_sign, degenerate_area, s);
+  }
 }
 
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void triangle_lanes_pressure_only(const TriangleLanes& in,
-                                                                                      double degenerate_area,
-                                                                                      LaneSums& s) {
-  triangle_lanes<false>(in, 1.0, degenerate_area, s);
+// AVX-512 where the processor has it (eight lanes in one register, and
+// 64-bit multiplies for the edge residue), else AVX2 and FMA.
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void triangle_groups_with_shear(
+    const std::uint32_t* ids, std::size_t groups, const TriangleSources& src, double shear_sign, double degenerate_area,
+    LaneSums& s, PointsUsed* used) {
+  triangle_groups<true>(ids, groups, src, shear_sign, degenerate_area, s, used);
+}
+
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void triangle_groups_pressure_only(
+    const std::uint32_t* ids, std::size_t groups, const TriangleSources& src, double degenerate_area, LaneSums& s,
+    PointsUsed* used) {
+  triangle_groups<false>(ids, groups, src, 1.0, degenerate_area, s, used);
 }
 
 /// Everything a face contributes, computed by one of the rules below.
@@ -436,9 +366,11 @@ struct Integrator {
     return (1.0 / static_cast<double>(end - begin)) * sum;
   }
 
-  void face(std::size_t f, Sums& s) const {
+  void face(std::size_t f, Sums& s, PointsUsed* used) const {
     const std::size_t begin = mesh.face_offsets[f], end = mesh.face_offsets[f + 1];
     const std::size_t k = end - begin;
+    if (used)
+      for (std::size_t i = begin; i < end; ++i) used->mark(mesh.face_indices[i]);
     if (k < 3) {
       ++s.degenerate;
       if (k > 0) s.edge_residue += edge_residue(mesh.face_indices.data() + begin, k);
@@ -512,31 +444,19 @@ struct Integrator {
     s.add(parts);
   }
 
-  /// Faces [f, f + kLanes), all triangles with point pressure (and point
-  /// shear when there is shear), through the lane kernel.
-  void triangle_group(std::size_t f, LaneSums& lanes, Sums& s) const {
-    TriangleLanes in;
+  /// Faces [f, f + groups kLanes), all triangles with point pressure (and
+  /// point shear when there is shear), through the lane kernel.
+  void triangle_groups(std::size_t f, std::size_t groups, LaneSums& lanes, Sums& s, PointsUsed* used) const {
     const std::uint32_t* ids = mesh.face_indices.data() + mesh.face_offsets[f];
-    const bool with_shear = shear.present();
-    for (int j = 0; j < kLanes; ++j) {
-      const std::uint32_t* v = ids + 3 * j;
-      for (int k = 0; k < 3; ++k) {
-        const std::size_t i = v[k];
-        const double* x = xyz + 3 * i;
-        in.y[k][0][j] = x[0] - x_ref[0];
-        in.y[k][1][j] = x[1] - x_ref[1];
-        in.y[k][2][j] = x[2] - x_ref[2];
-        in.p[k][j] = pressure.component[0][i] - p_ref;
-        in.ids[k][j] = i;
-        if (with_shear)
-          for (int c = 0; c < 3; ++c) in.tau[k][c][j] = shear.component[c][i * shear.stride];
-      }
+    TriangleSources src{xyz,          pressure.component[0],          {nullptr, nullptr, nullptr},
+                        shear.stride, {x_ref[0], x_ref[1], x_ref[2]}, p_ref};
+    if (shear.present()) {
+      for (int c = 0; c < 3; ++c) src.tau[c] = shear.component[c];
+      triangle_groups_with_shear(ids, groups, src, shear_sign, degenerate_area, lanes, used);
+    } else {
+      triangle_groups_pressure_only(ids, groups, src, degenerate_area, lanes, used);
     }
-    if (with_shear)
-      triangle_lanes_with_shear(in, shear_sign, degenerate_area, lanes);
-    else
-      triangle_lanes_pressure_only(in, degenerate_area, lanes);
-    s.triangles += kLanes;
+    s.triangles += groups * kLanes;
   }
 
   static constexpr std::size_t kBlock = 4096;
@@ -546,7 +466,7 @@ struct Integrator {
   /// stored once: the block results of neighbouring blocks share cache
   /// lines, and updating them in place from two threads made every face
   /// bounce a line between the cores.
-  void run_block(std::size_t block, Sums& out) const {
+  void run_block(std::size_t block, Sums& out, PointsUsed* used) const {
     const std::size_t start = block * kBlock;
     const std::size_t stop = std::min(mesh.face_count(), start + kBlock);
     const std::uint32_t* offsets = mesh.face_offsets.data();
@@ -573,10 +493,12 @@ struct Integrator {
         triangles_only && pressure.present() && pressure.per_point && (!shear.present() || shear.per_point);
     if (lanes_apply) {
       LaneSums lanes;
-      for (; f + kLanes <= stop; f += kLanes) triangle_group(f, lanes, local);
+      const std::size_t groups = (stop - f) / kLanes;
+      triangle_groups(f, groups, lanes, local, used);
+      f += groups * kLanes;
       lanes.add_to(local);
     }
-    for (; f < stop; ++f) face(f, local);
+    for (; f < stop; ++f) face(f, local, used);
     out = local;
   }
 };
@@ -618,8 +540,10 @@ PointScan scan_points(const SurfaceMesh& mesh, std::size_t part, std::size_t par
 /// second one. Each first scans its share of the points; they meet, since
 /// the degenerate-face threshold needs the whole bounding box;
 /// then both take blocks of faces. Block results are summed in block order,
-/// so the totals do not depend on which thread ran what.
-Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
+/// so the totals do not depend on which thread ran what. With mark_points,
+/// each thread also marks the points its faces use, in a set of its own, and
+/// `used` receives their union.
+Sums integrate_blocks(Integrator& integrator, PointScan& scanned, bool mark_points, std::optional<PointsUsed>& used) {
   const SurfaceMesh& mesh = integrator.mesh;
   const std::size_t faces = mesh.face_count();
   const std::size_t blocks = (faces + Integrator::kBlock - 1) / Integrator::kBlock;
@@ -634,10 +558,13 @@ Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
   };
   std::barrier<decltype(meet)> sync(static_cast<std::ptrdiff_t>(threads), meet);
   std::atomic<std::size_t> next{0};
+  std::optional<PointsUsed> marked[2];
   auto work = [&](std::size_t thread) {
+    if (mark_points) marked[thread].emplace(mesh.point_count());
+    PointsUsed* mine = marked[thread] ? &*marked[thread] : nullptr;
     parts[thread] = scan_points(mesh, thread, threads);
     sync.arrive_and_wait();
-    for (std::size_t b = next++; b < blocks; b = next++) integrator.run_block(b, block_sums[b]);
+    for (std::size_t b = next++; b < blocks; b = next++) integrator.run_block(b, block_sums[b], mine);
   };
   if (threads == 2) {
     std::thread helper(work, 1);
@@ -645,6 +572,10 @@ Sums integrate_blocks(Integrator& integrator, PointScan& scanned) {
     helper.join();
   } else {
     work(0);
+  }
+  if (mark_points) {
+    used = std::move(marked[0]);
+    if (threads == 2) used->merge(*marked[1]);
   }
   Sums total;
   for (const auto& block : block_sums) total.add(block);
@@ -659,130 +590,6 @@ bool all_finite(const Sums& s) {
   return finite;
 }
 
-/// The checks that cost nothing per face; the rest (offsets that go back,
-/// point indices out of range) are made block by block while integrating.
-void check_mesh_shape(const SurfaceMesh& mesh) {
-  if (mesh.face_count() == 0) throw InputError("the surface has no faces; expected a body surface of polygons");
-  if (mesh.points_xyz.size() % 3 != 0) throw InputError("point coordinates are not a multiple of 3");
-  if (mesh.face_offsets.front() != 0)
-    throw InputError("face offsets start at " + std::to_string(mesh.face_offsets.front()) + "; expected 0");
-  if (mesh.face_offsets.back() != mesh.face_indices.size())
-    throw InputError("face offsets end at " + std::to_string(mesh.face_offsets.back()) + " but there are " +
-                     std::to_string(mesh.face_indices.size()) + " face indices");
-  // Edge entries pack a point index and a direction bit into 32 bits.
-  if (mesh.point_count() >= (std::size_t{1} << 31))
-    throw InputError("the surface has " + std::to_string(mesh.point_count()) + " points; expected fewer than 2^31");
-}
-
-/// The InputError for the first face a block could not read.
-/// The offsets first (only offsets that never go back keep the index reads
-/// inside the array), then the indices.
-[[noreturn]] void throw_unreadable_faces(const SurfaceMesh& mesh) {
-  for (std::size_t f = 0; f < mesh.face_count(); ++f)
-    if (mesh.face_offsets[f + 1] < mesh.face_offsets[f])
-      throw InputError("face offsets go back at face " + std::to_string(f) + " (" +
-                       std::to_string(mesh.face_offsets[f + 1]) + " after " + std::to_string(mesh.face_offsets[f]) +
-                       "); expected offsets that never decrease");
-  const std::size_t points = mesh.point_count();
-  for (std::size_t f = 0; f < mesh.face_count(); ++f)
-    for (std::size_t i = mesh.face_offsets[f]; i < mesh.face_offsets[f + 1]; ++i)
-      if (mesh.face_indices[i] >= points)
-        throw InputError("face " + std::to_string(f) + " refers to point " + std::to_string(mesh.face_indices[i]) +
-                         " but the surface has " + std::to_string(points) + " points");
-  throw std::logic_error("throw_unreadable_faces: every face can be read");
-}
-
-/// The InputError for the first point with a coordinate that is NaN or Inf.
-[[noreturn]] void throw_not_finite_point(const SurfaceMesh& mesh) {
-  for (std::size_t i = 0; i < mesh.points_xyz.size(); ++i)
-    if (!std::isfinite(mesh.points_xyz[i]))
-      throw InputError("point " + std::to_string(i / 3) + " has " + "xyz"[i % 3] + " = " +
-                       (std::isnan(mesh.points_xyz[i]) ? "NaN" : "Inf") + "; expected finite coordinates");
-  throw std::logic_error("throw_not_finite_point: every coordinate is finite");
-}
-
-/// True when V - E + F = 2 with E = (sum of face sizes) / 2 and V the number
-/// of points, and every point is used by a face.
-bool genus_zero_closed(const SurfaceMesh& mesh) {
-  const auto corners = static_cast<std::int64_t>(mesh.face_indices.size());
-  if (corners % 2 != 0) return false;
-  const auto points = static_cast<std::int64_t>(mesh.point_count());
-  const auto faces = static_cast<std::int64_t>(mesh.face_count());
-  if (points - corners / 2 + faces != 2) return false;
-  std::vector<std::uint8_t> used(mesh.point_count(), 0);
-  for (const std::uint32_t i : mesh.face_indices) used[i] = 1;
-  return std::find(used.begin(), used.end(), std::uint8_t{0}) == used.end();
-}
-
-/// Edge counts of the edges whose smaller vertex lies in [first, last).
-struct EdgeCounts {
-  std::size_t boundary = 0, nonmanifold = 0, inconsistent = 0;
-};
-
-/// Edge topology: each edge (a, b) is filed under its smaller vertex with
-/// the direction the face walks it; two passes of counting, no sort of the
-/// whole edge list, so this stays linear in the number of faces. Working on a
-/// vertex range lets two threads share the work; entries are 32 bits (the
-/// other vertex and the direction), uninitialised and on huge pages, since
-/// filling them is random access over tens of MB.
-EdgeCounts count_edges(const SurfaceMesh& mesh, std::uint32_t first, std::uint32_t last) {
-  EdgeCounts counts;
-  if (last <= first) return counts;
-  const std::size_t vertices = last - first;
-  std::vector<std::uint32_t> start;
-  reserve_with_huge_pages(start, vertices + 1);
-  start.assign(vertices + 1, 0);
-  const std::size_t faces = mesh.face_count();
-  const std::uint32_t* offsets = mesh.face_offsets.data();
-  const std::uint32_t* indices = mesh.face_indices.data();
-  auto for_each_edge = [&](auto&& visit) {
-    for (std::size_t f = 0; f < faces; ++f) {
-      const std::uint32_t begin = offsets[f], end = offsets[f + 1];
-      for (std::uint32_t i = begin; i < end; ++i) {
-        const std::uint32_t a = indices[i], b = indices[i + 1 < end ? i + 1 : begin];
-        const std::uint32_t low = a < b ? a : b;
-        if (a != b && low >= first && low < last) visit(a, b, low - first);
-      }
-    }
-  };
-  for_each_edge([&](std::uint32_t, std::uint32_t, std::uint32_t v) { ++start[v + 1]; });
-  for (std::size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
-  const std::size_t total = start[vertices];
-  const std::unique_ptr<std::uint32_t[]> entries(new std::uint32_t[total]);
-  prefer_huge_pages(entries.get(), total * sizeof(std::uint32_t));
-  for_each_edge([&](std::uint32_t a, std::uint32_t b, std::uint32_t v) {
-    entries[start[v]++] = ((a < b ? b : a) << 1) | (a < b ? 1u : 0u);
-  });
-  // start[v] now holds the end of v's entries, start[v - 1] their beginning.
-  std::uint32_t begin = 0;
-  for (std::size_t v = 0; v < vertices; ++v) {
-    const std::uint32_t end = start[v];
-    std::uint32_t* list = entries.get() + begin;
-    const std::size_t n = end - begin;
-    if (n <= 16) {  // lists hold a handful of edges on any sensible mesh
-      for (std::size_t i = 1; i < n; ++i)
-        for (std::size_t j = i; j > 0 && list[j] < list[j - 1]; --j) std::swap(list[j], list[j - 1]);
-    } else {  // a vertex shared by very many faces: O(n log n), whatever the mesh
-      std::sort(list, list + n);
-    }
-    for (std::size_t i = 0; i < n;) {
-      std::size_t j = i;
-      unsigned walked_forward = 0;
-      while (j < n && (list[j] >> 1) == (list[i] >> 1)) walked_forward += list[j++] & 1u;
-      const std::size_t uses = j - i;
-      if (uses == 1)
-        ++counts.boundary;
-      else if (uses > 2)
-        ++counts.nonmanifold;
-      else if (walked_forward != 1)
-        ++counts.inconsistent;
-      i = j;
-    }
-    begin = end;
-  }
-  return counts;
-}
-
 SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& options, bool with_fields) {
   check_mesh_shape(mesh);
   Integrator integrator{mesh, mesh.points_xyz.data(), options.reference_point, {}, {}, 0.0, 1.0, 0.0};
@@ -795,7 +602,10 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
 
   SurfaceLoads loads;
   PointScan scanned;
-  const Sums sums = integrate_blocks(integrator, scanned);
+  // The points used are marked only where the shortcut below could be taken.
+  std::optional<PointsUsed> used;
+  const bool euler_two = euler_characteristic_two(mesh);
+  const Sums sums = integrate_blocks(integrator, scanned, euler_two, used);
   if (sums.invalid) throw_unreadable_faces(mesh);
   if (!scanned.coordinates_finite) throw_not_finite_point(mesh);
   // A NaN or Inf in a value that a face uses makes its sums NaN or Inf (times
@@ -818,20 +628,16 @@ SurfaceLoads integrate(const SurfaceMesh& mesh, const SurfaceLoadOptions& option
   // closed, consistently oriented surface of genus 0 is 2, and any set of
   // faces listed twice lowers it (a closed set of faces has more edges than
   // faces). So the shortcut is taken only for residue 0, chi = 2 and no unused
-  // point; anything else is counted exactly, edge by edge, on both threads.
-  if (!(sums.edge_residue == 0 && genus_zero_closed(mesh))) {
-    const auto points = static_cast<std::uint32_t>(mesh.point_count());
-    const auto split = static_cast<std::uint32_t>(0.4 * points);  // lower vertices own more edges
-    EdgeCounts low_edges, high_edges;
-    parallel_for(2, 2, [&](std::size_t half) {
-      if (half == 0)
-        low_edges = count_edges(mesh, 0, split);
-      else
-        high_edges = count_edges(mesh, split, points);
-    });
-    loads.geometry.boundary_edges = low_edges.boundary + high_edges.boundary;
-    loads.geometry.nonmanifold_edges = low_edges.nonmanifold + high_edges.nonmanifold;
-    loads.geometry.inconsistent_edges = low_edges.inconsistent + high_edges.inconsistent;
+  // point (marked by the kernel as it goes, one bit a point); anything else is
+  // counted exactly, edge by edge, on both threads. What the shortcut cannot
+  // see: closed pieces that share an edge and add up to chi = 2 (two spheres
+  // on one edge: that edge has four faces); telling those apart needs every
+  // edge's identity, which is the exact count's cost.
+  if (!(sums.edge_residue == 0 && euler_two && used->all())) {
+    const EdgeCounts edges = count_edges(mesh);
+    loads.geometry.boundary_edges = edges.boundary;
+    loads.geometry.nonmanifold_edges = edges.nonmanifold;
+    loads.geometry.inconsistent_edges = edges.inconsistent;
   }
   loads.geometry.closed = loads.geometry.boundary_edges == 0 && loads.geometry.nonmanifold_edges == 0;
   loads.reference_point = options.reference_point;

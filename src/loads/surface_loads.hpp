@@ -99,7 +99,7 @@ struct SurfaceLoads {
 /// NormalPolicy::Auto.
 ///
 /// Large meshes are integrated on two threads; surfaces of triangles with
-/// point data go through a SIMD kernel (AVX2 where the processor has it).
+/// point data go through a SIMD kernel (AVX-512 or AVX2 where the processor has it).
 SurfaceLoads integrate_surface_loads(const SurfaceMesh& mesh, const SurfaceLoadOptions& options);
 
 /// Geometry checks alone (no fields needed).

@@ -44,9 +44,9 @@ class Faces {
     const std::uint32_t n = size(f);
     const std::uint32_t* c = corners(f);
     if (n == 3) {
-      std::array<std::uint32_t, 3> t = {c[0], c[1], c[2]};
-      std::sort(t.begin(), t.end());
-      return (std::uint64_t{t[1]} << 32) | t[2];
+      const std::uint32_t low = std::min({c[0], c[1], c[2]}), high = std::max({c[0], c[1], c[2]});
+      const std::uint32_t middle = c[0] ^ c[1] ^ c[2] ^ low ^ high;
+      return (std::uint64_t{middle} << 32) | high;
     }
     std::uint64_t h = mix(n);
     for (std::uint32_t i = 0; i < n; ++i) h += mix(edge_word(c[i], c[i + 1 < n ? i + 1 : 0]));
@@ -79,31 +79,56 @@ void keep_earliest(std::optional<DuplicateFace>& found, std::size_t first, std::
     found = DuplicateFace{first, second};
 }
 
+/// Each face's lowest point (kNoFace for a face without points) and key,
+/// computed once, on two threads (each half of the faces).
+constexpr std::uint32_t kNoFace = ~std::uint32_t{0};
+
+struct FaceKeys {
+  std::unique_ptr<std::uint32_t[]> lowest;
+  std::unique_ptr<std::uint64_t[]> key;
+};
+
+FaceKeys face_keys(const Faces& faces) {
+  const std::size_t n = faces.count();
+  FaceKeys out{std::unique_ptr<std::uint32_t[]>(new std::uint32_t[n]),
+               std::unique_ptr<std::uint64_t[]>(new std::uint64_t[n])};
+  parallel_for(2, 2, [&](std::size_t half) {
+    for (std::size_t f = n * half / 2; f < n * (half + 1) / 2; ++f) {
+      const bool empty = faces.size(f) == 0;
+      out.lowest[f] = empty ? kNoFace : faces.lowest_point(f);
+      out.key[f] = empty ? 0 : faces.key(f);
+    }
+  });
+  return out;
+}
+
 /// The earliest repeat among the faces whose lowest point is in [first, last).
 /// Faces are bucketed by their lowest point (two copies of a face share it),
 /// each with its key, in face order inside a bucket: counted, summed, filled;
 /// then a bucket's keys are compared, so that faces are read again only
-/// where two keys are equal.
-std::optional<DuplicateFace> find_in(const Faces& faces, std::uint32_t first, std::uint32_t last) {
+/// where two keys are equal. (A face outside the range is counted in a spare
+/// bucket past the end, which saves a branch the processor cannot predict.)
+std::optional<DuplicateFace> find_in(const Faces& faces, const FaceKeys& keyed, std::uint32_t first,
+                                     std::uint32_t last) {
   std::optional<DuplicateFace> found;
   if (last <= first) return found;
   const std::size_t points = last - first;
-  std::vector<std::uint32_t> start(points + 1, 0);
-  for (std::size_t f = 0; f < faces.count(); ++f) {
-    if (faces.size(f) == 0) continue;
-    const std::uint32_t low = faces.lowest_point(f);
-    if (low >= first && low < last) ++start[low - first + 1];
-  }
+  const std::size_t spare = points + 1;
+  std::vector<std::uint32_t> start(points + 2, 0);
+  auto bucket = [&](std::size_t f) -> std::size_t {
+    const std::uint32_t low = keyed.lowest[f];
+    return low >= first && low < last ? low - first : spare - 1;
+  };
+  for (std::size_t f = 0; f < faces.count(); ++f) ++start[bucket(f) + 1];
   for (std::size_t p = 0; p < points; ++p) start[p + 1] += start[p];
   const std::size_t total = start[points];
   const std::unique_ptr<std::uint64_t[]> keys(new std::uint64_t[total]);
   const std::unique_ptr<std::uint32_t[]> ids(new std::uint32_t[total]);
   for (std::size_t f = 0; f < faces.count(); ++f) {
-    if (faces.size(f) == 0) continue;
-    const std::uint32_t low = faces.lowest_point(f);
+    const std::uint32_t low = keyed.lowest[f];
     if (low < first || low >= last) continue;
     const std::uint32_t at = start[low - first]++;
-    keys[at] = faces.key(f);
+    keys[at] = keyed.key[f];
     ids[at] = static_cast<std::uint32_t>(f);
   }
   // start[p] now holds the end of p's bucket, start[p - 1] its beginning.
@@ -153,9 +178,10 @@ std::optional<DuplicateFace> find_duplicate_face(const SurfaceMesh& mesh) {
   // Two threads, each with the faces whose lowest point is in its half of
   // the points (lower points are the lowest of more faces).
   const auto split = static_cast<std::uint32_t>(0.4 * points);
+  const FaceKeys keyed = face_keys(faces);
   std::array<std::optional<DuplicateFace>, 2> halves;
   parallel_for(2, 2, [&](std::size_t half) {
-    halves[half] = half == 0 ? find_in(faces, 0, split) : find_in(faces, split, points);
+    halves[half] = half == 0 ? find_in(faces, keyed, 0, split) : find_in(faces, keyed, split, points);
   });
   std::optional<DuplicateFace> found = halves[0];
   if (halves[1]) keep_earliest(found, halves[1]->first, halves[1]->second);

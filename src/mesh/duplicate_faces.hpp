@@ -28,7 +28,7 @@ struct DuplicateFace {
 /// points, a polygon's hash of its edges), and only faces of one bucket with
 /// equal keys are compared (a large bucket is sorted by key), so the time is
 /// linear in the face corners and O(n log n) at worst, on two threads (each
-/// half of the points' buckets), with 12 bytes per face and 4 per point of
+/// half of the points' buckets), with 24 bytes per face and 4 per point of
 /// scratch. The point indices must be below mesh.point_count().
 std::optional<DuplicateFace> find_duplicate_face(const SurfaceMesh& mesh);
 

@@ -756,3 +756,35 @@ TEST(SurfaceLoadsTopology, AHundredThousandFacesOnFourPointsAreCountedExactly) {
 
 }  // namespace
 }  // namespace hydrocoef
+
+namespace hydrocoef {
+namespace {
+
+// Every face listed twice, with V - 2 points that no face uses: V - E + F is
+// 2 again and every edge is walked as often one way as the other, so only
+// the points used tell it from a closed surface. The points are marked by
+// both threads as they integrate (the lane kernel) and by the face-by-face
+// rules (geometry alone); either way the edges are counted exactly.
+TEST(SurfaceLoadsTopology, FacesListedTwiceWithUnusedPointsAreNotClosed) {
+  for (const int levels : {2, 6}) {  // 320 faces on one thread; 81,920 (twice: 163,840) on two
+    SurfaceMesh mesh = test::make_icosphere(0.15, levels);
+    const std::size_t faces = mesh.face_count(), points = mesh.point_count();
+    for (std::size_t f = 0; f < faces; ++f)
+      test::add_face(mesh, {mesh.face_indices[3 * f], mesh.face_indices[3 * f + 1], mesh.face_indices[3 * f + 2]});
+    for (std::size_t i = 0; i + 2 < points; ++i) test::add_point(mesh, {2.0, 0.001 * static_cast<double>(i), 0.0});
+    ASSERT_EQ(static_cast<long>(mesh.point_count()) - static_cast<long>(mesh.face_indices.size() / 2) +
+                  static_cast<long>(mesh.face_count()),
+              2);
+    test::add_point_scalar(mesh, "p", [](const test::P3& x) { return 1000.0 * x[2]; });
+    const auto loads = integrate_surface_loads(mesh, pressure_only());
+    EXPECT_EQ(loads.geometry.triangles, 2 * faces);
+    EXPECT_FALSE(loads.geometry.closed) << levels;
+    EXPECT_EQ(loads.geometry.nonmanifold_edges, 3 * faces / 2) << levels;
+    const auto geometry = check_surface_geometry(mesh);
+    EXPECT_FALSE(geometry.closed) << levels;
+    EXPECT_EQ(geometry.nonmanifold_edges, 3 * faces / 2) << levels;
+  }
+}
+
+}  // namespace
+}  // namespace hydrocoef
