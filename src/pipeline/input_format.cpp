@@ -7,18 +7,13 @@
 
 #include "importers/openfoam_forces.hpp"
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 #include "src/pipeline/import_files.hpp"
 
 namespace hydrocoef {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 std::string head_of(const fs::path& file, std::size_t bytes = 4096) {
   std::ifstream in(file, std::ios::binary);
