@@ -82,6 +82,17 @@ std::optional<std::int64_t> Database::find_run_id(std::int64_t body, const RunKe
   return std::nullopt;
 }
 
+std::pair<std::int64_t, bool> Database::find_or_insert_run(store::RunRows& rows, const RunKey& key, const Fluid& fluid,
+                                                           const std::array<double, 3>& reference_point_b,
+                                                           const SourceLocation& where) {
+  const std::int64_t body = body_id(key.body, true);
+  if (const auto existing = find_run_id(body, key)) {
+    rows.check_and_fill(*existing, key, fluid, reference_point_b, where);
+    return {*existing, false};
+  }
+  return {rows.insert(body, key, fluid, reference_point_b), true};
+}
+
 std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batches, ConflictPolicy policy) {
   ImportOptions options;
   options.components = policy;
@@ -96,15 +107,11 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
   store::Transaction transaction(connection_);
   const std::string now = utc_timestamp_now();
 
-  auto find_source = connection_.prepare("SELECT id FROM source_file WHERE sha256 = ?");
   auto find_import = connection_.prepare(
       "SELECT id, settings_key, settings, path, imported_at FROM import WHERE source_id = ? AND reading = ?");
   auto insert_import = connection_.prepare(
       "INSERT INTO import(source_id, reading, settings_key, settings, path, resolved_path, importer, importer_version, "
       "hydrocoef_version, imported_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
-  auto insert_source = connection_.prepare(
-      "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
-      "VALUES (?, ?, ?, ?, ?, ?) RETURNING id");
   store::RunRows rows(connection_);
   auto existing_force = connection_.prepare(
       "SELECT s.path, f.source_line, s.imported_at FROM run_force f JOIN source_file s ON s.id = f.source_id "
@@ -120,21 +127,7 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
     outcome.sha256 = batch.source.sha256;
     outcome.reading = options.also;
     // The file's bytes, once per database.
-    std::int64_t source_id = 0;
-    find_source.bind(1, batch.source.sha256);
-    if (find_source.step()) {
-      source_id = find_source.get_int(0);
-      find_source.reset();
-    } else {
-      find_source.reset();
-      insert_source.bind(1, batch.source.path)
-          .bind(2, batch.source.sha256)
-          .bind(3, static_cast<std::int64_t>(batch.source.size_bytes))
-          .bind(4, batch.source.importer)
-          .bind(5, batch.source.importer_version)
-          .bind(6, now);
-      source_id = store::returned_id(insert_source);
-    }
+    const std::int64_t source_id = rows.source_id(batch.source, now);
     // The import: those bytes read with these settings.
     find_import.bind(1, source_id).bind(2, options.also);
     if (find_import.step()) {
@@ -187,17 +180,8 @@ std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batc
         if (!std::isfinite(value))
           throw InputError(where, "disturbance '" + name + "' is not a finite number; expected one");
       }
-      const std::int64_t body = body_id(run.key.body, true);
-      std::int64_t run_id = 0;
-      bool created = false;
-      if (const auto existing = find_run_id(body, run.key)) {
-        run_id = *existing;
-        rows.check_and_fill(run_id, run.key, run.fluid, run.reference_point_b, where);
-      } else {
-        run_id = rows.insert(body, run.key, run.fluid, run.reference_point_b);
-        created = true;
-        ++outcome.runs_created;
-      }
+      const auto [run_id, created] = find_or_insert_run(rows, run.key, run.fluid, run.reference_point_b, where);
+      if (created) ++outcome.runs_created;
 
       bool extended = false;
       for (std::size_t i = 0; i < 6; ++i) {
@@ -478,8 +462,7 @@ void Database::remove_import_forces(std::int64_t import_id) {
           "f.run_id = run_force_statistics.run_id AND f.component = run_force_statistics.component)")
       .bind(1, import_id)
       .run();
-  connection_
-      .prepare("DELETE FROM run_force_trace WHERE run_id IN (SELECT run_id FROM run_force WHERE import_id = ?)")
+  connection_.prepare("DELETE FROM run_force_trace WHERE run_id IN (SELECT run_id FROM run_force WHERE import_id = ?)")
       .bind(1, import_id)
       .run();
   connection_.prepare("DELETE FROM run_force WHERE import_id = ?").bind(1, import_id).run();
