@@ -127,8 +127,9 @@ Database& database_of(py::handle self) {
 }
 
 py::class_<Database> declare_database(py::module_& m) {
-  return py::class_<Database>(m, "Database",
-                       R"doc(A hydrocoef run database (an SQLite file), as the command-line tool reads and writes it.
+  return py::class_<Database>(
+      m, "Database",
+      R"doc(A hydrocoef run database (an SQLite file), as the command-line tool reads and writes it.
 
     db = hydrocoef.Database("asr-v.db")            # mode="create": made when missing
     db.import_files(["surge.csv"], body="asr-v", settings={"sign": "opposing", "rho": 998.2})

@@ -14,6 +14,14 @@ namespace {
 
 using namespace pybind11::literals;
 
+/// {term: what `value` gives of each coefficient}.
+template <class Value>
+py::dict by_term(const hydrocoef::FitSummary& fit, Value value) {
+  py::dict out;
+  for (const auto& c : fit.coefficients) out[py::str(c.term)] = value(c);
+  return out;
+}
+
 std::string repr_fit(const hydrocoef::FitSummary& fit) {
   std::ostringstream out;
   out.precision(6);
@@ -48,27 +56,14 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
                     "'on-body' (force on the body) or 'opposing' (damping magnitude, positive opposes motion).")
       .def_property_readonly(
           "coefficients",
-          [](const hydrocoef::FitSummary& f) {
-            py::dict out;
-            for (const auto& c : f.coefficients) out[py::str(c.term)] = c.value;
-            return out;
-          },
+          [](const hydrocoef::FitSummary& f) { return by_term(f, [](const auto& c) { return c.value; }); },
           "{term: coefficient}, in the units of `units`.")
       .def_property_readonly(
           "std_errors",
-          [](const hydrocoef::FitSummary& f) {
-            py::dict out;
-            for (const auto& c : f.coefficients) out[py::str(c.term)] = c.std_error;
-            return out;
-          },
+          [](const hydrocoef::FitSummary& f) { return by_term(f, [](const auto& c) { return c.std_error; }); },
           "{term: one-sigma standard error} (nan when undefined).")
       .def_property_readonly(
-          "units",
-          [](const hydrocoef::FitSummary& f) {
-            py::dict out;
-            for (const auto& c : f.coefficients) out[py::str(c.term)] = c.unit;
-            return out;
-          },
+          "units", [](const hydrocoef::FitSummary& f) { return by_term(f, [](const auto& c) { return c.unit; }); },
           "{term: unit}, e.g. {'u|u|': 'N/(m/s)^2'}.")
       .def_readonly("rmse", &hydrocoef::FitSummary::rmse, "Root-mean-square residual [N or N m].")
       .def_readonly("r2", &hydrocoef::FitSummary::r2, "R^2 (nan when the force does not vary).")

@@ -10,7 +10,6 @@
 
 #include "python/src/bindings.hpp"
 
-
 PYBIND11_MODULE(_hydrocoef, m) {
   m.doc() = "hydrocoef's compiled core: the public C++ API with numpy arrays (import hydrocoef, not this).";
   m.attr("__version__") = hydrocoef::kVersion;
