@@ -141,7 +141,6 @@ nlohmann::json bands_json(const SimulationReport& r) {
 
 }  // namespace
 
-
 void print_simulation(const SimulationReport& r, bool json) {
   const TrajectorySample& last = r.result.samples.back();
 

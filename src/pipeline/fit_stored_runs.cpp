@@ -15,7 +15,6 @@
 namespace hydrocoef {
 namespace {
 
-
 /// Names of the key parts (other velocity components, disturbances) that take
 /// more than one value among the runs: the law then mixes conditions.
 std::vector<std::string> varying_conditions(const std::vector<StoredRun>& runs, std::size_t variable) {

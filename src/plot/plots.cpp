@@ -19,7 +19,6 @@
 namespace hydrocoef::plot {
 namespace {
 
-
 std::string short_number(double value, int digits = 6) {
   std::ostringstream out;
   out.precision(digits);
