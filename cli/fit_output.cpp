@@ -14,8 +14,6 @@
 namespace hydrocoef::cli {
 namespace {
 
-std::string force_unit(std::size_t dof) { return dof < 3 ? "N" : "N m"; }
-
 nlohmann::json optional_number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
 
 nlohmann::json warnings_json(const std::vector<FitWarning>& warnings) {

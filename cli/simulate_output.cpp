@@ -14,8 +14,6 @@
 namespace hydrocoef::cli {
 namespace {
 
-constexpr std::array<const char*, 6> kVelocityUnits{"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
-constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
 constexpr const char* kSignNote = "forces on the body in body axes about CO (SNAME: damping is negative)";
 constexpr const char* kSamplingNote =
     "each draw holds one sample of the uncertain damping (laws from their covariance, GP surfaces from their "
@@ -142,8 +140,6 @@ nlohmann::json bands_json(const SimulationReport& r) {
 }
 
 }  // namespace
-
-std::string force_unit(std::size_t dof) { return kForceUnits[dof]; }
 
 void print_simulation(const SimulationReport& r, bool json) {
   const TrajectorySample& last = r.result.samples.back();

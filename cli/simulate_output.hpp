@@ -52,7 +52,5 @@ struct EquilibriumReport {
 
 void print_simulation(const SimulationReport& report, bool json);
 void print_equilibrium(const EquilibriumReport& report, bool json);
-/// "N" for X, Y, Z; "N m" for K, M, N.
-std::string force_unit(std::size_t dof);
 
 }  // namespace hydrocoef::cli

@@ -23,12 +23,10 @@ constexpr std::string_view kCclBanner = "CFX Command Language for Run";
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
 
-char lower_ascii(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
-
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
-    if (lower_ascii(a[i]) != lower_ascii(b[i])) return false;
+    if (lower(a[i]) != lower(b[i])) return false;
   return true;
 }
 
@@ -180,7 +178,7 @@ class CclParser {
     // The type without regard to case, the label as written (a label holds no line break).
     std::string key;
     key.reserve(type.size() + 1 + label.size());
-    for (const char c : type) key += lower_ascii(c);
+    for (const char c : type) key += lower(c);
     key += '\n';
     key += label;
     if (const auto found = index.children.find(key); found != index.children.end()) {

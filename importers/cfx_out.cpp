@@ -12,17 +12,11 @@
 #include "src/core/error.hpp"
 #include "src/core/file_bytes.hpp"
 #include "src/core/names.hpp"
+#include "src/core/text.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
 namespace {
-
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (auto& c : out)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  return out;
-}
 
 std::string_view trim(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r");

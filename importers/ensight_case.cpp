@@ -141,7 +141,7 @@ Case parse_case(const fs::path& case_file) {
     }
     continued_times = nullptr;
     continued_numbers = nullptr;
-    const std::string key = lower_case(std::string(trim(std::string_view(line).substr(0, colon))));
+    const std::string key = lower(std::string(trim(std::string_view(line).substr(0, colon))));
     const std::vector<std::string> words = split_words(std::string_view(line).substr(colon + 1));
     std::string normal_key;
     for (const auto& word : split_words(key)) normal_key += (normal_key.empty() ? "" : " ") + word;
@@ -149,7 +149,7 @@ Case parse_case(const fs::path& case_file) {
     if (section == "FORMAT") {
       if (normal_key != "type") continue;
       std::string type;
-      for (const auto& word : words) type += (type.empty() ? "" : " ") + lower_case(word);
+      for (const auto& word : words) type += (type.empty() ? "" : " ") + lower(word);
       if (type == "ensight gold") {
         gold = true;
       } else {

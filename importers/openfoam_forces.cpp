@@ -17,6 +17,7 @@
 #include "importers/history_text.hpp"
 #include "src/core/error.hpp"
 #include "src/core/text.hpp"
+#include "src/core/vec3.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -432,11 +433,6 @@ std::optional<Vector3> direction(const HeaderValues& values, const char* key, co
     throw InputError(SourceLocation{file, found->second.line, 0},
                      std::string(key) + " has length " + number_text(length) + "; expected a unit vector");
   return v;
-}
-
-double dot(const Vector3& a, const Vector3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vector3 cross(const Vector3& a, const Vector3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
 // A file's header read, and the places its rows go. Holds the vectors the

@@ -202,7 +202,7 @@ FileContents read_file(const fs::path& file, const ScopedVtkMessageCapture& capt
   const auto size = fs::file_size(file, error);
   if (error) throw InputError(where, "cannot be read: " + error.message());
 
-  const std::string extension = lower_case(file.extension().string());
+  const std::string extension = lower(file.extension().string());
   const std::string expected = extension == ".case"   ? "an EnSight Gold case file"
                                : extension == ".cgns" ? "a CGNS file"
                                                       : "a VTK file";

@@ -21,6 +21,8 @@
 #include <string_view>
 #include <vector>
 
+#include "src/core/text.hpp"
+
 namespace hydrocoef::vtk_detail {
 
 namespace fs = std::filesystem;
@@ -41,12 +43,6 @@ struct FileContents {
   std::vector<Leaf> leaves;
   std::vector<std::string> warnings;
 };
-
-inline std::string lower_case(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 inline std::string in_quotes(std::string_view text) {
   std::string out = "'";

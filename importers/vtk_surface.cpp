@@ -53,7 +53,6 @@ namespace {
 using vtk_detail::FileContents;
 using vtk_detail::in_quotes;
 using vtk_detail::Leaf;
-using vtk_detail::lower_case;
 using vtk_detail::read_file;
 using vtk_detail::ScopedVtkMessageCapture;
 using vtk_detail::summarize_vtk_messages;
@@ -434,7 +433,7 @@ std::string vtk_warnings_note(const FileContents& contents) {
 
 SurfaceMesh read_vtk_surface(const std::filesystem::path& file, const VtkSurfaceOptions& options) {
   const std::string file_name = file.string();
-  if (options.direct_vtp && lower_case(file.extension().string()) == ".vtp" &&
+  if (options.direct_vtp && lower(file.extension().string()) == ".vtp" &&
       std::all_of(options.locations.begin(), options.locations.end(),
                   [&file](const std::string& location) { return location == file.stem().string(); }))
     if (std::optional<SurfaceMesh> mesh = read_vtp_surface(file)) return std::move(*mesh);

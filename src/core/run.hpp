@@ -24,6 +24,15 @@ namespace hydrocoef {
 inline constexpr std::array<std::string_view, 6> kVelocityNames = {"u", "v", "w", "p", "q", "r"};
 /// Generalized force component names, in the order of tau_b.
 inline constexpr std::array<std::string_view, 6> kForceNames = {"X", "Y", "Z", "K", "M", "N"};
+/// The SI units of the velocity components, in the order of nu_b.
+inline constexpr std::array<const char*, 6> kVelocityUnits = {"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
+/// The SI units of the generalized force components, in the order of tau_b.
+inline constexpr std::array<const char*, 6> kForceUnits = {"N", "N", "N", "N m", "N m", "N m"};
+
+/// "N" for X, Y, Z; "N m" for K, M, N (dof 0..5).
+inline std::string force_unit(std::size_t dof) { return kForceUnits[dof]; }
+/// "m/s" for u, v, w; "rad/s" for p, q, r (component 0..5).
+inline std::string velocity_unit(std::size_t component) { return kVelocityUnits[component]; }
 
 /// Index 0..5 of a velocity name ("u".."r"), or nullopt.
 std::optional<std::size_t> velocity_index(std::string_view name);

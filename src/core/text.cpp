@@ -16,6 +16,12 @@ std::string_view trim(std::string_view text, std::string_view blanks) {
   return trim_right(trim_left(text, blanks), blanks);
 }
 
+std::string lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = lower(c);
+  return out;
+}
+
 std::string without_blanks(std::string_view text, std::string_view blanks) {
   std::string out;
   for (const char c : text)

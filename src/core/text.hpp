@@ -34,6 +34,12 @@ std::string without_blanks(std::string_view text, std::string_view blanks = kWhi
 /// The items with `separator` between them: {"u", "v"}, ", " -> "u, v".
 std::string join(const std::vector<std::string>& items, std::string_view separator);
 
+/// `text` with the ASCII letters A-Z as a-z and every other byte as it is:
+/// no locale, so a name or a file's keyword compares the same everywhere.
+std::string lower(std::string_view text);
+/// `c` as lower(text) turns it.
+constexpr char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
 /// The fields between `separator`s, empty ones kept: "a,,b" -> {"a", "", "b"},
 /// "a," -> {"a", ""}, "" -> {""}. Fields are not trimmed.
 std::vector<std::string_view> split(std::string_view text, char separator);

@@ -74,9 +74,7 @@ std::string_view gazebo_dof_name(std::size_t dof) { return kForceNames.at(dof); 
 std::string_view gazebo_velocity_name(std::size_t variable) { return kVelocityNames.at(variable); }
 
 std::string damping_unit(std::size_t dof, std::size_t variable, bool quadratic) {
-  const std::string force = dof < 3 ? "N" : "N m";
-  const std::string velocity = variable < 3 ? "m/s" : "rad/s";
-  return force + "/(" + velocity + ")" + (quadratic ? "^2" : "");
+  return force_unit(dof) + "/(" + velocity_unit(variable) + ")" + (quadratic ? "^2" : "");
 }
 
 std::string_view gazebo_flavor_name(GazeboFlavor flavor) { return flavor == GazeboFlavor::Uuv ? "uuv" : "gz"; }

@@ -11,6 +11,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/file_bytes.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef {
 namespace {
@@ -18,12 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr Dimension kDynamicViscosity{{1, -1, -1, 0}};
-
-std::string lower(std::string text) {
-  for (auto& c : text)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  return text;
-}
 
 /// True when a parameter's value is `expected`, ignoring case and taking runs
 /// of blanks as one space, as CCL compares names.

@@ -15,9 +15,6 @@
 namespace hydrocoef {
 namespace {
 
-std::string force_unit(std::size_t dof) { return dof < 3 ? "N" : "N m"; }
-std::string velocity_unit(std::size_t component) { return component < 3 ? "m/s" : "rad/s"; }
-
 /// Names of the key parts (other velocity components, disturbances) that take
 /// more than one value among the runs: the law then mixes conditions.
 std::vector<std::string> varying_conditions(const std::vector<StoredRun>& runs, std::size_t variable) {

@@ -25,6 +25,8 @@
 // refused when the command line or the file's own sidecar or manifest row
 // gives it, and noted when it comes from a folder sidecar shared by other
 // kinds of files.
+//
+// One file a stage: src/pipeline/import_files_internal.hpp lists them.
 #pragma once
 
 #include <cstddef>

@@ -10,6 +10,7 @@
 #include "importers/cfx_monitor.hpp"
 #include "importers/cfx_out.hpp"
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 #include "src/pipeline/cfx_case.hpp"
 #include "src/pipeline/openfoam_case.hpp"
 
@@ -17,12 +18,6 @@ namespace hydrocoef {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 bool is_data_extension(const std::string& extension) {
   static const std::set<std::string> known = {".csv", ".txt", ".tsv",  ".dat",   ".vtp", ".vtu",

@@ -14,6 +14,7 @@
 #include "src/core/error.hpp"
 #include "src/core/names.hpp"
 #include "src/core/source_file.hpp"
+#include "src/core/text.hpp"
 #include "src/core/units.hpp"
 
 namespace hydrocoef {
@@ -24,12 +25,6 @@ namespace {
 std::mutex& vtk_read_mutex() {
   static std::mutex mutex;
   return mutex;
-}
-
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
 }
 
 bool ends_with(const std::string& text, const std::string& suffix) {

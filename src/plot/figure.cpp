@@ -18,6 +18,7 @@
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/numbers.hpp"
+#include "src/core/text.hpp"
 
 extern char** environ;
 
@@ -48,12 +49,7 @@ std::string joined_lines(const std::vector<std::string>& lines) {
   return out;
 }
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
+std::string lower_extension(const std::filesystem::path& path) { return lower(path.extension().string()); }
 
 void check_figure(const Figure& figure) {
   if (figure.panels.empty()) throw InputError("plot '" + figure.title + "': nothing to draw (no panels)");

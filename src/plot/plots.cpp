@@ -19,9 +19,6 @@
 namespace hydrocoef::plot {
 namespace {
 
-constexpr std::array<const char*, 6> kVelocityUnits{"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
-constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
-
 std::string short_number(double value, int digits = 6) {
   std::ostringstream out;
   out.precision(digits);

@@ -44,8 +44,6 @@ namespace {
 using detail::num;
 using detail::Page;
 
-constexpr std::array<const char*, 6> kForceUnits{"N", "N", "N", "N m", "N m", "N m"};
-
 constexpr const char* kStyle = R"css(
 body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;margin:0 auto;max-width:1100px;padding:0 1.2em 3em;color:#222;line-height:1.4}
 h1{font-size:1.6em;margin-top:1em}h2{border-bottom:2px solid #0072B2;padding-bottom:.2em;margin-top:2em}

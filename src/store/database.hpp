@@ -15,11 +15,16 @@
 #include <utility>
 #include <vector>
 
+#include "src/core/error.hpp"
 #include "src/core/run.hpp"
 #include "src/store/connection.hpp"
 #include "src/store/location.hpp"
 
 namespace hydrocoef {
+
+namespace store {
+class RunRows;  // src/store/run_rows.hpp
+}
 
 /// A force component as stored, with where it came from.
 /// A force component that is a mean over a window of a force history: the
@@ -398,6 +403,13 @@ class Database {
   /// Inserts one fit (replacing one of its name) inside the caller's transaction.
   std::int64_t insert_fit(const FitRecord& fit);
   std::optional<std::int64_t> find_run_id(std::int64_t body, const RunKey& key);
+  /// The run of `key`, its body made when new: an existing run's fluid and
+  /// reference point are checked against what is stored and fill what it
+  /// lacked (store::RunRows::check_and_fill), a new one is inserted. Its id,
+  /// and whether it is new. (Imports and merges.)
+  std::pair<std::int64_t, bool> find_or_insert_run(store::RunRows& rows, const RunKey& key, const Fluid& fluid,
+                                                   const std::array<double, 3>& reference_point_b,
+                                                   const SourceLocation& where);
   /// All runs, or those of one body, or one run; ordered by body and key.
   std::vector<StoredRun> load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run);
   /// Sets the numerical uncertainty of the forces of runs on the finest mesh

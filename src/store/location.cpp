@@ -4,17 +4,12 @@
 #include <cctype>
 
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 
 namespace hydrocoef::store {
 namespace {
 
 bool starts_with(std::string_view text, std::string_view prefix) { return text.substr(0, prefix.size()) == prefix; }
-
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 /// %XX sequences decoded (others left as they are).
 std::string percent_decoded(std::string_view text) {

@@ -68,29 +68,10 @@ MergeOutcome Database::merge_one(Database& shard) {
   constexpr std::int64_t kMost = std::numeric_limits<std::int64_t>::max();
 
   // The files, by the SHA-256 of their bytes.
+  store::RunRows rows(connection_);
   std::map<std::int64_t, std::int64_t> source_of;  // shard id -> id here
-  {
-    auto find = connection_.prepare("SELECT id FROM source_file WHERE sha256 = ?");
-    auto insert = connection_.prepare(
-        "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
-        "VALUES (?, ?, ?, ?, ?, ?) RETURNING id");
-    for (const SourceRecord& source : shard.sources()) {
-      find.bind(1, source.provenance.sha256);
-      if (find.step()) {
-        source_of[source.id] = find.get_int(0);
-        find.reset();
-        continue;
-      }
-      find.reset();
-      insert.bind(1, source.provenance.path)
-          .bind(2, source.provenance.sha256)
-          .bind(3, static_cast<std::int64_t>(source.provenance.size_bytes))
-          .bind(4, source.provenance.importer)
-          .bind(5, source.provenance.importer_version)
-          .bind(6, source.imported_at);
-      source_of[source.id] = store::returned_id(insert);
-    }
-  }
+  for (const SourceRecord& source : shard.sources())
+    source_of[source.id] = rows.source_id(source.provenance, source.imported_at);
   const auto mapped_source = [&](std::int64_t id) {
     const auto found = source_of.find(id);
     if (found == source_of.end())
@@ -161,24 +142,14 @@ MergeOutcome Database::merge_one(Database& shard) {
       surface_source[row.integer(0, 1, kMost)] = row.integer(1, 1, kMost);
     }
   }
-  store::RunRows rows(connection_);
   auto existing_force = connection_.prepare(
       "SELECT s.path, f.source_line, f.import_id FROM run_force f JOIN source_file s ON s.id = f.source_id "
       "WHERE f.run_id = ? AND f.component = ?");
   auto surface_here = connection_.prepare(
       "SELECT s.path, r.source_id FROM run_surface r JOIN source_file s ON s.id = r.source_id WHERE r.run_id = ?");
   for (const StoredRun& run : shard.runs()) {
-    const std::int64_t body = body_id(run.key.body, true);
-    std::int64_t here = 0;
-    bool created = false;
-    if (const auto existing = find_run_id(body, run.key)) {
-      here = *existing;
-      rows.check_and_fill(here, run.key, run.fluid, run.reference_point_b, where);
-    } else {
-      here = rows.insert(body, run.key, run.fluid, run.reference_point_b);
-      created = true;
-      ++outcome.runs_created;
-    }
+    const auto [here, created] = find_or_insert_run(rows, run.key, run.fluid, run.reference_point_b, where);
+    if (created) ++outcome.runs_created;
     run_of[run.id] = here;
 
     bool extended = false;

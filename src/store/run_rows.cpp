@@ -11,7 +11,11 @@ namespace hydrocoef::store {
 bool same_value(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max({1.0, std::abs(a), std::abs(b)}); }
 
 RunRows::RunRows(Connection& connection)
-    : details_(connection.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?")),
+    : find_source_(connection.prepare("SELECT id FROM source_file WHERE sha256 = ?")),
+      insert_source_(connection.prepare(
+          "INSERT INTO source_file(path, sha256, size_bytes, importer, importer_version, imported_at) "
+          "VALUES (?, ?, ?, ?, ?, ?) RETURNING id")),
+      details_(connection.prepare("SELECT density, kinematic_viscosity, ref_x, ref_y, ref_z FROM run WHERE id = ?")),
       update_fluid_(connection.prepare(
           "UPDATE run SET density = coalesce(density, ?), kinematic_viscosity = coalesce(kinematic_viscosity, ?) "
           "WHERE id = ?")),
@@ -68,6 +72,23 @@ void RunRows::check_and_fill(std::int64_t run_id, const RunKey& key, const Fluid
     throw InputError(where,
                      "run " + describe(key) + " already exists with other fluid properties (density or viscosity)");
   update_fluid_.bind(1, fluid.density_kg_m3).bind(2, fluid.kinematic_viscosity_m2_s).bind(3, run_id).run();
+}
+
+std::int64_t RunRows::source_id(const Provenance& file, const std::string& imported_at) {
+  find_source_.bind(1, file.sha256);
+  if (find_source_.step()) {
+    const std::int64_t id = find_source_.get_int(0);
+    find_source_.reset();
+    return id;
+  }
+  find_source_.reset();
+  insert_source_.bind(1, file.path)
+      .bind(2, file.sha256)
+      .bind(3, static_cast<std::int64_t>(file.size_bytes))
+      .bind(4, file.importer)
+      .bind(5, file.importer_version)
+      .bind(6, imported_at);
+  return returned_id(insert_source_);
 }
 
 std::int64_t RunRows::insert(std::int64_t body_id, const RunKey& key, const Fluid& fluid,

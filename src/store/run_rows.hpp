@@ -35,6 +35,9 @@ class RunRows {
   /// not differ (InputError at `where`); properties it lacked are filled in.
   void check_and_fill(std::int64_t run_id, const RunKey& key, const Fluid& fluid,
                       const std::array<double, 3>& reference_point_b, const SourceLocation& where);
+  /// The id of the source_file row of these bytes (by their SHA-256), added
+  /// with `imported_at` when there is none.
+  std::int64_t source_id(const Provenance& file, const std::string& imported_at);
   /// A new run and its disturbances; its id.
   std::int64_t insert(std::int64_t body_id, const RunKey& key, const Fluid& fluid,
                       const std::array<double, 3>& reference_point_b);
@@ -51,8 +54,8 @@ class RunRows {
   void drop_trace(std::int64_t run_id);
 
  private:
-  Statement details_, update_fluid_, insert_run_, insert_disturbance_, force_, statistics_, surface_, trace_,
-      drop_trace_;
+  Statement find_source_, insert_source_, details_, update_fluid_, insert_run_, insert_disturbance_, force_,
+      statistics_, surface_, trace_, drop_trace_;
 };
 
 }  // namespace hydrocoef::store

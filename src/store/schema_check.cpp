@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "src/core/error.hpp"
+#include "src/core/text.hpp"
 #include "src/store/dialect.hpp"
 #include "src/store/migrations.hpp"
 
@@ -70,12 +71,6 @@ std::optional<std::string> schema_difference(const std::vector<SchemaEntry>& exp
 
 namespace {
 
-std::string lower_case(std::string text) {
-  for (char& c : text)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  return text;
-}
-
 /// Every comma-separated name of a column list, in order: "(a, b)".
 std::string column_list(const std::vector<std::string>& columns) {
   std::string out = "(";
@@ -85,7 +80,7 @@ std::string column_list(const std::vector<std::string>& columns) {
 
 /// SQLite's and PostgreSQL's words for a foreign key action.
 std::string action_name(std::string text) {
-  text = lower_case(std::move(text));
+  text = lower(std::move(text));
   return text == "a"   ? "no action"
          : text == "r" ? "restrict"
          : text == "c" ? "cascade"
@@ -97,11 +92,11 @@ std::string action_name(std::string text) {
 /// The keys, indexes, foreign keys and CHECK constraints of one table of the
 /// in-memory SQLite database, as postgresql_objects describes them.
 void add_expected_constraints(Connection& memory, const std::string& table, std::set<std::string>& out) {
-  const std::string prefix = "table " + lower_case(table) + ": ";
+  const std::string prefix = "table " + lower(table) + ": ";
   std::vector<std::pair<int, std::string>> key;
   auto columns = memory.prepare("SELECT name, pk FROM pragma_table_info(?) WHERE pk > 0");
   columns.bind(1, table);
-  while (columns.step()) key.emplace_back(columns.get_int(1), lower_case(columns.get_text(0)));
+  while (columns.step()) key.emplace_back(columns.get_int(1), lower(columns.get_text(0)));
   std::sort(key.begin(), key.end());
   std::vector<std::string> key_columns;
   for (const auto& k : key) key_columns.push_back(k.second);
@@ -114,7 +109,7 @@ void add_expected_constraints(Connection& memory, const std::string& table, std:
     std::vector<std::string> names;
     auto info = memory.prepare("SELECT coalesce(name, '(expression)') FROM pragma_index_info(?) ORDER BY seqno");
     info.bind(1, indexes.get_text(0));
-    while (info.step()) names.push_back(lower_case(info.get_text(0)));
+    while (info.step()) names.push_back(lower(info.get_text(0)));
     out.insert(prefix + (indexes.get_int(1) != 0 ? "unique index " : "index ") + column_list(names) +
                (indexes.get_int(3) != 0 ? " (partial)" : ""));
   }
@@ -126,15 +121,15 @@ void add_expected_constraints(Connection& memory, const std::string& table, std:
   std::map<std::int64_t, std::array<std::string, 5>> keys;  // id: from, table, to, on update, on delete
   while (foreign.step()) {
     auto& k = keys[foreign.get_int(0)];
-    const std::string referenced = lower_case(foreign.get_text(1));
-    k[0] += (k[0].empty() ? "" : ", ") + lower_case(foreign.get_text(2));
+    const std::string referenced = lower(foreign.get_text(1));
+    k[0] += (k[0].empty() ? "" : ", ") + lower(foreign.get_text(2));
     k[1] = referenced;
     // No column named: the referenced table's primary key.
-    std::string to = lower_case(foreign.get_text(3));
+    std::string to = lower(foreign.get_text(3));
     if (to.empty()) {
       auto pk = memory.prepare("SELECT name FROM pragma_table_info(?) WHERE pk > 0 ORDER BY pk");
       pk.bind(1, foreign.get_text(1));
-      while (pk.step()) to += (to.empty() ? "" : ", ") + lower_case(pk.get_text(0));
+      while (pk.step()) to += (to.empty() ? "" : ", ") + lower(pk.get_text(0));
     }
     k[2] += (k[2].empty() ? "" : ", ") + to;
     k[3] = action_name(foreign.get_text(4));
@@ -202,7 +197,7 @@ std::set<std::string> expected_postgresql_objects(int version) {
       // An INTEGER PRIMARY KEY is an identity column there (dialect.cpp).
       const bool identity = declared == "INTEGER" && columns.get_int(3) == 1;
       // PostgreSQL folds unquoted names to lower case (n_dA_x is n_da_x there).
-      lines.push_back("table " + lower_case(name) + ": column " + lower_case(columns.get_text(0)) + " " + pg +
+      lines.push_back("table " + lower(name) + ": column " + lower(columns.get_text(0)) + " " + pg +
                       (not_null ? " not null" : "") + (columns.get_int(4) != 0 ? " default" : "") +
                       (identity ? " identity" : ""));
     }

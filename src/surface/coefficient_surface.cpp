@@ -36,8 +36,8 @@ std::size_t find_name(const std::vector<std::string>& names, std::string_view na
 }  // namespace
 
 std::string default_unit(std::string_view name) {
-  if (const auto v = velocity_index(name)) return *v < 3 ? "m/s" : "rad/s";
-  if (const auto f = force_index(name)) return *f < 3 ? "N" : "N m";
+  if (const auto v = velocity_index(name)) return velocity_unit(*v);
+  if (const auto f = force_index(name)) return force_unit(*f);
   return "";
 }
 

@@ -30,6 +30,15 @@ TEST(ComponentIndex, VelocityNames) {
   EXPECT_FALSE(velocity_index("x").has_value());
 }
 
+TEST(ComponentUnits, SiUnitOfEachComponent) {
+  const std::vector<std::string> force = {"N", "N", "N", "N m", "N m", "N m"};
+  const std::vector<std::string> velocity = {"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(force_unit(i), force[i]) << kForceNames[i];
+    EXPECT_EQ(velocity_unit(i), velocity[i]) << kVelocityNames[i];
+  }
+}
+
 TEST(ComponentIndex, ForceNames) {
   const std::vector<std::string> names = {"X", "Y", "Z", "K", "M", "N"};
   for (std::size_t i = 0; i < names.size(); ++i) {

@@ -1,6 +1,6 @@
 // The shared text helpers (src/core/text.hpp): trimming with the caller's
 // blanks, views that stay inside the caller's text, splitting that keeps
-// empty fields.
+// empty fields, ASCII lower case without a locale.
 #include "src/core/text.hpp"
 
 #include <gtest/gtest.h>
@@ -52,6 +52,16 @@ TEST(WithoutBlanks, LeavesOutBlanksEverywhere) {
   EXPECT_EQ(without_blanks("huber : 0.01", " "), "huber:0.01");
   EXPECT_EQ(without_blanks("a\fb", " \t\r\n"), "a\fb");
   EXPECT_EQ(without_blanks(" \t "), "");
+}
+
+TEST(Lower, AsciiLettersOnly) {
+  EXPECT_EQ(lower("Force.DAT"), "force.dat");
+  EXPECT_EQ(lower("ABCXYZ abcxyz 09@[`{"), "abcxyz abcxyz 09@[`{");  // the bytes around A-Z and a-z stay
+  EXPECT_EQ(lower("\xC3\x89T\xC9"), "\xC3\x89t\xC9");                // UTF-8 and Latin-1 bytes as they are
+  EXPECT_EQ(lower(""), "");
+  EXPECT_EQ(lower('Q'), 'q');
+  EXPECT_EQ(lower('q'), 'q');
+  EXPECT_EQ(lower('\xC9'), '\xC9');
 }
 
 TEST(Split, KeepsEmptyFields) {

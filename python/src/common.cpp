@@ -1,0 +1,56 @@
+// The helpers of the Python module's bindings that several topics use
+// (python/src/bindings.hpp): classes whose objects only the module makes, and
+// the arguments given as a list of run ids or of names.
+#include <cstring>
+
+#include "python/src/bindings.hpp"
+
+namespace hydrocoef_python {
+namespace {
+
+/// tp_new of the classes whose objects only the module makes (Surface, Fit,
+/// SurfaceInfo, ImportedFile, ImportSummary): refuses. It is the type's own
+/// slot (py::custom_type_setup), not a Python __new__ attribute, so that
+/// every way to one (Surface(), Surface.__new__(Surface), object.__new__ or
+/// Surface.__mro__[1].__new__(Surface), whose "is not safe" check compares
+/// the slots) raises TypeError: no such object exists without its C++ part,
+/// on which pybind11 would run methods on uninitialised memory.
+PyObject* refuse_new(PyTypeObject* type, PyObject*, PyObject*) {
+  const char* dot = std::strrchr(type->tp_name, '.');
+  const std::string name = dot ? dot + 1 : type->tp_name;
+  const std::string from = name == "Surface"       ? "Database.surface(name)"
+                           : name == "Fit"         ? "Database.fit(...) and Database.fits()"
+                           : name == "SurfaceInfo" ? "Database.surfaces() and Database.build_surface(...)"
+                                                   : "Database.import_files(...)";
+  PyErr_SetString(PyExc_TypeError,
+                  ("hydrocoef." + name + " objects come from " + from + "; they cannot be made directly").c_str());
+  return nullptr;
+}
+
+}  // namespace
+
+py::custom_type_setup made_by_the_module_only() {
+  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new; });
+}
+
+std::vector<std::int64_t> run_ids(const py::object& value, const char* what) {
+  if (value.is_none()) return {};
+  try {
+    return value.cast<std::vector<std::int64_t>>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string(what) + ": expected a list of run ids (int)");
+  }
+}
+
+std::vector<std::string> texts(const py::object& value, const char* what) {
+  if (value.is_none()) return {};
+  if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
+  try {
+    return value.cast<std::vector<std::string>>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string(what) + ": expected a str or a list of str, got " +
+                         py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>());
+  }
+}
+
+}  // namespace hydrocoef_python

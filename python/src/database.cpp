@@ -1,0 +1,291 @@
+// hydrocoef.Database in Python: opening and closing (once per object),
+// the runs as numpy columns, and import_files with what it returns
+// (ImportedFile, ImportSummary). Fits and surfaces add their methods in
+// fits.cpp and surfaces.cpp.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "python/src/bindings.hpp"
+
+namespace hydrocoef_python {
+namespace {
+
+using namespace pybind11::literals;
+using hydrocoef::Database;
+
+/// A new 1-D numpy array that owns the vector's storage (no copy).
+template <class T>
+py::array_t<T> to_numpy(std::vector<T>&& values) {
+  auto owned = std::make_unique<std::vector<T>>(std::move(values));
+  const auto size = static_cast<py::ssize_t>(owned->size());
+  T* data = owned->data();
+  py::capsule owner(owned.get(), [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  owned.release();
+  return py::array_t<T>(size, data, owner);
+}
+
+/// Texts as a numpy array of Python str (dtype object), as pandas keeps them.
+py::array to_numpy_strings(const std::vector<std::string>& texts) {
+  py::list list(texts.size());
+  for (std::size_t i = 0; i < texts.size(); ++i) list[i] = py::str(texts[i]);
+  return py::module_::import("numpy").attr("array")(list, "dtype"_a = "object");
+}
+
+/// Whether `self` holds its C++ Database: false for an object made by
+/// __new__ alone (Database.__new__(Database), object.__new__, a base class's
+/// __new__), whose storage pybind11 never filled.
+bool holds_database(py::handle self) {
+  if (!py::isinstance<Database>(self))
+    throw py::type_error("expected a hydrocoef.Database, got " +
+                         py::str(py::type::handle_of(self).attr("__name__")).cast<std::string>());
+  auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
+  auto holder = instance->get_value_and_holder(py::detail::get_type_info(typeid(Database)), false);
+  return holder && holder.holder_constructed();
+}
+
+std::string fspath(const py::handle& path) {
+  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
+}
+
+hydrocoef::OpenMode parse_mode(const std::string& mode) {
+  if (mode == "r") return hydrocoef::OpenMode::ReadOnly;
+  if (mode == "rw") return hydrocoef::OpenMode::ReadWrite;
+  if (mode == "create") return hydrocoef::OpenMode::Create;
+  throw py::value_error("mode '" + mode +
+                        "': expected 'r' (read only), 'rw' (read and write an existing database) "
+                        "or 'create' (read and write, made when missing)");
+}
+
+constexpr const char* kVelocityNames[] = {"u", "v", "w", "p", "q", "r"};
+constexpr const char* kForceNames[] = {"X", "Y", "Z", "K", "M", "N"};
+
+py::dict runs_dict(hydrocoef::RunTable&& table) {
+  py::dict out;
+  out["id"] = to_numpy(std::move(table.id));
+  out["body"] = to_numpy_strings(table.body);
+  for (std::size_t c = 0; c < 6; ++c) out[kVelocityNames[c]] = to_numpy(std::move(table.velocity[c]));
+  for (auto& [name, column] : table.disturbances) {
+    // A disturbance named like a fixed column (an identifier such as "id" or "X") is kept apart.
+    const std::string key =
+        out.contains(name) || name == "source" || name == "history_flags" ||
+                std::find(std::begin(kForceNames), std::end(kForceNames), name) != std::end(kForceNames) ||
+                name.ends_with("_std_error")
+            ? "disturbance." + name
+            : name;
+    out[py::str(key)] = to_numpy(std::move(column));
+  }
+  for (std::size_t c = 0; c < 6; ++c) out[kForceNames[c]] = to_numpy(std::move(table.force[c]));
+  for (std::size_t c = 0; c < 6; ++c)
+    out[py::str(std::string(kForceNames[c]) + "_std_error")] = to_numpy(std::move(table.force_std_error[c]));
+  out["source"] = to_numpy_strings(table.source);
+  out["history_flags"] = to_numpy_strings(table.history_flags);
+  return out;
+}
+
+template <class Map>
+Map mapping(const py::object& value, const char* what) {
+  if (value.is_none()) return {};
+  try {
+    return value.cast<Map>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string(what) + ": expected a dict of str to str");
+  }
+}
+
+/// A settings dict ({"rho": 998.2, "axes": "-x,y,-z", "ref_point": [0, 0, 0.1]})
+/// as the C++ API takes it: str values as they are, others as JSON.
+std::map<std::string, std::string> settings_texts(const py::object& settings) {
+  std::map<std::string, std::string> out;
+  if (settings.is_none()) return out;
+  if (!py::isinstance<py::dict>(settings)) throw py::type_error("settings: expected a dict of sidecar keys");
+  const auto dumps = py::module_::import("json").attr("dumps");
+  for (const auto& item : settings.cast<py::dict>()) {
+    const auto key = py::cast<std::string>(item.first);
+    out[key] = py::isinstance<py::str>(item.second) ? item.second.cast<std::string>()
+                                                    : dumps(item.second, "allow_nan"_a = false).cast<std::string>();
+  }
+  return out;
+}
+
+}  // namespace
+
+Database& database_of(py::handle self) {
+  if (!holds_database(self))
+    throw py::type_error(
+        "this hydrocoef.Database was made by __new__ without __init__; open one with "
+        "hydrocoef.Database(path)");
+  auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
+  return *instance->get_value_and_holder(py::detail::get_type_info(typeid(Database)), false).value_ptr<Database>();
+}
+
+py::class_<Database> declare_database(py::module_& m) {
+  return py::class_<Database>(
+      m, "Database",
+      R"doc(A hydrocoef run database (an SQLite file), as the command-line tool reads and writes it.
+
+    db = hydrocoef.Database("asr-v.db")            # mode="create": made when missing
+    db.import_files(["surge.csv"], body="asr-v", settings={"sign": "opposing", "rho": 998.2})
+    fit = db.fit(body="asr-v", output="X", terms="1,u,u|u|")
+    runs = db.runs(where=["u>=0"])                  # dict of numpy columns; runs.to_pandas()
+    s = db.surface("asr-v-surge")
+
+mode: "r" (read only: never writes), "rw" (the file must exist) or "create".
+Units SI; body axes x forward, y starboard, z down; forces on the body.
+Errors in the input raise hydrocoef.InputError with the CLI's message. Every
+write is one transaction. Close it with close() or a with block; any call
+after that raises InputError "PATH: database is closed".)doc");
+}
+
+void bind_database(py::module_& m, py::class_<Database>& database) {
+  py::class_<hydrocoef::ImportedFile>(m, "ImportedFile", py::is_final(), made_by_the_module_only(),
+                                      "What an import did with one input.")
+      .def_readonly("path", &hydrocoef::ImportedFile::path)
+      .def_readonly("format", &hydrocoef::ImportedFile::format)
+      .def_readonly("runs", &hydrocoef::ImportedFile::runs, "Runs the input holds.")
+      .def_readonly("runs_created", &hydrocoef::ImportedFile::runs_created)
+      .def_readonly("runs_extended", &hydrocoef::ImportedFile::runs_extended)
+      .def_readonly("already_imported", &hydrocoef::ImportedFile::already_imported)
+      .def_readonly("replaced", &hydrocoef::ImportedFile::replaced)
+      .def_readonly("notes", &hydrocoef::ImportedFile::notes)
+      .def("__repr__", [](const hydrocoef::ImportedFile& f) {
+        return "<hydrocoef.ImportedFile " + f.path + ": " + f.format + ", " + std::to_string(f.runs) + " runs (" +
+               std::to_string(f.runs_created) + " new, " + std::to_string(f.runs_extended) + " extended" +
+               (f.already_imported ? ", already imported" : "") + ")>";
+      });
+
+  py::class_<hydrocoef::ImportSummary>(m, "ImportSummary", py::is_final(), made_by_the_module_only(),
+                                       "What Database.import_files did.")
+      .def_readonly("files", &hydrocoef::ImportSummary::files, "One ImportedFile per input (folders expanded).")
+      .def_readonly("notes", &hydrocoef::ImportSummary::notes)
+      .def_readonly("excluded", &hydrocoef::ImportSummary::excluded, "Files left out by include/exclude.")
+      .def_readonly("runs_created", &hydrocoef::ImportSummary::runs_created)
+      .def_readonly("runs_extended", &hydrocoef::ImportSummary::runs_extended)
+      .def_readonly("already_imported", &hydrocoef::ImportSummary::already_imported)
+      .def("__repr__", [](const hydrocoef::ImportSummary& s) {
+        return "<hydrocoef.ImportSummary " + std::to_string(s.files.size()) +
+               " inputs: " + std::to_string(s.runs_created) + " new runs, " + std::to_string(s.runs_extended) +
+               " extended, " + std::to_string(s.already_imported) + " already imported>";
+      });
+
+  database
+      .def(py::init([](const py::object& path, const std::string& mode) {
+             return Database::open(fspath(path), parse_mode(mode));
+           }),
+           "path"_a, "mode"_a = "create")
+      .def_property_readonly("path", [](py::handle self) { return database_of(self).path(); })
+      .def_property_readonly("closed", [](py::handle self) { return !database_of(self).is_open(); })
+      .def_property_readonly("read_only", [](py::handle self) { return database_of(self).read_only(); })
+      .def(
+          "close", [](py::handle self) { database_of(self).close(); },
+          "Closes the file; surfaces already read stay valid.")
+      .def("__enter__",
+           [](py::object self) {
+             database_of(self);
+             return self;
+           })
+      .def("__exit__", [](py::handle self, const py::args&) { database_of(self).close(); })
+      .def(
+          "runs",
+          [](py::handle self, const py::object& where, const py::object& body, const py::object& exclude_runs) {
+            const Database& d = database_of(self);
+            return runs_dict(d.runs(texts(where, "where"), body.is_none() ? "" : body.cast<std::string>(),
+                                    run_ids(exclude_runs, "exclude_runs")));
+          },
+          "where"_a = py::none(), "body"_a = py::none(), "exclude_runs"_a = py::none(),
+          R"doc(The runs as a dict of numpy columns (hydrocoef.Table: to_pandas()), as `hydrocoef runs` lists them.
+
+where: selection clauses combined with AND ("u>=0", "v=0", "u=0.1:0.3", "current_v!=0");
+body: one body's runs; exclude_runs: ids left out.
+Columns: id, body, u v w [m/s], p q r [rad/s], each disturbance by name [SI,
+nan where a run has none], X Y Z [N] and K M N [N m] (forces on the body, nan
+where missing), X_std_error ... N_std_error (standard error of a mean over a
+force history, nan where none), source (files, ';'-separated), history_flags.)doc")
+      .def(
+          "import_files",
+          [](py::handle self, const py::object& paths, const py::object& body, const std::string& format,
+             const py::object& settings, const py::object& columns, const py::object& units,
+             const py::object& disturbance_columns, const py::object& ignore, const py::object& monitors,
+             std::size_t average_last, const py::object& include, const py::object& exclude,
+             const py::object& key_from_name, const py::object& manifest, bool sidecars, bool prefer_surfaces,
+             bool replace, const std::string& also, unsigned jobs) {
+            Database& d = database_of(self);
+            std::vector<std::string> inputs;
+            if (py::isinstance<py::str>(paths) || py::hasattr(paths, "__fspath__")) {
+              inputs.push_back(fspath(paths));
+            } else {
+              for (const auto& p : paths) inputs.push_back(fspath(p));
+            }
+            hydrocoef::ImportOptions options;
+            options.format = format;
+            options.body = body.is_none() ? "" : body.cast<std::string>();
+            options.settings = settings_texts(settings);
+            options.columns = mapping<std::map<std::string, std::string>>(columns, "columns");
+            options.units = mapping<std::map<std::string, std::string>>(units, "units");
+            options.disturbance_columns = texts(disturbance_columns, "disturbance_columns");
+            options.ignored_columns = texts(ignore, "ignore");
+            options.monitors = mapping<std::map<std::string, std::string>>(monitors, "monitors");
+            options.average_last = average_last;
+            options.include = texts(include, "include");
+            options.exclude = texts(exclude, "exclude");
+            options.key_from_name = key_from_name.is_none() ? "" : key_from_name.cast<std::string>();
+            options.manifest = manifest.is_none() ? "" : fspath(manifest);
+            options.use_sidecars = sidecars;
+            options.prefer_surfaces = prefer_surfaces;
+            options.replace = replace;
+            options.also = also;
+            options.jobs = jobs;
+            py::gil_scoped_release release;
+            return d.import_files(inputs, options);
+          },
+          "paths"_a, py::kw_only(), "body"_a = py::none(), "format"_a = "auto", "settings"_a = py::none(),
+          "columns"_a = py::none(), "units"_a = py::none(), "disturbance_columns"_a = py::none(),
+          "ignore"_a = py::none(), "monitors"_a = py::none(), "average_last"_a = 1, "include"_a = py::none(),
+          "exclude"_a = py::none(), "key_from_name"_a = py::none(), "manifest"_a = py::none(), "sidecars"_a = true,
+          "prefer_surfaces"_a = false, "replace"_a = false, "also"_a = "", "jobs"_a = 0,
+          R"doc(Imports files, folders and case folders in one transaction, as `hydrocoef import` does.
+
+paths: a path or a list of paths. body: the runs' body (default 'vehicle').
+format: auto, table, monitor, history, cfdpost or vtk.
+settings: run settings as a sidecar holds them, above every other source:
+  {"rho": 998.2, "nu": 1.004e-6, "axes": "-x,y,-z", "sign": "opposing",
+   "ref_point": [0, 0, 0.1], "disturbances": {"current_v": 0.05}, "u": 0.2, ...}
+columns / units / monitors: {component: header} maps (the CLI's --column, --unit, --monitor);
+disturbance_columns, ignore: table headers; include / exclude: globs for folders;
+key_from_name: e.g. 'u{u}_v{v}'; manifest: a sweep CSV; sidecars: read FILE.json and
+hydrocoef-run.json; replace / also: see `hydrocoef import --help`; jobs: 0 every core.
+Returns an ImportSummary. Every input is read before the database is written:
+a bad one raises InputError and leaves the database as it was. The GIL is released.)doc")
+      .def("__repr__", [](py::handle self) {
+        const Database& d = database_of(self);
+        return "<hydrocoef.Database '" + d.path() + "'" +
+               (d.is_open() ? (d.read_only() ? ", read only" : "") : ", closed") + ">";
+      });
+
+  // __init__ on a Database that has one already (open or closed): pybind11
+  // runs a constructor once and ignores a second call silently; this
+  // refuses it. The wrapper is not named __init__, a name pybind11 takes for
+  // a constructor (and ignores again).
+  {
+    py::object database_class = m.attr("Database");
+    py::object construct = database_class.attr("__init__");
+    database_class.attr("__init__") = py::cpp_function(
+        [construct](py::handle self, const py::object& path, const py::object& mode) {
+          if (holds_database(self))
+            throw std::runtime_error("this hydrocoef.Database has been opened already (on " + database_of(self).path() +
+                                     "); __init__ runs once: make a new hydrocoef.Database(path)");
+          construct(self, path, mode);
+        },
+        py::name("open"), py::is_method(database_class), "path"_a, "mode"_a = "create",
+        "Opens the database at path (mode: 'r', 'rw' or 'create'); once per object.");
+  }
+}
+
+}  // namespace hydrocoef_python
