@@ -1,4 +1,4 @@
-// What the CLI does with databases it only reads (src/store/database.cpp):
+// What the CLI does with databases it only reads (src/store/database.cpp, src/store/run_store.cpp):
 // a shard whose run key columns disagree with its disturbances, a -wal file
 // a read-only share keeps from being read, and the refusal of an older
 // PostgreSQL database are each one line and exit 2, the target left byte for

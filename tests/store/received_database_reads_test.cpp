@@ -1,5 +1,5 @@
 // Reading a database never writes it, and never reads less than it holds
-// (src/store/database.cpp): a run whose stored key columns disagree with its
+// (src/store/database.cpp, src/store/run_store.cpp): a run whose stored key columns disagree with its
 // disturbance rows is refused naming the table and row (a merge of such a
 // shard changes nothing, instead of folding two runs into one); a -wal file
 // that a read-only share keeps from being read is refused rather than left
