@@ -49,11 +49,11 @@ void run_report(const ReportArgs& args, const GlobalOptions& global) {
   }
   // The database's name, the paths and the notes (which quote names from
   // the database) are printed through escape::one_line.
-  std::cout << "report of " << escape::one_line(global.database) << ": " << result.runs << " runs ("
-            << result.histories << " force histories drawn), " << result.fits << " fits, " << result.surfaces
-            << " surfaces (" << result.sigma_maps << " sigma maps), " << result.mesh_study_rows
-            << " mesh-study rows, " << result.pmm_fits << " forced-oscillation fits, " << result.plots.size()
-            << " plots\n  page " << escape::one_line(result.index.string())
+  std::cout << "report of " << escape::one_line(global.database) << ": " << result.runs << " runs (" << result.histories
+            << " force histories drawn), " << result.fits << " fits, " << result.surfaces << " surfaces ("
+            << result.sigma_maps << " sigma maps), " << result.mesh_study_rows << " mesh-study rows, "
+            << result.pmm_fits << " forced-oscillation fits, " << result.plots.size() << " plots\n  page "
+            << escape::one_line(result.index.string())
             << " (self-contained: open it in any browser, no network needed)\n  plots and their values in "
             << escape::one_line((result.index.parent_path() / "plots").string()) << "\n";
   for (const auto& note : result.notes) std::cout << "  note: " << escape::one_line(note) << '\n';
@@ -63,7 +63,9 @@ void run_report(const ReportArgs& args, const GlobalOptions& global) {
 
 void add_report_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<ReportArgs>();
-  auto* command = app.add_subcommand("report", "Write a self-contained HTML report: runs and their quality, fits, surfaces, mesh studies, forced oscillation and plots");
+  auto* command = app.add_subcommand("report",
+                                     "Write a self-contained HTML report: runs and their quality, fits, surfaces, mesh "
+                                     "studies, forced oscillation and plots");
   command->add_option("-o,--output", args->dir, "Directory to write index.html and plots/ into")->required();
   command->add_option("--body", args->body, "Only this body's runs, fits and surfaces");
   command->add_option("--trajectory", args->trajectories, "Simulated trajectory CSV to plot (repeatable)");

@@ -137,8 +137,8 @@ struct RunStatistics {
 /// makes one.
 struct HistoryTrace {
   static constexpr std::size_t kMaxBins = 256;
-  std::string abscissa_name;  ///< "time" [s] or "iteration"
-  std::size_t samples = 0;    ///< in the whole record
+  std::string abscissa_name;                     ///< "time" [s] or "iteration"
+  std::size_t samples = 0;                       ///< in the whole record
   std::vector<double> abscissa;                  ///< per bin: its last sample's abscissa, increasing
   std::array<std::vector<double>, 6> low, high;  ///< X..N in body axes, on the body; empty where absent
 };

@@ -79,7 +79,7 @@ std::string csv_wide_text(const GridTable& table, const ExportMetadata& metadata
   text += "# per output, one row per " + comment(table.axes()[0].name) + " breakpoint, one column per " +
           comment(table.axes()[1].name) + " breakpoint\n";
   text += "output," + escape::csv_text(column_text(table.axes()[0].name, metadata.axis_units[0]) + " \\ " +
-                                        column_text(table.axes()[1].name, metadata.axis_units[1]));
+                                       column_text(table.axes()[1].name, metadata.axis_units[1]));
   for (double x : x1) text += "," + shortest_number(x);
   text += "\n";
   for (std::size_t k = 0; k < n_out; ++k) {

@@ -42,10 +42,10 @@ std::string trace_problem(const HistoryTrace& trace) {
   const std::size_t bins = trace.abscissa.size();
   if (trace.abscissa_name != "time" && trace.abscissa_name != "iteration")
     return "its abscissa is '" + trace.abscissa_name + "'; expected time or iteration";
-  if (bins > HistoryTrace::kMaxBins || bins > trace.samples || (trace.samples <= HistoryTrace::kMaxBins && bins != trace.samples) ||
-      (trace.samples > HistoryTrace::kMaxBins && bins != HistoryTrace::kMaxBins))
+  const std::size_t expected = std::min(trace.samples, HistoryTrace::kMaxBins);
+  if (bins != expected)
     return std::to_string(bins) + " bins of " + std::to_string(trace.samples) + " samples; expected " +
-           std::to_string(std::min(trace.samples, HistoryTrace::kMaxBins));
+           std::to_string(expected);
   for (std::size_t b = 0; b < bins; ++b)
     if (!std::isfinite(trace.abscissa[b]) || (b > 0 && !(trace.abscissa[b] > trace.abscissa[b - 1])))
       return "its abscissa is not finite and increasing at bin " + std::to_string(b + 1);

@@ -20,7 +20,7 @@ namespace hydrocoef {
 HistoryTrace trace_of(const ForceHistory& history);
 
 /// "" when a trace read from a database is whole (sizes, order, finite
-/// values, low <= high, bins <= kMaxBins <= samples or bins == samples), else
+/// values, low <= high, min(samples, kMaxBins) bins), else
 /// what is wrong, in words.
 std::string trace_problem(const HistoryTrace& trace);
 

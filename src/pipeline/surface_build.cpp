@@ -3,9 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include "src/core/error.hpp"
-#include "src/core/numbers.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/names.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/run_selection.hpp"
 #include "src/pipeline/fit_runs.hpp"
 #include "src/pipeline/surface_mirror.hpp"

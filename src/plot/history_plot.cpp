@@ -92,22 +92,21 @@ Panel final_iterate_panel(const StoredStatistics& st, double value, const std::s
 /// The panel's history from the trace: its bins' extremes as a band (the
 /// samples as a line when the record is kept whole), the x range the whole
 /// record, the y range the history from `from` on with the stored value.
-void add_trace(Panel& panel, const HistoryTrace& trace, std::size_t c, double from, double value,
-               double half_width) {
+void add_trace(Panel& panel, const HistoryTrace& trace, std::size_t c, double from, double value, double half_width) {
   const auto& low = trace.low[c];
   const auto& high = trace.high[c];
   if (low.empty()) return;
   const bool whole = trace.abscissa.size() == trace.samples;
-  Series history{whole ? "history (" + std::to_string(trace.samples) + " samples)"
-                       : "history: least and largest of each bin of " +
-                             std::to_string(trace.samples / trace.abscissa.size()) + "-" +
-                             std::to_string((trace.samples + trace.abscissa.size() - 1) / trace.abscissa.size()) +
-                             " samples",
-                 whole ? Series::Style::Line : Series::Style::Band,
-                 6,
-                 trace.abscissa,
-                 low,
-                 whole ? std::vector<double>{} : high};
+  Series history{
+      whole
+          ? "history (" + std::to_string(trace.samples) + " samples)"
+          : "history: least and largest of each bin of " + std::to_string(trace.samples / trace.abscissa.size()) + "-" +
+                std::to_string((trace.samples + trace.abscissa.size() - 1) / trace.abscissa.size()) + " samples",
+      whole ? Series::Style::Line : Series::Style::Band,
+      6,
+      trace.abscissa,
+      low,
+      whole ? std::vector<double>{} : high};
   panel.series.insert(panel.series.begin(), std::move(history));
   const double first = trace.abscissa.front(), last = trace.abscissa.back();
   const double span = last > first ? last - first : 1.0;
@@ -135,10 +134,11 @@ Figure history_figure(const StoredRun& run, const std::optional<HistoryTrace>& t
   for (const auto& force : run.tau_b)
     if (force && force->statistics && kind.empty()) kind = force->statistics->convergence;
   Figure figure;
-  figure.title = "run " + std::to_string(run.id) + " (" + describe(run.key) + "), " +
-                 (kind.empty() ? std::string("convergence not recorded") : kind) +
-                 (trace ? ": the history in brief, the window and the stored value"
-                        : ": the stored window and statistics (stored before histories were kept: the samples are not stored)");
+  figure.title =
+      "run " + std::to_string(run.id) + " (" + describe(run.key) + "), " +
+      (kind.empty() ? std::string("convergence not recorded") : kind) +
+      (trace ? ": the history in brief, the window and the stored value"
+             : ": the stored window and statistics (stored before histories were kept: the samples are not stored)");
   for (std::size_t i = 0; i < run.tau_b.size(); ++i) {
     const auto& force = run.tau_b[i];
     if (!force || !force->statistics) continue;

@@ -75,7 +75,6 @@ std::string axis_label(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : name + " [" + unit + "]";
 }
 
-
 /// f over an 81 x 81 grid of [x0, x1] x [y0, y1] (x fastest), as a colour map.
 template <typename F>
 ColourMap sampled_map(double x0, double x1, double y0, double y1, std::string z_label, const F& f) {
@@ -399,8 +398,8 @@ Figure surface_sigma_figure(Database& database, const std::string& name, const s
     const double y0 = surface.lower(1), y1 = surface.upper(1);
     panel.y_range = std::array<double, 2>{y0, y1};
     panel.y_label = axis_label(surface.axis_names()[1], surface.axis_units()[1]);
-    panel.title = "sd of " + out_name + " over " + surface.axis_names()[0] + ", " + surface.axis_names()[1] + ": " +
-                  what;
+    panel.title =
+        "sd of " + out_name + " over " + surface.axis_names()[0] + ", " + surface.axis_names()[1] + ": " + what;
     panel.map = sampled_map(x0, x1, y0, y1, sd_label, sd_at);
     for (const auto& point : run_points) {
       runs.x.push_back(point[0]);

@@ -17,7 +17,8 @@ namespace hydrocoef::store {
 namespace {
 
 std::string describe(const SchemaEntry& entry) {
-  std::string text = std::string(entry.type == "index" ? "an " : "a ") + entry.type + " '" + printable_text(entry.name, 60) + "'";
+  std::string text =
+      std::string(entry.type == "index" ? "an " : "a ") + entry.type + " '" + printable_text(entry.name, 60) + "'";
   if (entry.type != "table" && !entry.table.empty()) text += " on table '" + printable_text(entry.table, 60) + "'";
   return text;
 }

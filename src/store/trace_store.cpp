@@ -15,8 +15,7 @@
 namespace hydrocoef {
 
 std::optional<HistoryTrace> Database::run_trace(std::int64_t run_id) {
-  auto select = connection_.prepare(
-      "SELECT abscissa, samples, components, data FROM run_force_trace WHERE run_id = ?");
+  auto select = connection_.prepare("SELECT abscissa, samples, components, data FROM run_force_trace WHERE run_id = ?");
   select.bind(1, run_id);
   if (!select.step()) return std::nullopt;
   const store::CheckedRow row(select, path_.string(), "run_force_trace", run_id);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "src/core/error.hpp"
@@ -326,8 +326,8 @@ CoefficientSurface CoefficientSurface::with_symmetry(SurfaceSymmetry symmetry) c
   CoefficientSurface out = *this;
   if (grid_)
     if (auto values = symmetric_values(*grid_, symmetry))
-      out.grid_ = std::make_shared<const GridTable>(grid_->axes(), grid_->outputs(), std::move(*values),
-                                                    grid_->method());
+      out.grid_ =
+          std::make_shared<const GridTable>(grid_->axes(), grid_->outputs(), std::move(*values), grid_->method());
   out.symmetry_ = std::move(symmetry);
   return out;
 }

@@ -69,8 +69,7 @@ class GpSurfaces {
   /// evaluate places it (clamped or refused by the axes' policies);
   /// `coefficients` count x outputs, point-major.
   void combination_standard_deviation(std::span<const double> points, std::size_t count,
-                                      std::span<const double> coefficients,
-                                      std::span<double> standard_deviation) const;
+                                      std::span<const double> coefficients, std::span<double> standard_deviation) const;
 
  private:
   void check() const;

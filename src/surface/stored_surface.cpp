@@ -45,7 +45,6 @@ json common_definition(const CoefficientSurface& surface) {
   return definition;
 }
 
-
 // Reads a required member of a JSON object, naming the surface and key when
 // it is missing or of the wrong type.
 template <typename T>
@@ -73,8 +72,8 @@ SurfaceSymmetry stored_symmetry(const json& definition, std::size_t axes, std::s
                      std::to_string(SurfaceSymmetry::kMaxGenerators) + " reflections");
   std::vector<SurfaceReflection> generators;
   for (const auto& g : list)
-    generators.push_back({member<std::vector<double>>(g, "axis_signs", where),
-                          member<std::vector<double>>(g, "output_signs", where)});
+    generators.push_back(
+        {member<std::vector<double>>(g, "axis_signs", where), member<std::vector<double>>(g, "output_signs", where)});
   return SurfaceSymmetry(axes, outputs, std::move(generators));
 }
 

@@ -65,8 +65,8 @@ std::string SurfaceSymmetry::describe(const std::vector<std::string>& axis_names
       if (g.axis_signs[a] < 0.0) flipped.push_back(axis_names[a]);
     for (std::size_t k = 0; k < g.output_signs.size() && k < output_names.size(); ++k)
       if (g.output_signs[k] < 0.0) odd.push_back(output_names[k]);
-    parts.push_back((flipped.empty() ? std::string("no axis") : join(flipped, ",")) + " reflected: " +
-                    (odd.empty() ? std::string("all outputs even") : join(odd, ", ") + " odd"));
+    parts.push_back((flipped.empty() ? std::string("no axis") : join(flipped, ",")) +
+                    " reflected: " + (odd.empty() ? std::string("all outputs even") : join(odd, ", ") + " odd"));
   }
   return join(parts, "; ");
 }

@@ -70,8 +70,7 @@ class SurfaceSymmetry {
   void reflect(std::size_t generator, std::span<const double> x, std::span<double> image) const;
 
   /// "v: Y, K, N odd" per generator, for people; names as the surface's.
-  std::string describe(const std::vector<std::string>& axis_names,
-                       const std::vector<std::string>& output_names) const;
+  std::string describe(const std::vector<std::string>& axis_names, const std::vector<std::string>& output_names) const;
 
  private:
   std::size_t axes_ = 0, outputs_ = 0, moving_ = 0;

@@ -35,10 +35,10 @@ std::vector<std::string> exported_symbols() {
 }
 
 bool public_name(const std::string& name) {
-  for (const char* prefix : {"hydrocoef::api::", "hydrocoef::InputError::", "typeinfo for hydrocoef::api::",
-                             "typeinfo name for hydrocoef::api::", "vtable for hydrocoef::api::",
-                             "typeinfo for hydrocoef::InputError", "typeinfo name for hydrocoef::InputError",
-                             "vtable for hydrocoef::InputError"})
+  for (const char* prefix :
+       {"hydrocoef::api::", "hydrocoef::InputError::", "typeinfo for hydrocoef::api::",
+        "typeinfo name for hydrocoef::api::", "vtable for hydrocoef::api::", "typeinfo for hydrocoef::InputError",
+        "typeinfo name for hydrocoef::InputError", "vtable for hydrocoef::InputError"})
     if (name.rfind(prefix, 0) == 0) return true;
   return false;
 }
@@ -52,9 +52,9 @@ TEST(ExportedSymbols, TheSharedLibraryExportsThePublicApiAndNothingElse) {
   EXPECT_TRUE(internal.empty()) << internal.size() << " symbols outside the public API, the first: "
                                 << (internal.empty() ? "" : internal.front());
   // What a user of the public headers calls is there.
-  for (const char* wanted : {"hydrocoef::api::Database::Database(", "hydrocoef::api::Surface::evaluate(",
-                             "hydrocoef::api::Database::fit(", "hydrocoef::InputError::InputError(",
-                             "typeinfo for hydrocoef::InputError"}) {
+  for (const char* wanted :
+       {"hydrocoef::api::Database::Database(", "hydrocoef::api::Surface::evaluate(", "hydrocoef::api::Database::fit(",
+        "hydrocoef::InputError::InputError(", "typeinfo for hydrocoef::InputError"}) {
     bool found = false;
     for (const auto& name : names) found = found || name.rfind(wanted, 0) == 0;
     EXPECT_TRUE(found) << wanted;

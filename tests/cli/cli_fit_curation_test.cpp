@@ -243,7 +243,8 @@ TEST(FitCurationHistories, FitsAreWeightedByTheRunsStandardErrors) {
   // the thousands): the covariance is scaled by it (the Birge ratio squared).
   const double scale = std::max(1.0, chi2);
   EXPECT_GT(chi2, 100.0);
-  EXPECT_NEAR(fitted.at("std_errors").at("u|u|").get<double>(), std::sqrt(scale / swhh), 1e-7 * std::sqrt(scale / swhh));
+  EXPECT_NEAR(fitted.at("std_errors").at("u|u|").get<double>(), std::sqrt(scale / swhh),
+              1e-7 * std::sqrt(scale / swhh));
   EXPECT_NEAR(fitted.at("chi2_reduced").get<double>(), chi2, 1e-8 * chi2);
   EXPECT_NEAR(fitted.at("covariance")[0].get<double>(), scale / swhh, 1e-7 * scale / swhh);
   const auto text = run_cli({"fit", "--body", "sphere", "--dof", "X", "--terms", "u|u|", "--no-store"}, dir.path());

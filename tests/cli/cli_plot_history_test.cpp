@@ -70,8 +70,7 @@ TEST_F(CliPlotHistory, WritesTheImageAndSaysWhatWasWritten) {
   EXPECT_EQ(png_size(read_text(image)), (std::pair<unsigned, unsigned>{900, 720}));
   EXPECT_TRUE(fs::exists(dir / "history-run-1.dat"));
   EXPECT_TRUE(fs::exists(dir / "history-run-1.gp"));
-  EXPECT_NE(text.out.find("transient-window: the history in brief, the window and the stored value"),
-            std::string::npos)
+  EXPECT_NE(text.out.find("transient-window: the history in brief, the window and the stored value"), std::string::npos)
       << text.out;
   EXPECT_NE(text.out.find("wrote " + (dir / "history-run-1.png").string() + " (png, 900x720 px)"), std::string::npos)
       << text.out;

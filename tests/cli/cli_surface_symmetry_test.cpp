@@ -79,8 +79,8 @@ TEST(SurfaceSymmetryCli, ABodyDrivenInSurgeAloneDoesNotDriftSidewaysOnAMirroredS
   test::TempDir dir;
   write_runs(dir / "half.csv", false);
   write_runs(dir / "whole.csv", true);
-  ASSERT_EQ(run_cli({"--db", "half.db", "import", "half.csv", "--body", "b", "--sign", "on-body"}, dir.path()).exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli({"--db", "half.db", "import", "half.csv", "--body", "b", "--sign", "on-body"}, dir.path()).exit_code, 0);
   ASSERT_EQ(
       run_cli({"--db", "whole.db", "import", "whole.csv", "--body", "b", "--sign", "on-body"}, dir.path()).exit_code,
       0);

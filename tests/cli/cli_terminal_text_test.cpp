@@ -166,8 +166,9 @@ TEST(TerminalText, FileNamesOnTheCommandLineArePrintable) {
   const auto integrated = run_safely({"integrate", sphere.string(), "--rho", "998.2"}, dir);
   ASSERT_EQ(integrated.exit_code, 0) << integrated.err;
   EXPECT_NE(integrated.out.find("sphere" + kShown), std::string::npos) << integrated.out;
-  const auto sphere_import =
-      run_safely({"import", sphere.string(), "--body", "sphere", "--rho", "998.2", "--nu", "1.004e-6", "--flow", "0.1,0.05,0"}, dir);
+  const auto sphere_import = run_safely(
+      {"import", sphere.string(), "--body", "sphere", "--rho", "998.2", "--nu", "1.004e-6", "--flow", "0.1,0.05,0"},
+      dir);
   ASSERT_EQ(sphere_import.exit_code, 0) << sphere_import.err;
 
   // Refusals that quote what was given.

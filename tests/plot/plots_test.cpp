@@ -314,7 +314,8 @@ TEST(Plots, SigmaMapIsTheStatedStandardDeviationOverTheRange) {
   table.precision(17);
   table << "u [m s^-1],current_v [m s^-1],X [N]\n";
   for (double c : {0.0, 0.1, 0.2})
-    for (double u : {-0.2, 0.1, 0.2, 0.3}) table << u << "," << c << "," << (0.1 + c) * u + 11 * u * std::abs(u) << "\n";
+    for (double u : {-0.2, 0.1, 0.2, 0.3})
+      table << u << "," << c << "," << (0.1 + c) * u + 11 * u * std::abs(u) << "\n";
   write(dir / "sweep.csv", table.str());
   ASSERT_EQ(run_cli({"import", "sweep.csv", "--body", "b", "--disturbance", "current_v", "--uncertainty", "X=0.01"},
                     dir.path())
@@ -335,7 +336,8 @@ TEST(Plots, SigmaMapIsTheStatedStandardDeviationOverTheRange) {
   const auto blocks = read_blocks(render(figure, dir / "sigma.svg").data);
   ASSERT_EQ(blocks.size(), 2u);  // the map, the runs
   ASSERT_EQ(blocks[0].second.size(), 81u * 81u);
-  for (const auto& row : blocks[0].second) EXPECT_NEAR(row[2], std::hypot(0.01, loo), 1e-12) << row[0] << ", " << row[1];
+  for (const auto& row : blocks[0].second)
+    EXPECT_NEAR(row[2], std::hypot(0.01, loo), 1e-12) << row[0] << ", " << row[1];
   EXPECT_EQ(blocks[1].second.size(), 12u);
   // A missing surface is named.
   EXPECT_NE(error_of([&] { surface_sigma_figure(database, "nope", std::nullopt); }).find("nope"), std::string::npos);

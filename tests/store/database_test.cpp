@@ -65,7 +65,8 @@ TEST(Database, FitAndSurfaceRunsAreFoundByRunThroughAnIndex) {
   { Database db(dir / "runs.db"); }
   sqlite3* handle = nullptr;
   ASSERT_EQ(sqlite3_open_v2((dir / "runs.db").c_str(), &handle, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
-  for (const auto& [table, index] : {std::pair{"fit_run", "fit_run_by_run"}, std::pair{"surface_run", "surface_run_by_run"}}) {
+  for (const auto& [table, index] :
+       {std::pair{"fit_run", "fit_run_by_run"}, std::pair{"surface_run", "surface_run_by_run"}}) {
     const std::string sql = std::string("EXPLAIN QUERY PLAN SELECT * FROM ") + table + " WHERE run_id = 7";
     sqlite3_stmt* plan = nullptr;
     ASSERT_EQ(sqlite3_prepare_v2(handle, sql.c_str(), -1, &plan, nullptr), SQLITE_OK);

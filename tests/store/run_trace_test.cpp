@@ -111,13 +111,14 @@ TEST(RunTrace, AComponentWrittenWithoutAHistoryTakesTheTraceAway) {
   database.import({test::one_run_batch(2, table)}, ImportOptions{});
   EXPECT_FALSE(database.run_trace(id));
   // A run from a table never has one.
-  database.import({test::one_run_batch(3, [] {
-                    ImportedRun r;
-                    r.key.body = "ball";
-                    r.key.nu_b[0] = 0.4;
-                    r.tau_b[0] = ForceComponent{-2.0, std::nullopt, std::nullopt};
-                    return r;
-                  }())},
+  database.import({test::one_run_batch(3,
+                                       [] {
+                                         ImportedRun r;
+                                         r.key.body = "ball";
+                                         r.key.nu_b[0] = 0.4;
+                                         r.tau_b[0] = ForceComponent{-2.0, std::nullopt, std::nullopt};
+                                         return r;
+                                       }())},
                   ImportOptions{});
   for (const auto& run : database.runs())
     if (run.key.nu_b[0] == 0.4) EXPECT_FALSE(database.run_trace(run.id));

@@ -21,7 +21,7 @@ TEST(SurfaceSymmetry, DropsIdentitiesAndRefusesMalformedReflections) {
   EXPECT_TRUE(SurfaceSymmetry(2, 1, {{{1, 1}, {1}}}).empty());
   const SurfaceSymmetry s(2, 2, {{{1, 1}, {1, -1}}, {{1, -1}, {1, -1}}});
   ASSERT_EQ(s.generators().size(), 2u);
-  EXPECT_EQ(s.moving_count(), 1u);                                       // the one that moves an axis comes first
+  EXPECT_EQ(s.moving_count(), 1u);  // the one that moves an axis comes first
   EXPECT_EQ(s.generators()[0].axis_signs, (std::vector<double>{1, -1}));
   expect_input_error([] { SurfaceSymmetry(2, 1, {{{1, 0.5}, {1}}}); }, {"not +1 or -1"});
   expect_input_error([] { SurfaceSymmetry(2, 1, {{{1, -1, 1}, {1}}}); }, {"3 axis signs", "expected 2"});
