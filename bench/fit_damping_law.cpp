@@ -36,7 +36,7 @@ Samples synthetic_samples(int count) {
 void fit_and_count(benchmark::State& state, const char* terms, const std::vector<double>& u,
                    const std::vector<double>& force, const char* loss) {
   const hydrocoef::DampingLawSpec spec = hydrocoef::parse_damping_terms(terms);
-  const hydrocoef::FitOptions options = hydrocoef::parse_loss(loss);
+  const hydrocoef::LossOptions options = hydrocoef::parse_loss(loss);
   for (auto _ : state) {
     (void)_;
     hydrocoef::DampingLawFit fit = hydrocoef::fit_damping_law(spec, u, force, options);

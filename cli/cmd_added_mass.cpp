@@ -47,7 +47,7 @@ void add_added_mass_command(CLI::App& app, const GlobalOptions& global) {
                     "Print a matrix that is not positive definite instead of refusing it (exit 2)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] {
-    Database database(global.database, Database::OpenMode::ReadOnly);
+    RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
     AddedMassOptions options = parse_added_mass_options(args->same, args->zero);
     options.period = args->period;
     const AddedMassAssembly assembly =

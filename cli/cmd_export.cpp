@@ -28,7 +28,7 @@ void run_export(const ExportArgs& args, const GlobalOptions& global) {
     throw InputError("--float applies to --format c only; expected it with c (got --format " + args.format + ")");
   if (!args.identifier.empty() && format != ExportFormat::CHeader)
     throw InputError("--identifier applies to --format c only; expected it with c (got --format " + args.format + ")");
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   const StoredSurface stored = load_surface(database, args.name);
   const ExportMetadata metadata = metadata_from_record(stored.record, stored.surface);
   const GridTable& table = *stored.surface.grid();

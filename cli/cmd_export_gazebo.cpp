@@ -38,7 +38,7 @@ void run_export_gazebo(const GazeboArgs& args, const GlobalOptions& global) {
   request.linearize_at = args.linearize_at;
   std::tie(request.added_mass, request.added_mass_source) = added_mass_from(args, global.database);
 
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   // --where picks the fits made from that selection of runs (a filtered fit
   // or one level of a per-level fit), e.g. the model at one current.
   const auto fits =

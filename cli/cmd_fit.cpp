@@ -38,7 +38,7 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
         !args.selection.exclude_runs.empty() || !args.mirror.empty())
       throw InputError(
           "--refit makes stored fits again as they were made; expected only --name, --body and --json with it");
-    Database database(global.database, Database::OpenMode::MustExist);
+    RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
     const auto result = refit_stored_fits(database, args.name,
                                           args.body.empty() ? std::nullopt : std::optional<std::string>(args.body));
     print_refit(result, global.database, args.json);
@@ -54,9 +54,9 @@ void run_fit(const FitArgs& args, const GlobalOptions& global) {
                      args.mirror_odd,
                      args.name,
                      !args.no_store,
-                     args.replace ? Database::NameTaken::Replace : Database::NameTaken::Refuse,
+                     args.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse,
                      !args.unweighted};
-  Database database(global.database, Database::OpenMode::MustExist);
+  RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
   if (args.by) {
     const LevelFitRequest level_request{request, *args.by, args.curve, args.strict};
     print_level_fit(fit_stored_runs_by_level(database, level_request), level_request, global.database, args.json);
@@ -71,7 +71,7 @@ struct FitsArgs {
 };
 
 void run_fits(const FitsArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   print_fits(database.fits(args.body), global.database, args.json);
 }
 

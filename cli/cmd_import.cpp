@@ -80,8 +80,8 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
   // as it was (or not made at all).
   ImportResult result = read_import(request);
   if (progress) std::cerr << "\r\033[K" << std::flush;
-  Database database(global.database);
-  ImportOptions import_options;
+  RunDatabase database(global.database);
+  ImportPolicy import_options;
   import_options.components = args.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
   import_options.replace = args.replace;
   import_options.also = args.also;

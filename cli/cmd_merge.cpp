@@ -87,7 +87,7 @@ void add_merge_command(CLI::App& app, const GlobalOptions& global) {
   command->callback([args, &global] {
     const std::string into = args->into.empty() ? global.database : args->into;
     const bool progress = isatty(STDERR_FILENO) != 0;
-    Database database(into);
+    RunDatabase database(into);
     const auto outcomes = database.merge(args->shards, [progress](std::size_t done, std::size_t total) {
       if (progress) std::cerr << "\r\033[K[" << done << "/" << total << "] shards read" << std::flush;
     });
@@ -104,7 +104,7 @@ void add_merge_command(CLI::App& app, const GlobalOptions& global) {
       "database");
   migrate_command->add_flag("--json", migrate->json, "Print JSON");
   migrate_command->callback([migrate, &global] {
-    Database database(global.database, Database::OpenMode::MustExist);
+    RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
     const int from = database.opened_at_version();
     const int to = database.schema_version();
     if (migrate->json) {
@@ -127,8 +127,8 @@ void add_merge_command(CLI::App& app, const GlobalOptions& global) {
   copy_command->add_option("--to", copy->to, "An empty database (created when it is a new SQLite file)")->required();
   copy_command->add_flag("--json", copy->json, "Print JSON");
   copy_command->callback([copy] {
-    Database source(copy->from, Database::OpenMode::ReadOnly);
-    Database target(copy->to);
+    RunDatabase source(copy->from, RunDatabase::OpenMode::ReadOnly);
+    RunDatabase target(copy->to);
     const auto copied = target.copy_from(source);
     if (copy->json) {
       nlohmann::json tables = nlohmann::json::object();

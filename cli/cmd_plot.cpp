@@ -69,7 +69,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
       ->required();
   add_common(fit, *fit_args);
   fit->callback([fit_args, &global] {
-    Database database(global.database, Database::OpenMode::ReadOnly);
+    RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
     render_and_print(plot::fit_figure(database, fit_args->name), default_image("fit", fit_args->name), *fit_args);
   });
 
@@ -89,7 +89,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     const auto& a = *curves_args;
     const std::string base = a.name ? *a.name : curves_base_name(a.body, a.dof, a.terms);
     const auto [kind, degree] = parse_curve(a.curve);
-    Database database(global.database, Database::OpenMode::ReadOnly);
+    RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
     if (a.by) {
       bool found = false;
       for (const auto& record : database.fits())
@@ -109,7 +109,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   surface->add_option("--output", surface_args->surface_output, "The surface's output to draw (default: its first)");
   add_common(surface, *surface_args, true);
   surface->callback([surface_args, &global] {
-    Database database(global.database, Database::OpenMode::ReadOnly);
+    RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
     render_and_print(plot::surface_figure(database, surface_args->name, surface_args->surface_output),
                      default_image("surface", surface_args->name), *surface_args);
   });
@@ -126,7 +126,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
       ->description("Image size WIDTHxHEIGHT [pixels]; default 900 wide and 260 per panel plus 200")
       ->default_str("");
   history->callback([history_args, history, &global] {
-    Database database(global.database, Database::OpenMode::ReadOnly);
+    RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
     const std::int64_t id = history_args->run;
     const auto runs = database.runs();
     const auto found = std::find_if(runs.begin(), runs.end(), [&](const StoredRun& run) { return run.id == id; });
@@ -183,9 +183,9 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     const auto dof = force_index(a.dof);
     if (!dof) throw InputError("--dof '" + a.dof + "': expected X, Y, Z, K, M or N");
     const std::vector<double> taus = steady_forces(a.taus, a.tau_from, a.tau_to, a.count);
-    auto database = std::make_shared<std::unique_ptr<Database>>();
+    auto database = std::make_shared<std::unique_ptr<RunDatabase>>();
     const SurfaceResolver resolver = [database, &global](const std::string& name) {
-      if (!*database) *database = std::make_unique<Database>(global.database, Database::OpenMode::ReadOnly);
+      if (!*database) *database = std::make_unique<RunDatabase>(global.database, RunDatabase::OpenMode::ReadOnly);
       return load_surface(**database, name).surface;
     };
     VehicleDescription vehicle = load_vehicle(a.vehicle);

@@ -68,7 +68,7 @@ void run_pmm(const PmmArgs& args, const GlobalOptions& global) {
   if (progress) std::cerr << "\r\033[K" << std::flush;
   std::vector<PmmSaved> saved;
   if (args.store) {
-    Database database(global.database);
+    RunDatabase database(global.database);
     saved = store_pmm_runs(database, runs);
   }
   print_pmm_runs(runs, saved, global.database, args.json);
@@ -146,7 +146,7 @@ void add_pmm_runs_command(CLI::App& app, const GlobalOptions& global) {
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, command, &global] {
     if (!command->get_subcommands().empty()) return;  // pmm-runs delete
-    Database database(global.database, Database::OpenMode::ReadOnly);
+    RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
     print_pmm_records(database.pmm_records(args->body, false), args->json);
   });
   auto remove = std::make_shared<PmmDeleteArgs>();
@@ -157,7 +157,7 @@ void add_pmm_runs_command(CLI::App& app, const GlobalOptions& global) {
   delete_command->add_option("ids", remove->ids, "pmm run ids")->required();
   delete_command->add_flag("--json", remove->json, "Print JSON");
   delete_command->callback([remove, &global] {
-    Database database(global.database, Database::OpenMode::MustExist);
+    RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
     print_pmm_deleted(database.delete_pmm_runs(remove->ids), global.database, remove->json);
   });
 }

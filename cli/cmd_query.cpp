@@ -119,7 +119,7 @@ void run_query(const QueryArgs& args, const GlobalOptions& global) {
     throw InputError("give either a point (AXIS=VALUE ...) or --input, not both");
   if (args.input.empty() && args.point.empty())
     throw InputError("no point; expected AXIS=VALUE for each axis of the surface, or --input FILE (- for stdin)");
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   const StoredSurface stored = load_surface(database, args.name);
   warn_if_stale(stored.record);
   if (args.input.empty())

@@ -24,7 +24,7 @@ struct ReportArgs {
 };
 
 void run_report(const ReportArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   report::ReportOptions options;
   options.body = args.body;
   options.selection = parse_selection(args.selection.where, args.selection.exclude_runs);

@@ -28,7 +28,7 @@ struct RunsArgs {
 };
 
 void run_runs(const RunsArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   RunFilter filter;
   filter.body = args.body;
   const auto runs = selected_runs(database, filter, parse_selection(args.selection.where, args.selection.exclude_runs));
@@ -49,7 +49,7 @@ struct ShowArgs {
 };
 
 void run_show(const ShowArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   const auto all = database.runs();
   const auto found = std::find_if(all.begin(), all.end(), [&](const StoredRun& run) { return run.id == args.id; });
   if (found == all.end())
@@ -72,7 +72,7 @@ struct DeleteArgs {
 };
 
 void run_delete(const DeleteArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::MustExist);
+  RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
   const DeleteOutcome outcome = delete_runs(
       database, RunDeletion{args.ids, args.body, args.selection.where, args.selection.exclude_runs, args.source});
   if (args.json) {

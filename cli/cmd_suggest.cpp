@@ -109,7 +109,7 @@ void add_suggest_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--manifest", args->manifest, "Write the runs as a sweep manifest CSV");
   command->add_flag("--json", args->json, "Machine-readable output");
   command->callback([args, &global] {
-    Database database(global.database, Database::OpenMode::ReadOnly);
+    RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
     const StoredSurface stored = load_surface(database, args->name);
     NextRunsRequest request = args->request;
     request.mirror = surface_mirror(stored.record);

@@ -15,9 +15,9 @@ namespace {
 
 void build(const SurfaceBuildArgs& args, const GlobalOptions& global) {
   const SurfaceBuildSpec spec = surface_build_spec(args);
-  Database database(global.database, Database::OpenMode::MustExist);
+  RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
   const auto result = build_and_store_surface(
-      database, args.name, args.body, spec, args.replace ? Database::NameTaken::Replace : Database::NameTaken::Refuse);
+      database, args.name, args.body, spec, args.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse);
   if (args.json) {
     std::cout << escape::json_text(surface_build_json(result), 2) << '\n';
   } else {
@@ -33,7 +33,7 @@ struct NameArgs {
 };
 
 void rebuild(const NameArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::MustExist);
+  RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
   const auto targets =
       surfaces_to_rebuild(database, args.name.empty() ? std::nullopt : std::optional(args.name), args.body, args.stale);
   if (targets.empty() && !args.json) std::cout << "no surface to rebuild\n";
@@ -50,12 +50,12 @@ void rebuild(const NameArgs& args, const GlobalOptions& global) {
 }
 
 void list(const NameArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   print_surface_list(database.surfaces(args.body), global.database, args.json);
 }
 
 void show(const NameArgs& args, const GlobalOptions& global) {
-  Database database(global.database, Database::OpenMode::ReadOnly);
+  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
   print_surface(load_surface(database, args.name), args.json);
 }
 

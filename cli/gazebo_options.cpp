@@ -46,7 +46,7 @@ std::pair<Matrix6, std::string> added_mass_from(const GazeboArgs& args, const st
     throw InputError(
         "--same, --zero and --added-mass-period apply to --added-mass-from-database only; expected it with them");
   if (args.added_mass_from_database) {
-    Database db(database, Database::OpenMode::ReadOnly);
+    RunDatabase db(database, RunDatabase::OpenMode::ReadOnly);
     AddedMassOptions options = parse_added_mass_options(args.same, args.zero);
     options.period = args.added_mass_period;
     const AddedMassAssembly assembly = assemble_added_mass(

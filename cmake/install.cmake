@@ -2,7 +2,7 @@
 #   bin/hydrocoef                           the CLI (linked with the static library)
 #   LIBDIR/libhydrocoef.so.0 (.so, .a)      the library, shared and static
 #   include/hydrocoef/*.hpp                 the public headers (include/hydrocoef/ of the source tree and the
-#                                           generated version.hpp, nothing else: src/ and importers/ are internal)
+#                                           generated version.hpp and export.hpp, nothing else: src/ and importers/ are internal)
 #   LIBDIR/cmake/hydrocoef/                 the CMake package: find_package(hydrocoef 0.1 CONFIG REQUIRED)
 #   LIBDIR/pkgconfig/hydrocoef.pc           pkg-config --cflags --libs hydrocoef (the shared library)
 #   share/hydrocoef/schema/*.sql            the database schema migrations (also compiled into the library)
@@ -41,6 +41,7 @@ install(TARGETS hydrocoef_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/hydrocoef DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_BINARY_DIR}/generated/include/hydrocoef/version.hpp
+              ${PROJECT_BINARY_DIR}/generated/include/hydrocoef/export.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hydrocoef)
 install(FILES ${HYDROCOEF_MIGRATIONS} DESTINATION ${CMAKE_INSTALL_DATADIR}/hydrocoef/schema)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/data/PROVENANCE.md

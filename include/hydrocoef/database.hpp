@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "hydrocoef/error.hpp"
+#include "hydrocoef/export.hpp"
 #include "hydrocoef/surface.hpp"
 
 namespace hydrocoef {
@@ -231,7 +232,7 @@ struct SurfaceBuildOptions {
   int gp_starts = 5;                       ///< gp: optimiser starts (1 to 100)
 };
 
-class Database {
+class HYDROCOEF_EXPORT Database {
  public:
   /// Opens (or with OpenMode::Create, makes) a run database. InputError when
   /// the file is missing (ReadOnly, ReadWrite), is not a hydrocoef database,
@@ -283,7 +284,8 @@ class Database {
   /// listing the stored names when there is none of that name.
   Surface surface(const std::string& name) const;
 
-  struct Impl;  ///< the library's own
+  struct Impl;    ///< the library's own
+  struct Access;  ///< the library's own: how the operations of the other headers reach Impl
 
  private:
   explicit Database(std::unique_ptr<Impl> impl);

@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "hydrocoef/export.hpp"
+
 namespace hydrocoef {
 
 /// Where in a file a problem was found. line and column are 1-based; 0 means
@@ -29,7 +31,7 @@ struct SourceLocation {
 /// and bytes that are not UTF-8 become \xNN, so that text quoted from a binary
 /// or damaged file still gives one readable line; it is cut at 2,000
 /// characters.
-class InputError : public std::runtime_error {
+class HYDROCOEF_EXPORT InputError : public std::runtime_error {
  public:
   explicit InputError(const std::string& message);
   /// The message becomes "file:line:column: message" (parts that are unset are left out).

@@ -4,6 +4,7 @@
 //
 //   hydrocoef/hydrocoef.hpp    this file: includes the others
 //   hydrocoef/error.hpp        InputError, the exception for bad input, with the CLI's message
+//   hydrocoef/export.hpp       HYDROCOEF_EXPORT, what the shared library exports (generated)
 //   hydrocoef/version.hpp      kVersion ("0.1.0"), kVersionMajor/Minor/Patch
 //   hydrocoef/database.hpp     Database: open a run database, list and select
 //                              runs, import CFD results, fit damping laws,

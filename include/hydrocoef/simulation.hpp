@@ -19,13 +19,14 @@
 #include <vector>
 
 #include "hydrocoef/error.hpp"
+#include "hydrocoef/export.hpp"
 
 namespace hydrocoef {
 inline namespace api {
 
 /// A simulated trajectory: the columns of the CSV `hydrocoef simulate --out`
 /// writes, in its order, as numbers.
-struct Trajectory {
+struct HYDROCOEF_EXPORT Trajectory {
   /// Column names, the CSV header's without the units: t, x_n, y_n, z_n, phi,
   /// theta, psi, q_eta, q_eps1, q_eps2, q_eps3, u, v, w, p, q, r, u_r, v_r,
   /// w_r, p_r, q_r, r_r, then X_control ... N_control, X_damping ...
@@ -52,7 +53,7 @@ struct Trajectory {
 /// InputError for a file that cannot be read or parsed, a surface that is
 /// missing or queried outside its range under policy "error", or a scenario
 /// the integrator cannot run.
-Trajectory simulate(const std::string& vehicle_json, const std::string& scenario_json,
+HYDROCOEF_EXPORT Trajectory simulate(const std::string& vehicle_json, const std::string& scenario_json,
                     const std::string& database = "");
 
 }  // namespace api

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "hydrocoef/error.hpp"
+#include "hydrocoef/export.hpp"
 
 namespace hydrocoef {
 // The public API lives in an inline namespace: users write hydrocoef::Surface;
@@ -49,7 +50,7 @@ struct Column {
   std::ptrdiff_t stride = 1;
 };
 
-class Surface {
+class HYDROCOEF_EXPORT Surface {
  public:
   /// A surface and its gradient at one point.
   struct ValueAndGradient {

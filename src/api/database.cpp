@@ -16,11 +16,11 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-api_internal::StoreDatabase::OpenMode store_mode(OpenMode mode) {
+RunDatabase::OpenMode store_mode(OpenMode mode) {
   switch (mode) {
-    case OpenMode::ReadOnly: return api_internal::StoreDatabase::OpenMode::ReadOnly;
-    case OpenMode::ReadWrite: return api_internal::StoreDatabase::OpenMode::MustExist;
-    case OpenMode::Create: return api_internal::StoreDatabase::OpenMode::CreateIfMissing;
+    case OpenMode::ReadOnly: return RunDatabase::OpenMode::ReadOnly;
+    case OpenMode::ReadWrite: return RunDatabase::OpenMode::MustExist;
+    case OpenMode::Create: return RunDatabase::OpenMode::CreateIfMissing;
   }
   throw std::invalid_argument("hydrocoef::Database::open: unknown OpenMode");
 }
@@ -31,12 +31,12 @@ std::optional<std::string> optional_body(const std::string& body) {
 
 }  // namespace
 
-api_internal::StoreDatabase& Database::Impl::open_store() {
+RunDatabase& Database::Impl::open_store() {
   if (!store) throw InputError(SourceLocation{path}, "database is closed");
   return *store;
 }
 
-api_internal::StoreDatabase& Database::Impl::writable_store(const char* what) {
+RunDatabase& Database::Impl::writable_store(const char* what) {
   auto& open = open_store();
   if (read_only)
     throw InputError(SourceLocation{path}, std::string("database is open read-only; ") + what +
@@ -191,8 +191,8 @@ SurfaceInfo Database::build_surface(const SurfaceBuildOptions& options) {
   const std::lock_guard lock(impl_->mutex);
   const SurfaceBuildResult result =
       build_and_store_surface(impl_->writable_store("a surface build"), options.name, options.body, spec,
-                              options.replace ? api_internal::StoreDatabase::NameTaken::Replace
-                                              : api_internal::StoreDatabase::NameTaken::Refuse);
+                              options.replace ? RunDatabase::NameTaken::Replace
+                                              : RunDatabase::NameTaken::Refuse);
   return surface_info(result.stored.record, result.stored.surface);
 }
 

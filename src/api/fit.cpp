@@ -23,7 +23,7 @@ std::vector<std::string> coefficient_units(const std::string& terms, const std::
   }
 }
 
-FitSummary Database::fit(const api::FitOptions& options) {
+FitSummary Database::fit(const FitOptions& options) {
   FitRequest request;
   request.body = options.body;
   request.dof = options.output;
@@ -35,8 +35,8 @@ FitSummary Database::fit(const api::FitOptions& options) {
   request.mirror_odd = options.mirror_odd;
   if (!options.name.empty()) request.name = options.name;
   request.store = options.store;
-  request.taken = options.replace ? api_internal::StoreDatabase::NameTaken::Replace
-                                  : api_internal::StoreDatabase::NameTaken::Refuse;
+  request.taken = options.replace ? RunDatabase::NameTaken::Replace
+                                  : RunDatabase::NameTaken::Refuse;
   const std::lock_guard lock(impl_->mutex);
   auto& store = options.store ? impl_->writable_store("fit") : impl_->open_store();
   const FitResult result = fit_stored_runs(store, request);

@@ -12,7 +12,7 @@ namespace {
 
 /// The caller's settings as the command line's layer: each value is JSON, or
 /// a plain text when it is not ("-x,y,-z"), read as a sidecar's keys are.
-SettingsLayer command_line_layer(const api::ImportOptions& options) {
+SettingsLayer command_line_layer(const ImportOptions& options) {
   nlohmann::json object = nlohmann::json::object();
   for (const auto& [key, text] : options.settings) {
     auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
@@ -29,7 +29,7 @@ SettingsLayer command_line_layer(const api::ImportOptions& options) {
 
 }  // namespace
 
-ImportSummary Database::import_files(const std::vector<std::string>& paths, const api::ImportOptions& options) {
+ImportSummary Database::import_files(const std::vector<std::string>& paths, const ImportOptions& options) {
   {
     const std::lock_guard lock(impl_->mutex);
     impl_->writable_store("an import");  // refused before anything is read
@@ -58,7 +58,7 @@ ImportSummary Database::import_files(const std::vector<std::string>& paths, cons
 
   // Everything is read before the database is touched: a bad input leaves it as it was.
   ImportResult result = read_import(request);
-  api_internal::StoreImportOptions store_options;
+  ImportPolicy store_options;
   store_options.components = options.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
   store_options.replace = options.replace;
   store_options.also = options.also;

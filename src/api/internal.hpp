@@ -1,14 +1,9 @@
 // What the public API's implementation (src/api/*.cpp) shares: the library's
-// own headers, the names of the internal types that the public API reuses
-// (the store's Database, its ImportOptions, the fit's FitOptions), and the
-// Impl structs behind the public classes.
+// own headers and the Impl structs behind the public classes.
 //
-// The public classes live in the inline namespace hydrocoef::api, so inside
-// hydrocoef an unqualified `Database` would name two classes. This header
-// therefore includes every internal header first, names the internal types
-// here (StoreDatabase, ...) while they are the only ones, and only then
-// includes the public headers. Files in src/api include this header before
-// anything else and name the public types as api::Database, api::FitOptions.
+// No internal type takes a public type's name (the store's database is
+// RunDatabase, an import's conflict rules ImportPolicy, a fit's loss
+// LossOptions), so headers may be included in any order.
 #pragma once
 
 #include <mutex>
@@ -35,12 +30,6 @@
 #include "src/surface/coefficient_surface.hpp"
 #include "src/surface/stored_surface.hpp"
 
-namespace hydrocoef::api_internal {
-using StoreDatabase = ::hydrocoef::Database;
-using StoreImportOptions = ::hydrocoef::ImportOptions;
-using LawFitOptions = ::hydrocoef::FitOptions;
-}  // namespace hydrocoef::api_internal
-
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/simulation.hpp"
@@ -61,15 +50,22 @@ struct Surface::Impl {
 struct Database::Impl {
   std::string path;
   bool read_only = false;
-  std::optional<api_internal::StoreDatabase> store;  ///< empty once closed
+  std::optional<RunDatabase> store;  ///< empty once closed
   /// Every call holds it: a Database may be shared between threads (the
   /// Python module releases the GIL around long calls).
   std::mutex mutex;
 
   /// The open store; InputError "PATH: database is closed" after close().
-  api_internal::StoreDatabase& open_store();
+  RunDatabase& open_store();
   /// As open_store, and InputError when the database was opened read-only.
-  api_internal::StoreDatabase& writable_store(const char* what);
+  RunDatabase& writable_store(const char* what);
+};
+
+/// How the operations declared outside the Database class (the free functions
+/// of include/hydrocoef/analysis.hpp, export.hpp, ...) reach a Database's
+/// store. Every use holds the Impl's mutex for the whole call.
+struct Database::Access {
+  static Impl& impl(const Database& database) { return *database.impl_; }
 };
 
 /// The unit of each coefficient of a law ("N", "N/(m/s)", "N m/(rad/s)^2"),

@@ -19,9 +19,9 @@ namespace hydrocoef {
 
 SurfaceResolver database_surface_resolver(const std::filesystem::path& database) {
   // Shared by the resolver's copies: one connection for all the surfaces a vehicle names.
-  auto opened = std::make_shared<std::unique_ptr<Database>>();
+  auto opened = std::make_shared<std::unique_ptr<RunDatabase>>();
   return [opened, database](const std::string& name) {
-    if (!*opened) *opened = std::make_unique<Database>(database, Database::OpenMode::ReadOnly);
+    if (!*opened) *opened = std::make_unique<RunDatabase>(database, RunDatabase::OpenMode::ReadOnly);
     return load_surface(**opened, name).surface;
   };
 }
@@ -29,7 +29,7 @@ SurfaceResolver database_surface_resolver(const std::filesystem::path& database)
 namespace {
 
 /// The vehicle's added mass from the body's forced-oscillation runs.
-void resolve_added_mass(VehicleDescription& vehicle, Database& db) {
+void resolve_added_mass(VehicleDescription& vehicle, RunDatabase& db) {
   const auto& reference = *vehicle.added_mass_from_database;
   const std::string where = "key 'added_mass.from_database': ";
   const auto dof = [&](const std::string& name, const std::string& key) {
@@ -69,10 +69,10 @@ void resolve_added_mass(VehicleDescription& vehicle, Database& db) {
 }  // namespace
 
 void resolve_stored_records(VehicleDescription& vehicle, const std::filesystem::path& database) {
-  std::unique_ptr<Database> db;
+  std::unique_ptr<RunDatabase> db;
   if (vehicle.added_mass_from_database) {
     try {
-      db = std::make_unique<Database>(database, Database::OpenMode::ReadOnly);
+      db = std::make_unique<RunDatabase>(database, RunDatabase::OpenMode::ReadOnly);
     } catch (const InputError& e) {
       throw InputError(SourceLocation{vehicle.file}, std::string("key 'added_mass.from_database': ") + e.what());
     }
@@ -86,7 +86,7 @@ void resolve_stored_records(VehicleDescription& vehicle, const std::filesystem::
     const std::string where = "key 'damping." + std::string(kForceNames[dof]) + ".fit': ";
     if (!fits_loaded) {
       try {
-        if (!db) db = std::make_unique<Database>(database, Database::OpenMode::ReadOnly);
+        if (!db) db = std::make_unique<RunDatabase>(database, RunDatabase::OpenMode::ReadOnly);
         fits = db->fits();
         fits_loaded = true;
       } catch (const InputError& e) {

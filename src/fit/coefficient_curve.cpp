@@ -77,7 +77,7 @@ std::vector<double> fit_polynomial(const std::vector<double>& levels, const std:
 }  // namespace
 
 std::vector<LevelFit> fit_per_level(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                                    std::span<const double> disturbance, const FitOptions& options,
+                                    std::span<const double> disturbance, const LossOptions& options,
                                     std::vector<SkippedLevel>* skipped) {
   if (x.size() != y.size() || x.size() != disturbance.size())
     throw InputError("per-level fit got " + std::to_string(x.size()) + " velocity values, " + std::to_string(y.size()) +

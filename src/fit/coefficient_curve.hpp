@@ -52,7 +52,7 @@ struct SkippedLevel {
 /// With `skipped`, such levels are left out and listed there instead, so that
 /// a sweep with a sparse level can still be fitted per level.
 std::vector<LevelFit> fit_per_level(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                                    std::span<const double> disturbance, const FitOptions& options = {},
+                                    std::span<const double> disturbance, const LossOptions& options = {},
                                     std::vector<SkippedLevel>* skipped = nullptr);
 
 enum class CurveKind {

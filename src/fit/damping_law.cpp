@@ -73,7 +73,7 @@ class ObservationResidual final : public ceres::CostFunction {
   double observed_;
 };
 
-std::unique_ptr<ceres::LossFunction> make_loss(const FitOptions& options) {
+std::unique_ptr<ceres::LossFunction> make_loss(const LossOptions& options) {
   switch (options.loss) {
     case LossKind::Squared: return nullptr;
     case LossKind::Huber: return std::make_unique<ceres::HuberLoss>(options.loss_scale);
@@ -176,13 +176,13 @@ std::vector<std::size_t> dependent_terms(const Eigen::MatrixXd& scaled_design) {
 
 }  // namespace
 
-FitOptions parse_loss(std::string_view text) {
+LossOptions parse_loss(std::string_view text) {
   const std::string spelled = without_blanks(text, kLossBlanks);
   if (spelled == "squared") return {};
 
   const auto colon = spelled.find(':');
   const std::string name = spelled.substr(0, colon);
-  FitOptions options;
+  LossOptions options;
   if (name == "huber") {
     options.loss = LossKind::Huber;
   } else if (name == "cauchy") {
@@ -204,7 +204,7 @@ FitOptions parse_loss(std::string_view text) {
   return options;
 }
 
-std::string format_loss(const FitOptions& options) {
+std::string format_loss(const LossOptions& options) {
   switch (options.loss) {
     case LossKind::Squared: return "squared";
     case LossKind::Huber: return "huber:" + shortest_number(options.loss_scale);
@@ -217,7 +217,7 @@ std::string format_loss(const FitOptions& options) {
 double DampingLawFit::evaluate(double x) const { return damping_law_value(spec.terms, coefficients, x); }
 
 DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                              const FitOptions& options, std::span<const double> sigma) {
+                              const LossOptions& options, std::span<const double> sigma) {
   check_damping_law_spec(spec);
   if (options.loss != LossKind::Squared && !(std::isfinite(options.loss_scale) && options.loss_scale > 0.0))
     throw InputError("loss scale " + shortest_number(options.loss_scale) +
@@ -277,7 +277,7 @@ DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double
   if (const auto which = dependent_terms(scaled_design); !which.empty()) throw_dependent_terms(spec, which, x);
 
   // A robust loss's scale is in the force's unit: in units of y_scale here.
-  FitOptions scaled_options = options;
+  LossOptions scaled_options = options;
   scaled_options.loss_scale = options.loss_scale / y_scale;
   const auto loss = make_loss(scaled_options);
   ScaledSolution solution = solve(scaled_design, y_scaled, nullptr, Eigen::VectorXd::Zero(cols), loss == nullptr);

@@ -35,7 +35,7 @@ enum class LossKind {
   SoftLOne  ///< smooth blend of r^2 and |r|
 };
 
-struct FitOptions {
+struct LossOptions {
   LossKind loss = LossKind::Squared;
   /// Residual size [force's unit: N or N m] beyond which a robust loss starts
   /// discounting a run. Must be finite and > 0 for robust losses; ignored for Squared.
@@ -45,11 +45,11 @@ struct FitOptions {
 /// Parses "squared", "huber:SCALE", "cauchy:SCALE" or "soft-l1:SCALE", SCALE
 /// being a positive number in the force's unit (e.g. "huber:0.01"). Throws
 /// InputError naming the text otherwise.
-FitOptions parse_loss(std::string_view text);
+LossOptions parse_loss(std::string_view text);
 
 /// The canonical text of a loss, "squared" or "huber:0.01" (shortest
 /// round-trip form of the scale); parse_loss reads it back.
-std::string format_loss(const FitOptions& options);
+std::string format_loss(const LossOptions& options);
 
 /// A fitted law and how well it fits.
 struct DampingLawFit {
@@ -104,6 +104,6 @@ struct DampingLawFit {
 /// linearly dependent on this data (e.g. all x equal with terms 1,u; or
 /// u,|u| with no negative u), naming the terms concerned.
 DampingLawFit fit_damping_law(const DampingLawSpec& spec, std::span<const double> x, std::span<const double> y,
-                              const FitOptions& options = {}, std::span<const double> sigma = {});
+                              const LossOptions& options = {}, std::span<const double> sigma = {});
 
 }  // namespace hydrocoef

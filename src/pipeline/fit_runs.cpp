@@ -76,7 +76,7 @@ MirrorSpec parse_mirror_spec(std::string_view text) {
                                                                  : comma_list(text.substr(slash + 1)));
 }
 
-std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection) {
+std::vector<StoredRun> selected_runs(RunDatabase& database, const RunFilter& filter, const RunSelection& selection) {
   auto runs = database.runs(filter);
   std::erase_if(runs, [&](const StoredRun& run) { return !selection.matches(run.key, run.id); });
   return runs;
@@ -123,7 +123,7 @@ std::vector<StoredRun> with_mirror_images(const std::vector<StoredRun>& runs, co
   return out;
 }
 
-FitSamples gather_fit_samples(Database& database, const std::string& body, std::size_t dof, std::size_t variable,
+FitSamples gather_fit_samples(RunDatabase& database, const std::string& body, std::size_t dof, std::size_t variable,
                               const RunSelection& selection, const MirrorSpec& mirror) {
   RunFilter filter;
   filter.body = body;
@@ -209,9 +209,9 @@ FitRecord make_fit_record(const std::string& name, const std::string& body, std:
   return record;
 }
 
-FitRecord refit(Database& database, const FitRecord& record) {
+FitRecord refit(RunDatabase& database, const FitRecord& record) {
   const DampingLawSpec spec = parse_damping_terms(record.terms);
-  const FitOptions options = parse_loss(record.loss);
+  const LossOptions options = parse_loss(record.loss);
   const auto dof = force_index(record.dof);
   const auto variable = velocity_index(spec.variable);
   if (!dof || !variable) throw InputError("fit '" + record.name + "': unknown component " + record.dof);

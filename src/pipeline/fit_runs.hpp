@@ -35,7 +35,7 @@ MirrorSpec make_mirror_spec(const std::vector<std::string>& planes, const std::v
 MirrorSpec parse_mirror_spec(std::string_view text);
 
 /// The runs of `filter` that the selection keeps, in the database's order.
-std::vector<StoredRun> selected_runs(Database& database, const RunFilter& filter, const RunSelection& selection);
+std::vector<StoredRun> selected_runs(RunDatabase& database, const RunFilter& filter, const RunSelection& selection);
 
 /// The runs and, after them, the mirror images of each under every
 /// reflection of `mirror` (and their compositions): the key and every force
@@ -62,7 +62,7 @@ struct FitSamples {
 /// selection, and their mirror images under `mirror`. Values keep the sign
 /// convention they were imported in when all runs agree; mixed conventions are
 /// brought to forces on the body. InputError when no run is selected.
-FitSamples gather_fit_samples(Database& database, const std::string& body, std::size_t dof, std::size_t variable,
+FitSamples gather_fit_samples(RunDatabase& database, const std::string& body, std::size_t dof, std::size_t variable,
                               const RunSelection& selection, const MirrorSpec& mirror = {});
 
 /// The uncertainties a weighted fit uses: the samples' standard uncertainties
@@ -84,6 +84,6 @@ FitRecord make_fit_record(const std::string& name, const std::string& body, std:
 /// The fit a stored record describes, made again from the runs its selection
 /// picks now (same name, law, loss, selection, mirror). InputError when its
 /// runs are gone.
-FitRecord refit(Database& database, const FitRecord& record);
+FitRecord refit(RunDatabase& database, const FitRecord& record);
 
 }  // namespace hydrocoef

@@ -45,7 +45,7 @@ double condition_value(const RunKey& key, std::int64_t run_id, const std::string
 }
 
 /// The checked request: law, loss, names, selection, mirror, and the samples.
-FitSetup prepare(Database& database, const FitRequest& request, FitOptions& options) {
+FitSetup prepare(RunDatabase& database, const FitRequest& request, LossOptions& options) {
   if (request.body.empty() || request.dof.empty() || request.terms.empty())
     throw InputError("fit: --body, --dof and --terms are required (or --refit to make stored fits again)");
   const auto dof = force_index(request.dof);
@@ -79,8 +79,8 @@ std::vector<std::int64_t> FitResult::run_ids() const {
   return out;
 }
 
-FitResult fit_stored_runs(Database& database, const FitRequest& request) {
-  FitOptions options;
+FitResult fit_stored_runs(RunDatabase& database, const FitRequest& request) {
+  LossOptions options;
   FitResult result;
   result.setup = prepare(database, request, options);
   const FitSamples& samples = result.setup.samples;
@@ -132,8 +132,8 @@ FitResult fit_stored_runs(Database& database, const FitRequest& request) {
   return result;
 }
 
-LevelFitResult fit_stored_runs_by_level(Database& database, const LevelFitRequest& request) {
-  FitOptions options;
+LevelFitResult fit_stored_runs_by_level(RunDatabase& database, const LevelFitRequest& request) {
+  LossOptions options;
   LevelFitResult result;
   result.setup = prepare(database, request.fit, options);
   const FitSamples& samples = result.setup.samples;
@@ -175,7 +175,7 @@ LevelFitResult fit_stored_runs_by_level(Database& database, const LevelFitReques
   return result;
 }
 
-RefitResult refit_stored_fits(Database& database, const std::optional<std::string>& name,
+RefitResult refit_stored_fits(RunDatabase& database, const std::optional<std::string>& name,
                               const std::optional<std::string>& body) {
   RefitResult result;
   for (auto& fit : database.fits(body))
@@ -184,11 +184,11 @@ RefitResult refit_stored_fits(Database& database, const std::optional<std::strin
     throw InputError(SourceLocation{database.path().string()},
                      "no fit named '" + escape::one_line(*name) + "'; 'hydrocoef fits' lists them");
   for (const auto& fit : result.previous) result.made.push_back(refit(database, fit));
-  if (!result.made.empty()) database.save_fits(result.made, Database::NameTaken::Replace);
+  if (!result.made.empty()) database.save_fits(result.made, RunDatabase::NameTaken::Replace);
   return result;
 }
 
-std::vector<FitRecord> fits_made_from(Database& database, const std::string& body, const RunSelection& selection) {
+std::vector<FitRecord> fits_made_from(RunDatabase& database, const std::string& body, const RunSelection& selection) {
   const auto bodies = database.bodies();
   if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) {
     std::string names;

@@ -38,7 +38,7 @@ struct FitRequest {
   std::vector<std::string> mirror_planes, mirror_odd;
   std::optional<std::string> name;  ///< default: default_fit_name (src/fit/fit_names.hpp)
   bool store = true;
-  Database::NameTaken taken = Database::NameTaken::Refuse;
+  RunDatabase::NameTaken taken = RunDatabase::NameTaken::Refuse;
   /// Weight each run by its standard uncertainty when every selected run has
   /// one (a mean over a force history, or given at import); false: ordinary
   /// least squares.
@@ -77,7 +77,7 @@ struct FitResult {
 /// Fits the law to the selected runs (and their images), checks it, and
 /// stores it unless `request.store` is false. InputError for bad names,
 /// terms, loss or selection, no runs, too few runs, or a taken name.
-FitResult fit_stored_runs(Database& database, const FitRequest& request);
+FitResult fit_stored_runs(RunDatabase& database, const FitRequest& request);
 
 /// The law at each level of `by`, then each coefficient as a curve of it.
 struct LevelFitRequest {
@@ -97,7 +97,7 @@ struct LevelFitResult {
   std::vector<CoefficientCurve> curves;
 };
 
-LevelFitResult fit_stored_runs_by_level(Database& database, const LevelFitRequest& request);
+LevelFitResult fit_stored_runs_by_level(RunDatabase& database, const LevelFitRequest& request);
 
 /// Stored fits made again from the runs their selections pick now: the one
 /// named, or every stale one (of `body` when given); stored, replacing them.
@@ -105,14 +105,14 @@ struct RefitResult {
   std::vector<FitRecord> previous;
   std::vector<FitRecord> made;
 };
-RefitResult refit_stored_fits(Database& database, const std::optional<std::string>& name,
+RefitResult refit_stored_fits(RunDatabase& database, const std::optional<std::string>& name,
                               const std::optional<std::string>& body);
 
 /// The stored fits of `body` made from exactly this selection of runs (a
 /// filtered fit, or one level of a per-level fit); every fit of the body for
 /// an empty selection. InputError when the body is not in the database
 /// (listing the bodies) or no fit was made from the selection.
-std::vector<FitRecord> fits_made_from(Database& database, const std::string& body, const RunSelection& selection);
+std::vector<FitRecord> fits_made_from(RunDatabase& database, const std::string& body, const RunSelection& selection);
 
 /// "polynomial:D" (least squares, degree D 0..9) or "pchip" (degree 3).
 std::pair<CurveKind, int> parse_curve(const std::string& text);

@@ -88,7 +88,7 @@ std::pair<double, std::string> cell_size_of(const StoredRun& run, const GridConv
 
 }  // namespace
 
-GridConvergenceStudy grid_convergence_of_runs(Database& database, const GridConvergenceRequest& request) {
+GridConvergenceStudy grid_convergence_of_runs(RunDatabase& database, const GridConvergenceRequest& request) {
   check_name(NameKind::Body, request.body, {}, "--body");
   check_name(NameKind::Parameter, request.mesh_parameter, {}, "--mesh-param");
   if (request.mesh_parameter == kCellCountParameter || request.mesh_parameter == kCellSizeParameter)
@@ -269,7 +269,7 @@ std::vector<NumericalUncertaintyRecord> numerical_uncertainty_records(const Grid
   return out;
 }
 
-StoredStudy store_grid_convergence(Database& database, const GridConvergenceStudy& study) {
+StoredStudy store_grid_convergence(RunDatabase& database, const GridConvergenceStudy& study) {
   const auto stale = [&] {
     const auto fits = database.fits(study.body);
     const auto surfaces = database.surfaces(study.body);

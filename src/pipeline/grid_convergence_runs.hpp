@@ -117,7 +117,7 @@ struct GridConvergenceStudy {
 /// for a key at two levels, two levels of one key with the same cell size, a
 /// run of a study without a cell size (or with both), or no key at three
 /// levels or more.
-GridConvergenceStudy grid_convergence_of_runs(Database& database, const GridConvergenceRequest& request);
+GridConvergenceStudy grid_convergence_of_runs(RunDatabase& database, const GridConvergenceRequest& request);
 
 /// The study's results as records to store (one per key and component).
 std::vector<NumericalUncertaintyRecord> numerical_uncertainty_records(const GridConvergenceStudy& study);
@@ -129,6 +129,6 @@ struct StoredStudy {
 };
 /// Stores the study's results (replacing those of its keys) and counts the
 /// body's fits and surfaces this made stale (their runs' uncertainty changed).
-StoredStudy store_grid_convergence(Database& database, const GridConvergenceStudy& study);
+StoredStudy store_grid_convergence(RunDatabase& database, const GridConvergenceStudy& study);
 
 }  // namespace hydrocoef

@@ -141,7 +141,7 @@ ImportResult read_import(const ImportRequest& request) {
   return result;
 }
 
-void store_import(Database& database, ImportResult& result, const ImportOptions& options) {
+void store_import(RunDatabase& database, ImportResult& result, const ImportPolicy& options) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<ImportBatch> batches;
   for (const auto& input : result.inputs) batches.push_back(input.batch);
@@ -168,7 +168,7 @@ void store_import(Database& database, ImportResult& result, const ImportOptions&
   }
 }
 
-ImportResult import_into(Database& database, const ImportRequest& request, const ImportOptions& options) {
+ImportResult import_into(RunDatabase& database, const ImportRequest& request, const ImportPolicy& options) {
   ImportResult result = read_import(request);
   store_import(database, result, options);
   return result;

@@ -142,9 +142,9 @@ ImportResult read_import(const ImportRequest& request);
 
 /// Stores the runs read in one transaction and fills the outcomes, notes and
 /// totals.
-void store_import(Database& database, ImportResult& result, const ImportOptions& options);
+void store_import(RunDatabase& database, ImportResult& result, const ImportPolicy& options);
 
 /// read_import, then store_import.
-ImportResult import_into(Database& database, const ImportRequest& request, const ImportOptions& options);
+ImportResult import_into(RunDatabase& database, const ImportRequest& request, const ImportPolicy& options);
 
 }  // namespace hydrocoef

@@ -309,7 +309,7 @@ NextRuns suggest_next_runs(const CoefficientSurface& surface, const NextRunsRequ
   return next;
 }
 
-std::vector<std::vector<double>> imported_keys(Database& database, const std::string& body,
+std::vector<std::vector<double>> imported_keys(RunDatabase& database, const std::string& body,
                                                const CoefficientSurface& surface) {
   RunFilter filter;
   filter.body = body;

@@ -80,7 +80,7 @@ NextRuns suggest_next_runs(const CoefficientSurface& surface, const NextRunsRequ
 
 /// The keys on a surface's axes of the body's runs in the database (runs
 /// without one of its disturbances are left out).
-std::vector<std::vector<double>> imported_keys(Database& database, const std::string& body,
+std::vector<std::vector<double>> imported_keys(RunDatabase& database, const std::string& body,
                                                const CoefficientSurface& surface);
 
 /// The keys on a surface's axes of a sweep manifest's rows of `body` (rows

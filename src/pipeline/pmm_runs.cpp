@@ -304,7 +304,7 @@ std::vector<PmmRun> analyse_pmm_runs(const PmmRequest& request) {
   return out;
 }
 
-std::vector<PmmSaved> store_pmm_runs(Database& database, const std::vector<PmmRun>& runs) {
+std::vector<PmmSaved> store_pmm_runs(RunDatabase& database, const std::vector<PmmRun>& runs) {
   std::vector<PmmRecord> records;
   for (const auto& run : runs) records.push_back(run.record);
   return database.save_pmm(records);

@@ -71,6 +71,6 @@ struct PmmRun {
 std::vector<PmmRun> analyse_pmm_runs(const PmmRequest& request);
 
 /// Stores the runs' records in one transaction.
-std::vector<PmmSaved> store_pmm_runs(Database& database, const std::vector<PmmRun>& runs);
+std::vector<PmmSaved> store_pmm_runs(RunDatabase& database, const std::vector<PmmRun>& runs);
 
 }  // namespace hydrocoef

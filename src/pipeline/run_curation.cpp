@@ -25,7 +25,7 @@ bool from_source(const StoredRun& run, const std::string& source, const std::str
 
 }  // namespace
 
-std::vector<std::int64_t> runs_to_delete(Database& database, const RunDeletion& deletion) {
+std::vector<std::int64_t> runs_to_delete(RunDatabase& database, const RunDeletion& deletion) {
   if (deletion.ids.empty() && deletion.where.empty() && !deletion.source)
     throw InputError("runs delete: nothing selected; expected run ids, --where CLAUSE or --source FILE");
   std::vector<std::int64_t> ids = deletion.ids;
@@ -46,7 +46,7 @@ std::vector<std::int64_t> runs_to_delete(Database& database, const RunDeletion& 
   return ids;
 }
 
-DeleteOutcome delete_runs(Database& database, const RunDeletion& deletion) {
+DeleteOutcome delete_runs(RunDatabase& database, const RunDeletion& deletion) {
   return database.delete_runs(runs_to_delete(database, deletion));
 }
 

@@ -24,9 +24,9 @@ struct RunDeletion {
 /// The ids to delete: `ids` and, when `where` or `source` is given, the runs
 /// they select. InputError when nothing is selected at all, or a selection
 /// matches no run.
-std::vector<std::int64_t> runs_to_delete(Database& database, const RunDeletion& deletion);
+std::vector<std::int64_t> runs_to_delete(RunDatabase& database, const RunDeletion& deletion);
 
-/// runs_to_delete, then Database::delete_runs in one transaction.
-DeleteOutcome delete_runs(Database& database, const RunDeletion& deletion);
+/// runs_to_delete, then RunDatabase::delete_runs in one transaction.
+DeleteOutcome delete_runs(RunDatabase& database, const RunDeletion& deletion);
 
 }  // namespace hydrocoef

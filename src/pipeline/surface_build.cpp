@@ -20,8 +20,8 @@ std::string surface_context(const SurfaceRecord& record) {
 
 }  // namespace
 
-SurfaceBuildResult build_and_store_surface(Database& database, const std::string& name, const std::string& body,
-                                           const SurfaceBuildSpec& spec, Database::NameTaken taken) {
+SurfaceBuildResult build_and_store_surface(RunDatabase& database, const std::string& name, const std::string& body,
+                                           const SurfaceBuildSpec& spec, RunDatabase::NameTaken taken) {
   check_name(NameKind::Surface, name, {}, "the surface name");
   check_name(NameKind::Body, body, {}, "the body");
   if (spec.surface.method != "rbf" && spec.surface.method != "gp")
@@ -36,7 +36,7 @@ SurfaceBuildResult build_and_store_surface(Database& database, const std::string
   const RunSelection selection = parse_selection(spec.where, spec.exclude_runs);
   const MirrorSpec mirror = make_mirror_spec(spec.mirror_planes, spec.mirror_odd);
   // Reusing a name replaces what another build made: only when asked.
-  if (taken == Database::NameTaken::Refuse)
+  if (taken == RunDatabase::NameTaken::Refuse)
     for (const auto& existing : database.surfaces())
       if (existing.name == name)
         throw InputError(SourceLocation{database.path().string()},
@@ -74,12 +74,12 @@ SurfaceBuildSpec stored_build_spec(const SurfaceRecord& record) {
   return parse_build_spec(definition["build_spec"], surface_context(record));
 }
 
-SurfaceBuildResult rebuild_surface(Database& database, const SurfaceRecord& record) {
+SurfaceBuildResult rebuild_surface(RunDatabase& database, const SurfaceRecord& record) {
   return build_and_store_surface(database, record.name, record.body, stored_build_spec(record),
-                                 Database::NameTaken::Replace);
+                                 RunDatabase::NameTaken::Replace);
 }
 
-std::vector<SurfaceRecord> surfaces_to_rebuild(Database& database, const std::optional<std::string>& name,
+std::vector<SurfaceRecord> surfaces_to_rebuild(RunDatabase& database, const std::optional<std::string>& name,
                                                const std::optional<std::string>& body, bool stale_only) {
   std::vector<SurfaceRecord> targets;
   if (name) {

@@ -40,9 +40,9 @@ struct SurfaceBuildResult {
 /// read), when no run is selected, when the runs cannot make the surface
 /// (src/surface/surface_builder.hpp), or when a surface of that name exists
 /// and `taken` is Refuse (nothing is stored then).
-SurfaceBuildResult build_and_store_surface(Database& database, const std::string& name, const std::string& body,
+SurfaceBuildResult build_and_store_surface(RunDatabase& database, const std::string& name, const std::string& body,
                                            const SurfaceBuildSpec& spec,
-                                           Database::NameTaken taken = Database::NameTaken::Refuse);
+                                           RunDatabase::NameTaken taken = RunDatabase::NameTaken::Refuse);
 
 /// The build specification stored with a surface; InputError when it was not
 /// built by a surface build (or its specification is damaged).
@@ -50,11 +50,11 @@ SurfaceBuildSpec stored_build_spec(const SurfaceRecord& record);
 
 /// Builds a stored surface again from the current runs with its stored
 /// specification, replacing it.
-SurfaceBuildResult rebuild_surface(Database& database, const SurfaceRecord& record);
+SurfaceBuildResult rebuild_surface(RunDatabase& database, const SurfaceRecord& record);
 
 /// The stored surfaces a rebuild covers: `name` alone when given, else the
 /// body's (or every body's) surfaces, only the stale ones when `stale_only`.
-std::vector<SurfaceRecord> surfaces_to_rebuild(Database& database, const std::optional<std::string>& name,
+std::vector<SurfaceRecord> surfaces_to_rebuild(RunDatabase& database, const std::optional<std::string>& name,
                                                const std::optional<std::string>& body, bool stale_only);
 
 /// What a surface was built from, in the selection language: "all runs",

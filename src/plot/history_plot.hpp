@@ -32,7 +32,7 @@ namespace hydrocoef::plot {
 bool has_history(const StoredRun& run);
 
 /// The figure above, with the run's trace when it has one
-/// (Database::run_trace). InputError naming the run when no component has
+/// (RunDatabase::run_trace). InputError naming the run when no component has
 /// statistics (a value from a force table or a surface export).
 Figure history_figure(const StoredRun& run, const std::optional<HistoryTrace>& trace = std::nullopt);
 

@@ -61,7 +61,7 @@ std::optional<double> key_value(const RunKey& key, const std::string& name) {
   return it->second;
 }
 
-std::vector<StoredRun> runs_by_id(Database& database, const std::string& body, const std::vector<std::int64_t>& ids) {
+std::vector<StoredRun> runs_by_id(RunDatabase& database, const std::string& body, const std::vector<std::int64_t>& ids) {
   const std::set<std::int64_t> wanted(ids.begin(), ids.end());
   RunFilter filter;
   filter.body = body;
@@ -103,7 +103,7 @@ double evaluate_fit(const FitRecord& fit, double x) {
   return damping_law_value(spec.terms, coefficients, x);
 }
 
-std::vector<FitRecord> fit_family(Database& database, const std::string& name) {
+std::vector<FitRecord> fit_family(RunDatabase& database, const std::string& name) {
   if (database.runs().empty())
     throw InputError("database " + database.path().string() +
                      " has no runs: import CFD results first (hydrocoef import)");
@@ -127,7 +127,7 @@ std::vector<FitRecord> fit_family(Database& database, const std::string& name) {
   return family;
 }
 
-Figure fit_figure(Database& database, const std::string& name) {
+Figure fit_figure(RunDatabase& database, const std::string& name) {
   const auto family = fit_family(database, name);
   const FitRecord& first = family.front();
   const auto dof = force_index(first.dof);
@@ -177,7 +177,7 @@ Figure fit_figure(Database& database, const std::string& name) {
   return figure;
 }
 
-Figure curves_figure(Database& database, const std::string& base, CurveKind kind, int degree) {
+Figure curves_figure(RunDatabase& database, const std::string& base, CurveKind kind, int degree) {
   auto family = fit_family(database, base);
   std::vector<LevelFit> levels;
   std::string by;
@@ -250,7 +250,7 @@ Figure curves_figure(Database& database, const std::string& base, CurveKind kind
   return figure;
 }
 
-Figure surface_figure(Database& database, const std::string& name, const std::optional<std::string>& output) {
+Figure surface_figure(RunDatabase& database, const std::string& name, const std::optional<std::string>& output) {
   const StoredSurface stored = load_surface(database, name);
   const CoefficientSurface& surface = stored.surface;
   if (surface.axis_count() > 2)
@@ -344,7 +344,7 @@ Figure surface_figure(Database& database, const std::string& name, const std::op
   return figure;
 }
 
-Figure surface_sigma_figure(Database& database, const std::string& name, const std::optional<std::string>& output) {
+Figure surface_sigma_figure(RunDatabase& database, const std::string& name, const std::optional<std::string>& output) {
   const StoredSurface stored = load_surface(database, name);
   const CoefficientSurface& surface = stored.surface;
   if (surface.axis_count() > 2)

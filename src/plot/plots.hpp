@@ -25,27 +25,27 @@ namespace hydrocoef::plot {
 /// fits stored as "name[LEVEL=VALUE]" (src/fit/fit_names.hpp) by `hydrocoef fit --by` (one curve per
 /// level). InputError when the database has no runs, no fits, or none of that
 /// name (listing the names there are).
-std::vector<FitRecord> fit_family(Database& database, const std::string& name);
+std::vector<FitRecord> fit_family(RunDatabase& database, const std::string& name);
 
 /// The law of a stored fit at x [its force unit, in the fit's sign convention].
 double evaluate_fit(const FitRecord& fit, double x);
 
 /// Force against velocity: each fit's runs as points, its law as a curve over
 /// the runs' range (101 points), the law and R² in the legend.
-Figure fit_figure(Database& database, const std::string& name);
+Figure fit_figure(RunDatabase& database, const std::string& name);
 
 /// Coefficient curves across a disturbance from the per-level fits stored
 /// under `base` ("base[by=value]", at least 2 levels): one panel per term, the
 /// per-level values as points and the curve (kind, degree as
 /// fit_coefficient_curves) over the levels' range (101 points).
-Figure curves_figure(Database& database, const std::string& base, CurveKind kind, int degree);
+Figure curves_figure(RunDatabase& database, const std::string& base, CurveKind kind, int degree);
 
 /// A stored surface's output over its axes: 1 axis a curve, 2 axes a colour
 /// map (81 x 81); the runs it was built from marked (forces on the body);
 /// regions outside the surface's range shaded (a 1-D surface whose policy
 /// extrapolates continues dashed there). InputError for a missing surface
 /// (listing the names), an unknown output, or more than 2 axes.
-Figure surface_figure(Database& database, const std::string& name, const std::optional<std::string>& output);
+Figure surface_figure(RunDatabase& database, const std::string& name, const std::optional<std::string>& output);
 
 /// The standard deviation a stored surface states for an output
 /// (CoefficientSurface::evaluate_with_standard_deviation: a GP's predictive
@@ -55,7 +55,7 @@ Figure surface_figure(Database& database, const std::string& name, const std::op
 /// their coordinates; 1 axis: on the curve). InputError for a missing surface,
 /// an unknown output, more than 2 axes, or a surface that states no standard
 /// deviation.
-Figure surface_sigma_figure(Database& database, const std::string& name, const std::optional<std::string>& output);
+Figure surface_sigma_figure(RunDatabase& database, const std::string& name, const std::optional<std::string>& output);
 
 /// Velocity component (u..r) against time from a trajectory CSV
 /// (`hydrocoef simulate --out`), with a measured record (experiment.hpp's

@@ -35,7 +35,7 @@ bool gp_calibrated(const GpState& state) {
 
 }  // namespace
 
-void write_run_quality(Page& page, Database& database, const std::vector<StoredRun>& runs, std::size_t max_plots) {
+void write_run_quality(Page& page, RunDatabase& database, const std::vector<StoredRun>& runs, std::size_t max_plots) {
   auto& h = page.html;
   h << "<section id=\"quality\"><h2>Run quality</h2>\n";
   std::vector<const StoredRun*> averaged;
@@ -154,7 +154,7 @@ std::string calibration_html(const SurfaceRecord& record) {
   return out;
 }
 
-void write_sigma_maps(Page& page, Database& database, const SurfaceRecord& record,
+void write_sigma_maps(Page& page, RunDatabase& database, const SurfaceRecord& record,
                       const std::vector<std::string>& outputs) {
   bool states = false;
   try {

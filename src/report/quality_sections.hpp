@@ -17,8 +17,8 @@ namespace hydrocoef::report::detail {
 /// standard error and window), then per run its history figure
 /// (src/plot/history_plot.hpp, plots/history-...svg), at most `max_plots` of
 /// them (the rest named in a note), each with its trace from `database`
-/// (Database::run_trace). Runs without a history are counted.
-void write_run_quality(Page& page, Database& database, const std::vector<StoredRun>& runs, std::size_t max_plots);
+/// (RunDatabase::run_trace). Runs without a history are counted.
+void write_run_quality(Page& page, RunDatabase& database, const std::vector<StoredRun>& runs, std::size_t max_plots);
 
 /// A surface's calibration and stated uncertainty, for its table cell: a GP's
 /// leave-one-out standardized residuals per output (RMS and largest, with
@@ -29,7 +29,7 @@ std::string calibration_html(const SurfaceRecord& surface);
 
 /// The sigma maps of a surface that states a standard deviation (one per
 /// output, at most 6; plots/sigma-...svg); nothing for one that states none.
-void write_sigma_maps(Page& page, Database& database, const SurfaceRecord& surface,
+void write_sigma_maps(Page& page, RunDatabase& database, const SurfaceRecord& surface,
                       const std::vector<std::string>& outputs);
 
 /// Section "gci": the stored mesh studies (hydrocoef gci), one row per key

@@ -145,7 +145,7 @@ std::string base64(std::string_view bytes) {
   return out;
 }
 
-ReportResult write_report(Database& database, const std::filesystem::path& dir, const ReportOptions& options) {
+ReportResult write_report(RunDatabase& database, const std::filesystem::path& dir, const ReportOptions& options) {
   RunFilter filter;
   filter.body = options.body;
   const auto bodies = database.bodies();

@@ -72,7 +72,7 @@ std::string plot_file_stem(const std::string& kind, const std::string& name);
 /// InputError when the database (or the body) has no runs, naming the bodies
 /// there are, or when a file cannot be written. A plot that cannot be drawn
 /// (e.g. a 3-axis surface) is left out with a note on the page and in notes.
-ReportResult write_report(Database& database, const std::filesystem::path& dir, const ReportOptions& options = {});
+ReportResult write_report(RunDatabase& database, const std::filesystem::path& dir, const ReportOptions& options = {});
 
 /// Text made safe for HTML element content and attribute values.
 std::string html_escape(std::string_view text);

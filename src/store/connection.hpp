@@ -86,7 +86,7 @@ class Connection {
   /// Rolls back an open transaction; never throws.
   void rollback() noexcept;
   /// SQLite: switches the file to write-ahead logging once a write has
-  /// committed (see Database); PostgreSQL: nothing to do.
+  /// committed (see RunDatabase); PostgreSQL: nothing to do.
   void use_wal();
 
   detail::ConnectionBackend& backend_impl() { return *backend_; }
@@ -146,7 +146,7 @@ std::int64_t returned_id(Statement& insert);
 /// rolled back on destruction unless commit() was called, so an exception
 /// anywhere leaves the database as it was. A transaction begun while another
 /// is open on the connection joins it: only the outermost one commits, and a
-/// rollback at any depth rolls back the whole (Database::merge stores many
+/// rollback at any depth rolls back the whole (RunDatabase::merge stores many
 /// shards through the methods that store one, all or none).
 class Transaction {
  public:

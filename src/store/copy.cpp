@@ -1,4 +1,4 @@
-// Database::copy_from: every row of one database into an empty one, ids
+// RunDatabase::copy_from: every row of one database into an empty one, ids
 // included, whatever the two backends.
 #include <algorithm>
 #include <map>
@@ -65,7 +65,7 @@ std::vector<TableColumns> tables_in_reference_order() {
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::size_t>> Database::copy_from(Database& source) {
+std::vector<std::pair<std::string, std::size_t>> RunDatabase::copy_from(RunDatabase& source) {
   if (read_only_) throw InputError(SourceLocation{path_.string()}, "database opened read-only; cannot copy into it");
   const auto tables = tables_in_reference_order();
   // Every read of the source sees one state of it, even while a job writes it.

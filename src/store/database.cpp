@@ -1,4 +1,4 @@
-// Database: opening a database (an SQLite file or a PostgreSQL server),
+// RunDatabase: opening a database (an SQLite file or a PostgreSQL server),
 // checking and migrating its schema, the write-ahead log, and what every
 // record kind shares: bodies and the tables that link a record to its runs.
 // The records themselves are in the *_store.cpp files beside this one
@@ -37,19 +37,19 @@ std::string utc_timestamp_now() {
 
 namespace {
 
-store::Connection open_connection(const store::DatabaseLocation& location, Database::OpenMode mode) {
+store::Connection open_connection(const store::DatabaseLocation& location, RunDatabase::OpenMode mode) {
   if (location.backend == store::Backend::PostgreSQL)
     return store::Connection::postgresql(
         location.target, location.display,
-        mode == Database::OpenMode::ReadOnly ? store::Access::ReadOnly : store::Access::ReadWrite);
+        mode == RunDatabase::OpenMode::ReadOnly ? store::Access::ReadOnly : store::Access::ReadWrite);
   const std::filesystem::path path(location.target);
-  if (mode != Database::OpenMode::CreateIfMissing && !std::filesystem::exists(path))
+  if (mode != RunDatabase::OpenMode::CreateIfMissing && !std::filesystem::exists(path))
     throw InputError(SourceLocation{path.string()},
                      "no database here; create one with 'hydrocoef import' or give --db PATH");
   switch (mode) {
-    case Database::OpenMode::CreateIfMissing: return {path.string(), store::Access::ReadWriteCreate};
-    case Database::OpenMode::MustExist: return {path.string(), store::Access::ReadWrite};
-    case Database::OpenMode::ReadOnly: break;
+    case RunDatabase::OpenMode::CreateIfMissing: return {path.string(), store::Access::ReadWriteCreate};
+    case RunDatabase::OpenMode::MustExist: return {path.string(), store::Access::ReadWrite};
+    case RunDatabase::OpenMode::ReadOnly: break;
   }
   // A reader that may write the file and its folder opens it read-write (and
   // never writes): SQLite then removes the WAL's -wal and -shm files when it
@@ -77,7 +77,7 @@ void refuse_unread_wal(const std::filesystem::path& path) {
                        printable_text(path.string(), 200) + " 'PRAGMA wal_checkpoint(TRUNCATE)'");
 }
 
-/// What every connection of a Database runs first.
+/// What every connection of a RunDatabase runs first.
 void configure(store::Connection& connection) {
   if (connection.backend() != store::Backend::SQLite) return;
   connection.execute("PRAGMA foreign_keys = ON");
@@ -111,10 +111,10 @@ std::int64_t stored_schema_version(store::Connection& connection) {
 
 }  // namespace
 
-Database::Database(const std::filesystem::path& path, OpenMode mode)
-    : Database(store::parse_database_location(path.string()), mode) {}
+RunDatabase::RunDatabase(const std::filesystem::path& path, OpenMode mode)
+    : RunDatabase(store::parse_database_location(path.string()), mode) {}
 
-Database::Database(const store::DatabaseLocation& location, OpenMode mode)
+RunDatabase::RunDatabase(const store::DatabaseLocation& location, OpenMode mode)
     : path_(location.display), connection_(open_connection(location, mode)), read_only_(mode == OpenMode::ReadOnly) {
   if (read_only_ && connection_.backend() == store::Backend::SQLite) {
     // A WAL database in a folder where the -shm file cannot be made (a
@@ -176,15 +176,15 @@ Database::Database(const store::DatabaseLocation& location, OpenMode mode)
 // rewrites the header): readers never wait for an import and never see part
 // of one, and a killed import leaves only an uncommitted WAL tail that the
 // next open discards. The mode is stored in the file. (PostgreSQL: nothing.)
-void Database::use_wal() {
+void RunDatabase::use_wal() {
   if (!read_only_) connection_.use_wal();
 }
 
-int Database::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
+int RunDatabase::latest_schema_version() { return static_cast<int>(store::migrations().size()); }
 
-int Database::schema_version() { return static_cast<int>(stored_schema_version(connection_)); }
+int RunDatabase::schema_version() { return static_cast<int>(stored_schema_version(connection_)); }
 
-std::string Database::integrity_check() {
+std::string RunDatabase::integrity_check() {
   // A PostgreSQL server keeps its own pages whole; what it holds is checked
   // by the schema check and by every row read.
   if (connection_.backend() == store::Backend::PostgreSQL) return "ok";
@@ -200,7 +200,7 @@ std::string Database::integrity_check() {
   return out;
 }
 
-int Database::checked_schema_version() {
+int RunDatabase::checked_schema_version() {
   const std::int64_t version = stored_schema_version(connection_);
   const int latest = latest_schema_version();
   if (version > latest)
@@ -214,7 +214,7 @@ int Database::checked_schema_version() {
   return static_cast<int>(version);
 }
 
-void Database::check_schema(int version) {
+void RunDatabase::check_schema(int version) {
   if (connection_.backend() == store::Backend::PostgreSQL) {
     if (const auto difference = store::postgresql_schema_difference(connection_, version))
       throw InputError(SourceLocation{path_.string()},
@@ -238,7 +238,7 @@ void Database::check_schema(int version) {
                          "is refused");
 }
 
-void Database::migrate() {
+void RunDatabase::migrate() {
   const bool sqlite = connection_.backend() == store::Backend::SQLite;
   // SQLite migrations may rebuild tables, which needs foreign keys off; they
   // are checked before the commit instead. The pragma cannot change inside a
@@ -280,7 +280,7 @@ void Database::migrate() {
   use_wal();
 }
 
-std::int64_t Database::body_id(const std::string& name, bool create) {
+std::int64_t RunDatabase::body_id(const std::string& name, bool create) {
   auto find = connection_.prepare("SELECT id FROM body WHERE name = ?");
   find.bind(1, name);
   if (find.step()) return find.get_int(0);
@@ -290,13 +290,13 @@ std::int64_t Database::body_id(const std::string& name, bool create) {
   return store::returned_id(insert);
 }
 
-std::int64_t Database::existing_body_id(const std::string& name) {
+std::int64_t RunDatabase::existing_body_id(const std::string& name) {
   const std::int64_t id = body_id(name, false);
   if (id < 0) throw InputError("no body named '" + name + "' in " + path_.string());
   return id;
 }
 
-std::vector<std::string> Database::bodies() {
+std::vector<std::string> RunDatabase::bodies() {
   auto select = connection_.prepare("SELECT name, id FROM body ORDER BY name");
   std::vector<std::string> out;
   while (select.step())
@@ -304,13 +304,13 @@ std::vector<std::string> Database::bodies() {
   return out;
 }
 
-void Database::link_runs(const char* table, const char* owner, std::int64_t id,
+void RunDatabase::link_runs(const char* table, const char* owner, std::int64_t id,
                          const std::vector<std::int64_t>& run_ids) {
   auto insert = connection_.prepare(std::string("INSERT INTO ") + table + "(" + owner + ", run_id) VALUES (?, ?)");
   for (const auto run_id : run_ids) insert.bind(1, id).bind(2, run_id).run();
 }
 
-std::vector<std::int64_t> Database::linked_runs(const char* table, const char* owner, std::int64_t id) {
+std::vector<std::int64_t> RunDatabase::linked_runs(const char* table, const char* owner, std::int64_t id) {
   auto select =
       connection_.prepare(std::string("SELECT run_id FROM ") + table + " WHERE " + owner + " = ? ORDER BY run_id");
   select.bind(1, id);

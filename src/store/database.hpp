@@ -122,7 +122,7 @@ struct RunFilter {
 enum class ConflictPolicy { Error, Replace };
 
 /// How an import treats what the database already has.
-struct ImportOptions {
+struct ImportPolicy {
   /// A force component a run already has from another file.
   ConflictPolicy components = ConflictPolicy::Error;
   /// The same file (bytes) imported before with other settings: replace the
@@ -238,7 +238,7 @@ struct PmmRecord;
 struct PmmSaved;
 struct PmmDeleted;
 
-/// What merging one shard did (Database::merge).
+/// What merging one shard did (RunDatabase::merge).
 struct MergeOutcome {
   std::string shard;                ///< its location
   std::size_t imports_added = 0;    ///< imports (a file's bytes with its settings) new here
@@ -252,7 +252,7 @@ struct MergeOutcome {
   std::size_t pmm_added = 0, pmm_already = 0;                    ///< forced-oscillation analyses
 };
 
-class Database {
+class RunDatabase {
  public:
   /// CreateIfMissing and MustExist open for writing; ReadOnly never writes
   /// (a database on a read-only share or in a read-only folder is read as
@@ -276,8 +276,8 @@ class Database {
   /// or a "postgresql://" URL. A PostgreSQL database is checked the same way
   /// (its schema, every value read) and behaves the same: each write is one
   /// transaction, writers wait for each other (HYDROCOEF_DB_TIMEOUT).
-  explicit Database(const std::filesystem::path& path, OpenMode mode = OpenMode::CreateIfMissing);
-  Database(const store::DatabaseLocation& location, OpenMode mode);
+  explicit RunDatabase(const std::filesystem::path& path, OpenMode mode = OpenMode::CreateIfMissing);
+  RunDatabase(const store::DatabaseLocation& location, OpenMode mode);
 
   /// The migration number the database is at.
   int schema_version();
@@ -298,7 +298,7 @@ class Database {
   /// refused (InputError naming the earlier import and the settings that
   /// differ), replaced (options.replace) or kept as another reading
   /// (options.also).
-  std::vector<ImportOutcome> import(const std::vector<ImportBatch>& batches, const ImportOptions& options);
+  std::vector<ImportOutcome> import(const std::vector<ImportBatch>& batches, const ImportPolicy& options);
 
   /// Deletes runs (their force components, surface records and
   /// disturbances) in one transaction; fits and surfaces built from them
@@ -378,7 +378,7 @@ class Database {
   /// (InputError otherwise), ids and flags as they are, in one transaction;
   /// returns the rows copied per table. Between backends, a copy and a copy
   /// back hold the same rows as the original.
-  std::vector<std::pair<std::string, std::size_t>> copy_from(Database& source);
+  std::vector<std::pair<std::string, std::size_t>> copy_from(RunDatabase& source);
 
   /// "ok", or SQLite's list of problems ("ok" on PostgreSQL, whose server keeps its pages whole).
   std::string integrity_check();
@@ -390,7 +390,7 @@ class Database {
 
  private:
   void migrate();
-  MergeOutcome merge_one(Database& shard);
+  MergeOutcome merge_one(RunDatabase& shard);
   /// Switches the file to WAL mode, after a write has committed.
   void use_wal();
   /// The stored schema version, refused unless 0..latest.

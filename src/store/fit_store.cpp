@@ -1,4 +1,4 @@
-// Database::save_fits and Database::fits: fitted coefficient models, tables
+// RunDatabase::save_fits and RunDatabase::fits: fitted coefficient models, tables
 // fit, fit_coefficient and fit_run. Every value read back is checked
 // (src/store/checked_row.hpp): a received database is untrusted input.
 #include <limits>
@@ -13,9 +13,9 @@
 
 namespace hydrocoef {
 
-std::int64_t Database::save_fit(const FitRecord& fit, NameTaken taken) { return save_fits({fit}, taken).front(); }
+std::int64_t RunDatabase::save_fit(const FitRecord& fit, NameTaken taken) { return save_fits({fit}, taken).front(); }
 
-std::vector<std::int64_t> Database::save_fits(const std::vector<FitRecord>& fits, NameTaken taken) {
+std::vector<std::int64_t> RunDatabase::save_fits(const std::vector<FitRecord>& fits, NameTaken taken) {
   for (const auto& fit : fits) check_name(NameKind::Fit, fit.name, {}, "the fit");
   store::Transaction transaction(connection_);
   if (taken == NameTaken::Refuse) {
@@ -38,7 +38,7 @@ std::vector<std::int64_t> Database::save_fits(const std::vector<FitRecord>& fits
   return ids;
 }
 
-std::int64_t Database::insert_fit(const FitRecord& fit) {
+std::int64_t RunDatabase::insert_fit(const FitRecord& fit) {
   const std::int64_t body = existing_body_id(fit.body);
   connection_.prepare("DELETE FROM fit WHERE name = ?").bind(1, fit.name).run();
   auto insert = connection_.prepare(
@@ -73,7 +73,7 @@ std::int64_t Database::insert_fit(const FitRecord& fit) {
   return id;
 }
 
-std::vector<FitRecord> Database::fits(const std::optional<std::string>& body) {
+std::vector<FitRecord> RunDatabase::fits(const std::optional<std::string>& body) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =

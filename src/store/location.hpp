@@ -1,4 +1,4 @@
-// Where a database is: what --db, $HYDROCOEF_DB and the library's Database
+// Where a database is: what --db, $HYDROCOEF_DB and the library's RunDatabase
 // take. A path or "sqlite:PATH" is an SQLite file (the default); a
 // "postgresql://" or "postgres://" URL is a PostgreSQL database, reached
 // with libpq (its host, port, user, database and options, e.g.

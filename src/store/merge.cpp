@@ -1,4 +1,4 @@
-// Database::merge and Database::copy_from: shards made by cluster jobs into
+// RunDatabase::merge and RunDatabase::copy_from: shards made by cluster jobs into
 // one database, and a whole database from one backend to another.
 #include <algorithm>
 #include <limits>
@@ -44,13 +44,13 @@ std::string pmm_identity(const PmmRecord& r) {
 
 }  // namespace
 
-std::vector<MergeOutcome> Database::merge(const std::vector<std::string>& shards,
+std::vector<MergeOutcome> RunDatabase::merge(const std::vector<std::string>& shards,
                                           const std::function<void(std::size_t, std::size_t)>& progress) {
   if (read_only_) throw InputError(SourceLocation{path_.string()}, "database opened read-only; cannot merge into it");
   std::vector<MergeOutcome> out;
   store::Transaction transaction(connection_);
   for (std::size_t i = 0; i < shards.size(); ++i) {
-    Database shard(shards[i], OpenMode::ReadOnly);
+    RunDatabase shard(shards[i], OpenMode::ReadOnly);
     out.push_back(merge_one(shard));
     if (progress) progress(i + 1, shards.size());
   }
@@ -59,7 +59,7 @@ std::vector<MergeOutcome> Database::merge(const std::vector<std::string>& shards
   return out;
 }
 
-MergeOutcome Database::merge_one(Database& shard) {
+MergeOutcome RunDatabase::merge_one(RunDatabase& shard) {
   // Every read of the shard sees one state of it, even while a job writes it.
   const store::detail::ReadSnapshot shard_snapshot(shard.connection_.backend_impl());
   MergeOutcome outcome;

@@ -1,4 +1,4 @@
-// Database::save_pmm and Database::pmm_records: forced-oscillation analyses
+// RunDatabase::save_pmm and RunDatabase::pmm_records: forced-oscillation analyses
 // in tables pmm_run and pmm_coefficient (schema/0012_pmm.sql). Every value
 // read back is checked (src/store/checked_row.hpp): a received database is
 // untrusted input.
@@ -36,7 +36,7 @@ std::string json_list(const std::vector<double>& values) {
 
 }  // namespace
 
-std::vector<PmmSaved> Database::save_pmm(const std::vector<PmmRecord>& records) {
+std::vector<PmmSaved> RunDatabase::save_pmm(const std::vector<PmmRecord>& records) {
   store::Transaction transaction(connection_);
   auto find = connection_.prepare(
       "SELECT id FROM pmm_run WHERE body_id = ? AND source_sha256 = ? AND dof = ? AND amplitude = ? AND omega = ? "
@@ -113,7 +113,7 @@ std::vector<PmmSaved> Database::save_pmm(const std::vector<PmmRecord>& records) 
   return out;
 }
 
-std::vector<PmmRecord> Database::pmm_records(const std::optional<std::string>& body, bool with_history) {
+std::vector<PmmRecord> RunDatabase::pmm_records(const std::optional<std::string>& body, bool with_history) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
@@ -195,7 +195,7 @@ std::vector<PmmRecord> Database::pmm_records(const std::optional<std::string>& b
   return out;
 }
 
-std::vector<PmmDeleted> Database::delete_pmm_runs(const std::vector<std::int64_t>& ids) {
+std::vector<PmmDeleted> RunDatabase::delete_pmm_runs(const std::vector<std::int64_t>& ids) {
   if (read_only_) throw InputError(SourceLocation{path_.string()}, "database opened read-only; cannot delete from it");
   store::Transaction transaction(connection_);
   auto find = connection_.prepare(

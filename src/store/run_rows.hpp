@@ -1,4 +1,4 @@
-// The rows of one run as Database::import and Database::merge write them:
+// The rows of one run as RunDatabase::import and RunDatabase::merge write them:
 // the run with its disturbances, a force component with its statistics, the
 // integrals of the surface it came from. Statements are prepared once per
 // transaction. Only src/store includes this header.

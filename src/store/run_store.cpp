@@ -1,4 +1,4 @@
-// Database::import, the runs read back (runs, find_run, sources,
+// RunDatabase::import, the runs read back (runs, find_run, sources,
 // import_record) and their removal (delete_runs, and the forces an import
 // replaced with --replace): tables run, run_disturbance, run_force,
 // run_force_statistics, run_surface, import and source_file. Every value
@@ -71,7 +71,7 @@ double StoredForce::standard_uncertainty() const {
   return std::hypot(se, given, numerical_uncertainty.value_or(0.0));
 }
 
-std::optional<std::int64_t> Database::find_run_id(std::int64_t body, const RunKey& key) {
+std::optional<std::int64_t> RunDatabase::find_run_id(std::int64_t body, const RunKey& key) {
   auto find = connection_.prepare(
       "SELECT id FROM run WHERE body_id = ? AND u = ? AND v = ? AND w = ? AND p = ? AND q = ? AND r = ? "
       "AND disturbance_key = ?");
@@ -82,7 +82,7 @@ std::optional<std::int64_t> Database::find_run_id(std::int64_t body, const RunKe
   return std::nullopt;
 }
 
-std::pair<std::int64_t, bool> Database::find_or_insert_run(store::RunRows& rows, const RunKey& key, const Fluid& fluid,
+std::pair<std::int64_t, bool> RunDatabase::find_or_insert_run(store::RunRows& rows, const RunKey& key, const Fluid& fluid,
                                                            const std::array<double, 3>& reference_point_b,
                                                            const SourceLocation& where) {
   const std::int64_t body = body_id(key.body, true);
@@ -93,14 +93,14 @@ std::pair<std::int64_t, bool> Database::find_or_insert_run(store::RunRows& rows,
   return {rows.insert(body, key, fluid, reference_point_b), true};
 }
 
-std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batches, ConflictPolicy policy) {
-  ImportOptions options;
+std::vector<ImportOutcome> RunDatabase::import(const std::vector<ImportBatch>& batches, ConflictPolicy policy) {
+  ImportPolicy options;
   options.components = policy;
   options.replace = policy == ConflictPolicy::Replace;
   return import(batches, options);
 }
 
-std::vector<ImportOutcome> Database::import(const std::vector<ImportBatch>& batches, const ImportOptions& options) {
+std::vector<ImportOutcome> RunDatabase::import(const std::vector<ImportBatch>& batches, const ImportPolicy& options) {
   const ConflictPolicy policy = options.components;
   if (!options.also.empty()) check_name(NameKind::Parameter, options.also, {}, "--also");
   std::vector<ImportOutcome> outcomes;
@@ -248,7 +248,7 @@ void check_run_keys(const std::string& db, const std::vector<StoredRun>& runs, c
 
 }  // namespace
 
-std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run) {
+std::vector<StoredRun> RunDatabase::load_runs(std::optional<std::int64_t> body, std::optional<std::int64_t> run) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =
@@ -380,7 +380,7 @@ std::vector<StoredRun> Database::load_runs(std::optional<std::int64_t> body, std
   return out;
 }
 
-std::vector<StoredRun> Database::runs(const RunFilter& filter) {
+std::vector<StoredRun> RunDatabase::runs(const RunFilter& filter) {
   std::optional<std::int64_t> body;
   if (filter.body) {
     body = body_id(*filter.body, false);
@@ -405,7 +405,7 @@ std::vector<StoredRun> Database::runs(const RunFilter& filter) {
   return all;
 }
 
-std::optional<StoredRun> Database::find_run(const RunKey& key) {
+std::optional<StoredRun> RunDatabase::find_run(const RunKey& key) {
   const std::int64_t body = body_id(key.body, false);
   if (body < 0) return std::nullopt;
   const auto id = find_run_id(body, key);
@@ -415,7 +415,7 @@ std::optional<StoredRun> Database::find_run(const RunKey& key) {
   return std::move(found.front());
 }
 
-std::vector<SourceRecord> Database::sources() {
+std::vector<SourceRecord> RunDatabase::sources() {
   auto select = connection_.prepare(
       "SELECT id, path, sha256, size_bytes, importer, importer_version, imported_at FROM source_file ORDER BY id");
   std::vector<SourceRecord> out;
@@ -444,7 +444,7 @@ std::vector<std::string> run_flags(const StoredRun& run) {
   return out;
 }
 
-void Database::remove_import_forces(std::int64_t import_id) {
+void RunDatabase::remove_import_forces(std::int64_t import_id) {
   std::vector<std::int64_t> runs;
   auto touched = connection_.prepare("SELECT DISTINCT run_id FROM run_force WHERE import_id = ?");
   touched.bind(1, import_id);
@@ -481,7 +481,7 @@ void Database::remove_import_forces(std::int64_t import_id) {
   }
 }
 
-DeleteOutcome Database::delete_runs(const std::vector<std::int64_t>& ids) {
+DeleteOutcome RunDatabase::delete_runs(const std::vector<std::int64_t>& ids) {
   store::Transaction transaction(connection_);
   const auto count = [&](const char* sql) {
     auto statement = connection_.prepare(sql);
@@ -528,7 +528,7 @@ DeleteOutcome Database::delete_runs(const std::vector<std::int64_t>& ids) {
   return outcome;
 }
 
-std::optional<ImportRecord> Database::import_record(std::int64_t id) {
+std::optional<ImportRecord> RunDatabase::import_record(std::int64_t id) {
   auto select = connection_.prepare(
       "SELECT i.id, i.source_id, s.sha256, i.reading, i.settings, i.settings_key, i.path, i.resolved_path, i.importer, "
       "i.importer_version, i.hydrocoef_version, i.imported_at, s.size_bytes FROM import i JOIN source_file s ON "

@@ -1,4 +1,4 @@
-// Database::save_surface, Database::surfaces and Database::surface: built
+// RunDatabase::save_surface, RunDatabase::surfaces and RunDatabase::surface: built
 // response surfaces (grid, RBF, GP), tables surface and surface_run. Every
 // value read back is checked (src/store/checked_row.hpp): a received database
 // is untrusted input.
@@ -11,7 +11,7 @@
 
 namespace hydrocoef {
 
-std::int64_t Database::save_surface(const SurfaceRecord& surface) {
+std::int64_t RunDatabase::save_surface(const SurfaceRecord& surface) {
   check_name(NameKind::Surface, surface.name, {}, "the surface");
   store::Transaction transaction(connection_);
   const std::int64_t body = existing_body_id(surface.body);
@@ -34,7 +34,7 @@ std::int64_t Database::save_surface(const SurfaceRecord& surface) {
   return id;
 }
 
-std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::string>& body,
+std::vector<SurfaceRecord> RunDatabase::load_surfaces(const std::optional<std::string>& body,
                                                    const std::optional<std::string>& name) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
@@ -68,11 +68,11 @@ std::vector<SurfaceRecord> Database::load_surfaces(const std::optional<std::stri
   return out;
 }
 
-std::vector<SurfaceRecord> Database::surfaces(const std::optional<std::string>& body) {
+std::vector<SurfaceRecord> RunDatabase::surfaces(const std::optional<std::string>& body) {
   return load_surfaces(body, std::nullopt);
 }
 
-SurfaceRecord Database::surface(const std::string& name) {
+SurfaceRecord RunDatabase::surface(const std::string& name) {
   auto found = load_surfaces(std::nullopt, name);
   if (!found.empty()) return std::move(found.front());
   // Only the names, for the message: no value blobs are read.

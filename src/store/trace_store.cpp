@@ -1,4 +1,4 @@
-// Database::run_trace: a run's force history in brief, table run_force_trace
+// RunDatabase::run_trace: a run's force history in brief, table run_force_trace
 // (schema/0016_run_force_trace.sql; written by src/store/run_rows.cpp).
 // Every size and value read back is checked: a received database is
 // untrusted input.
@@ -14,7 +14,7 @@
 
 namespace hydrocoef {
 
-std::optional<HistoryTrace> Database::run_trace(std::int64_t run_id) {
+std::optional<HistoryTrace> RunDatabase::run_trace(std::int64_t run_id) {
   auto select = connection_.prepare("SELECT abscissa, samples, components, data FROM run_force_trace WHERE run_id = ?");
   select.bind(1, run_id);
   if (!select.step()) return std::nullopt;

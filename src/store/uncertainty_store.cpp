@@ -1,4 +1,4 @@
-// Database::save_numerical_uncertainties and Database::numerical_uncertainties:
+// RunDatabase::save_numerical_uncertainties and RunDatabase::numerical_uncertainties:
 // the numerical uncertainty of a force from a mesh study (hydrocoef gci),
 // table numerical_uncertainty (schema/0011), and how it reaches the runs it
 // applies to (the finest mesh of its physical key). Every value read back is
@@ -30,7 +30,7 @@ std::map<std::string, double> physical_disturbances(const std::map<std::string, 
   return out;
 }
 
-void Database::apply_numerical_uncertainties(std::vector<StoredRun>& runs) {
+void RunDatabase::apply_numerical_uncertainties(std::vector<StoredRun>& runs) {
   if (runs.empty()) return;
   std::optional<std::string> body;
   if (std::all_of(runs.begin(), runs.end(), [&](const StoredRun& r) { return r.key.body == runs.front().key.body; }))
@@ -55,7 +55,7 @@ void Database::apply_numerical_uncertainties(std::vector<StoredRun>& runs) {
   }
 }
 
-void Database::save_numerical_uncertainties(const std::vector<NumericalUncertaintyRecord>& records) {
+void RunDatabase::save_numerical_uncertainties(const std::vector<NumericalUncertaintyRecord>& records) {
   store::Transaction transaction(connection_);
   // The numerical uncertainty of every force of the bodies concerned, before
   // and after: fits of a force whose uncertainty changed, and the body's
@@ -132,7 +132,7 @@ void Database::save_numerical_uncertainties(const std::vector<NumericalUncertain
   use_wal();
 }
 
-std::vector<NumericalUncertaintyRecord> Database::numerical_uncertainties(const std::optional<std::string>& body) {
+std::vector<NumericalUncertaintyRecord> RunDatabase::numerical_uncertainties(const std::optional<std::string>& body) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =

@@ -428,7 +428,7 @@ CoefficientSurface unsymmetric_surface(const SurfaceRecord& record, const json& 
 
 }  // namespace
 
-StoredSurface load_surface(Database& database, const std::string& name) {
+StoredSurface load_surface(RunDatabase& database, const std::string& name) {
   SurfaceRecord record = database.surface(name);
   CoefficientSurface surface = surface_from_record(record);
   return {std::move(record), std::move(surface)};

@@ -57,6 +57,6 @@ struct StoredSurface {
   CoefficientSurface surface;
 };
 /// Loads one surface by name; InputError listing the stored names when absent.
-StoredSurface load_surface(Database& database, const std::string& name);
+StoredSurface load_surface(RunDatabase& database, const std::string& name);
 
 }  // namespace hydrocoef

@@ -132,7 +132,7 @@ TEST_F(CliPlot, BadInputIsOneLineAndExitCode2) {
   EXPECT_EQ(curves.exit_code, 2);
   EXPECT_TRUE(one_line(curves.err)) << curves.err;
 
-  { Database empty(test::database_location(dir / "empty.db")); }
+  { RunDatabase empty(test::database_location(dir / "empty.db")); }
   const auto empty = run_cli({"--db", "empty.db", "plot", "fit", "x"}, dir.path());
   EXPECT_EQ(empty.exit_code, 2);
   EXPECT_NE(empty.err.find("has no runs"), std::string::npos) << empty.err;

@@ -37,7 +37,7 @@ ImportedRun make_run(double u, double x) {
 }
 
 void fill(const std::filesystem::path& path, int first_id = 1) {
-  Database db(path);
+  RunDatabase db(path);
   db.import(
       {test::one_run_batch(first_id, make_run(0.1, -1.0)), test::one_run_batch(first_id + 1, make_run(0.2, -4.0))},
       ConflictPolicy::Error);
@@ -80,7 +80,7 @@ TEST(CliStoreReads, AWalFileLeftUnreadableOnAShareIsRefusedInOneLine) {
   ASSERT_EQ(sqlite3_open((dir / "runs.db").c_str(), &reader), SQLITE_OK);
   ASSERT_EQ(sqlite3_exec(reader, "SELECT count(*) FROM run", nullptr, nullptr, nullptr), SQLITE_OK);
   {
-    Database db(dir / "runs.db");
+    RunDatabase db(dir / "runs.db");
     db.import({test::one_run_batch(5, make_run(0.3, -9.0))}, ConflictPolicy::Error);
   }
   std::filesystem::create_directory(dir / "share");
@@ -118,7 +118,7 @@ TEST(CliStoreReads, AnOlderDatabaseIsListedAndMergedUnchangedAndMigrateUpgradesI
   ASSERT_EQ(migrated.exit_code, 0) << migrated.err;
   const auto json = nlohmann::json::parse(migrated.out);
   EXPECT_EQ(json.at("from"), 11);
-  EXPECT_EQ(json.at("to"), Database::latest_schema_version());
+  EXPECT_EQ(json.at("to"), RunDatabase::latest_schema_version());
   EXPECT_NE(test::read_bytes(dir / "old.db"), before);
   const auto again = run_cli({"--db", "old.db", "migrate"}, dir.path());
   EXPECT_EQ(again.exit_code, 0) << again.err;

@@ -223,18 +223,18 @@ TEST(DampingLawFit, RobustLossesIgnoreOutliersThatSquaredLossFollows) {
 
 TEST(DampingLawLoss, ParsesEveryForm) {
   EXPECT_EQ(parse_loss("squared").loss, LossKind::Squared);
-  const FitOptions huber = parse_loss("huber:0.01");
+  const LossOptions huber = parse_loss("huber:0.01");
   EXPECT_EQ(huber.loss, LossKind::Huber);
   EXPECT_EQ(huber.loss_scale, 0.01);
-  const FitOptions cauchy = parse_loss(" cauchy : 2.5 ");
+  const LossOptions cauchy = parse_loss(" cauchy : 2.5 ");
   EXPECT_EQ(cauchy.loss, LossKind::Cauchy);
   EXPECT_EQ(cauchy.loss_scale, 2.5);
-  const FitOptions soft = parse_loss("soft-l1:1e-3");
+  const LossOptions soft = parse_loss("soft-l1:1e-3");
   EXPECT_EQ(soft.loss, LossKind::SoftLOne);
   EXPECT_EQ(soft.loss_scale, 1e-3);
   EXPECT_EQ(format_loss(soft), "soft-l1:0.001");
   EXPECT_EQ(format_loss(huber), "huber:0.01");
-  EXPECT_EQ(format_loss(FitOptions{}), "squared");
+  EXPECT_EQ(format_loss(LossOptions{}), "squared");
 }
 
 TEST(DampingLawLoss, RejectsBadText) {
@@ -293,7 +293,7 @@ TEST(DampingLawFit, RejectsBadSpecsAndOptions) {
   expect_input_error([&] { fit_damping_law(DampingLawSpec{"u", {}}, x, y); }, {"no terms"});
   expect_input_error(
       [&] {
-        fit_damping_law(parse_damping_terms("u"), x, y, FitOptions{LossKind::Huber, 0.0});
+        fit_damping_law(parse_damping_terms("u"), x, y, LossOptions{LossKind::Huber, 0.0});
       },
       {"scale", "> 0"});
 }

@@ -38,14 +38,14 @@ double sway(double v, int i) { return -2.0 * v - 30.0 * v * std::abs(v) + 0.004 
 TEST(FitRuns, MirroredFitOverHalfThePlaneEqualsTheFitOverExplicitlyMirroredRuns) {
   TempDir dir;
   const std::vector<double> vs = {0.0, 0.05, 0.1, 0.2, 0.3};
-  Database half(dir / "half.db"), whole(dir / "whole.db");
+  RunDatabase half(dir / "half.db"), whole(dir / "whole.db");
   int id = 1;
   for (int i = 0; i < static_cast<int>(vs.size()); ++i) {
     const double v = vs[static_cast<std::size_t>(i)], y = sway(v, i), k = 0.01 * y, n = 0.3 * y;
-    half.import({run_file(id, 0.5, v, 0.0, y, k, n)}, ImportOptions{});
-    whole.import({run_file(id++, 0.5, v, 0.0, y, k, n)}, ImportOptions{});
+    half.import({run_file(id, 0.5, v, 0.0, y, k, n)}, ImportPolicy{});
+    whole.import({run_file(id++, 0.5, v, 0.0, y, k, n)}, ImportPolicy{});
     // Port-starboard: (u, v, w, p, q, r) -> (u, -v, w, -p, q, -r); (X, Y, Z, K, M, N) -> (X, -Y, Z, -K, M, -N).
-    if (v != 0.0) whole.import({run_file(id++, 0.5, -v, 0.0, -y, -k, -n)}, ImportOptions{});
+    if (v != 0.0) whole.import({run_file(id++, 0.5, -v, 0.0, -y, -k, -n)}, ImportPolicy{});
   }
   const DampingLawSpec spec = parse_damping_terms("1,v,v|v|");
   const MirrorSpec mirror = make_mirror_spec({"v"}, {});
@@ -70,10 +70,10 @@ TEST(FitRuns, MirroredFitOverHalfThePlaneEqualsTheFitOverExplicitlyMirroredRuns)
 
 TEST(FitRuns, MirrorImagesMapKeysAndForcesAndLeaveMeasuredRunsAlone) {
   TempDir dir;
-  Database db(dir / "db");
+  RunDatabase db(dir / "db");
   db.import({run_file(1, 0.5, 0.1, 0.2, 1.0, 2.0, 3.0, -0.7), run_file(2, 0.5, -0.1, -0.2, -1.5, -2.5, -3.5),
              run_file(3, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0)},
-            ImportOptions{});
+            ImportPolicy{});
   std::size_t skipped = 0;
   const auto runs = db.runs();
   const auto all = with_mirror_images(runs, make_mirror_spec({"v"}, {}), &skipped);
@@ -110,10 +110,10 @@ TEST(FitRuns, MirrorImagesMapKeysAndForcesAndLeaveMeasuredRunsAlone) {
 
 TEST(FitRuns, AStaleFitIsMadeAgainFromItsRecord) {
   TempDir dir;
-  Database db(dir / "db");
+  RunDatabase db(dir / "db");
   for (int i = 0; i < 5; ++i) {
     const double u = 0.1 * (i + 1);
-    db.import({run_file(i + 1, u, 0.0, 0.0, 0.0, 0.0, 0.0, -3.0 * u * u)}, ImportOptions{});
+    db.import({run_file(i + 1, u, 0.0, 0.0, 0.0, 0.0, 0.0, -3.0 * u * u)}, ImportPolicy{});
   }
   const DampingLawSpec spec = parse_damping_terms("u|u|");
   const RunSelection selection = parse_selection({"u>=0.2"}, {});
@@ -126,7 +126,7 @@ TEST(FitRuns, AStaleFitIsMadeAgainFromItsRecord) {
   // The run at u = 0.3 is corrected (re-imported with --replace): the fit goes stale.
   ImportBatch corrected = run_file(3, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, -0.36);
   corrected.source.settings_key = "id=3 corrected";
-  ImportOptions replace;
+  ImportPolicy replace;
   replace.replace = true;
   db.import({corrected}, replace);
   ASSERT_TRUE(db.fits().front().stale);
@@ -145,7 +145,7 @@ TEST(FitRuns, AStaleFitIsMadeAgainFromItsRecord) {
   }
   EXPECT_NEAR(again.coefficients[0].value, num / den, 1e-9);
   EXPECT_GT(std::abs(again.coefficients[0].value + 3.0), 1e-3);
-  db.save_fit(again, Database::NameTaken::Replace);
+  db.save_fit(again, RunDatabase::NameTaken::Replace);
   EXPECT_FALSE(db.fits().front().stale);
   EXPECT_NEAR(db.fits().front().coefficients[0].value, num / den, 1e-9);
 

@@ -50,15 +50,15 @@ ImportRequest request_for(const fs::path& file, const std::string& sign) {
 
 TEST(LibraryPipeline, ImportFitSurfaceRebuildAndBatchWithoutTheCli) {
   test::TempDir dir;
-  Database database(dir / "asr-v.db");
+  RunDatabase database(dir / "asr-v.db");
   const auto surge_file = kExample / "asr-v-surge-damping.csv";
-  const auto imported = import_into(database, request_for(surge_file, "opposing"), ImportOptions{});
+  const auto imported = import_into(database, request_for(surge_file, "opposing"), ImportPolicy{});
   const auto rows = table_rows(surge_file);
   ASSERT_GT(rows.size(), 5u);
   EXPECT_EQ(imported.runs, rows.size());
   EXPECT_EQ(imported.runs_created, rows.size());
   // The same bytes with the same settings again: nothing added.
-  const auto again = import_into(database, request_for(surge_file, "opposing"), ImportOptions{});
+  const auto again = import_into(database, request_for(surge_file, "opposing"), ImportPolicy{});
   EXPECT_EQ(again.already_imported, 1u);
   EXPECT_EQ(again.runs_created, 0u);
 
@@ -133,7 +133,7 @@ TEST(LibraryPipeline, ImportFitSurfaceRebuildAndBatchWithoutTheCli) {
 
   // A run changes: the fit and the surface go stale; both are made again.
   std::ofstream(dir / "changed.csv") << "u [m s^-1],X [N]\n" << rows[2].first << ",0.5\n";
-  ImportOptions replace;
+  ImportPolicy replace;
   replace.components = ConflictPolicy::Replace;
   import_into(database, request_for(dir / "changed.csv", "opposing"), replace);
   const auto refit = refit_stored_fits(database, std::nullopt, std::nullopt);

@@ -34,10 +34,10 @@ ImportBatch run_file(int id, double u, double v) {
 }
 
 // Runs on the grid u in {0, 0.1, 0.2, 0.3} x v in {-0.1, 0, 0.1}.
-void fill(Database& database) {
+void fill(RunDatabase& database) {
   int id = 1;
   for (const double u : {0.0, 0.1, 0.2, 0.3})
-    for (const double v : {-0.1, 0.0, 0.1}) database.import({run_file(id++, u, v)}, ImportOptions{});
+    for (const double v : {-0.1, 0.0, 0.1}) database.import({run_file(id++, u, v)}, ImportPolicy{});
 }
 
 SurfaceBuildSpec grid_spec() {
@@ -51,7 +51,7 @@ SurfaceBuildSpec grid_spec() {
 
 TEST(SurfaceBuild, BuildsStoresAndAnswersAtTheRunsWithTheLibraryAlone) {
   TempDir dir;
-  Database database(dir / "runs.db");
+  RunDatabase database(dir / "runs.db");
   fill(database);
   const auto result = build_and_store_surface(database, "surge", "boat", grid_spec());
   EXPECT_EQ(result.runs_measured, 12u);
@@ -69,12 +69,12 @@ TEST(SurfaceBuild, BuildsStoresAndAnswersAtTheRunsWithTheLibraryAlone) {
   // The name is taken: refused unless replacing.
   expect_input_error([&] { build_and_store_surface(database, "surge", "boat", grid_spec()); },
                      {"a surface named 'surge' exists", "--replace"});
-  EXPECT_NO_THROW(build_and_store_surface(database, "surge", "boat", grid_spec(), Database::NameTaken::Replace));
+  EXPECT_NO_THROW(build_and_store_surface(database, "surge", "boat", grid_spec(), RunDatabase::NameTaken::Replace));
 }
 
 TEST(SurfaceBuild, RebuildUsesTheStoredSpecificationOnTheCurrentRuns) {
   TempDir dir;
-  Database database(dir / "runs.db");
+  RunDatabase database(dir / "runs.db");
   fill(database);
   SurfaceBuildSpec spec = grid_spec();
   spec.where = {"u<=0.2"};
@@ -83,7 +83,7 @@ TEST(SurfaceBuild, RebuildUsesTheStoredSpecificationOnTheCurrentRuns) {
   // A run of the selection changes: the surface goes stale, the rebuild has the new value.
   ImportBatch changed = run_file(100, 0.1, 0.0);
   changed.runs[0].tau_b[0]->total = 7.0;
-  ImportOptions replace;
+  ImportPolicy replace;
   replace.components = ConflictPolicy::Replace;
   database.import({changed}, replace);
   ASSERT_TRUE(database.surface("low").stale);
@@ -144,7 +144,7 @@ TEST(SurfaceBuildMigration, CommandLineOptionsBecomeTheBuildSpecification) {
   TempDir dir;
   const auto path = dir / "old.db";
   {
-    Database database(path);
+    RunDatabase database(path);
     fill(database);
     SurfaceBuildSpec spec = grid_spec();
     spec.surface.method = "rbf";
@@ -176,7 +176,7 @@ TEST(SurfaceBuildMigration, CommandLineOptionsBecomeTheBuildSpecification) {
     connection.prepare("UPDATE surface SET definition = ? WHERE name = 'rbf'").bind(1, definition.dump()).run();
   }
   test::copy_as_schema_version(path, dir / "v6.db", 6);
-  Database database(dir / "v6.db");
+  RunDatabase database(dir / "v6.db");
   const SurfaceBuildSpec spec = stored_build_spec(database.surface("rbf"));
   EXPECT_EQ(spec.surface.method, "rbf");
   EXPECT_EQ(spec.surface.out_of_range, (std::vector<std::string>{"extrapolate", "clamp"}));
@@ -199,7 +199,7 @@ TEST(SurfaceBuildMigration, UnreadableOptionsStopTheMigrationAndLeaveTheDatabase
   TempDir dir;
   const auto path = dir / "old.db";
   {
-    Database database(path);
+    RunDatabase database(path);
     fill(database);
     build_and_store_surface(database, "surge", "boat", grid_spec());
   }
@@ -211,7 +211,7 @@ TEST(SurfaceBuildMigration, UnreadableOptionsStopTheMigrationAndLeaveTheDatabase
   }
   const auto old = dir / "v6.db";
   test::copy_as_schema_version(path, old, 6);
-  expect_input_error([&] { Database database(old); }, {"surface 'surge'", "build options are incomplete"});
+  expect_input_error([&] { RunDatabase database(old); }, {"surface 'surge'", "build options are incomplete"});
   store::Connection connection(old.string(), store::Access::ReadOnly);
   auto version = connection.prepare("PRAGMA user_version");
   ASSERT_TRUE(version.step());

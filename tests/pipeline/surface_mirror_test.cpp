@@ -37,10 +37,10 @@ ImportBatch run_file(int id, double u, double v, double r = 0.0) {
 }
 
 // Half the plane, v >= 0: the mirror gives the other half.
-void fill(Database& database) {
+void fill(RunDatabase& database) {
   int id = 1;
   for (const double u : {0.1, 0.2, 0.3, 0.4})
-    for (const double v : {0.0, 0.05, 0.1, 0.2}) database.import({run_file(id++, u, v)}, ImportOptions{});
+    for (const double v : {0.0, 0.05, 0.1, 0.2}) database.import({run_file(id++, u, v)}, ImportPolicy{});
 }
 
 SurfaceBuildSpec mirrored_spec(const std::string& method) {
@@ -57,7 +57,7 @@ class SurfaceMirror : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SurfaceMirror, OddOutputsVanishOnThePlaneAndEvenOnesAreFlatAcrossIt) {
   TempDir dir;
-  Database database(dir / "runs.db");
+  RunDatabase database(dir / "runs.db");
   fill(database);
   const std::string method = GetParam();
   build_and_store_surface(database, "s", "boat", mirrored_spec(method));
@@ -113,10 +113,10 @@ INSTANTIATE_TEST_SUITE_P(Methods, SurfaceMirror, ::testing::Values("linear", "pc
 
 TEST(SurfaceMirrorRefusal, APlaneThatReversesAQuantityTheSurfaceDoesNotSpanIsRefused) {
   TempDir dir;
-  Database database(dir / "runs.db");
+  RunDatabase database(dir / "runs.db");
   fill(database);
   // A run turning at r = 0.2 rad/s: its image would turn the other way, off this surface over (u, v).
-  database.import({run_file(40, 0.3, 0.3, 0.2)}, ImportOptions{});
+  database.import({run_file(40, 0.3, 0.3, 0.2)}, ImportPolicy{});
   expect_input_error([&] { build_and_store_surface(database, "s", "boat", mirrored_spec("rbf")); },
                      {"--mirror v reverses r", "is 0.2 in run", "--where"});
   EXPECT_TRUE(database.surfaces().empty());
@@ -126,9 +126,9 @@ TEST(SurfaceMirrorRefusal, APlaneThatMovesNoAxisZeroesTheOutputsOddInIt) {
   // A surface over u alone with a mirror in v: a symmetric body in pure
   // surge has no side force, whatever the runs on the plane say.
   TempDir dir;
-  Database database(dir / "runs.db");
+  RunDatabase database(dir / "runs.db");
   int id = 1;
-  for (const double u : {0.1, 0.2, 0.3, 0.4}) database.import({run_file(id++, u, 0.0)}, ImportOptions{});
+  for (const double u : {0.1, 0.2, 0.3, 0.4}) database.import({run_file(id++, u, 0.0)}, ImportPolicy{});
   SurfaceBuildSpec spec = mirrored_spec("pchip");
   spec.surface.axes = {"u"};
   build_and_store_surface(database, "s", "boat", spec);

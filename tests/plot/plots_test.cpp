@@ -64,7 +64,7 @@ TEST(Plots, FitPlotHoldsTheRunsAndTheLawFittedIndependently) {
           .exit_code,
       0);
   ASSERT_EQ(run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "1,u,u|u|"}, dir.path()).exit_code, 0);
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   const Figure figure = fit_figure(database, "asr-v:X(1,u,u|u|)");
   const auto files = render(figure, dir / "fit.png");
   const auto blocks = read_blocks(files.data);
@@ -128,7 +128,7 @@ class SweepTest : public ::testing::Test {
 TEST_F(SweepTest, PerLevelFitsDrawOneCurvePerLevelAndCoefficientCurves) {
   ASSERT_EQ(
       run_cli({"fit", "--body", "b", "--dof", "X", "--terms", "u,u|u|", "--by", "current_v"}, dir.path()).exit_code, 0);
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   const auto files = render(fit_figure(database, "b:X(u,u|u|)"), dir / "levels.svg");
   const auto blocks = read_blocks(files.data);
   ASSERT_EQ(blocks.size(), 2 * levels.size());
@@ -169,7 +169,7 @@ TEST_F(SweepTest, TwoAxisSurfaceIsAColourMapWithRunsAndShadedOutOfRange) {
                     dir.path())
                 .exit_code,
             0);
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   const Figure figure = surface_figure(database, "s2", std::nullopt);
   const auto files = render(figure, dir / "s2.png");
   const auto blocks = read_blocks(files.data);
@@ -216,7 +216,7 @@ TEST(Plots, OneAxisSurfaceCurveMatchesLinearInterpolationAndContinuesWhereThePol
   ASSERT_EQ(
       run_cli({"surface", "build", "strict", "--body", "asr-v", "--outputs", "X", "--axes", "u"}, dir.path()).exit_code,
       0);
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   const auto [u, x] = surge_table();
   const auto blocks = read_blocks(render(surface_figure(database, "lin", std::string("X")), dir / "lin.svg").data);
   ASSERT_EQ(blocks.size(), 4u);  // curve, continuation below, above, runs
@@ -239,7 +239,7 @@ TEST(Plots, OneAxisSurfaceCurveMatchesLinearInterpolationAndContinuesWhereThePol
 TEST(Plots, MissingThingsAreClearErrors) {
   TempDir dir;
   {
-    Database empty(dir / "empty.db");
+    RunDatabase empty(dir / "empty.db");
     EXPECT_NE(error_of([&] { fit_figure(empty, "x"); }).find("has no runs"), std::string::npos);
     EXPECT_NE(error_of([&] { surface_figure(empty, "nope", std::nullopt); }).find("nope"), std::string::npos);
   }
@@ -247,7 +247,7 @@ TEST(Plots, MissingThingsAreClearErrors) {
       run_cli({"import", kExamples + "asr-v-surge-damping.csv", "--body", "asr-v", "--sign", "opposing"}, dir.path())
           .exit_code,
       0);
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   EXPECT_NE(error_of([&] { fit_figure(database, "x"); }).find("has no fits"), std::string::npos);
   ASSERT_EQ(run_cli({"fit", "--body", "asr-v", "--dof", "X", "--terms", "u,u|u|"}, dir.path()).exit_code, 0);
   ASSERT_EQ(
@@ -326,7 +326,7 @@ TEST(Plots, SigmaMapIsTheStatedStandardDeviationOverTheRange) {
                     dir.path())
                 .exit_code,
             0);
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   const auto quality = nlohmann::json::parse(database.surface("s2").quality);
   const double loo = quality["outputs"]["X"]["loo_rms"];
   ASSERT_GT(loo, 0.0);

@@ -35,7 +35,7 @@ std::string file_name(int file) { return "run-" + std::to_string(100 + file) + "
 
 /// The files whose runs are all there; a file partly there is a problem.
 std::set<std::string> whole_files(const std::string& location, std::string& problems) {
-  Database database(location, Database::OpenMode::MustExist);
+  RunDatabase database(location, RunDatabase::OpenMode::MustExist);
   std::map<std::string, int> runs_per_file;
   for (const auto& run : database.runs()) {
     const auto& x = run.tau_b[0];

@@ -139,7 +139,7 @@ Census census(const fs::path& db_path) {
 }
 
 /// True when a process of the group has the database file open (the
-/// hydrocoef the shell runs is between opening and closing its Database).
+/// hydrocoef the shell runs is between opening and closing its RunDatabase).
 bool database_open_in_group(pid_t group) {
   for (const auto& proc : live_processes(group)) {
     std::error_code ec;
@@ -171,7 +171,7 @@ class Reader {
   void loop() {
     while (!stop_) {
       try {
-        Database database(db_, Database::OpenMode::MustExist);
+        RunDatabase database(db_, RunDatabase::OpenMode::MustExist);
         std::map<std::string, int> runs_per_file;
         std::string problem;
         for (const auto& run : database.runs()) {

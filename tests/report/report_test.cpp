@@ -72,7 +72,7 @@ class ReportTest : public ::testing::Test {
 };
 
 TEST_F(ReportTest, PageHasEverySectionAndEmbedsThePlotsItWrote) {
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   ReportOptions options;
   options.trajectories.push_back(dir / "yaw.csv");
   const auto result = write_report(database, dir / "report", options);
@@ -110,7 +110,7 @@ TEST_F(ReportTest, PageHasEverySectionAndEmbedsThePlotsItWrote) {
 }
 
 TEST_F(ReportTest, WhereKeepsTheSelectedRunsAndWhatWasBuiltFromThemAlone) {
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   ReportOptions options;
   options.body = "b";
   options.selection = parse_selection({"current_v=0.1"}, {});
@@ -131,7 +131,7 @@ TEST_F(ReportTest, WhereKeepsTheSelectedRunsAndWhatWasBuiltFromThemAlone) {
 
 TEST(Report, EmptyDatabaseOrUnknownBodyIsAnError) {
   TempDir dir;
-  Database database(dir / "empty.db");
+  RunDatabase database(dir / "empty.db");
   EXPECT_THROW(write_report(database, dir / "r"), InputError);
   ReportOptions options;
   options.body = "nobody";
@@ -166,7 +166,7 @@ std::string dump_dom(const std::filesystem::path& page, const std::filesystem::p
 
 TEST_F(ReportTest, RendersInHeadlessChromiumWithoutErrors) {
   if (!have_chromium()) GTEST_SKIP() << "chromium is not installed (Debian package chromium)";
-  Database database(dir / "hydrocoef.db", Database::OpenMode::MustExist);
+  RunDatabase database(dir / "hydrocoef.db", RunDatabase::OpenMode::MustExist);
   ReportOptions options;
   options.trajectories.push_back(dir / "yaw.csv");
   const auto result = write_report(database, dir / "report", options);

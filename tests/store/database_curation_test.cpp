@@ -74,14 +74,14 @@ FitRecord fit_of(const std::vector<StoredRun>& runs) {
 
 TEST(DatabaseCuration, TheSameBytesAndSettingsAreANoOpOtherSettingsAreRefused) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
-  db.import({reading('a', 0.1, -0.11)}, ImportOptions{});
-  const auto again = db.import({reading('a', 0.1, -0.11)}, ImportOptions{});
+  RunDatabase db(test::database_location(dir / "db"));
+  db.import({reading('a', 0.1, -0.11)}, ImportPolicy{});
+  const auto again = db.import({reading('a', 0.1, -0.11)}, ImportPolicy{});
   ASSERT_EQ(again.size(), 1u);
   EXPECT_TRUE(again[0].already_imported);
   const auto before = dump_database(dir / "db");
   try {
-    db.import({reading('a', 0.2, -0.44)}, ImportOptions{});
+    db.import({reading('a', 0.2, -0.44)}, ImportPolicy{});
     FAIL() << "accepted";
   } catch (const InputError& e) {
     const std::string message = e.what();
@@ -97,19 +97,19 @@ TEST(DatabaseCuration, TheSameBytesAndSettingsAreANoOpOtherSettingsAreRefused) {
 // run and 199 silent no-ops. Without --also they are refused, clearly.
 TEST(DatabaseCuration, TwoHundredIdenticalFilesWithDifferentKeysAreNeverDroppedSilently) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
+  RunDatabase db(test::database_location(dir / "db"));
   std::vector<ImportBatch> batches;
   for (int i = 0; i < 200; ++i) batches.push_back(reading('c', 0.01 * (i + 1), -1.0 * i));
   const auto before = dump_database(dir / "db");
-  EXPECT_THROW(db.import(batches, ImportOptions{}), InputError);
+  EXPECT_THROW(db.import(batches, ImportPolicy{}), InputError);
   EXPECT_EQ(dump_database(dir / "db"), before);
   EXPECT_TRUE(db.runs().empty());
 }
 
 TEST(DatabaseCuration, ReplaceCorrectsAnImportAndMakesItsFitsAndSurfacesStale) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
-  db.import({reading('a', 0.1, -0.11), reading('b', 0.2, -0.44)}, ImportOptions{});
+  RunDatabase db(test::database_location(dir / "db"));
+  db.import({reading('a', 0.1, -0.11), reading('b', 0.2, -0.44)}, ImportPolicy{});
   db.save_fit(fit_of(db.runs()));
   SurfaceRecord surface;
   surface.name = "s";
@@ -123,7 +123,7 @@ TEST(DatabaseCuration, ReplaceCorrectsAnImportAndMakesItsFitsAndSurfacesStale) {
   ASSERT_FALSE(db.fits()[0].stale);
 
   // File b was read with the wrong speed: corrected with --replace.
-  ImportOptions replace;
+  ImportPolicy replace;
   replace.replace = true;
   replace.components = ConflictPolicy::Replace;
   const auto outcome = db.import({reading('b', 0.3, -0.99)}, replace);
@@ -146,9 +146,9 @@ TEST(DatabaseCuration, ReplaceCorrectsAnImportAndMakesItsFitsAndSurfacesStale) {
 
 TEST(DatabaseCuration, AlsoKeepsASecondReadingOfTheSameFile) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
-  db.import({reading('a', 0.1, -0.11)}, ImportOptions{});
-  ImportOptions also;
+  RunDatabase db(test::database_location(dir / "db"));
+  db.import({reading('a', 0.1, -0.11)}, ImportPolicy{});
+  ImportPolicy also;
   also.also = "mean";
   const auto outcome = db.import({reading('a', 0.15, -0.2)}, also);
   EXPECT_FALSE(outcome[0].already_imported);
@@ -160,8 +160,8 @@ TEST(DatabaseCuration, AlsoKeepsASecondReadingOfTheSameFile) {
 
 TEST(DatabaseCuration, DeletingRunsLeavesNoOrphansAndMakesFitsStale) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
-  db.import({reading('a', 0.1, -0.11), reading('b', 0.2, -0.44), reading('c', 0.3, -0.99)}, ImportOptions{});
+  RunDatabase db(test::database_location(dir / "db"));
+  db.import({reading('a', 0.1, -0.11), reading('b', 0.2, -0.44), reading('c', 0.3, -0.99)}, ImportPolicy{});
   db.save_fit(fit_of(db.runs()));
   const auto before = dump_database(dir / "db");
   EXPECT_THROW(db.delete_runs({db.runs()[0].id, 12345}), InputError);
@@ -180,7 +180,7 @@ TEST(DatabaseCuration, DeletingRunsLeavesNoOrphansAndMakesFitsStale) {
   EXPECT_TRUE(fits[0].stale);
   EXPECT_EQ(fits[0].run_ids.size(), 3u);  // still says what it was built from
   // The deleted file can be imported again: its import went with its run.
-  EXPECT_FALSE(db.import({reading('b', 0.2, -0.44)}, ImportOptions{})[0].already_imported);
+  EXPECT_FALSE(db.import({reading('b', 0.2, -0.44)}, ImportPolicy{})[0].already_imported);
 }
 
 }  // namespace
@@ -204,10 +204,10 @@ ImportBatch averaged_reading(char hash, double u, double x, double standard_erro
 
 TEST(DatabaseCuration, ForceStatisticsAreStoredWithTheirComponentAndGoWithIt) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
+  RunDatabase db(test::database_location(dir / "db"));
   db.import({averaged_reading('a', 0.1, -0.11, 0.002, {}), averaged_reading('b', 0.2, -0.44, 0.01, {"drifting"}),
              reading('c', 0.3, -0.99)},
-            ImportOptions{});
+            ImportPolicy{});
   auto runs = db.runs();
   ASSERT_EQ(runs.size(), 3u);
   ASSERT_TRUE(runs[0].tau_b[0]->statistics);
@@ -227,7 +227,7 @@ TEST(DatabaseCuration, ForceStatisticsAreStoredWithTheirComponentAndGoWithIt) {
   EXPECT_FALSE(runs[2].tau_b[0]->statistics);  // a value without a history has none
 
   // Replaced by a reading without statistics: none of the old ones is left.
-  ImportOptions replace;
+  ImportPolicy replace;
   replace.replace = true;
   db.import({reading('b', 0.2, -0.45, "0.2 corrected")}, replace);
   runs = db.runs();
@@ -250,8 +250,8 @@ TEST(DatabaseCuration, ForceStatisticsAreStoredWithTheirComponentAndGoWithIt) {
 TEST(DatabaseCuration, StatisticsOfAComponentTheRunLacksAreRefusedOnRead) {
   TempDir dir;
   {
-    Database db(test::database_location(dir / "db"));
-    db.import({averaged_reading('a', 0.1, -0.11, 0.002, {})}, ImportOptions{});
+    RunDatabase db(test::database_location(dir / "db"));
+    db.import({averaged_reading('a', 0.1, -0.11, 0.002, {})}, ImportPolicy{});
   }
   test::connect_database(dir / "db")
       .execute(
@@ -259,7 +259,7 @@ TEST(DatabaseCuration, StatisticsOfAComponentTheRunLacksAreRefusedOnRead) {
           "window_last, samples, flags, standard_error, spread, drift, effective_samples, convergence, "
           "convergence_reason FROM "
           "run_force_statistics");
-  Database db(test::database_location(dir / "db"), Database::OpenMode::ReadOnly);
+  RunDatabase db(test::database_location(dir / "db"), RunDatabase::OpenMode::ReadOnly);
   try {
     (void)db.runs();
     FAIL() << "statistics of a missing component were read";

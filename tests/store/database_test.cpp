@@ -44,25 +44,25 @@ ImportBatch make_batch(const std::string& path, char hash_digit, std::vector<Imp
 
 constexpr std::size_t kX = 0, kY = 1, kN = 5;
 
-TEST(Database, NewFileGetsEveryMigrationRecordedInUserVersion) {
+TEST(RunDatabase, NewFileGetsEveryMigrationRecordedInUserVersion) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   EXPECT_EQ(db.schema_version(), static_cast<int>(store::migrations().size()));
   EXPECT_GE(db.schema_version(), 1);
   EXPECT_EQ(db.integrity_check(), "ok");
   // Opening again applies nothing and keeps the content.
   const auto before = dump_database(dir / "runs.db");
-  Database again(test::database_location(dir / "runs.db"));
+  RunDatabase again(test::database_location(dir / "runs.db"));
   EXPECT_EQ(dump_database(dir / "runs.db"), before);
 }
 
 // The staleness triggers look up the runs of fits and surfaces by run id for
 // every force row written: by an index, not by reading the whole table
 // (replacing or deleting 40,000 runs a fit covers was quadratic: 145 s).
-TEST(Database, FitAndSurfaceRunsAreFoundByRunThroughAnIndex) {
+TEST(RunDatabase, FitAndSurfaceRunsAreFoundByRunThroughAnIndex) {
   if (test::on_postgresql()) GTEST_SKIP() << "SQLite's query plan";
   TempDir dir;
-  { Database db(dir / "runs.db"); }
+  { RunDatabase db(dir / "runs.db"); }
   sqlite3* handle = nullptr;
   ASSERT_EQ(sqlite3_open_v2((dir / "runs.db").c_str(), &handle, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
   for (const auto& [table, index] :
@@ -79,15 +79,15 @@ TEST(Database, FitAndSurfaceRunsAreFoundByRunThroughAnIndex) {
   sqlite3_close(handle);
 }
 
-TEST(Database, MustExistRefusesAMissingFileWithoutCreatingIt) {
+TEST(RunDatabase, MustExistRefusesAMissingFileWithoutCreatingIt) {
   TempDir dir;
-  EXPECT_THROW(Database(test::database_location(dir / "absent.db"), Database::OpenMode::MustExist), InputError);
+  EXPECT_THROW(RunDatabase(test::database_location(dir / "absent.db"), RunDatabase::OpenMode::MustExist), InputError);
   EXPECT_FALSE(test::database_exists(dir / "absent.db"));
 }
 
-TEST(Database, ImportsRunsAndFindsThemByKey) {
+TEST(RunDatabase, ImportsRunsAndFindsThemByKey) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   auto run = make_run({0.1, 0, 0, 0, 0, 0.2}, kX, -1.5, 3, {{"current_v", 0.05}});
   run.fluid.density_kg_m3 = 998.2;
   run.reference_point_b = {0.0, 0.0, 0.01};
@@ -130,9 +130,9 @@ TEST(Database, ImportsRunsAndFindsThemByKey) {
   EXPECT_FALSE(db.find_run(other).has_value());
 }
 
-TEST(Database, SourceProvenanceIsKept) {
+TEST(RunDatabase, SourceProvenanceIsKept) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   db.import({make_batch("tables/a.csv", 'b', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);
   const auto sources = db.sources();
   ASSERT_EQ(sources.size(), 1u);
@@ -144,9 +144,9 @@ TEST(Database, SourceProvenanceIsKept) {
   EXPECT_EQ(sources[0].imported_at.back(), 'Z');
 }
 
-TEST(Database, SameBytesTwiceIsANoOpThatSaysSo) {
+TEST(RunDatabase, SameBytesTwiceIsANoOpThatSaysSo) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   const auto batch = make_batch("a.csv", 'c', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)});
   db.import({batch}, ConflictPolicy::Error);
   const auto before = dump_database(dir / "runs.db");
@@ -160,16 +160,16 @@ TEST(Database, SameBytesTwiceIsANoOpThatSaysSo) {
   EXPECT_EQ(dump_database(dir / "runs.db"), before);
   // The same file twice in one call is imported once.
   TempDir other_dir;
-  Database other(test::database_location(other_dir / "runs.db"));
+  RunDatabase other(test::database_location(other_dir / "runs.db"));
   const auto both = other.import({batch, batch}, ConflictPolicy::Error);
   EXPECT_FALSE(both[0].already_imported);
   EXPECT_TRUE(both[1].already_imported);
   EXPECT_EQ(other.runs().size(), 1u);
 }
 
-TEST(Database, TwoFilesMayGiveDifferentComponentsOfOneRun) {
+TEST(RunDatabase, TwoFilesMayGiveDifferentComponentsOfOneRun) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   db.import({make_batch("surge.csv", 'd', {make_run({}, kX, -0.0002, 2)})}, ConflictPolicy::Error);
   const auto outcomes = db.import({make_batch("yaw.csv", 'e', {make_run({}, kN, -0.00006, 2)})}, ConflictPolicy::Error);
   EXPECT_EQ(outcomes[0].runs_created, 0u);
@@ -180,9 +180,9 @@ TEST(Database, TwoFilesMayGiveDifferentComponentsOfOneRun) {
   EXPECT_EQ(runs[0].tau_b[kN]->source_path, "yaw.csv");
 }
 
-TEST(Database, ConflictingComponentFailsAndLeavesEverythingAsItWas) {
+TEST(RunDatabase, ConflictingComponentFailsAndLeavesEverythingAsItWas) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   db.import({make_batch("first.csv", '1', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1.0, 2)})}, ConflictPolicy::Error);
   const auto before = dump_database(dir / "runs.db");
   // The batch list holds a good new file first and a conflicting one second:
@@ -210,9 +210,9 @@ TEST(Database, ConflictingComponentFailsAndLeavesEverythingAsItWas) {
   EXPECT_EQ(run->tau_b[kX]->source_path, "second.csv");
 }
 
-TEST(Database, DifferentFluidOrReferencePointForOneRunIsRefused) {
+TEST(RunDatabase, DifferentFluidOrReferencePointForOneRunIsRefused) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   auto first = make_run({0.1, 0, 0, 0, 0, 0}, kX, 1.0, 2);
   first.fluid.density_kg_m3 = 998.2;
   db.import({make_batch("a.csv", 'a', {first})}, ConflictPolicy::Error);
@@ -235,9 +235,9 @@ TEST(Database, DifferentFluidOrReferencePointForOneRunIsRefused) {
   EXPECT_EQ(run.fluid.kinematic_viscosity_m2_s, 1.004e-6);
 }
 
-TEST(Database, FiltersByBodyComponentValueAndDisturbance) {
+TEST(RunDatabase, FiltersByBodyComponentValueAndDisturbance) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   std::vector<ImportedRun> runs;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 3; ++j)
@@ -256,9 +256,9 @@ TEST(Database, FiltersByBodyComponentValueAndDisturbance) {
   EXPECT_EQ(db.bodies(), std::vector<std::string>{"sphere"});
 }
 
-TEST(Database, FitsAreStoredWithTheirRunsAndReplacedByName) {
+TEST(RunDatabase, FitsAreStoredWithTheirRunsAndReplacedByName) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   db.import(
       {make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
       ConflictPolicy::Error);
@@ -282,7 +282,7 @@ TEST(Database, FitsAreStoredWithTheirRunsAndReplacedByName) {
   const auto stored = dump_database(dir / "runs.db");
   EXPECT_THROW(db.save_fit(fit), InputError);
   EXPECT_EQ(dump_database(dir / "runs.db"), stored);
-  db.save_fit(fit, Database::NameTaken::Replace);
+  db.save_fit(fit, RunDatabase::NameTaken::Replace);
   const auto fits = db.fits("sphere");
   ASSERT_EQ(fits.size(), 1u);
   EXPECT_EQ(fits[0].rmse, 0.25);
@@ -300,7 +300,7 @@ TEST(Database, FitsAreStoredWithTheirRunsAndReplacedByName) {
   EXPECT_EQ(dump_database(dir / "runs.db"), before);
 }
 
-TEST(Database, RefusesFilesThatAreNotItsDatabases) {
+TEST(RunDatabase, RefusesFilesThatAreNotItsDatabases) {
   HYDROCOEF_SQLITE_FILE_ONLY("an SQLite file that is not a database, or of another program");
   TempDir dir;
   {
@@ -308,7 +308,7 @@ TEST(Database, RefusesFilesThatAreNotItsDatabases) {
     for (int i = 0; i < 4096; ++i) garbage.put(static_cast<char>((i * 131 + 7) % 256));
   }
   try {
-    Database db(test::database_location(dir / "garbage.db"));
+    RunDatabase db(test::database_location(dir / "garbage.db"));
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("garbage.db"), std::string::npos) << error.what();
@@ -320,28 +320,28 @@ TEST(Database, RefusesFilesThatAreNotItsDatabases) {
   sqlite3_exec(foreign, "CREATE TABLE t(x); INSERT INTO t VALUES (1);", nullptr, nullptr, nullptr);
   sqlite3_close(foreign);
   const auto foreign_before = dump_database(dir / "foreign.db");
-  EXPECT_THROW(Database(test::database_location(dir / "foreign.db")), InputError);
+  EXPECT_THROW(RunDatabase(test::database_location(dir / "foreign.db")), InputError);
   EXPECT_EQ(dump_database(dir / "foreign.db"), foreign_before);
 
   // A database from a newer hydrocoef.
-  { Database db(test::database_location(dir / "newer.db")); }
+  { RunDatabase db(test::database_location(dir / "newer.db")); }
   sqlite3* newer = nullptr;
   ASSERT_EQ(sqlite3_open((dir / "newer.db").c_str(), &newer), SQLITE_OK);
   sqlite3_exec(newer, "PRAGMA user_version = 999", nullptr, nullptr, nullptr);
   sqlite3_close(newer);
   try {
-    Database db(test::database_location(dir / "newer.db"));
+    RunDatabase db(test::database_location(dir / "newer.db"));
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("999"), std::string::npos) << error.what();
   }
 }
 
-TEST(Database, DetectsACorruptedPage) {
+TEST(RunDatabase, DetectsACorruptedPage) {
   HYDROCOEF_SQLITE_FILE_ONLY("a damaged page of an SQLite file");
   TempDir dir;
   {
-    Database db(test::database_location(dir / "runs.db"));
+    RunDatabase db(test::database_location(dir / "runs.db"));
     std::vector<ImportedRun> runs;
     for (int i = 0; i < 400; ++i)
       runs.push_back(make_run({0.001 * i, 0, 0, 0, 0, 0}, kX, i, 2 + static_cast<std::size_t>(i)));
@@ -355,7 +355,7 @@ TEST(Database, DetectsACorruptedPage) {
     file.seekp(static_cast<std::streamoff>(size / 2));
     for (int i = 0; i < 4096; ++i) file.put(static_cast<char>(0xA5));
   }
-  EXPECT_THROW(Database(test::database_location(dir / "runs.db")), InputError);
+  EXPECT_THROW(RunDatabase(test::database_location(dir / "runs.db")), InputError);
 }
 
 }  // namespace
@@ -379,7 +379,7 @@ SurfaceRecord make_surface(const std::string& name, const std::string& body, std
 
 TEST(DatabaseSurfaces, RoundTripBitForBitWithTheirRuns) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   db.import(
       {make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2), make_run({0.2, 0, 0, 0, 0, 0}, kX, 2, 3)})},
       ConflictPolicy::Error);
@@ -403,7 +403,7 @@ TEST(DatabaseSurfaces, RoundTripBitForBitWithTheirRuns) {
 
 TEST(DatabaseSurfaces, AChangeToTheBodysForcesMarksItsSurfacesStale) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   auto other = make_run({0.1, 0, 0, 0, 0, 0}, kX, 5, 2);
   other.key.body = "cube";
   db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)}), make_batch("c.csv", 'c', {other})},
@@ -427,7 +427,7 @@ TEST(DatabaseSurfaces, AChangeToTheBodysForcesMarksItsSurfacesStale) {
 
 TEST(DatabaseSurfaces, MissingNamesAndBodiesAreInputErrorsThatChangeNothing) {
   TempDir dir;
-  Database db(test::database_location(dir / "runs.db"));
+  RunDatabase db(test::database_location(dir / "runs.db"));
   db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);
   db.save_surface(make_surface("sphere-X", "sphere", {}));
   try {
@@ -453,9 +453,9 @@ TEST(DatabaseSurfaces, AnOlderDatabaseIsMigratedOnOpen) {
   }
   sqlite3_exec(raw, "PRAGMA user_version = 2", nullptr, nullptr, nullptr);
   sqlite3_close(raw);
-  Database db(test::database_location(dir / "old.db"));
-  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
-  EXPECT_GE(Database::latest_schema_version(), 3);
+  RunDatabase db(test::database_location(dir / "old.db"));
+  EXPECT_EQ(db.schema_version(), RunDatabase::latest_schema_version());
+  EXPECT_GE(RunDatabase::latest_schema_version(), 3);
   db.import({make_batch("a.csv", 'a', {make_run({0.1, 0, 0, 0, 0, 0}, kX, 1, 2)})}, ConflictPolicy::Error);
   db.save_surface(make_surface("sphere-X", "sphere", {}));
   EXPECT_EQ(db.surfaces().size(), 1u);

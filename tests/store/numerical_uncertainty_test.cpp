@@ -29,7 +29,7 @@ ImportedRun mesh_run(double u, double mesh, double cell_size, double x, double c
   return run;
 }
 
-void fill(Database& database) {
+void fill(RunDatabase& database) {
   int id = 0;
   for (const double current : {0.0, 0.05}) {
     database.import({test::one_run_batch(++id, mesh_run(0.2, 1, 0.01, -2.0, current))}, ConflictPolicy::Error);
@@ -53,13 +53,13 @@ TEST(NumericalUncertainty, ADatabaseOfSchema10OpensAtTheLatestWithItsRuns) {
   test::TempDir dir;
   const auto current = dir / "current.db";
   {
-    Database database(current);
+    RunDatabase database(current);
     fill(database);
   }
   test::copy_as_schema_version(current, dir / "v10.db", 10);
-  Database database(test::database_location(dir / "v10.db"));
-  EXPECT_EQ(database.schema_version(), Database::latest_schema_version());
-  EXPECT_GE(Database::latest_schema_version(), 11);
+  RunDatabase database(test::database_location(dir / "v10.db"));
+  EXPECT_EQ(database.schema_version(), RunDatabase::latest_schema_version());
+  EXPECT_GE(RunDatabase::latest_schema_version(), 11);
   EXPECT_EQ(database.runs().size(), 6u);
   EXPECT_TRUE(database.numerical_uncertainties().empty());
   EXPECT_EQ(database.integrity_check(), "ok");
@@ -72,7 +72,7 @@ TEST(NumericalUncertainty, ADatabaseOfSchema10OpensAtTheLatestWithItsRuns) {
 
 TEST(NumericalUncertainty, AppliesToTheFinestMeshOfItsKeyAndCombinesInQuadrature) {
   test::TempDir dir;
-  Database database(test::database_location(dir / "db.sqlite"));
+  RunDatabase database(test::database_location(dir / "db.sqlite"));
   fill(database);
   GridConvergenceRequest request;
   request.body = "hull";

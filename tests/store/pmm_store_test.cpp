@@ -59,7 +59,7 @@ PmmRecord sample_record() {
 
 TEST(PmmStore, RoundTripAndReplacement) {
   test::TempDir dir;
-  Database db(test::database_location(dir / "a.db"));
+  RunDatabase db(test::database_location(dir / "a.db"));
   const PmmRecord r = sample_record();
   const auto saved = db.save_pmm({r});
   ASSERT_EQ(saved.size(), 1u);
@@ -102,7 +102,7 @@ TEST(PmmStore, RoundTripAndReplacement) {
 
 TEST(PmmStore, DeleteRemovesRunsAndTheirCoefficientsOrNothing) {
   test::TempDir dir;
-  Database db(test::database_location(dir / "a.db"));
+  RunDatabase db(test::database_location(dir / "a.db"));
   PmmRecord other = sample_record();
   other.amplitude = 0.3;
   const auto saved = db.save_pmm({sample_record(), other});
@@ -130,12 +130,12 @@ TEST(PmmStore, ASchema11DatabaseOpensAtTheLatestWithNoRecords) {
       "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
   test::TempDir dir;
   {
-    Database db(test::database_location(dir / "current.db"));
+    RunDatabase db(test::database_location(dir / "current.db"));
     db.save_pmm({sample_record()});
   }
   test::copy_as_schema_version(dir / "current.db", dir / "v11.db", 11);
-  Database db(test::database_location(dir / "v11.db"));
-  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+  RunDatabase db(test::database_location(dir / "v11.db"));
+  EXPECT_EQ(db.schema_version(), RunDatabase::latest_schema_version());
   EXPECT_TRUE(db.pmm_records().empty());
   db.save_pmm({sample_record()});
   EXPECT_EQ(db.pmm_records().size(), 1u);
@@ -146,13 +146,13 @@ TEST(PmmStore, ASchema13DatabaseKeepsItsRecordsWithNoRestoringForce) {
       "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
   test::TempDir dir;
   {
-    Database db(test::database_location(dir / "current.db"));
+    RunDatabase db(test::database_location(dir / "current.db"));
     db.save_pmm({sample_record()});
   }
   // Schema 13 has no restoring column: drop it from the copy of the current one.
   test::copy_as_schema_version(dir / "current.db", dir / "v13.db", 13);
-  Database db(test::database_location(dir / "v13.db"));
-  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+  RunDatabase db(test::database_location(dir / "v13.db"));
+  EXPECT_EQ(db.schema_version(), RunDatabase::latest_schema_version());
   const auto records = db.pmm_records();
   ASSERT_EQ(records.size(), 1u);
   EXPECT_FALSE(records[0].restoring);
@@ -171,7 +171,7 @@ TEST(PmmStore, DamagedValuesAreRefusedNamingTheTableRowAndColumn) {
   for (const auto& [sql, expected] : damage) {
     test::TempDir dir;
     {
-      Database db(test::database_location(dir / "a.db"));
+      RunDatabase db(test::database_location(dir / "a.db"));
       db.save_pmm({sample_record()});
     }
     sqlite3* raw = nullptr;
@@ -181,7 +181,7 @@ TEST(PmmStore, DamagedValuesAreRefusedNamingTheTableRowAndColumn) {
               SQLITE_OK)
         << sql;
     sqlite3_close(raw);
-    Database db(test::database_location(dir / "a.db"), Database::OpenMode::ReadOnly);
+    RunDatabase db(test::database_location(dir / "a.db"), RunDatabase::OpenMode::ReadOnly);
     test::expect_input_error([&] { db.pmm_records(); }, expected);
   }
 }

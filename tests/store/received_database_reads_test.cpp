@@ -38,7 +38,7 @@ ImportedRun make_run(double u, double current_v, double x) {
 }
 
 /// Three runs of hull, and a fit that lists them all.
-void fill(Database& db) {
+void fill(RunDatabase& db) {
   db.import({test::one_run_batch(1, make_run(0.1, 0.05, -1.0)), test::one_run_batch(2, make_run(0.2, 0.05, -4.0)),
              test::one_run_batch(3, make_run(0.3, 0.05, -9.0))},
             ConflictPolicy::Error);
@@ -61,7 +61,7 @@ void tamper(const std::filesystem::path& path, const std::string& sql) {
 }
 
 std::int64_t run_id_at(const std::filesystem::path& path, double u) {
-  Database db(test::database_location(path), Database::OpenMode::ReadOnly);
+  RunDatabase db(test::database_location(path), RunDatabase::OpenMode::ReadOnly);
   for (const auto& run : db.runs())
     if (run.key.nu_b[0] == u) return run.id;
   throw std::runtime_error("no run at that u");
@@ -73,20 +73,20 @@ std::int64_t run_id_at(const std::filesystem::path& path, double u) {
 TEST(ReceivedDatabaseReads, ARunWhoseKeyColumnDisagreesWithItsDisturbancesIsRefusedAndMergesNothing) {
   TempDir dir;
   {
-    Database shard(test::database_location(dir / "shard.db"));
+    RunDatabase shard(test::database_location(dir / "shard.db"));
     fill(shard);
   }
   const std::int64_t tampered = run_id_at(dir / "shard.db", 0.2);
   tamper(dir / "shard.db", "UPDATE run SET u = 0.1, disturbance_key = 'junk' WHERE id = " + std::to_string(tampered));
   const std::string where = "table 'run', row " + std::to_string(tampered);
   {
-    Database target(test::database_location(dir / "into.db"));
+    RunDatabase target(test::database_location(dir / "into.db"));
     target.import({test::one_run_batch(9, make_run(0.5, 0.0, -25.0))}, ConflictPolicy::Error);
   }
   const std::string rows = test::dump_database(dir / "into.db");
   const std::string bytes = test::on_postgresql() ? "" : test::read_bytes(dir / "into.db");
   {
-    Database target(test::database_location(dir / "into.db"), Database::OpenMode::MustExist);
+    RunDatabase target(test::database_location(dir / "into.db"), RunDatabase::OpenMode::MustExist);
     test::expect_input_error(
         [&] { target.merge({test::database_location(dir / "shard.db")}); },
         {test::database_display(dir / "shard.db"), where, "disturbance_key", "'junk'", "'current_v=0.05'"});
@@ -94,7 +94,7 @@ TEST(ReceivedDatabaseReads, ARunWhoseKeyColumnDisagreesWithItsDisturbancesIsRefu
   EXPECT_EQ(test::dump_database(dir / "into.db"), rows);
   if (!test::on_postgresql()) EXPECT_EQ(test::read_bytes(dir / "into.db"), bytes);
   // Every reader refuses it the same way.
-  Database shard(test::database_location(dir / "shard.db"), Database::OpenMode::ReadOnly);
+  RunDatabase shard(test::database_location(dir / "shard.db"), RunDatabase::OpenMode::ReadOnly);
   test::expect_input_error([&] { shard.runs(); }, {where, "disturbance_key"});
 }
 
@@ -102,7 +102,7 @@ TEST(ReceivedDatabaseReads, ADisturbanceNamedAsAVelocityComponentOrNotFiniteIsRe
   HYDROCOEF_SQLITE_FILE_ONLY("a REAL column holding an infinity, which PostgreSQL's CHECK-free double takes too");
   TempDir dir;
   {
-    Database db(dir / "a.db");
+    RunDatabase db(dir / "a.db");
     fill(db);
   }
   const std::int64_t id = run_id_at(dir / "a.db", 0.3);
@@ -110,12 +110,12 @@ TEST(ReceivedDatabaseReads, ADisturbanceNamedAsAVelocityComponentOrNotFiniteIsRe
   const auto copy = dir / "b.db";
   std::filesystem::copy_file(dir / "a.db", copy);
   tamper(copy, "UPDATE run_disturbance SET name = 'u' WHERE run_id = " + std::to_string(id));
-  test::expect_input_error([&] { Database(copy, Database::OpenMode::ReadOnly).runs(); },
+  test::expect_input_error([&] { RunDatabase(copy, RunDatabase::OpenMode::ReadOnly).runs(); },
                            {row, "column 'name'", "not a velocity component"});
   std::filesystem::remove(copy);
   std::filesystem::copy_file(dir / "a.db", copy);
   tamper(copy, "UPDATE run_disturbance SET value = 1e999 WHERE run_id = " + std::to_string(id));
-  test::expect_input_error([&] { Database(copy, Database::OpenMode::ReadOnly).runs(); },
+  test::expect_input_error([&] { RunDatabase(copy, RunDatabase::OpenMode::ReadOnly).runs(); },
                            {row, "column 'value'", "a finite number"});
 }
 
@@ -124,14 +124,14 @@ TEST(ReceivedDatabaseReads, ADisturbanceNamedAsAVelocityComponentOrNotFiniteIsRe
 /// it; then copies the database and its -wal (not its -shm) to `copy`.
 void copy_with_committed_wal(const std::filesystem::path& path, const std::filesystem::path& copy) {
   {
-    Database db(path);
+    RunDatabase db(path);
     fill(db);
   }
   sqlite3* reader = nullptr;
   ASSERT_EQ(sqlite3_open(path.c_str(), &reader), SQLITE_OK);
   ASSERT_EQ(sqlite3_exec(reader, "SELECT count(*) FROM run", nullptr, nullptr, nullptr), SQLITE_OK);
   {
-    Database db(path);
+    RunDatabase db(path);
     db.import({test::one_run_batch(7, make_run(0.4, 0.05, -16.0))}, ConflictPolicy::Error);
   }
   ASSERT_GT(std::filesystem::file_size(path.string() + "-wal"), 0u);
@@ -158,13 +158,13 @@ TEST(ReceivedDatabaseReads, AWalFileThatCannotBeReadIsRefusedNotIgnored) {
   copy_with_committed_wal(dir / "runs.db", copy);
   block_shm(copy);
   const std::string bytes = test::read_bytes(copy), wal = test::read_bytes(copy.string() + "-wal");
-  test::expect_input_error([&] { Database db(copy, Database::OpenMode::ReadOnly); },
+  test::expect_input_error([&] { RunDatabase db(copy, RunDatabase::OpenMode::ReadOnly); },
                            {copy.string(), "runs.db-wal", "cannot be read here", "wal_checkpoint(TRUNCATE)"});
   EXPECT_EQ(test::read_bytes(copy), bytes);
   EXPECT_EQ(test::read_bytes(copy.string() + "-wal"), wal);
   // Where the -shm file can be made, every run is read.
   std::filesystem::remove(copy.string() + "-shm");
-  Database db(copy, Database::OpenMode::ReadOnly);
+  RunDatabase db(copy, RunDatabase::OpenMode::ReadOnly);
   EXPECT_EQ(db.runs().size(), 4u);
 }
 
@@ -173,12 +173,12 @@ TEST(ReceivedDatabaseReads, AnEmptyWalFileBesideAReadOnlyShareIsNoObstacle) {
   HYDROCOEF_SQLITE_FILE_ONLY("SQLite's WAL and -shm files");
   TempDir dir;
   {
-    Database db(dir / "runs.db");
+    RunDatabase db(dir / "runs.db");
     fill(db);
   }
   test::write_bytes(dir / "runs.db-wal", "");
   block_shm(dir / "runs.db");
-  Database db(dir / "runs.db", Database::OpenMode::ReadOnly);
+  RunDatabase db(dir / "runs.db", RunDatabase::OpenMode::ReadOnly);
   EXPECT_EQ(db.runs().size(), 3u);
 }
 
@@ -189,16 +189,16 @@ TEST(ReceivedDatabaseReads, AnOlderDatabaseIsReadAndMergedWithoutBeingWritten) {
       "a database of an older schema version (PostgreSQL databases begin at the version that brought PostgreSQL)");
   TempDir dir;
   {
-    Database db(dir / "current.db");
+    RunDatabase db(dir / "current.db");
     fill(db);
   }
   const auto old = dir / "v11.db";
   test::copy_as_schema_version(dir / "current.db", old, 11);
   const std::string bytes = test::read_bytes(old);
   {
-    Database db(old, Database::OpenMode::ReadOnly);
+    RunDatabase db(old, RunDatabase::OpenMode::ReadOnly);
     EXPECT_EQ(db.opened_at_version(), 11);
-    EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+    EXPECT_EQ(db.schema_version(), RunDatabase::latest_schema_version());
     EXPECT_EQ(db.runs().size(), 3u);
     EXPECT_EQ(db.fits().size(), 1u);
     // The copy takes no write: it would be lost when it closes.
@@ -207,7 +207,7 @@ TEST(ReceivedDatabaseReads, AnOlderDatabaseIsReadAndMergedWithoutBeingWritten) {
   EXPECT_EQ(test::read_bytes(old), bytes);
   EXPECT_FALSE(std::filesystem::exists(old.string() + "-wal"));
   {
-    Database into(dir / "into.db");
+    RunDatabase into(dir / "into.db");
     const auto outcomes = into.merge({old.string()});
     ASSERT_EQ(outcomes.size(), 1u);
     EXPECT_EQ(outcomes[0].runs_created, 3u);
@@ -217,10 +217,10 @@ TEST(ReceivedDatabaseReads, AnOlderDatabaseIsReadAndMergedWithoutBeingWritten) {
   EXPECT_EQ(test::read_bytes(old), bytes);
   // A writing opening upgrades it in place.
   {
-    Database db(old, Database::OpenMode::MustExist);
+    RunDatabase db(old, RunDatabase::OpenMode::MustExist);
     EXPECT_EQ(db.opened_at_version(), 11);
   }
-  EXPECT_EQ(Database(old, Database::OpenMode::ReadOnly).opened_at_version(), Database::latest_schema_version());
+  EXPECT_EQ(RunDatabase(old, RunDatabase::OpenMode::ReadOnly).opened_at_version(), RunDatabase::latest_schema_version());
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ FitRecord a_fit(const std::string& name, std::int64_t run_id) {
 std::filesystem::path good_database(const TempDir& dir) {
   const auto path = dir / "good.db";
   {
-    Database db(path);
+    RunDatabase db(path);
     db.import({one_run_batch()}, ConflictPolicy::Error);
     db.save_fit(a_fit("sphere:X(u)", db.runs().front().id));
   }
@@ -92,10 +92,10 @@ std::filesystem::path good_database(const TempDir& dir) {
 // InputError containing every piece, and leave the file's bytes unchanged.
 void expect_refused(const std::filesystem::path& path, const std::vector<std::string>& pieces, bool on_read = false) {
   const std::string before = file_bytes_hash(path);
-  for (const auto mode : {Database::OpenMode::ReadOnly, Database::OpenMode::MustExist}) {
+  for (const auto mode : {RunDatabase::OpenMode::ReadOnly, RunDatabase::OpenMode::MustExist}) {
     bool opened = false;
     try {
-      Database db(path, mode);
+      RunDatabase db(path, mode);
       opened = true;
       if (!on_read) FAIL() << "opened";
       (void)db.runs();
@@ -110,7 +110,7 @@ void expect_refused(const std::filesystem::path& path, const std::vector<std::st
     }
     // A reader never writes; a writer refused at open writes nothing (a
     // writer that opened switches the file to WAL mode: other bytes).
-    if (mode == Database::OpenMode::ReadOnly || !opened) {
+    if (mode == RunDatabase::OpenMode::ReadOnly || !opened) {
       EXPECT_EQ(file_bytes_hash(path), before);
     }
   }
@@ -140,13 +140,13 @@ TEST(ReceivedDatabase, AForeignTriggerViewOrIndexIsRefusedAndNeverRuns) {
   exec(path, "CREATE TRIGGER evil AFTER INSERT ON run_force BEGIN DELETE FROM fit; END;");
   expect_refused(path, {"trigger 'evil' on table 'run_force'", "does not create"});
   // Not even a writer gets through, so the trigger never fires.
-  EXPECT_THROW(Database(path).import({one_run_batch("other", 'b')}, ConflictPolicy::Error), InputError);
+  EXPECT_THROW(RunDatabase(path).import({one_run_batch("other", 'b')}, ConflictPolicy::Error), InputError);
   exec(path, "DROP TRIGGER evil; CREATE VIEW v AS SELECT * FROM run;");
   expect_refused(path, {"view 'v'"});
   exec(path, "DROP VIEW v; CREATE INDEX run_u ON run(u);");
   expect_refused(path, {"index 'run_u'"});
   exec(path, "DROP INDEX run_u;");
-  EXPECT_NO_THROW(Database(path, Database::OpenMode::ReadOnly).fits());
+  EXPECT_NO_THROW(RunDatabase(path, RunDatabase::OpenMode::ReadOnly).fits());
 }
 
 TEST(ReceivedDatabase, ADroppedOrAddedColumnOrTableIsRefused) {
@@ -193,7 +193,7 @@ TEST(ReceivedDatabase, NamesThatBreakTheNameRuleAreRefusedOnRead) {
 
 TEST(ReceivedDatabase, TheLibraryRefusesToStoreNamesThatBreakTheRule) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
+  RunDatabase db(test::database_location(dir / "db"));
   db.import({one_run_batch()}, ConflictPolicy::Error);
   const auto before = test::dump_database(dir / "db");
   EXPECT_THROW(db.import({one_run_batch("a\nb", 'b')}, ConflictPolicy::Error), InputError);
@@ -226,8 +226,8 @@ TEST(ReceivedDatabase, AVersion3DatabaseMigratesKeepingItsFitsAndR2BecomesOption
   ASSERT_EQ(sqlite3_exec(raw, rows, nullptr, nullptr, nullptr), SQLITE_OK);
   sqlite3_close(raw);
 
-  Database db(path);
-  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+  RunDatabase db(path);
+  EXPECT_EQ(db.schema_version(), RunDatabase::latest_schema_version());
   const auto fits = db.fits();
   ASSERT_EQ(fits.size(), 1u);
   EXPECT_EQ(fits[0].name, "sphere:X(u)");
@@ -243,7 +243,7 @@ TEST(ReceivedDatabase, AVersion3DatabaseMigratesKeepingItsFitsAndR2BecomesOption
     }
   }
   // The migrated schema is exactly what a new database gets.
-  Database fresh(test::database_location(dir / "fresh.db"));
+  RunDatabase fresh(test::database_location(dir / "fresh.db"));
   store::Connection a(path.string(), store::Access::ReadOnly);
   store::Connection b((dir / "fresh.db").string(), store::Access::ReadOnly);
   EXPECT_FALSE(store::schema_difference(store::schema_of(b), store::schema_of(a)).has_value());
@@ -254,7 +254,7 @@ TEST(ReceivedDatabase, ReadOnlyOpeningNeverWritesAndReadsWhereNoShmFileCanBeMade
   TempDir dir;
   const auto path = dir / "wal.db";
   {
-    Database db(path);
+    RunDatabase db(path);
     db.import({one_run_batch()}, ConflictPolicy::Error);
   }
   // The WAL folded in, WAL mode kept in the file; then nothing may be
@@ -264,7 +264,7 @@ TEST(ReceivedDatabase, ReadOnlyOpeningNeverWritesAndReadsWhereNoShmFileCanBeMade
   std::filesystem::remove(dir / "wal.db-shm");
   std::filesystem::create_directory(dir / "wal.db-shm");
   const std::string before = file_bytes_hash(path);
-  Database db(path, Database::OpenMode::ReadOnly);
+  RunDatabase db(path, RunDatabase::OpenMode::ReadOnly);
   EXPECT_TRUE(db.read_only());
   ASSERT_EQ(db.runs().size(), 1u);
   EXPECT_EQ(db.runs().front().tau_b[0]->value.total, -1.5);
@@ -275,7 +275,7 @@ TEST(ReceivedDatabase, AnEmptyFileIsNotReadAsADatabaseAndStaysEmpty) {
   TempDir dir;
   { std::ofstream(dir / "empty.db"); }
   try {
-    Database db(test::database_location(dir / "empty.db"), Database::OpenMode::ReadOnly);
+    RunDatabase db(test::database_location(dir / "empty.db"), RunDatabase::OpenMode::ReadOnly);
     FAIL() << "opened";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("empty database"), std::string::npos) << e.what();
@@ -285,7 +285,7 @@ TEST(ReceivedDatabase, AnEmptyFileIsNotReadAsADatabaseAndStaysEmpty) {
 
 TEST(ReceivedDatabase, SeveralFitsAreStoredAllOrNone) {
   TempDir dir;
-  Database db(test::database_location(dir / "db"));
+  RunDatabase db(test::database_location(dir / "db"));
   db.import({one_run_batch()}, ConflictPolicy::Error);
   const auto run = db.runs().front().id;
   FitRecord bad = a_fit("second", run);

@@ -63,7 +63,7 @@ void expect_same(const HistoryTrace& a, const HistoryTrace& b) {
   }
 }
 
-std::int64_t only_run(Database& database) {
+std::int64_t only_run(RunDatabase& database) {
   const auto runs = database.runs();
   EXPECT_EQ(runs.size(), 1u);
   return runs.empty() ? 0 : runs.front().id;
@@ -73,18 +73,18 @@ TEST(RunTrace, ReadsBackToTheBitAndTravelsWithMergeAndCopy) {
   TempDir dir;
   const HistoryTrace trace = make_trace(2000);
   {
-    Database shard(dir / "shard.db");
-    shard.import({test::one_run_batch(1, averaged_run(0.2, trace))}, ImportOptions{});
+    RunDatabase shard(dir / "shard.db");
+    shard.import({test::one_run_batch(1, averaged_run(0.2, trace))}, ImportPolicy{});
     const auto stored = shard.run_trace(only_run(shard));
     ASSERT_TRUE(stored);
     expect_same(*stored, trace);
   }
-  Database merged(dir / "merged.db");
+  RunDatabase merged(dir / "merged.db");
   merged.merge({(dir / "shard.db").string()});
   const auto after_merge = merged.run_trace(only_run(merged));
   ASSERT_TRUE(after_merge);
   expect_same(*after_merge, trace);
-  Database copy(dir / "copy.db");
+  RunDatabase copy(dir / "copy.db");
   copy.copy_from(merged);
   const auto after_copy = copy.run_trace(only_run(copy));
   ASSERT_TRUE(after_copy);
@@ -99,8 +99,8 @@ TEST(RunTrace, ReadsBackToTheBitAndTravelsWithMergeAndCopy) {
 
 TEST(RunTrace, AComponentWrittenWithoutAHistoryTakesTheTraceAway) {
   TempDir dir;
-  Database database(dir / "runs.db");
-  database.import({test::one_run_batch(1, averaged_run(0.2, make_trace(100)))}, ImportOptions{});
+  RunDatabase database(dir / "runs.db");
+  database.import({test::one_run_batch(1, averaged_run(0.2, make_trace(100)))}, ImportPolicy{});
   const std::int64_t id = only_run(database);
   ASSERT_TRUE(database.run_trace(id));
   // Y of the same run from a table: the history no longer tells the run's story.
@@ -108,7 +108,7 @@ TEST(RunTrace, AComponentWrittenWithoutAHistoryTakesTheTraceAway) {
   table.key.body = "ball";
   table.key.nu_b[0] = 0.2;
   table.tau_b[1] = ForceComponent{0.0, std::nullopt, std::nullopt};
-  database.import({test::one_run_batch(2, table)}, ImportOptions{});
+  database.import({test::one_run_batch(2, table)}, ImportPolicy{});
   EXPECT_FALSE(database.run_trace(id));
   // A run from a table never has one.
   database.import({test::one_run_batch(3,
@@ -119,7 +119,7 @@ TEST(RunTrace, AComponentWrittenWithoutAHistoryTakesTheTraceAway) {
                                          r.tau_b[0] = ForceComponent{-2.0, std::nullopt, std::nullopt};
                                          return r;
                                        }())},
-                  ImportOptions{});
+                  ImportPolicy{});
   for (const auto& run : database.runs())
     if (run.key.nu_b[0] == 0.4) EXPECT_FALSE(database.run_trace(run.id));
 }
@@ -131,15 +131,15 @@ TEST(RunTrace, ADamagedTraceIsRefusedNamingItsTableAndRow) {
     std::filesystem::remove(dir / "runs.db");
     std::int64_t id = 0;
     {
-      Database database(dir / "runs.db");
-      database.import({test::one_run_batch(1, averaged_run(0.2, make_trace(300)))}, ImportOptions{});
+      RunDatabase database(dir / "runs.db");
+      database.import({test::one_run_batch(1, averaged_run(0.2, make_trace(300)))}, ImportPolicy{});
       id = only_run(database);
     }
     {
       store::Connection raw((dir / "runs.db").string(), store::Access::ReadWrite);
       raw.execute(sql);
     }
-    Database database(dir / "runs.db", Database::OpenMode::ReadOnly);
+    RunDatabase database(dir / "runs.db", RunDatabase::OpenMode::ReadOnly);
     expect_input_error([&] { (void)database.run_trace(id); },
                        {"table 'run_force_trace', row " + std::to_string(id), expected});
   };

@@ -1,5 +1,5 @@
 // The store's promises on both backends (src/store/connection.hpp): the same
-// Database calls give the same rows on an SQLite file and on a PostgreSQL
+// RunDatabase calls give the same rows on an SQLite file and on a PostgreSQL
 // server (started by scripts/postgresql-test-server.sh): migrations, exact
 // doubles and blobs, one transaction per write, no-op re-imports, refused
 // conflicts that change nothing, staleness triggers, deletes, forced-
@@ -48,19 +48,19 @@ class StoreBackends : public testing::TestWithParam<store::Backend> {
 TEST_P(StoreBackends, NewDatabaseGetsEveryMigrationAndOpeningAgainChangesNothing) {
   HYDROCOEF_NEED_DATABASE(db_);
   {
-    Database db(db_.location());
-    EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+    RunDatabase db(db_.location());
+    EXPECT_EQ(db.schema_version(), RunDatabase::latest_schema_version());
     EXPECT_EQ(db.backend(), GetParam());
   }
   const std::string before = db_.dump();
-  Database again(db_.location());
-  EXPECT_EQ(again.schema_version(), Database::latest_schema_version());
+  RunDatabase again(db_.location());
+  EXPECT_EQ(again.schema_version(), RunDatabase::latest_schema_version());
   EXPECT_EQ(db_.dump(), before);
 }
 
 TEST_P(StoreBackends, DoublesComeBackBitForBit) {
   HYDROCOEF_NEED_DATABASE(db_);
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   // Values whose shortest decimal form needs 17 digits, subnormals, extremes.
   const std::vector<double> values = {
       0.1 + 0.2,           1.0 / 3.0,    4.9406564584124654e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
@@ -86,7 +86,7 @@ TEST_P(StoreBackends, DoublesComeBackBitForBit) {
 
 TEST_P(StoreBackends, ReimportIsANoOpAndAConflictChangesNothing) {
   HYDROCOEF_NEED_DATABASE(db_);
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   const ImportBatch first = test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5, 3));
   const auto outcome = db.import({first}, ConflictPolicy::Error);
   ASSERT_EQ(outcome.size(), 1u);
@@ -114,7 +114,7 @@ TEST_P(StoreBackends, ReimportIsANoOpAndAConflictChangesNothing) {
 
 TEST_P(StoreBackends, FitsAndSurfacesBecomeStaleWhenTheirForcesChange) {
   HYDROCOEF_NEED_DATABASE(db_);
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
   const auto run_id = db.runs().at(0).id;
 
@@ -134,7 +134,7 @@ TEST_P(StoreBackends, FitsAndSurfacesBecomeStaleWhenTheirForcesChange) {
   db.save_fit(fit);
   EXPECT_THROW(db.save_fit(fit), InputError);  // the name is taken
   fit.coefficients[0].value = -49.0;
-  db.save_fit(fit, Database::NameTaken::Replace);
+  db.save_fit(fit, RunDatabase::NameTaken::Replace);
 
   SurfaceRecord surface;
   surface.name = "X-surface";
@@ -173,7 +173,7 @@ TEST_P(StoreBackends, FitsAndSurfacesBecomeStaleWhenTheirForcesChange) {
 
 TEST_P(StoreBackends, DeletingRunsRemovesTheirImportsAndStalesTheirFits) {
   HYDROCOEF_NEED_DATABASE(db_);
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5)),
              test::one_run_batch(2, make_run({0.9, 0, 0, 0, 0, 0}, 0, -40.0))},
             ConflictPolicy::Error);
@@ -191,7 +191,7 @@ TEST_P(StoreBackends, DeletingRunsRemovesTheirImportsAndStalesTheirFits) {
 
 TEST_P(StoreBackends, ForcedOscillationRecordsComeBackWithTheirHistory) {
   HYDROCOEF_NEED_DATABASE(db_);
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   PmmRecord r;
   r.body = "ball";
   r.dof = 0;
@@ -224,13 +224,13 @@ TEST_P(StoreBackends, ForcedOscillationRecordsComeBackWithTheirHistory) {
 
 TEST_P(StoreBackends, ASchemaChangedByAnotherProgramIsRefused) {
   HYDROCOEF_NEED_DATABASE(db_);
-  { Database db(db_.location()); }
+  { RunDatabase db(db_.location()); }
   {
     auto connection = db_.connect();
     connection.execute("ALTER TABLE run ADD COLUMN note TEXT");
   }
   try {
-    Database db(db_.location());
+    RunDatabase db(db_.location());
     FAIL() << "a database with an added column was opened";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("run"), std::string::npos) << e.what();
@@ -240,15 +240,15 @@ TEST_P(StoreBackends, ASchemaChangedByAnotherProgramIsRefused) {
   // or calling a function of another schema (someone else's code), is
   // refused too.
   db_.connect().execute("ALTER TABLE run DROP COLUMN note");
-  { Database db(db_.location()); }
+  { RunDatabase db(db_.location()); }
   db_.connect().execute("ALTER TABLE run_force DISABLE TRIGGER run_force_insert_stales_fits");
-  test::expect_input_error([&] { Database db(db_.location()); }, {"run_force_insert_stales_fits", "(disabled)"});
+  test::expect_input_error([&] { RunDatabase db(db_.location()); }, {"run_force_insert_stales_fits", "(disabled)"});
   db_.connect().execute(
       "ALTER TABLE run_force ENABLE TRIGGER run_force_insert_stales_fits; CREATE SCHEMA IF NOT EXISTS "
       "hc_elsewhere; CREATE OR REPLACE FUNCTION hc_elsewhere.f() RETURNS trigger LANGUAGE plpgsql AS $$ BEGIN "
       "RETURN NEW; END $$; DROP TRIGGER run_force_insert_stales_fits ON run_force; CREATE TRIGGER "
       "run_force_insert_stales_fits AFTER INSERT ON run_force FOR EACH ROW EXECUTE FUNCTION hc_elsewhere.f()");
-  test::expect_input_error([&] { Database db(db_.location()); }, {"another schema"});
+  test::expect_input_error([&] { RunDatabase db(db_.location()); }, {"another schema"});
   db_.connect().execute("DROP SCHEMA hc_elsewhere CASCADE");
 }
 
@@ -291,7 +291,7 @@ TEST_P(StoreBackends, AKeyIndexOrConstraintChangedByAnotherProgramIsRefused) {
   for (const Change& change : changes) {
     SCOPED_TRACE(change.sql);
     TestDatabase db(GetParam());
-    { Database created(db.location()); }
+    { RunDatabase created(db.location()); }
     auto connection = db.connect();
     // Constraint names PostgreSQL chose: %kind(table)% is the table's first of that kind.
     std::string sql = change.sql;
@@ -309,21 +309,21 @@ TEST_P(StoreBackends, AKeyIndexOrConstraintChangedByAnotherProgramIsRefused) {
     }
     connection.execute(sql);
     const std::string before = db.dump();
-    test::expect_input_error([&] { Database opened(db.location()); }, change.expected);
+    test::expect_input_error([&] { RunDatabase opened(db.location()); }, change.expected);
     EXPECT_EQ(db.dump(), before);
   }
 }
 
 TEST_P(StoreBackends, ASecondWriterWaitsThenSaysTheDatabaseIsBusy) {
   HYDROCOEF_NEED_DATABASE(db_);
-  { Database db(db_.location()); }
+  { RunDatabase db(db_.location()); }
   auto holder = db_.connect();
   holder.begin_write();
   holder.execute("INSERT INTO body(name) VALUES ('held')");
   setenv("HYDROCOEF_DB_TIMEOUT", "1", 1);
   const auto start = std::chrono::steady_clock::now();
   try {
-    Database db(db_.location());
+    RunDatabase db(db_.location());
     db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
     ADD_FAILURE() << "an import ran beside another writer's transaction";
   } catch (const InputError& e) {
@@ -333,7 +333,7 @@ TEST_P(StoreBackends, ASecondWriterWaitsThenSaysTheDatabaseIsBusy) {
   EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(900));
   holder.rollback();
   // Once the other writer has finished, the import goes through.
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   db.import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
   EXPECT_EQ(db.runs().size(), 1u);
   EXPECT_EQ(db.bodies(), std::vector<std::string>{"sphere"});
@@ -346,7 +346,7 @@ TEST_P(StoreBackends, TwoProcessesCreatingOneDatabaseAtOnceBothSucceed) {
   for (int i = 0; i < 4; ++i)
     threads.emplace_back([&, i] {
       try {
-        Database db(db_.location());
+        RunDatabase db(db_.location());
         db.import({test::one_run_batch(i + 1, make_run({0.1 * (i + 1), 0, 0, 0, 0, 0}, 0, 1.0))},
                   ConflictPolicy::Error);
       } catch (const std::exception& e) {
@@ -356,7 +356,7 @@ TEST_P(StoreBackends, TwoProcessesCreatingOneDatabaseAtOnceBothSucceed) {
     });
   for (auto& t : threads) t.join();
   EXPECT_EQ(failures.load(), 0);
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   EXPECT_EQ(db.runs().size(), 4u);
 }
 
@@ -389,15 +389,15 @@ TEST_P(StoreBackends, MergingShardsEqualsImportingTheirFilesAndTwiceAddsNothing)
   std::vector<std::string> shards;
   for (std::size_t i = 0; i < batches.size(); ++i) {
     shards.push_back((db_.dir() / ("shard-" + std::to_string(i) + ".db")).string());
-    Database shard(shards.back());
+    RunDatabase shard(shards.back());
     shard.import({batches[i]}, ConflictPolicy::Error);
   }
   TestDatabase direct(store::Backend::SQLite);
   {
-    Database db(direct.location());
+    RunDatabase db(direct.location());
     for (const auto& batch : batches) db.import({batch}, ConflictPolicy::Error);
   }
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   std::size_t seen = 0;
   const auto outcomes = db.merge(shards, [&](std::size_t done, std::size_t total) {
     EXPECT_EQ(done, ++seen);
@@ -414,7 +414,7 @@ TEST_P(StoreBackends, MergingShardsEqualsImportingTheirFilesAndTwiceAddsNothing)
   ASSERT_TRUE(run && run->tau_b[0] && run->tau_b[0]->statistics);
   EXPECT_EQ(run->tau_b[0]->source_line, 9u);
   EXPECT_EQ(db.import_record(run->tau_b[0]->import_id)->imported_at,
-            Database(shards[7], Database::OpenMode::ReadOnly).import_record(1)->imported_at);
+            RunDatabase(shards[7], RunDatabase::OpenMode::ReadOnly).import_record(1)->imported_at);
 
   const std::string before = db_.dump();
   const auto again = db.merge(shards);
@@ -428,10 +428,10 @@ TEST_P(StoreBackends, MergingShardsEqualsImportingTheirFilesAndTwiceAddsNothing)
 TEST_P(StoreBackends, AMergeConflictIsRefusedAndNothingOfAnyShardIsMerged) {
   HYDROCOEF_NEED_DATABASE(db_);
   const std::string good = (db_.dir() / "good.db").string(), bad = (db_.dir() / "bad.db").string();
-  Database(good).import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
+  RunDatabase(good).import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
   // Another file with X of the same run: a conflict once both are merged.
-  Database(bad).import({test::one_run_batch(2, make_run({0.5, 0, 0, 0, 0, 0}, 0, -13.0))}, ConflictPolicy::Error);
-  Database db(db_.location());
+  RunDatabase(bad).import({test::one_run_batch(2, make_run({0.5, 0, 0, 0, 0, 0}, 0, -13.0))}, ConflictPolicy::Error);
+  RunDatabase db(db_.location());
   db.import({test::one_run_batch(3, make_run({0.9, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
   const std::string before = db_.dump();
   try {
@@ -455,7 +455,7 @@ TEST_P(StoreBackends, AMergeConflictIsRefusedAndNothingOfAnyShardIsMerged) {
   fit.coefficients = {{"u", -25.0, std::nullopt}};
   db.save_fit(fit);
   fit.coefficients[0].value = -26.0;
-  Database(good).save_fit(fit);
+  RunDatabase(good).save_fit(fit);
   const std::string with_fit = db_.dump();
   EXPECT_THROW(db.merge({good}), InputError);
   EXPECT_EQ(db_.dump(), with_fit);
@@ -464,8 +464,8 @@ TEST_P(StoreBackends, AMergeConflictIsRefusedAndNothingOfAnyShardIsMerged) {
 TEST_P(StoreBackends, AShardWithATextItCannotHoldOrABrokenLinkIsRefusedWhole) {
   HYDROCOEF_NEED_DATABASE(db_);
   const std::string shard = (db_.dir() / "shard.db").string();
-  Database(shard).import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
-  Database db(db_.location());
+  RunDatabase(shard).import({test::one_run_batch(1, make_run({0.5, 0, 0, 0, 0, 0}, 0, -12.5))}, ConflictPolicy::Error);
+  RunDatabase db(db_.location());
   const std::string before = db_.dump();
   {
     // A settings key with a NUL byte (SQLite holds it; PostgreSQL cannot).
@@ -499,12 +499,12 @@ TEST_P(StoreBackends, ARunsSurfaceIntegralsFromAnotherFileAreAMergeConflict) {
     run.surface = g;
     return test::one_run_batch(file, run);
   };
-  Database db(db_.location());
+  RunDatabase db(db_.location());
   db.import({with_surface(1, 0, -2.0, 0.28)}, ConflictPolicy::Error);
   // The shard's file gives another component of the same run (no force
   // conflict) with other surface integrals.
   const std::string shard = (db_.dir() / "shard.db").string();
-  Database(shard).import({with_surface(2, 1, 0.5, 0.31)}, ConflictPolicy::Error);
+  RunDatabase(shard).import({with_surface(2, 1, 0.5, 0.31)}, ConflictPolicy::Error);
   const std::string before = db_.dump();
   test::expect_input_error([&] { db.merge({shard}); }, {"shard.db", "surface integrals from another file"});
   EXPECT_EQ(db_.dump(), before);
@@ -513,13 +513,13 @@ TEST_P(StoreBackends, ARunsSurfaceIntegralsFromAnotherFileAreAMergeConflict) {
 TEST_P(StoreBackends, ACopyOfASourceWithAValueOfTheWrongTypeIsRefusedBeforeARowIsCopied) {
   HYDROCOEF_NEED_DATABASE(db_);
   TestDatabase original(store::Backend::SQLite);
-  Database(original.location()).import(sweep_batches(), ConflictPolicy::Error);
+  RunDatabase(original.location()).import(sweep_batches(), ConflictPolicy::Error);
   original.connect().execute("UPDATE run SET u = 'fast' WHERE id = 2");
-  { Database target(db_.location()); }
+  { RunDatabase target(db_.location()); }
   const std::string before = db_.dump();
   {
-    Database source(original.location(), Database::OpenMode::ReadOnly);
-    Database target(db_.location());
+    RunDatabase source(original.location(), RunDatabase::OpenMode::ReadOnly);
+    RunDatabase target(db_.location());
     test::expect_input_error([&] { target.copy_from(source); }, {"table 'run', row 2, column 'u'", "'fast'"});
   }
   EXPECT_EQ(db_.dump(), before);
@@ -533,14 +533,14 @@ TEST_P(StoreBackends, ASearchPathNamingNoSchemaIsRefusedInOneLine) {
     GTEST_SKIP() << "no PostgreSQL test server";
   }
   const std::string url = test::url_with_schema(*server, "no_such_schema");
-  test::expect_input_error([&] { Database db(url); }, {"no schema that exists", "CREATE SCHEMA"});
+  test::expect_input_error([&] { RunDatabase db(url); }, {"no schema that exists", "CREATE SCHEMA"});
 }
 
 TEST_P(StoreBackends, ACopyAndACopyBackHoldTheOriginalsRows) {
   HYDROCOEF_NEED_DATABASE(db_);
   TestDatabase original(store::Backend::SQLite);
   {
-    Database db(original.location());
+    RunDatabase db(original.location());
     db.import(sweep_batches(), ConflictPolicy::Error);
     const auto runs = db.runs();
     db.delete_runs({runs.at(3).id});  // a gap in the ids
@@ -570,16 +570,16 @@ TEST_P(StoreBackends, ACopyAndACopyBackHoldTheOriginalsRows) {
   }
   const std::string rows = original.dump();
   {
-    Database source(original.location(), Database::OpenMode::ReadOnly);
-    Database target(db_.location());
+    RunDatabase source(original.location(), RunDatabase::OpenMode::ReadOnly);
+    RunDatabase target(db_.location());
     const auto copied = target.copy_from(source);
     EXPECT_FALSE(copied.empty());
   }
   EXPECT_EQ(db_.dump(), rows);
   TestDatabase back(store::Backend::SQLite);
   {
-    Database source(db_.location(), Database::OpenMode::ReadOnly);
-    Database target(back.location());
+    RunDatabase source(db_.location(), RunDatabase::OpenMode::ReadOnly);
+    RunDatabase target(back.location());
     target.copy_from(source);
     // Not into a database that holds data.
     EXPECT_THROW(target.copy_from(source), InputError);
@@ -587,7 +587,7 @@ TEST_P(StoreBackends, ACopyAndACopyBackHoldTheOriginalsRows) {
     target.import({test::one_run_batch(500, make_run({3, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
   }
   {
-    Database copy(db_.location());
+    RunDatabase copy(db_.location());
     copy.import({test::one_run_batch(500, make_run({3, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
   }
   EXPECT_EQ(back.dump(kTimes), db_.dump(kTimes));
@@ -611,14 +611,14 @@ TEST(PostgreSqlConnection, AServerThatDoesNotAnswerIsGivenUpAfterTheTimeout) {
   unsetenv("PGCONNECT_TIMEOUT");
   setenv("HYDROCOEF_DB_TIMEOUT", "1", 1);
   const auto start = std::chrono::steady_clock::now();
-  test::expect_input_error([&] { Database db(url); }, {"cannot connect to the PostgreSQL server", "timeout"});
+  test::expect_input_error([&] { RunDatabase db(url); }, {"cannot connect to the PostgreSQL server", "timeout"});
   const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_GE(waited, 1.5);
   EXPECT_LT(waited, 20.0);
   // The URL's own value is read after the default, so it wins (here: refused as not a number).
-  test::expect_input_error([&] { Database db(url + "?connect_timeout=soon"); }, {"connect_timeout", "soon"});
+  test::expect_input_error([&] { RunDatabase db(url + "?connect_timeout=soon"); }, {"connect_timeout", "soon"});
   setenv("PGCONNECT_TIMEOUT", "later", 1);
-  test::expect_input_error([&] { Database db(url); }, {"connect_timeout", "later"});
+  test::expect_input_error([&] { RunDatabase db(url); }, {"connect_timeout", "later"});
   unsetenv("PGCONNECT_TIMEOUT");
   unsetenv("HYDROCOEF_DB_TIMEOUT");
   close(listener);
@@ -672,13 +672,13 @@ TEST(PostgreSqlConnection, AFunctionPlantedOnTheSearchPathIsNeverCalled) {
                           ".calls VALUES ('hashtext'); SELECT 1 $$");
   TestDatabase source(store::Backend::SQLite);
   {
-    Database db(source.location());
+    RunDatabase db(source.location());
     db.import(sweep_batches(), ConflictPolicy::Error);
   }
   const std::string url = test::url_with_schema(*server, schemas.data() + "%2C" + evil);
   {
-    Database from(source.location(), Database::OpenMode::ReadOnly);
-    Database target(url);
+    RunDatabase from(source.location(), RunDatabase::OpenMode::ReadOnly);
+    RunDatabase target(url);
     EXPECT_FALSE(target.copy_from(from).empty());
     // A write after the copy: the next id comes after the copied ones.
     target.import({test::one_run_batch(500, make_run({3, 0, 0, 0, 0, 0}, 0, 1.0))}, ConflictPolicy::Error);
@@ -701,8 +701,8 @@ TEST(PostgreSqlConnection, ASessionThatSwitchesOffTriggersIsRefused) {
   }
   PlantedSchemas schemas(*server);
   const std::string url = test::url_with_schema(*server, schemas.data() + "%20-csession_replication_role%3Dreplica");
-  for (const auto mode : {Database::OpenMode::CreateIfMissing, Database::OpenMode::ReadOnly})
-    test::expect_input_error([&] { Database db(url, mode); },
+  for (const auto mode : {RunDatabase::OpenMode::CreateIfMissing, RunDatabase::OpenMode::ReadOnly})
+    test::expect_input_error([&] { RunDatabase db(url, mode); },
                              {"session_replication_role is 'replica'", "stale", "expected 'origin'"});
   // Nothing was made in the schema.
   auto admin = schemas.admin();
@@ -723,7 +723,7 @@ TEST(PostgreSqlConnection, AnOlderDatabaseIsRefusedByReadersAndUpgradedByAWriter
   }
   PlantedSchemas schemas(*server);
   const std::string url = test::url_with_schema(*server, schemas.data());
-  const int older = Database::latest_schema_version() - 1;
+  const int older = RunDatabase::latest_schema_version() - 1;
   {
     auto connection = store::Connection::postgresql(url, url, store::Access::ReadWrite);
     connection.execute("CREATE TABLE hydrocoef_schema (version BIGINT NOT NULL)");
@@ -732,7 +732,7 @@ TEST(PostgreSqlConnection, AnOlderDatabaseIsRefusedByReadersAndUpgradedByAWriter
           store::postgresql_migration(store::migrations()[static_cast<std::size_t>(i)].postgresql_sql()));
     connection.execute("INSERT INTO hydrocoef_schema VALUES (" + std::to_string(older) + ")");
   }
-  test::expect_input_error([&] { Database db(url, Database::OpenMode::ReadOnly); },
+  test::expect_input_error([&] { RunDatabase db(url, RunDatabase::OpenMode::ReadOnly); },
                            {"schema version " + std::to_string(older), "does not upgrade it", "migrate"});
   {
     auto admin = schemas.admin();
@@ -740,9 +740,9 @@ TEST(PostgreSqlConnection, AnOlderDatabaseIsRefusedByReadersAndUpgradedByAWriter
     ASSERT_TRUE(version.step());
     EXPECT_EQ(version.get_int(0), older);
   }
-  Database db(url, Database::OpenMode::MustExist);
+  RunDatabase db(url, RunDatabase::OpenMode::MustExist);
   EXPECT_EQ(db.opened_at_version(), older);
-  EXPECT_EQ(db.schema_version(), Database::latest_schema_version());
+  EXPECT_EQ(db.schema_version(), RunDatabase::latest_schema_version());
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, StoreBackends, testing::Values(store::Backend::SQLite, store::Backend::PostgreSQL),

@@ -1,6 +1,6 @@
 // What including the store costs its users: database.hpp (and the
 // connection.hpp it includes) leave both backends' C headers (<sqlite3.h>,
-// <libpq-fe.h>) to src/store's sources, so code that only uses a Database
+// <libpq-fe.h>) to src/store's sources, so code that only uses a RunDatabase
 // never sees SQLite's or libpq's C API. This file includes nothing else
 // before the store's header.
 #include "src/store/database.hpp"

@@ -6,7 +6,7 @@
 // "postgresql" for the second run that tests/CMakeLists.txt registers (tests
 // named "postgresql.*"), against the server in $HYDROCOEF_TEST_POSTGRESQL.
 // There a test's database file name (dir / "runs.db") stands for a schema of
-// its own on the server: database_location() gives what Database and --db
+// its own on the server: database_location() gives what RunDatabase and --db
 // take, run_cli() passes it for --db and for the default database, and
 // dump_database() dumps it. Tests about the SQLite file itself (its bytes,
 // its header, its WAL) say so with HYDROCOEF_SQLITE_FILE_ONLY.
@@ -95,7 +95,7 @@ class SchemaRegistry {
 
 }  // namespace detail
 
-/// What Database and --db take for the test database named `path`: the path
+/// What RunDatabase and --db take for the test database named `path`: the path
 /// itself on SQLite; on PostgreSQL the test server's URL with a search_path
 /// of the schema standing for the path.
 inline std::string database_location(const std::filesystem::path& path) {

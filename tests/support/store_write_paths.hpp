@@ -67,7 +67,7 @@ inline ImportBatch sphere_batch(int id, double offset, int runs) {
   return batch;
 }
 
-inline FitRecord sphere_fit(Database& db, const std::string& name) {
+inline FitRecord sphere_fit(RunDatabase& db, const std::string& name) {
   FitRecord fit;
   fit.name = name;
   fit.body = "sphere";
@@ -85,7 +85,7 @@ inline FitRecord sphere_fit(Database& db, const std::string& name) {
   return fit;
 }
 
-inline SurfaceRecord sphere_surface(Database& db, double scale) {
+inline SurfaceRecord sphere_surface(RunDatabase& db, double scale) {
   SurfaceRecord s;
   s.name = "sphere-X";
   s.body = "sphere";
@@ -129,7 +129,7 @@ inline PmmRecord pmm_record(double amplitude, double damping) {
   return r;
 }
 
-inline std::vector<NumericalUncertaintyRecord> mesh_study(Database& db) {
+inline std::vector<NumericalUncertaintyRecord> mesh_study(RunDatabase& db) {
   GridConvergenceRequest request;
   request.body = "hull";
   return numerical_uncertainty_records(grid_convergence_of_runs(db, request));
@@ -138,7 +138,7 @@ inline std::vector<NumericalUncertaintyRecord> mesh_study(Database& db) {
 /// The database every write path starts from: runs of two bodies from
 /// several imports, a fit, a surface and a forced-oscillation analysis.
 inline void fill(const std::filesystem::path& path) {
-  Database db(path);
+  RunDatabase db(path);
   db.import({sphere_batch(1, 0.0, 4)}, ConflictPolicy::Error);
   db.import({sphere_batch(2, 0.05, 3)}, ConflictPolicy::Error);
   db.import({one_run_batch(3, mesh_run(1, 0.01, -2.0))}, ConflictPolicy::Error);
@@ -152,7 +152,7 @@ inline void fill(const std::filesystem::path& path) {
 /// A shard as a cluster job makes it: runs new to the database, one run
 /// it has, a fit of its own.
 inline void fill_shard(const std::filesystem::path& path) {
-  Database db(path);
+  RunDatabase db(path);
   db.import({sphere_batch(1, 0.0, 4)}, ConflictPolicy::Error);
   db.import({sphere_batch(7, 1.0, 3)}, ConflictPolicy::Error);
   db.save_fit(sphere_fit(db, "sphere:X-shard"));
@@ -164,7 +164,7 @@ inline void fill_shard(const std::filesystem::path& path) {
 /// which holds shard.db and source.db too).
 struct WritePath {
   std::string name;
-  std::function<void(Database& db, const std::filesystem::path& dir)> run;
+  std::function<void(RunDatabase& db, const std::filesystem::path& dir)> run;
   bool into_empty = false;  ///< runs.db starts empty (copy), else with write_paths::fill's content
   std::string reads;        ///< the other database it reads ("shard.db", "source.db"), which must not change
 };
@@ -173,7 +173,7 @@ inline std::vector<WritePath> store_write_paths() {
   using namespace write_paths;
   return {
       {"import",
-       [](Database& db, const std::filesystem::path&) {
+       [](RunDatabase& db, const std::filesystem::path&) {
          // New runs, and runs of the database that gain a component.
          ImportBatch batch = sphere_batch(10, 0.5, 3);
          ImportedRun extended = sphere_run(0.1, 0, 0);
@@ -183,37 +183,37 @@ inline std::vector<WritePath> store_write_paths() {
          db.import({batch}, ConflictPolicy::Error);
        }},
       {"import_replace",
-       [](Database& db, const std::filesystem::path&) {
+       [](RunDatabase& db, const std::filesystem::path&) {
          ImportBatch batch = sphere_batch(1, 0.0, 4);
          batch.source.settings_key = "id=1;rho=1025";
          for (auto& run : batch.runs) run.fluid.density_kg_m3 = 1025.0;
-         ImportOptions options;
+         ImportPolicy options;
          options.replace = true;
          db.import({batch}, options);
        }},
       {"runs_delete",
-       [](Database& db, const std::filesystem::path&) {
+       [](RunDatabase& db, const std::filesystem::path&) {
          const auto runs = db.runs(RunFilter{std::string("sphere"), {}, std::nullopt});
          db.delete_runs({runs.at(0).id, runs.at(1).id});
        }},
       {"fit_save",
-       [](Database& db, const std::filesystem::path&) {
+       [](RunDatabase& db, const std::filesystem::path&) {
          FitRecord fit = sphere_fit(db, "sphere:X");
          fit.rmse = 0.25;
-         db.save_fit(fit, Database::NameTaken::Replace);
+         db.save_fit(fit, RunDatabase::NameTaken::Replace);
        }},
-      {"surface_save", [](Database& db, const std::filesystem::path&) { db.save_surface(sphere_surface(db, 2.0)); }},
+      {"surface_save", [](RunDatabase& db, const std::filesystem::path&) { db.save_surface(sphere_surface(db, 2.0)); }},
       {"gci_store",
-       [](Database& db, const std::filesystem::path&) { db.save_numerical_uncertainties(mesh_study(db)); }},
+       [](RunDatabase& db, const std::filesystem::path&) { db.save_numerical_uncertainties(mesh_study(db)); }},
       {"pmm_store",
-       [](Database& db, const std::filesystem::path&) {
+       [](RunDatabase& db, const std::filesystem::path&) {
          db.save_pmm({pmm_record(0.2, 0.75), pmm_record(0.4, 0.5)});
        }},
-      {"merge", [](Database& db, const std::filesystem::path& dir) { db.merge({(dir / "shard.db").string()}); }, false,
+      {"merge", [](RunDatabase& db, const std::filesystem::path& dir) { db.merge({(dir / "shard.db").string()}); }, false,
        "shard.db"},
       {"copy",
-       [](Database& db, const std::filesystem::path& dir) {
-         Database source(dir / "source.db", Database::OpenMode::ReadOnly);
+       [](RunDatabase& db, const std::filesystem::path& dir) {
+         RunDatabase source(dir / "source.db", RunDatabase::OpenMode::ReadOnly);
          db.copy_from(source);
        },
        true, "source.db"},
@@ -372,7 +372,7 @@ class WritePathFiles {
     write_paths::fill(templates_ / "source.db");
     write_paths::fill_shard(templates_ / "shard.db");
     if (path.into_empty) {
-      Database empty(templates_ / "runs.db");
+      RunDatabase empty(templates_ / "runs.db");
     } else {
       std::filesystem::copy_file(templates_ / "source.db", templates_ / "runs.db");
     }
@@ -420,8 +420,8 @@ inline FaultLoopResult run_fault_loop(const WritePath& path, const std::string& 
   // Without a fault: what the operation writes, and how many events it has.
   files.copy_to(dir);
   {
-    std::optional<Database> db;
-    db.emplace(runs_db, Database::OpenMode::MustExist);
+    std::optional<RunDatabase> db;
+    db.emplace(runs_db, RunDatabase::OpenMode::MustExist);
     faults.arm(0);
     path.run(*db, dir);
     db.reset();
@@ -442,8 +442,8 @@ inline FaultLoopResult run_fault_loop(const WritePath& path, const std::string& 
     bool threw = false;
     std::string last_message;
     {
-      std::optional<Database> db;
-      db.emplace(runs_db, Database::OpenMode::MustExist);
+      std::optional<RunDatabase> db;
+      db.emplace(runs_db, RunDatabase::OpenMode::MustExist);
       faults.arm(n);
       try {
         path.run(*db, dir);
@@ -493,7 +493,7 @@ inline FaultLoopResult run_fault_loop(const WritePath& path, const std::string& 
     if (!path.reads.empty() && content_of(dir / path.reads) != files.before(path.reads))
       ADD_FAILURE() << where << ": " << path.reads << ", which it only reads, changed";
     try {
-      Database reopened(runs_db, Database::OpenMode::MustExist);
+      RunDatabase reopened(runs_db, RunDatabase::OpenMode::MustExist);
     } catch (const std::exception& e) {
       ADD_FAILURE() << where << ": the store refuses the database: " << e.what();
     }

@@ -144,7 +144,7 @@ class TestDatabase {
       : backend_(backend), location_(std::move(sqlite_path)) {}
 
   bool available() const { return !location_.empty(); }
-  /// What Database and --db take.
+  /// What RunDatabase and --db take.
   const std::string& location() const { return location_; }
   const TempDir& dir() const { return dir_; }
   store::Backend backend() const { return backend_; }

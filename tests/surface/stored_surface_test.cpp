@@ -18,7 +18,7 @@ using test::expect_input_error;
 using test::TempDir;
 
 /// A database with one body "sphere" and one run in it.
-std::vector<StoredRun> seed(Database& db) {
+std::vector<StoredRun> seed(RunDatabase& db) {
   ImportBatch batch;
   batch.source = {"seed.csv", std::string(64, 'a'), 1, "test", "1"};
   ImportedRun run;
@@ -41,7 +41,7 @@ CoefficientSurface makima_table() {
 
 TEST(StoredSurface, GridComesBackIdenticalFromTheDatabase) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  RunDatabase db(dir / "runs.db");
   const auto runs = seed(db);
   const CoefficientSurface surface = makima_table();
   SurfaceRecord record = record_from_surface(surface);
@@ -71,7 +71,7 @@ TEST(StoredSurface, GridComesBackIdenticalFromTheDatabase) {
 
 TEST(StoredSurface, RbfIsRefactorizedFromItsSamples) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  RunDatabase db(dir / "runs.db");
   seed(db);
   std::vector<double> points, values;
   std::mt19937 rng(9);
@@ -123,7 +123,7 @@ TEST(StoredSurface, DamagedDefinitionsAreRefusedNamingTheSurface) {
 
 TEST(StoredSurface, AMissingSurfaceIsNamed) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  RunDatabase db(dir / "runs.db");
   expect_input_error([&] { load_surface(db, "nope"); }, {"nope"});
 }
 
@@ -163,7 +163,7 @@ void expect_same_sd(const CoefficientSurface& a, const CoefficientSurface& b, do
 
 TEST(StoredSurface, GridAndRbfUncertaintyComeBackFromTheDatabase) {
   TempDir dir;
-  Database db(dir / "runs.db");
+  RunDatabase db(dir / "runs.db");
   seed(db);
   for (const std::string method : {"pchip", "rbf"}) {
     const BuiltSurface built = build_surface(runs_with_sigma(), {{"u", "current_v"}, {"X"}, method});
