@@ -41,7 +41,8 @@ void add_gci_command(CLI::App& app, const GlobalOptions& global) {
   command->add_flag("--store,!--no-store", args->store, "Store the result and apply it to the runs (default)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] {
-    RunDatabase database(global.database, args->store ? RunDatabase::OpenMode::MustExist : RunDatabase::OpenMode::ReadOnly);
+    RunDatabase database(global.database,
+                         args->store ? RunDatabase::OpenMode::MustExist : RunDatabase::OpenMode::ReadOnly);
     const GridConvergenceStudy study = grid_convergence_of_runs(database, args->request);
     std::optional<StoredStudy> stored;
     if (args->store) stored = store_grid_convergence(database, study);

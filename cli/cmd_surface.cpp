@@ -16,8 +16,9 @@ namespace {
 void build(const SurfaceBuildArgs& args, const GlobalOptions& global) {
   const SurfaceBuildSpec spec = surface_build_spec(args);
   RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
-  const auto result = build_and_store_surface(
-      database, args.name, args.body, spec, args.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse);
+  const auto result =
+      build_and_store_surface(database, args.name, args.body, spec,
+                              args.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse);
   if (args.json) {
     std::cout << escape::json_text(surface_build_json(result), 2) << '\n';
   } else {

@@ -54,7 +54,7 @@ struct HYDROCOEF_EXPORT Trajectory {
 /// missing or queried outside its range under policy "error", or a scenario
 /// the integrator cannot run.
 HYDROCOEF_EXPORT Trajectory simulate(const std::string& vehicle_json, const std::string& scenario_json,
-                    const std::string& database = "");
+                                     const std::string& database = "");
 
 }  // namespace api
 }  // namespace hydrocoef

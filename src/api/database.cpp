@@ -191,8 +191,7 @@ SurfaceInfo Database::build_surface(const SurfaceBuildOptions& options) {
   const std::lock_guard lock(impl_->mutex);
   const SurfaceBuildResult result =
       build_and_store_surface(impl_->writable_store("a surface build"), options.name, options.body, spec,
-                              options.replace ? RunDatabase::NameTaken::Replace
-                                              : RunDatabase::NameTaken::Refuse);
+                              options.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse);
   return surface_info(result.stored.record, result.stored.surface);
 }
 

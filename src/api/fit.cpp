@@ -35,8 +35,7 @@ FitSummary Database::fit(const FitOptions& options) {
   request.mirror_odd = options.mirror_odd;
   if (!options.name.empty()) request.name = options.name;
   request.store = options.store;
-  request.taken = options.replace ? RunDatabase::NameTaken::Replace
-                                  : RunDatabase::NameTaken::Refuse;
+  request.taken = options.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse;
   const std::lock_guard lock(impl_->mutex);
   auto& store = options.store ? impl_->writable_store("fit") : impl_->open_store();
   const FitResult result = fit_stored_runs(store, request);

@@ -61,7 +61,8 @@ std::optional<double> key_value(const RunKey& key, const std::string& name) {
   return it->second;
 }
 
-std::vector<StoredRun> runs_by_id(RunDatabase& database, const std::string& body, const std::vector<std::int64_t>& ids) {
+std::vector<StoredRun> runs_by_id(RunDatabase& database, const std::string& body,
+                                  const std::vector<std::int64_t>& ids) {
   const std::set<std::int64_t> wanted(ids.begin(), ids.end());
   RunFilter filter;
   filter.body = body;

@@ -305,7 +305,7 @@ std::vector<std::string> RunDatabase::bodies() {
 }
 
 void RunDatabase::link_runs(const char* table, const char* owner, std::int64_t id,
-                         const std::vector<std::int64_t>& run_ids) {
+                            const std::vector<std::int64_t>& run_ids) {
   auto insert = connection_.prepare(std::string("INSERT INTO ") + table + "(" + owner + ", run_id) VALUES (?, ?)");
   for (const auto run_id : run_ids) insert.bind(1, id).bind(2, run_id).run();
 }

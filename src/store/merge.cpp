@@ -45,7 +45,7 @@ std::string pmm_identity(const PmmRecord& r) {
 }  // namespace
 
 std::vector<MergeOutcome> RunDatabase::merge(const std::vector<std::string>& shards,
-                                          const std::function<void(std::size_t, std::size_t)>& progress) {
+                                             const std::function<void(std::size_t, std::size_t)>& progress) {
   if (read_only_) throw InputError(SourceLocation{path_.string()}, "database opened read-only; cannot merge into it");
   std::vector<MergeOutcome> out;
   store::Transaction transaction(connection_);

@@ -82,9 +82,10 @@ std::optional<std::int64_t> RunDatabase::find_run_id(std::int64_t body, const Ru
   return std::nullopt;
 }
 
-std::pair<std::int64_t, bool> RunDatabase::find_or_insert_run(store::RunRows& rows, const RunKey& key, const Fluid& fluid,
-                                                           const std::array<double, 3>& reference_point_b,
-                                                           const SourceLocation& where) {
+std::pair<std::int64_t, bool> RunDatabase::find_or_insert_run(store::RunRows& rows, const RunKey& key,
+                                                              const Fluid& fluid,
+                                                              const std::array<double, 3>& reference_point_b,
+                                                              const SourceLocation& where) {
   const std::int64_t body = body_id(key.body, true);
   if (const auto existing = find_run_id(body, key)) {
     rows.check_and_fill(*existing, key, fluid, reference_point_b, where);

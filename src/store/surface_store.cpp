@@ -35,7 +35,7 @@ std::int64_t RunDatabase::save_surface(const SurfaceRecord& surface) {
 }
 
 std::vector<SurfaceRecord> RunDatabase::load_surfaces(const std::optional<std::string>& body,
-                                                   const std::optional<std::string>& name) {
+                                                      const std::optional<std::string>& name) {
   // One state of the database for all the statements below.
   const store::detail::ReadSnapshot snapshot(connection_.backend_impl());
   std::string sql =

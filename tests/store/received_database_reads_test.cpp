@@ -220,7 +220,8 @@ TEST(ReceivedDatabaseReads, AnOlderDatabaseIsReadAndMergedWithoutBeingWritten) {
     RunDatabase db(old, RunDatabase::OpenMode::MustExist);
     EXPECT_EQ(db.opened_at_version(), 11);
   }
-  EXPECT_EQ(RunDatabase(old, RunDatabase::OpenMode::ReadOnly).opened_at_version(), RunDatabase::latest_schema_version());
+  EXPECT_EQ(RunDatabase(old, RunDatabase::OpenMode::ReadOnly).opened_at_version(),
+            RunDatabase::latest_schema_version());
 }
 
 }  // namespace

@@ -209,8 +209,8 @@ inline std::vector<WritePath> store_write_paths() {
        [](RunDatabase& db, const std::filesystem::path&) {
          db.save_pmm({pmm_record(0.2, 0.75), pmm_record(0.4, 0.5)});
        }},
-      {"merge", [](RunDatabase& db, const std::filesystem::path& dir) { db.merge({(dir / "shard.db").string()}); }, false,
-       "shard.db"},
+      {"merge", [](RunDatabase& db, const std::filesystem::path& dir) { db.merge({(dir / "shard.db").string()}); },
+       false, "shard.db"},
       {"copy",
        [](RunDatabase& db, const std::filesystem::path& dir) {
          RunDatabase source(dir / "source.db", RunDatabase::OpenMode::ReadOnly);
