@@ -59,15 +59,6 @@ void add_mirror_options(CLI::App& command, std::vector<std::string>& planes, std
                      "A disturbance parameter that changes sign in the mirror (e.g. a lateral current); repeatable");
 }
 
-std::string significant(double value, int digits) {
-  // An undefined statistic (R^2 of a constant force) is stored as absent
-  // and read back as NaN.
-  if (std::isnan(value)) return "n/a";
-  std::array<char, 48> buffer{};
-  std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
-  return buffer.data();
-}
-
 nlohmann::json key_json(const RunKey& key) {
   nlohmann::json out;
   out["body"] = key.body;

@@ -66,9 +66,6 @@ std::pair<std::string, std::string> parse_text_assignment(const std::string& tex
 /// Parses "x,y,z" into three finite numbers.
 std::array<double, 3> parse_triple(const std::string& text, const std::string& option);
 
-/// A number in engineering style with `digits` significant digits.
-std::string significant(double value, int digits = 6);
-
 /// JSON of one run key: {"body", "u".."r", "disturbances"}.
 nlohmann::json key_json(const RunKey& key);
 

@@ -13,7 +13,11 @@
 //                              point, with its gradient, or at many points at
 //                              once on every core
 //   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
-//                              trajectory as columns
+//                              trajectory as columns, with the Monte Carlo
+//                              bands and the comparison with a measured
+//                              record; equilibrium: the steady velocity
+//   hydrocoef/plot.hpp         plot_fit, plot_surface, plot_history, ...:
+//                              the pictures `hydrocoef plot` draws
 //
 // Link with the CMake target hydrocoef::hydrocoef (find_package(hydrocoef)).
 // Conventions throughout: SI units; body axes after Fossen/SNAME (x forward,
@@ -30,6 +34,7 @@
 
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
+#include "hydrocoef/plot.hpp"
 #include "hydrocoef/simulation.hpp"
 #include "hydrocoef/surface.hpp"
 #include "hydrocoef/version.hpp"

@@ -19,7 +19,7 @@ Bad input raises hydrocoef.InputError (a ValueError) with the message the
 command-line tool prints.
 
 Contents: Database, Surface, Fit, SurfaceInfo, ImportSummary, ImportedFile,
-Table, simulate, InputError, __version__.
+Table, simulate (Simulation), equilibrium (Equilibrium), InputError, __version__.
 """
 
 import json as _json
@@ -29,8 +29,8 @@ from . import _hydrocoef
 from ._hydrocoef import (Fit, ImportedFile, ImportSummary, InputError, Surface,
                          SurfaceInfo, __version__)
 
-__all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "simulate",
-           "InputError", "__version__"]
+__all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
+           "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
 
 
 class Table(dict):
@@ -65,25 +65,100 @@ def _json_argument(value, what):
     raise TypeError(f"{what}: expected a path, JSON text or a dict, got {type(value).__name__}")
 
 
-def simulate(vehicle, scenario, database=None):
+class Simulation(Table):
+    """A simulated trajectory (a Table of the trajectory CSV's columns) with what
+    ``hydrocoef simulate`` reports beside it: ``units``, ``notes``, ``steps``,
+    ``rejected_steps``, ``evaluations``, ``wall_time_s``; ``comparison`` (a list
+    of dicts, one per compared velocity component, with an experiment); and with
+    samples, ``monte_carlo`` (what was drawn, seed, percentiles, failures),
+    ``band_t`` [s], ``bands`` (quantity -> array [percentile, time]: x_n..z_n [m],
+    phi..psi [rad], u..w [m/s], p..r [rad/s]), ``band_units`` and
+    ``measured_inside_band``. ``text()`` and ``json()`` give what the CLI prints."""
+
+    def text(self):
+        """What ``hydrocoef simulate`` prints."""
+        return self._text
+
+    def json(self):
+        """What ``hydrocoef simulate --json`` prints, parsed."""
+        return _json.loads(self._json)
+
+
+class Equilibrium:
+    """A steady state as ``hydrocoef equilibrium`` finds it: ``tau`` (the force
+    applied, X..N [N, N m]), ``velocity`` and ``relative_velocity`` (u..r [m/s,
+    rad/s], body axes), ``damping`` and ``residual`` (X..N), ``iterations``,
+    ``continuation_s``; with samples, ``monte_carlo``, ``mean``,
+    ``standard_deviation`` and ``velocity_percentiles`` (percentile -> u..r).
+    ``text()`` and ``json()`` give what the CLI prints."""
+
+    def __init__(self, outcome):
+        self._text = outcome.pop("text")
+        self._json = outcome.pop("json")
+        for key, value in outcome.items():
+            setattr(self, key, value)
+
+    def text(self):
+        """What ``hydrocoef equilibrium`` prints."""
+        return self._text
+
+    def json(self):
+        """What ``hydrocoef equilibrium --json`` prints, parsed."""
+        return _json.loads(self._json)
+
+    def __repr__(self):
+        return f"Equilibrium(velocity={self.velocity})"
+
+
+def _database_text(database):
+    if isinstance(database, _hydrocoef.Database):
+        return database.path
+    return "" if database is None else _os.fspath(database)
+
+
+def simulate(vehicle, scenario, database=None, *, out=None, experiment=None, steady_fraction=0.2, samples=0,
+             seed=1, percentiles=None, threads=0):
     """Runs a scenario on a vehicle with the 6-DOF model, as ``hydrocoef simulate``.
 
     vehicle, scenario: a path to a JSON file, the JSON text, or a dict (formats:
-    examples/asr-v/vehicle.json, scenario-*.json). database: where the surfaces
-    the vehicle's damping names are read from (a path or a Database's path; None:
-    no surfaces). Returns a Table of numpy columns, the trajectory CSV's: t [s];
+    examples/asr-v/vehicle.json, scenario-*.json). database: where the fits and
+    surfaces the vehicle names are read from (a path or a Database; None: none).
+    out: write the trajectory CSV there; experiment: a measured trajectory CSV
+    to compare with (the last ``steady_fraction`` of it as steady state);
+    samples > 0: Monte Carlo over the damping's uncertainty (seed, percentiles,
+    default 5, 50, 95; threads, 0: every core).
+
+    Returns a Simulation: a Table of numpy columns, the trajectory CSV's: t [s];
     x_n, y_n, z_n [m] (NED); phi, theta, psi [rad]; q_eta..q_eps3; u, v, w [m/s],
     p, q, r [rad/s] and u_r..r_r (relative to the water); X_control..N_control,
-    X_damping.., X_hydrostatic.., X_coriolis.. [N, N m] (forces on the body). Its
-    ``units`` attribute maps each column to its unit, ``notes`` lists what a user
-    should know (a clamped thrust). Raises InputError as the CLI would.
+    X_damping.., X_hydrostatic.., X_coriolis.. [N, N m] (forces on the body), with
+    the report's other figures as attributes (see Simulation). Raises InputError
+    as the CLI would.
     """
-    if isinstance(database, _hydrocoef.Database):
-        database = database.path
-    columns, units, notes = _hydrocoef._simulate(_json_argument(vehicle, "vehicle"),
-                                                 _json_argument(scenario, "scenario"),
-                                                 "" if database is None else _os.fspath(database))
-    table = Table(columns)
-    table.units = units
-    table.notes = notes
+    outcome = _hydrocoef._simulate(_json_argument(vehicle, "vehicle"), _json_argument(scenario, "scenario"),
+                                   _database_text(database), "" if out is None else _os.fspath(out),
+                                   "" if experiment is None else _os.fspath(experiment), steady_fraction, samples,
+                                   seed, list(percentiles or []), threads)
+    table = Simulation(outcome.pop("columns"))
+    table._text = outcome.pop("text")
+    table._json = outcome.pop("json")
+    for key, value in outcome.items():
+        setattr(table, key, value)
     return table
+
+
+def equilibrium(vehicle, database=None, *, tau=None, current=None, disturbances=None, attitude_deg=(0.0, 0.0, 0.0),
+                samples=0, seed=1, percentiles=None, threads=0):
+    """The steady body velocity under a constant force, the attitude held, as
+    ``hydrocoef equilibrium``.
+
+    tau: force on the body by component, e.g. {"X": 0.5} [N, N m], body axes;
+    current: water velocity {"u": 0.1} [m/s], body axes; disturbances: the
+    parameters the vehicle's surfaces read; attitude_deg: roll, pitch, yaw held;
+    samples > 0: its distribution over the damping's uncertainty (percentiles
+    default 2.5, 50, 97.5). Returns an Equilibrium. Raises InputError as the CLI would.
+    """
+    outcome = _hydrocoef._equilibrium(_json_argument(vehicle, "vehicle"), _database_text(database),
+                                      dict(tau or {}), dict(current or {}), dict(disturbances or {}),
+                                      tuple(attitude_deg), samples, seed, list(percentiles or []), threads)
+    return Equilibrium(outcome)

@@ -133,5 +133,43 @@ class Database:
     def surfaces(self, body: str | None = None) -> list[SurfaceInfo]: ...
     def surface(self, name: str) -> Surface: ...
 
+class Simulation(Table):
+    units: dict[str, str]
+    notes: list[str]
+    steps: int
+    rejected_steps: int
+    evaluations: int
+    wall_time_s: float
+    comparison: list[dict[str, Any]]
+    monte_carlo: dict[str, Any]
+    band_t: np.ndarray
+    bands: dict[str, np.ndarray]
+    band_units: dict[str, str]
+    measured_inside_band: dict[str, float]
+    def text(self) -> str: ...
+    def json(self) -> dict[str, Any]: ...
+
+class Equilibrium:
+    tau: dict[str, float]
+    velocity: dict[str, float]
+    relative_velocity: dict[str, float]
+    damping: dict[str, float]
+    residual: dict[str, float]
+    iterations: int
+    continuation_s: float
+    monte_carlo: dict[str, Any]
+    mean: dict[str, float]
+    standard_deviation: dict[str, float]
+    velocity_percentiles: dict[float, dict[str, float]]
+    def text(self) -> str: ...
+    def json(self) -> dict[str, Any]: ...
+
 def simulate(vehicle: Union[_Path, Mapping[str, Any]], scenario: Union[_Path, Mapping[str, Any]],
-             database: Union[_Path, Database, None] = None) -> Table: ...
+             database: Union[_Path, Database, None] = None, *, out: _Path | None = None,
+             experiment: _Path | None = None, steady_fraction: float = 0.2, samples: int = 0, seed: int = 1,
+             percentiles: Sequence[float] | None = None, threads: int = 0) -> Simulation: ...
+def equilibrium(vehicle: Union[_Path, Mapping[str, Any]], database: Union[_Path, Database, None] = None, *,
+                tau: Mapping[str, float] | None = None, current: Mapping[str, float] | None = None,
+                disturbances: Mapping[str, float] | None = None,
+                attitude_deg: Sequence[float] = (0.0, 0.0, 0.0), samples: int = 0, seed: int = 1,
+                percentiles: Sequence[float] | None = None, threads: int = 0) -> Equilibrium: ...

@@ -32,6 +32,7 @@
 
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
+#include "hydrocoef/plot.hpp"
 #include "hydrocoef/simulation.hpp"
 #include "hydrocoef/surface.hpp"
 #include "hydrocoef/version.hpp"

@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace hydrocoef {
 namespace {
@@ -17,6 +18,13 @@ std::string shortest_number(double value) {
   Buffer buffer;
   const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
   return std::string(buffer.data(), result.ptr);
+}
+
+std::string significant(double value, int digits) {
+  if (std::isnan(value)) return "n/a";
+  std::array<char, 48> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
+  return buffer.data();
 }
 
 void append_shortest_number(std::string& out, double value) {

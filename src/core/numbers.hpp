@@ -19,6 +19,11 @@ namespace hydrocoef {
 /// The shortest text that reads back as `value` (see the file comment).
 std::string shortest_number(double value);
 
+/// A number for people to read: printf's %.*g with `digits` significant
+/// digits ("0.0155077", "1.2e+05"), "n/a" for NaN (an undefined statistic,
+/// such as R^2 of a constant force). Not for text a program reads back.
+std::string significant(double value, int digits = 6);
+
 /// Appends shortest_number(value) to `out` without a temporary string, for
 /// writers of many numbers.
 void append_shortest_number(std::string& out, double value);

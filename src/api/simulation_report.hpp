@@ -1,4 +1,6 @@
-// How the CLI reports a simulation and an equilibrium (text or JSON).
+// How a simulation and an equilibrium report themselves: the text `hydrocoef
+// simulate` and `equilibrium` print, and their JSON (src/api/simulation.cpp,
+// src/api/equilibrium.cpp make the public outcomes with them).
 #pragma once
 
 #include <array>
@@ -13,7 +15,7 @@
 #include "src/dynamics/experiment.hpp"
 #include "src/dynamics/simulation.hpp"
 
-namespace hydrocoef::cli {
+namespace hydrocoef {
 
 /// What a simulate command ran and got.
 struct SimulationReport {
@@ -50,7 +52,9 @@ struct EquilibriumReport {
   double samples_wall_s = 0.0;
 };
 
-void print_simulation(const SimulationReport& report, bool json);
-void print_equilibrium(const EquilibriumReport& report, bool json);
+std::string simulation_text(const SimulationReport& report);
+std::string simulation_json(const SimulationReport& report);
+std::string equilibrium_text(const EquilibriumReport& report);
+std::string equilibrium_json(const EquilibriumReport& report);
 
-}  // namespace hydrocoef::cli
+}  // namespace hydrocoef
