@@ -66,7 +66,7 @@ HYDROCOEF_EXPORT PlotFiles plot_fit(const Database& database, const std::string&
 struct CurvesPlotOptions {
   std::string name;  ///< base name of the per-level fits; "" : made from body, dof and terms
   std::string body, dof, terms;
-  std::string by;                       ///< the disturbance, checked when given
+  std::string by;                      ///< the disturbance, checked when given
   std::string curve = "polynomial:2";  ///< polynomial:D (least squares, degree D) or pchip
   void validate() const;
 };
@@ -89,9 +89,9 @@ HYDROCOEF_EXPORT PlotFiles plot_simulation(const std::string& trajectory_csv, co
 
 /// Steady velocity against a constant force in one DOF (the equilibrium solver, attitude held).
 struct SteadyPlotOptions {
-  std::string vehicle;   ///< a vehicle JSON file, or the JSON text
-  std::string database;  ///< where its stored fits and surfaces are read ("" : none)
-  std::string dof = "N";  ///< X..N; its own velocity is drawn (N -> r)
+  std::string vehicle;       ///< a vehicle JSON file, or the JSON text
+  std::string database;      ///< where its stored fits and surfaces are read ("" : none)
+  std::string dof = "N";     ///< X..N; its own velocity is drawn (N -> r)
   std::vector<double> taus;  ///< forces to solve at [N or N m]
   /// And `count` forces evenly from tau_from to tau_to (both NaN: none).
   double tau_from = std::numeric_limits<double>::quiet_NaN();

@@ -61,7 +61,8 @@ void EquilibriumOptions::validate() const {
   for (const auto& [name, value] : tau) {
     if (!force_index(name))
       throw InputError("--tau '" + assignment_text(name, value) + "': expected X, Y, Z, K, M or N =VALUE [N or N m]");
-    if (!std::isfinite(value)) throw InputError("--tau '" + assignment_text(name, value) + "': expected a finite value");
+    if (!std::isfinite(value))
+      throw InputError("--tau '" + assignment_text(name, value) + "': expected a finite value");
   }
   for (const auto& [name, value] : current) {
     const auto component = velocity_index(name);
@@ -96,8 +97,7 @@ EquilibriumOutcome equilibrium(const EquilibriumOptions& options) {
   const std::array<double, 3>& attitude = options.attitude_deg;
   in.q_nb = quaternion_from_euler(Vector3(attitude[0], attitude[1], attitude[2]) * (std::numbers::pi / 180.0));
   Vector3 current_b = Vector3::Zero();
-  for (const auto& [name, value] : options.current)
-    current_b[static_cast<Eigen::Index>(*velocity_index(name))] = value;
+  for (const auto& [name, value] : options.current) current_b[static_cast<Eigen::Index>(*velocity_index(name))] = value;
   in.current_n = rotation_body_to_ned(in.q_nb) * current_b;
   in.disturbances = disturbance_values(model, options.disturbances);
 

@@ -86,7 +86,7 @@ std::string PlotFiles::text() const {
 }
 
 std::string PlotFiles::json() const {
-  nlohmann::json out = {{"title", title}, {"image", image}, {"data", data},    {"script", script},
+  nlohmann::json out = {{"title", title},   {"image", image}, {"data", data},    {"script", script},
                         {"format", format}, {"width", width}, {"height", height}};
   out["series"] = nlohmann::json::array();
   for (const auto& s : series) out["series"].push_back({{"panel", s.panel}, {"title", s.title}, {"points", s.points}});
@@ -109,10 +109,9 @@ void CurvesPlotOptions::validate() const {
 PlotFiles plot_curves(const Database& database, const CurvesPlotOptions& options, const ImageOptions& image) {
   options.validate();
   image.validate();
-  const std::string base = !options.name.empty()
-                               ? options.name
-                               : options.body + ":" + options.dof + "(" +
-                                     format_damping_terms(parse_damping_terms(options.terms)) + ")";
+  const std::string base = !options.name.empty() ? options.name
+                                                 : options.body + ":" + options.dof + "(" +
+                                                       format_damping_terms(parse_damping_terms(options.terms)) + ")";
   const auto [kind, degree] = parse_curve(options.curve);
   auto& impl = Database::Access::impl(database);
   const std::lock_guard lock(impl.mutex);

@@ -1,16 +1,9 @@
 #include "src/loads/frame.hpp"
 
 #include "src/core/error.hpp"
+#include "src/core/vec3.hpp"
 
 namespace hydrocoef {
-namespace {
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-}  // namespace
 
 Vec3 FrameTransform::vector_to_body(const Vec3& v) const {
   return {dot(rotation[0], v), dot(rotation[1], v), dot(rotation[2], v)};

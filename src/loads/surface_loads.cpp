@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "src/core/error.hpp"
+#include "src/core/vec3.hpp"
 #include "src/loads/surface_input.hpp"
 #include "src/loads/surface_topology.hpp"
 
@@ -18,22 +19,6 @@ namespace hydrocoef {
 namespace {
 
 using namespace loads_detail;
-
-// ---- small vector helpers (Vec3 is a plain array so the hot loop stays inline)
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-inline Vec3& operator+=(Vec3& a, const Vec3& b) {
-  a[0] += b[0];
-  a[1] += b[1];
-  a[2] += b[2];
-  return a;
-}
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
 /// Running sums of one block of faces; blocks are then summed, which keeps
 /// the rounding error of millions of faces near that of a few thousand.

@@ -5,15 +5,11 @@
 
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
+#include "src/core/vec3.hpp"
 
 namespace hydrocoef {
 namespace {
 
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 reflect(Vec3 v, int axis) {
   v[static_cast<std::size_t>(axis)] = -v[static_cast<std::size_t>(axis)];
   return v;
@@ -25,11 +21,11 @@ Vec3 reflect(Vec3 v, int axis) {
 void mirror_pair(Vec3& force, Vec3& moment, const Vec3& point, const SymmetryPlane& plane) {
   Vec3 foot = point;
   foot[static_cast<std::size_t>(plane.axis)] = plane.offset;
-  const Vec3 moment_foot = add(moment, cross(sub(point, foot), force));
-  const Vec3 whole_force = add(force, reflect(force, plane.axis));
-  const Vec3 whole_moment_foot = sub(moment_foot, reflect(moment_foot, plane.axis));
+  const Vec3 moment_foot = moment + cross(point - foot, force);
+  const Vec3 whole_force = force + reflect(force, plane.axis);
+  const Vec3 whole_moment_foot = moment_foot - reflect(moment_foot, plane.axis);
   force = whole_force;
-  moment = add(whole_moment_foot, cross(sub(foot, point), whole_force));
+  moment = whole_moment_foot + cross(foot - point, whole_force);
 }
 
 }  // namespace
@@ -88,9 +84,9 @@ SurfaceLoads mirror_loads(const SurfaceLoads& part, const std::vector<SymmetryPl
     Vec3 t{};
     t[static_cast<std::size_t>(plane.axis)] = 2.0 * plane.offset;
     const Vec3 n_image = reflect(g.integral_n_dA, plane.axis);
-    const Vec3 xn_image = sub(cross(t, n_image), reflect(g.integral_x_cross_n_dA, plane.axis));
-    g.integral_n_dA = add(g.integral_n_dA, n_image);
-    g.integral_x_cross_n_dA = add(g.integral_x_cross_n_dA, xn_image);
+    const Vec3 xn_image = cross(t, n_image) - reflect(g.integral_x_cross_n_dA, plane.axis);
+    g.integral_n_dA += n_image;
+    g.integral_x_cross_n_dA += xn_image;
     g.faces *= 2, g.triangles *= 2, g.quads *= 2, g.polygons *= 2, g.degenerate_faces *= 2;
     g.area *= 2.0;
     // The volume (1/3)∮x·n dA of the image equals the part's for a plane

@@ -116,9 +116,9 @@ TEST_F(SimulationApiTest, SimulateWithSamplesGivesTheCliNumbers) {
   const hydrocoef::SimulationOutcome outcome = hydrocoef::simulate(options);
   EXPECT_EQ(progress_calls, 12u);
 
-  const auto result = cli({"simulate", "--vehicle", vehicle_, "--scenario", scenario_, "--experiment", measured,
-                           "--out", (dir_ / "cli.csv").string(), "--samples", "12", "--seed", "7", "--percentiles",
-                           "10,50,90", "--json"});
+  const auto result =
+      cli({"simulate", "--vehicle", vehicle_, "--scenario", scenario_, "--experiment", measured, "--out",
+           (dir_ / "cli.csv").string(), "--samples", "12", "--seed", "7", "--percentiles", "10,50,90", "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   nlohmann::json from_cli = nlohmann::json::parse(result.out);
   nlohmann::json from_api = nlohmann::json::parse(outcome.json());
@@ -228,24 +228,23 @@ TEST_F(SimulationApiTest, BadOptionsAreRefusedWithTheCliMessage) {
   eq.vehicle = vehicle_;
   eq.database = db_;
   eq.tau = {{"Q", 1.0}};
-  EXPECT_EQ(error_of([&] { eq.validate(); }),
-            cli_error(cli({"equilibrium", "--vehicle", vehicle_, "--tau", "Q=1"})));
+  EXPECT_EQ(error_of([&] { eq.validate(); }), cli_error(cli({"equilibrium", "--vehicle", vehicle_, "--tau", "Q=1"})));
   eq.tau = {{"N", 0.0027}};
   eq.current = {{"p", 0.5}};
   EXPECT_EQ(error_of([&] { eq.validate(); }),
             cli_error(cli({"equilibrium", "--vehicle", vehicle_, "--tau", "N=0.0027", "--current", "p=0.5"})));
   eq.current.clear();
   eq.disturbances = {{"current_v", 0.1}};
-  EXPECT_EQ(error_of([&] { hydrocoef::equilibrium(eq); }),
-            cli_error(cli({"equilibrium", "--vehicle", vehicle_, "--tau", "N=0.0027", "--disturbance",
-                           "current_v=0.1"})));
+  EXPECT_EQ(
+      error_of([&] { hydrocoef::equilibrium(eq); }),
+      cli_error(cli({"equilibrium", "--vehicle", vehicle_, "--tau", "N=0.0027", "--disturbance", "current_v=0.1"})));
   // The example's laws carry no covariance: nothing to draw.
   eq.disturbances.clear();
   eq.vehicle = kAsrV + "vehicle.json";
   eq.sampling.samples = 10;
-  EXPECT_EQ(error_of([&] { hydrocoef::equilibrium(eq); }),
-            cli_error(cli({"equilibrium", "--vehicle", kAsrV + "vehicle.json", "--tau", "N=0.0027", "--samples",
-                           "10"})));
+  EXPECT_EQ(
+      error_of([&] { hydrocoef::equilibrium(eq); }),
+      cli_error(cli({"equilibrium", "--vehicle", kAsrV + "vehicle.json", "--tau", "N=0.0027", "--samples", "10"})));
 }
 
 TEST_F(SimulationApiTest, PlotsWriteWhatTheCliWrites) {
@@ -289,8 +288,7 @@ TEST_F(SimulationApiTest, PlotsWriteWhatTheCliWrites) {
 
   // Refusals with the CLI's words.
   image.size = "wide";
-  EXPECT_EQ(error_of([&] { image.validate(); }),
-            cli_error(cli({"plot", "fit", kFit, "--size", "wide"})));
+  EXPECT_EQ(error_of([&] { image.validate(); }), cli_error(cli({"plot", "fit", kFit, "--size", "wide"})));
   steady.tau_to = 0.0;
   EXPECT_EQ(error_of([&] { steady.validate(); }),
             cli_error(cli({"plot", "steady", "--vehicle", vehicle_, "--tau-from", "0.001", "--tau-to", "0"})));
