@@ -11,9 +11,12 @@
 
 #include "src/core/error.hpp"
 #include "src/core/parallel.hpp"
+#include "src/surface/grid_kernel.hpp"
 
 namespace hydrocoef {
 namespace {
+
+using namespace grid_kernel;
 
 // Points per chunk: large enough that taking a chunk (one atomic add) costs
 // nothing beside it, small enough that two threads finish close together.
@@ -33,12 +36,6 @@ constexpr std::size_t kChunkPoints = 8192;
 // checks that for every method and axis count. A point outside a range, or
 // NaN, goes to CoefficientSurface::evaluate: its extrapolation policy or its
 // message.
-
-constexpr std::size_t power(std::size_t base, std::size_t exponent) {
-  std::size_t result = 1;
-  for (std::size_t i = 0; i < exponent; ++i) result *= base;
-  return result;
-}
 
 struct GridLayout {
   std::size_t n_out = 0;
@@ -85,16 +82,6 @@ GridLayout grid_layout(const GridTable& table, std::size_t terms_per_axis) {
   return g;
 }
 
-// The cubic Hermite basis on a cell of width h at t (grid_table.cpp's).
-inline void hermite_weights(double t, double h, double* w) {
-  const double t2 = t * t;
-  const double t3 = t2 * t;
-  w[0] = 2.0 * t3 - 3.0 * t2 + 1.0;
-  w[1] = h * (t3 - 2.0 * t2 + t);
-  w[2] = 3.0 * t2 - 2.0 * t3;
-  w[3] = h * (t3 - t2);
-}
-
 /// The axes of a GridLayout with N known at compile time, copied where each
 /// thread's loop keeps them: stores to the output columns (doubles) cannot
 /// alias a local copy, so its numbers stay in registers.
@@ -117,24 +104,6 @@ struct LocalAxes {
     }
   }
 };
-
-/// out[j * out_stride] for outputs j0 .. j0+M-1: GridTable's accumulate.
-template <std::size_t M, std::size_t kInner, std::size_t K>
-inline void accumulate(const double* inner, const double* last, const std::size_t* offsets, const double* data,
-                       double* out) {
-  std::array<double, M> total{};
-  for (std::size_t e = 0; e < K; ++e) {
-    std::array<double, M> part{};
-    const std::size_t* term_offsets = offsets + e * kInner;
-    for (std::size_t t = 0; t < kInner; ++t) {
-      const double* row = data + term_offsets[t];
-      const double w = inner[t];
-      for (std::size_t j = 0; j < M; ++j) part[j] += w * row[j];
-    }
-    for (std::size_t j = 0; j < M; ++j) total[j] += last[e] * part[j];
-  }
-  for (std::size_t j = 0; j < M; ++j) out[j] = total[j];
-}
 
 /// Every output at a point inside every axis's range; false (nothing
 /// written) when a coordinate is outside its range or NaN.
@@ -192,16 +161,16 @@ inline bool grid_inside(const LocalAxes<N>& g, const double* data, const std::si
   const double* cell_data = data + base;
   const double* last = w[N - 1].data();
   if constexpr (kOutputs > 0) {
-    accumulate<kOutputs, kInner, K>(inner.data(), last, offsets, cell_data, out);
+    accumulate<kOutputs, kInner, K>(inner.data(), last, offsets, cell_data, out, 1);
     return true;
   }
   std::size_t j = 0;
-  for (; j + 4 <= n_out; j += 4) accumulate<4, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j);
+  for (; j + 4 <= n_out; j += 4) accumulate<4, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j, 1);
   if (n_out - j >= 2) {
-    accumulate<2, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j);
+    accumulate<2, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j, 1);
     j += 2;
   }
-  if (j < n_out) accumulate<1, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j);
+  if (j < n_out) accumulate<1, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j, 1);
   return true;
 }
 
