@@ -205,7 +205,7 @@ struct SurfaceInfo {
 /// A surface to build from stored runs: the options of `hydrocoef surface
 /// build`. Axes: velocity components (u..r) or disturbance names; outputs:
 /// force components X..N (forces on the body, N or N m).
-struct SurfaceBuildOptions {
+struct HYDROCOEF_EXPORT SurfaceBuildOptions {
   std::string name;
   std::string body;
   std::vector<std::string> axes;
@@ -230,6 +230,11 @@ struct SurfaceBuildOptions {
   std::string gp_kernel = "matern52";      ///< gp: matern52 or squared-exponential
   int gp_degree = 1;                       ///< gp: mean of degree 0, 1, 2
   int gp_starts = 5;                       ///< gp: optimiser starts (1 to 100)
+  unsigned gp_seed = 1;                    ///< gp: seed of the optimiser starts after the third
+  /// InputError, with `hydrocoef surface build`'s message, for a bad
+  /// method, policy, kernel, degree, start count or resampling (defined with
+  /// the surface operations, src/api/surface_build.cpp).
+  void validate() const;
 };
 
 class HYDROCOEF_EXPORT Database {
