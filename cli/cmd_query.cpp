@@ -25,9 +25,7 @@ void run_query(QueryArgs& args, const GlobalOptions& global) {
   options.point.assign(args.point.size(), {});
   options.validate();
   for (std::size_t i = 0; i < args.point.size(); ++i) options.point[i] = parse_assignment(args.point[i], "point");
-  options.warning = [](const std::string& warning) {
-    std::cerr << "hydrocoef: warning: " << warning << '\n';
-  };
+  options.warning = [](const std::string& warning) { std::cerr << "hydrocoef: warning: " << warning << '\n'; };
   const auto db = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly);
   const auto result = hydrocoef::query_surface(db, options);
   if (args.json) {

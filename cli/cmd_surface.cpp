@@ -83,7 +83,8 @@ void add_build_options(CLI::App& command, BuildArgs& args) {
       "Select runs: NAME=VALUE, NAME!=VALUE, NAME<VALUE (<=, >, >=) or NAME=FROM:TO on a velocity component "
       "(SI) or disturbance; repeatable, all must hold");
   command.add_flag("--replace", o.replace, "Replace a stored surface of the same name");
-  command.add_option("--exclude-run", o.exclude_runs, "Leave out the run with this id (repeatable; leave-one-out by hand)");
+  command.add_option("--exclude-run", o.exclude_runs,
+                     "Leave out the run with this id (repeatable; leave-one-out by hand)");
   add_mirror_options(command, o.mirror, o.mirror_odd);
   command.add_option("--kernel", args.kernel,
                      "RBF kernel: cubic (default), thin-plate, linear; GP kernel: matern52 (default), "

@@ -26,14 +26,14 @@ inline namespace api {
 /// What `hydrocoef export` writes: a stored gridded surface (a table, or an
 /// RBF resampled with --resample) in one of the formats.
 struct HYDROCOEF_EXPORT TableExportOptions {
-  std::string name;    ///< the stored surface
+  std::string name;  ///< the stored surface
   /// csv, csv-wide, json, c (C99 header), mat (MATLAB v5 + Simulink set-up
   /// script), jsbsim, vtk or daveml (with each node's standard deviation when
   /// the surface states one).
   std::string format;
-  std::string output;              ///< the file to write (mat: a set-up script beside it)
-  bool single_precision = false;   ///< c: float tables and arithmetic (--float)
-  std::string identifier;          ///< c: prefix of its names ("" : from the surface name)
+  std::string output;             ///< the file to write (mat: a set-up script beside it)
+  bool single_precision = false;  ///< c: float tables and arithmetic (--float)
+  std::string identifier;         ///< c: prefix of its names ("" : from the surface name)
   /// InputError for an unknown format, or --float / --identifier with a format other than c.
   void validate() const;
 };
@@ -85,23 +85,23 @@ struct HYDROCOEF_EXPORT GazeboExportOptions {
   /// different velocities). Default: the body's single fit of each DOF in its own velocity.
   std::vector<std::string> fits;
   // Exactly one source of the added mass Ma (positive, body axes):
-  std::optional<std::string> added_mass;         ///< diagonal "d1,...,d6" (kg x3, kg m^2 x3)
-  std::optional<std::string> added_mass_matrix;  ///< a file of 36 numbers, row by row
-  std::optional<double> sphere_radius;           ///< a sphere of this radius [m], with rho
-  std::optional<double> rho;                     ///< fluid density for sphere_radius [kg/m^3]
+  std::optional<std::string> added_mass;                ///< diagonal "d1,...,d6" (kg x3, kg m^2 x3)
+  std::optional<std::string> added_mass_matrix;         ///< a file of 36 numbers, row by row
+  std::optional<double> sphere_radius;                  ///< a sphere of this radius [m], with rho
+  std::optional<double> rho;                            ///< fluid density for sphere_radius [kg/m^3]
   std::optional<std::string> added_mass_rotation;       ///< with sphere_radius: "a,b,c" [kg m^2]
   std::optional<std::string> added_mass_from_database;  ///< BODY: assembled from its forced-oscillation runs
   std::vector<std::string> same;                        ///< with it: "DOF=DOF" for a DOF no run moves
   std::vector<std::string> zero;                        ///< with it: DOFs whose added mass is zero
   std::optional<double> added_mass_period;              ///< with it: the runs' period [s]
-  bool drop_constant = false;     ///< drop a law's constant term instead of refusing
-  bool allow_missing = false;     ///< write 0 for a DOF without a law instead of refusing
-  bool allow_unphysical = false;  ///< write energy-feeding laws instead of refusing
-  std::optional<double> linearize_at;  ///< U0 [m/s]: each b x|x| replaced by its slope there
-  std::optional<std::string> link;       ///< gz: <link_name> (default base_link)
-  std::optional<std::string> link_axes;  ///< gz: "flu" (default) or "frd"
-  std::vector<std::string> where;          ///< only the fits made from this selection of runs
-  std::vector<std::int64_t> exclude_runs;  ///< with where: the fits made with these runs left out
+  bool drop_constant = false;                           ///< drop a law's constant term instead of refusing
+  bool allow_missing = false;                           ///< write 0 for a DOF without a law instead of refusing
+  bool allow_unphysical = false;                        ///< write energy-feeding laws instead of refusing
+  std::optional<double> linearize_at;                   ///< U0 [m/s]: each b x|x| replaced by its slope there
+  std::optional<std::string> link;                      ///< gz: <link_name> (default base_link)
+  std::optional<std::string> link_axes;                 ///< gz: "flu" (default) or "frd"
+  std::vector<std::string> where;                       ///< only the fits made from this selection of runs
+  std::vector<std::int64_t> exclude_runs;               ///< with where: the fits made with these runs left out
   /// InputError, with the CLI's message, for an unknown flavor or link axes,
   /// --link with uuv, a --fit that is not DOF=FIT, not exactly one added-mass
   /// source, options of one source given with another, or a malformed number list.
@@ -115,10 +115,10 @@ struct GazeboFitExport {
   std::string name;      ///< the fit
   std::int64_t id = 0;
   std::string terms;
-  std::string stored_sign;   ///< "on-body" or "opposing" (negated to on-body)
-  double linear = 0.0;       ///< on-body coefficient of x [linear_unit]
-  double quadratic = 0.0;    ///< on-body coefficient of x|x| [quadratic_unit]
-  std::string linear_unit;   ///< e.g. "N/(m/s)"
+  std::string stored_sign;  ///< "on-body" or "opposing" (negated to on-body)
+  double linear = 0.0;      ///< on-body coefficient of x [linear_unit]
+  double quadratic = 0.0;   ///< on-body coefficient of x|x| [quadratic_unit]
+  std::string linear_unit;  ///< e.g. "N/(m/s)"
   std::string quadratic_unit;
   std::vector<std::int64_t> runs;
   double dropped_constant = 0.0;  ///< with drop_constant: the constant dropped [N or N m]; NaN when none

@@ -38,7 +38,7 @@ namespace hydrocoef {
 // the same name (the store's Database).
 inline namespace api {
 
-class Database;               // hydrocoef/database.hpp
+class Database;              // hydrocoef/database.hpp
 struct SurfaceBuildOptions;  // hydrocoef/database.hpp
 
 /// A column of input numbers for Surface::evaluate_batch: point i's value is
@@ -70,12 +70,12 @@ struct SigmaPeak {
 /// the flat index  i_0 + n_0 * (i_1 + n_1 * (i_2 + ...))  (the first axis
 /// varies fastest); values[k][flat] is output k there.
 struct SurfaceTable {
-  std::vector<std::string> axes;                   ///< as Surface::axes()
-  std::vector<std::string> axis_units;             ///< as Surface::axis_units()
-  std::vector<std::string> outputs;                ///< as Surface::outputs()
-  std::vector<std::string> output_units;           ///< as Surface::output_units()
-  std::vector<std::vector<double>> breakpoints;    ///< per axis, increasing [axis unit]
-  std::vector<std::vector<double>> values;         ///< per output, one per node [output unit]
+  std::vector<std::string> axes;                 ///< as Surface::axes()
+  std::vector<std::string> axis_units;           ///< as Surface::axis_units()
+  std::vector<std::string> outputs;              ///< as Surface::outputs()
+  std::vector<std::string> output_units;         ///< as Surface::output_units()
+  std::vector<std::vector<double>> breakpoints;  ///< per axis, increasing [axis unit]
+  std::vector<std::vector<double>> values;       ///< per output, one per node [output unit]
   /// Per output, one per node, the surface's standard deviation there [output
   /// unit] (as Surface::evaluate_with_standard_deviation); empty when the
   /// surface states none (Surface::has_standard_deviation() false).
@@ -168,7 +168,7 @@ class HYDROCOEF_EXPORT Surface {
   /// --resample`). GP surfaces and plain RBF surfaces are not gridded.
   bool gridded() const;
   /// A gridded surface's own table: its breakpoints per axis, its node values
-  /// and, when it states one, the standard deviation at each node (the runs'
+  /// as stored and, when it states one, the standard deviation at each node (the runs'
   /// uncertainty there, with the leave-one-out RMS in quadrature). InputError
   /// for a surface that is not gridded (tabulate() gives any surface on
   /// breakpoints of one's choosing).
@@ -209,7 +209,7 @@ class HYDROCOEF_EXPORT Surface {
 /// One axis of a stored surface, as `surface show` describes it.
 struct SurfaceAxisReport {
   std::string name;
-  std::string unit;  ///< "" when unknown (SI)
+  std::string unit;                 ///< "" when unknown (SI)
   double lower = 0.0, upper = 0.0;  ///< the range it was built over [unit]
   std::string out_of_range;         ///< the policy, as Surface::out_of_range
   std::vector<double> breakpoints;  ///< gridded surfaces: the table's breakpoints; empty otherwise
@@ -234,10 +234,10 @@ struct SurfaceOutputReport {
 struct HYDROCOEF_EXPORT SurfaceReport {
   std::string name;
   std::string body;
-  std::string kind;        ///< "grid", "rbf" or "gp"
-  std::string method;      ///< as Surface::method()
-  std::string created_at;  ///< UTC, ISO 8601
-  bool stale = false;      ///< forces of the body changed since it was built
+  std::string kind;                ///< "grid", "rbf" or "gp"
+  std::string method;              ///< as Surface::method()
+  std::string created_at;          ///< UTC, ISO 8601
+  bool stale = false;              ///< forces of the body changed since it was built
   std::vector<std::int64_t> runs;  ///< the runs it was built from
   std::string built_from;          ///< the selection, in the selection language ("all runs", "u>=0.1, mirror v")
   std::vector<SurfaceAxisReport> axes;
@@ -265,13 +265,13 @@ struct HYDROCOEF_EXPORT SurfaceList {
 
 /// A surface built and stored: `hydrocoef surface build` (one of `surface rebuild`).
 struct HYDROCOEF_EXPORT SurfaceBuildReport {
-  SurfaceReport surface;            ///< as stored (its text() and json() are show's)
-  std::int64_t id = 0;              ///< its id in the database
-  std::size_t runs_measured = 0;    ///< selected runs of the body
-  std::size_t mirror_images = 0;    ///< images added beside them (never stored as runs)
-  std::size_t images_skipped = 0;   ///< images left out at the key of a measured run
-  std::size_t runs_skipped = 0;     ///< runs (or images) without every output
-  std::string mirror;               ///< the mirror ("v", "v,w/current_v"), "" for none
+  SurfaceReport surface;           ///< as stored (its text() and json() are show's)
+  std::int64_t id = 0;             ///< its id in the database
+  std::size_t runs_measured = 0;   ///< selected runs of the body
+  std::size_t mirror_images = 0;   ///< images added beside them (never stored as runs)
+  std::size_t images_skipped = 0;  ///< images left out at the key of a measured run
+  std::size_t runs_skipped = 0;    ///< runs (or images) without every output
+  std::string mirror;              ///< the mirror ("v", "v,w/current_v"), "" for none
 
   std::string text() const;  ///< what `surface build` prints
   std::string json() const;  ///< what `surface build --json` prints

@@ -173,8 +173,8 @@ Returns a TableExportResult; InputError (nothing written) for a surface that is 
           "added_mass_matrix"_a = py::none(), "sphere_radius"_a = py::none(), "rho"_a = py::none(),
           "added_mass_rotation"_a = py::none(), "added_mass_from_database"_a = py::none(), "same"_a = py::none(),
           "zero"_a = py::none(), "added_mass_period"_a = py::none(), "drop_constant"_a = false,
-          "allow_missing"_a = false, "allow_unphysical"_a = false, "linearize_at"_a = py::none(),
-          "link"_a = py::none(), "link_axes"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(),
+          "allow_missing"_a = false, "allow_unphysical"_a = false, "linearize_at"_a = py::none(), "link"_a = py::none(),
+          "link_axes"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(),
           R"doc(Writes a body's damping-law fits and an added mass as Gazebo parameters, as `hydrocoef
 export-gazebo`: flavor "uuv" or "gz"; fits ["DOF=FITNAME", ...]; exactly one added mass: added_mass
 (six numbers, or "d1,...,d6"), added_mass_matrix (a file), sphere_radius with rho (and

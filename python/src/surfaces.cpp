@@ -201,7 +201,6 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
   return result;
 }
 
-
 /// tp_new of the report classes: refuses (as made_by_the_module_only, with
 /// the call that makes each).
 PyObject* refuse_new_report(PyTypeObject* type, PyObject*, PyObject*) {
@@ -219,9 +218,11 @@ py::custom_type_setup made_by_a_surface_call() {
 }
 
 /// The values of `source` (a mapping or the keywords) for each axis, as lists of breakpoints.
-std::vector<std::vector<double>> breakpoints_of(const Surface& surface, const py::args& args, const py::kwargs& kwargs) {
+std::vector<std::vector<double>> breakpoints_of(const Surface& surface, const py::args& args,
+                                                const py::kwargs& kwargs) {
   const auto& axes = surface.axes();
-  const std::string usage = "surface '" + surface.name() + "' is tabulated on breakpoints for each axis: " + joined(axes);
+  const std::string usage =
+      "surface '" + surface.name() + "' is tabulated on breakpoints for each axis: " + joined(axes);
   py::object source = kwargs;
   if (args.size() == 1 && kwargs.empty() && py::hasattr(args[0], "keys"))
     source = args[0];
@@ -229,7 +230,8 @@ std::vector<std::vector<double>> breakpoints_of(const Surface& surface, const py
     throw py::type_error("positional values are not taken; " + usage + ", as keywords or as one mapping");
   std::vector<std::vector<double>> out;
   for (const auto& axis : axes) {
-    if (!source.attr("__contains__")(axis).cast<bool>()) throw py::type_error("no breakpoints for " + axis + "; " + usage);
+    if (!source.attr("__contains__")(axis).cast<bool>())
+      throw py::type_error("no breakpoints for " + axis + "; " + usage);
     const auto array = py::module_::import("numpy").attr("asarray")(source[py::str(axis)], "dtype"_a = "float64");
     out.push_back(array.attr("ravel")().cast<std::vector<double>>());
   }
@@ -247,8 +249,8 @@ py::dict table_dict(const hydrocoef::SurfaceTable& table) {
   std::vector<py::ssize_t> shape, strides;
   py::ssize_t stride = sizeof(double);
   for (std::size_t a = 0; a < table.axes.size(); ++a) {
-    out[py::str(table.axes[a])] = py::array_t<double>(static_cast<py::ssize_t>(table.breakpoints[a].size()),
-                                                      table.breakpoints[a].data());
+    out[py::str(table.axes[a])] =
+        py::array_t<double>(static_cast<py::ssize_t>(table.breakpoints[a].size()), table.breakpoints[a].data());
     shape.push_back(static_cast<py::ssize_t>(table.breakpoints[a].size()));
     strides.push_back(stride);
     stride *= shape.back();
@@ -282,15 +284,12 @@ py::dict peaks_dict(const Surface& surface, std::size_t count) {
 }
 
 /// The keywords of build_surface and surface_build as SurfaceBuildOptions.
-hydrocoef::SurfaceBuildOptions build_options(const std::string& name, const std::string& body, const py::object& axes,
-                                             const py::object& outputs, const std::string& method,
-                                             const py::object& extrapolate, const py::object& where,
-                                             const py::object& exclude_runs, const py::object& mirror,
-                                             const py::object& mirror_odd, const std::string& rbf_kernel,
-                                             int rbf_degree, double rbf_smoothing, const py::object& resample,
-                                             const std::string& resample_method, double far_threshold, bool replace,
-                                             const std::string& gp_kernel, int gp_degree, int gp_starts,
-                                             unsigned gp_seed) {
+hydrocoef::SurfaceBuildOptions build_options(
+    const std::string& name, const std::string& body, const py::object& axes, const py::object& outputs,
+    const std::string& method, const py::object& extrapolate, const py::object& where, const py::object& exclude_runs,
+    const py::object& mirror, const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree,
+    double rbf_smoothing, const py::object& resample, const std::string& resample_method, double far_threshold,
+    bool replace, const std::string& gp_kernel, int gp_degree, int gp_starts, unsigned gp_seed) {
   hydrocoef::SurfaceBuildOptions options;
   options.name = name;
   options.body = body;
@@ -453,10 +452,7 @@ Returns the same dict as table(): the breakpoints, each output's values and, whe
 states one, "sigma_OUT", shaped (len(axis 0), len(axis 1), ...). InputError for unordered or
 non-finite breakpoints, or a node outside an axis whose policy is 'error'.)doc")
       .def(
-          "largest_standard_deviations",
-          [](const Surface& s, std::size_t count) {
-            return peaks_dict(s, count);
-          },
+          "largest_standard_deviations", [](const Surface& s, std::size_t count) { return peaks_dict(s, count); },
           "count"_a = 3,
           "{output: [{'point': {axis: value}, 'sd': sd}, ...]}: where each output's standard deviation is largest, "
           "largest first, as `hydrocoef surface show` lists them ({} when the surface states none).");
@@ -551,8 +547,7 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
           "largest_sd",
           [](const hydrocoef::SurfaceOutputReport& o) {
             py::list out;
-            for (const auto& peak : o.largest_sd)
-              out.append(py::make_tuple(peak.point, peak.standard_deviation));
+            for (const auto& peak : o.largest_sd) out.append(py::make_tuple(peak.point, peak.standard_deviation));
             return out;
           },
           "[(point as a list in axis order, sd), ...], largest first.");

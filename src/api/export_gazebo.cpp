@@ -88,8 +88,8 @@ std::pair<Matrix6, std::string> added_mass(const GazeboExportOptions& options, R
       throw InputError("--added-mass-from-database " + printable_text(body, 80) + ": the stored runs lack " + list +
                        "; expected runs of those DOFs, or --same/--zero for them");
     }
-    return {assembly.added_mass, "assembled from " + std::to_string(assembly.records) +
-                                     " forced-oscillation runs of body '" + body + "'"};
+    return {assembly.added_mass,
+            "assembled from " + std::to_string(assembly.records) + " forced-oscillation runs of body '" + body + "'"};
   }
   if (options.added_mass) {
     const auto d = parse_numbers(*options.added_mass, 6, "--added-mass",
@@ -185,8 +185,8 @@ std::string report_text(const GazeboCoefficients& coefficients, const std::vecto
       if (s.dof != dof) continue;
       out << "     " << gazebo_dof_name(s.dof) << " in " << gazebo_velocity_name(s.variable) << " from fit '"
           << escape::one_line(s.fit_name) << "' (" << to_string(s.stored_sign)
-          << (s.stored_sign == SignConvention::OpposingMotion ? ", negated to on-body" : "") << ", "
-          << s.run_ids.size() << " runs)\n";
+          << (s.stored_sign == SignConvention::OpposingMotion ? ", negated to on-body" : "") << ", " << s.run_ids.size()
+          << " runs)\n";
     }
   }
   out << "  added mass: " << escape::one_line(coefficients.added_mass_source) << "; symmetric positive semi-definite\n";

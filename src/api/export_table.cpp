@@ -66,10 +66,13 @@ TableExportResult export_surface(const Database& db, const TableExportOptions& o
 }
 
 std::string TableExportResult::json() const {
-  nlohmann::json out = {{"surface", surface},     {"body", body},
-                        {"format", format},       {"method", method},
+  nlohmann::json out = {{"surface", surface},
+                        {"body", body},
+                        {"format", format},
+                        {"method", method},
                         {"content_sha256", content_sha256},
-                        {"runs", runs},           {"stale", stale},
+                        {"runs", runs},
+                        {"stale", stale},
                         {"nodes", nodes}};
   out["files"] = files;
   for (const auto& axis : axes)

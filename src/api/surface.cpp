@@ -84,9 +84,20 @@ SurfaceTable Surface::table() const {
     throw InputError("surface '" + impl_->name + "' (method " + impl_->method +
                      ") is not gridded: it has no breakpoints or node values; expected a table "
                      "(nearest, linear, pchip, makima, natural-spline, or rbf with --resample), or use tabulate()");
+  const CoefficientSurface& s = impl_->surface;
   std::vector<std::vector<double>> breakpoints;
   for (const GridAxis& axis : grid->axes()) breakpoints.push_back(axis.breakpoints);
-  return tabulate(breakpoints);
+  // The values as stored (outputs interleaved per node); the standard
+  // deviations as the surface states them at the nodes (export's way).
+  SurfaceTable table =
+      s.has_standard_deviation()
+          ? tabulate(breakpoints)
+          : SurfaceTable{s.axis_names(), s.axis_units(), s.output_names(), s.output_units(), breakpoints, {}, {}};
+  const std::size_t n_out = s.output_count(), nodes = grid->node_count();
+  table.values.assign(n_out, std::vector<double>(nodes));
+  for (std::size_t node = 0; node < nodes; ++node)
+    for (std::size_t k = 0; k < n_out; ++k) table.values[k][node] = grid->values()[node * n_out + k];
+  return table;
 }
 
 SurfaceTable Surface::tabulate(const std::vector<std::vector<double>>& breakpoints, unsigned threads) const {
@@ -106,8 +117,7 @@ SurfaceTable Surface::tabulate(const std::vector<std::vector<double>>& breakpoin
         throw InputError(axis + "breakpoint " + shortest_number(x[i]) + " after " + shortest_number(x[i - 1]) +
                          "; expected strictly increasing breakpoints");
     }
-    if (x.size() > 100'000'000 / nodes)
-      throw InputError("tabulate: more than 10^8 nodes; expected fewer breakpoints");
+    if (x.size() > 100'000'000 / nodes) throw InputError("tabulate: more than 10^8 nodes; expected fewer breakpoints");
     nodes *= x.size();
   }
   SurfaceTable table{s.axis_names(), s.axis_units(), s.output_names(), s.output_units(), breakpoints, {}, {}};

@@ -9,8 +9,8 @@
 #include <optional>
 
 #include "src/core/escape.hpp"
-#include "src/surface/grid_table.hpp"
 #include "src/surface/gp_surface.hpp"
+#include "src/surface/grid_table.hpp"
 
 namespace hydrocoef {
 inline namespace api {

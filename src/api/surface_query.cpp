@@ -45,7 +45,8 @@ std::string point_json(const SurfaceQueryOptions& options, const SurfaceQueryRes
     json["values"][name] = r.values[k];
     json["units"][name] = r.units[k];
     if (options.uncertainty) json["standard_deviation"][name] = r.standard_deviation[k];
-    if (!r.new_run_standard_deviation.empty()) json["new_run_standard_deviation"][name] = r.new_run_standard_deviation[k];
+    if (!r.new_run_standard_deviation.empty())
+      json["new_run_standard_deviation"][name] = r.new_run_standard_deviation[k];
     if (options.gradient)
       for (std::size_t a = 0; a < n_axes; ++a) json["gradient"][name][r.axes[a]] = r.gradient[k * n_axes + a];
   }
@@ -111,8 +112,8 @@ SurfaceQueryResult query_surface(const Database& db, const SurfaceQueryOptions& 
   r.units = surface.output_units();
 
   if (!options.input.empty()) {
-    r.points = query_csv_batch(surface, CsvBatchRequest{options.name, options.input, options.output, options.gradient,
-                                                        options.uncertainty});
+    r.points = query_csv_batch(
+        surface, CsvBatchRequest{options.name, options.input, options.output, options.gradient, options.uncertainty});
     r.output = options.output;
     if (options.output == "-") return r;
     SurfaceQueryResult::Access::set(

@@ -1,8 +1,8 @@
 // Stored surfaces as `hydrocoef surface build | rebuild | list | show` print
 // them: axes, quality, the GP's hyperparameters and calibration, the stated
 // uncertainty and where it is largest, as text and as JSON.
-#include "src/api/internal.hpp"
 #include "src/api/surface_report.hpp"
+#include "src/api/internal.hpp"
 
 #include <algorithm>
 #include <array>
@@ -325,8 +325,8 @@ SurfaceReport report_of(const Facts& f) {
   report.runs = record.run_ids;
   report.built_from = built_from(record);
   for (std::size_t a = 0; a < surface.axis_count(); ++a) {
-    SurfaceAxisReport axis{surface.axis_names()[a], surface.axis_units()[a], surface.lower(a), surface.upper(a),
-                           surface.out_of_range_name(a), {}};
+    SurfaceAxisReport axis{surface.axis_names()[a], surface.axis_units()[a],      surface.lower(a),
+                           surface.upper(a),        surface.out_of_range_name(a), {}};
     if (const GridTable* grid = surface.grid()) axis.breakpoints = grid->axes()[a].breakpoints;
     report.axes.push_back(std::move(axis));
   }
@@ -474,11 +474,12 @@ SurfaceList list_report(const std::vector<SurfaceRecord>& records, const std::st
   SurfaceList list;
   nlohmann::json json = nlohmann::json::array();
   std::ostringstream text;
-  if (records.empty()) text << "no surfaces in " << escape::one_line(database) << '\n';
+  if (records.empty())
+    text << "no surfaces in " << escape::one_line(database) << '\n';
   else
     text << std::left << std::setw(20) << "name" << std::setw(10) << "body" << std::setw(6) << "kind" << std::setw(16)
-         << "method" << std::setw(18) << "axes" << std::setw(14) << "outputs" << std::setw(6) << "runs"
-         << std::setw(22) << "state"
+         << "method" << std::setw(18) << "axes" << std::setw(14) << "outputs" << std::setw(6) << "runs" << std::setw(22)
+         << "state"
          << "built from\n";
   for (const auto& record : records) {
     const CoefficientSurface surface = surface_from_record(record);

@@ -105,11 +105,11 @@ class SurfacesApi : public ::testing::Test {
     n.terms = "r,r|r|";
     db.fit(n);
     db.close();
-    for (const auto& args : std::vector<std::vector<std::string>>{
-             {"surface", "build", "grid-pchip", "--body", "grid", "--outputs", "X,Y", "--axes", "u,v", "--method",
-              "pchip"},
-             {"surface", "build", "gp", "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method", "gp",
-              "--starts", "2", "--extrapolate", "clamp"}}) {
+    for (const auto& args :
+         std::vector<std::vector<std::string>>{{"surface", "build", "grid-pchip", "--body", "grid", "--outputs", "X,Y",
+                                                "--axes", "u,v", "--method", "pchip"},
+                                               {"surface", "build", "gp", "--body", "asr-v", "--outputs", "X", "--axes",
+                                                "u", "--method", "gp", "--starts", "2", "--extrapolate", "clamp"}}) {
       const auto result = cli(args);
       ASSERT_EQ(result.exit_code, 0) << result.err;
     }
@@ -301,7 +301,9 @@ TEST_F(SurfacesApi, GriddedSurfacesGiveTheirTableAndAnySurfaceTabulates) {
     EXPECT_EQ(tabulated.values[0][i], at["values"]["X"].get<double>()) << x;
     EXPECT_EQ(tabulated.standard_deviation[0][i], at["standard_deviation"]["X"].get<double>()) << x;
   }
-  EXPECT_EQ(error_of([&] { (void)gp.tabulate({{0.2, 0.1}}); }),
+  EXPECT_EQ(error_of([&] {
+              (void)gp.tabulate({{0.2, 0.1}});
+            }),
             "tabulate: axis 'u': breakpoint 0.1 after 0.2; expected strictly increasing breakpoints");
   EXPECT_NE(error_of([&] { (void)gp.tabulate({{0.1}, {0.2}}); }).find("expected one per axis"), std::string::npos);
 }
@@ -378,8 +380,8 @@ TEST_F(SurfacesApi, GazeboExportIsTheCliOne) {
 }
 
 TEST_F(SurfacesApi, OptionsAreRefusedWithTheCliMessages) {
-  const auto base = std::vector<std::string>{"surface", "build", "x", "--body", "grid", "--outputs", "X", "--axes",
-                                             "u,v"};
+  const auto base =
+      std::vector<std::string>{"surface", "build", "x", "--body", "grid", "--outputs", "X", "--axes", "u,v"};
   const auto with = [&](std::vector<std::string> more) {
     auto args = base;
     args.insert(args.end(), more.begin(), more.end());
@@ -437,9 +439,8 @@ TEST_F(SurfacesApi, OptionsAreRefusedWithTheCliMessages) {
             cli_error(cli({"export-gazebo", "asr-v", "--flavor", "gz", "-o", "m.sdf", "--added-mass", "1,2,3"})));
   gazebo.flavor = "uuv";
   gazebo.link = "hull";
-  EXPECT_EQ(error_of([&] { gazebo.validate(); }),
-            cli_error(cli({"export-gazebo", "asr-v", "--flavor", "uuv", "-o", "m.sdf", "--added-mass", "1,2,3",
-                           "--link", "hull"})));
+  EXPECT_EQ(error_of([&] { gazebo.validate(); }), cli_error(cli({"export-gazebo", "asr-v", "--flavor", "uuv", "-o",
+                                                                 "m.sdf", "--added-mass", "1,2,3", "--link", "hull"})));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "m.sdf"));
 
   // Each operation validates its options first.
