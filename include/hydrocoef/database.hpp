@@ -205,7 +205,7 @@ struct SurfaceInfo {
 /// A surface to build from stored runs: the options of `hydrocoef surface
 /// build`. Axes: velocity components (u..r) or disturbance names; outputs:
 /// force components X..N (forces on the body, N or N m).
-struct HYDROCOEF_EXPORT SurfaceBuildOptions {
+struct SurfaceBuildOptions {
   std::string name;
   std::string body;
   std::vector<std::string> axes;
@@ -234,7 +234,7 @@ struct HYDROCOEF_EXPORT SurfaceBuildOptions {
   /// InputError, with `hydrocoef surface build`'s message, for a bad
   /// method, policy, kernel, degree, start count or resampling (defined with
   /// the surface operations, src/api/surface_build.cpp).
-  void validate() const;
+  HYDROCOEF_EXPORT void validate() const;
 };
 
 class HYDROCOEF_EXPORT Database {

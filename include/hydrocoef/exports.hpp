@@ -25,7 +25,7 @@ inline namespace api {
 
 /// What `hydrocoef export` writes: a stored gridded surface (a table, or an
 /// RBF resampled with --resample) in one of the formats.
-struct HYDROCOEF_EXPORT TableExportOptions {
+struct TableExportOptions {
   std::string name;  ///< the stored surface
   /// csv, csv-wide, json, c (C99 header), mat (MATLAB v5 + Simulink set-up
   /// script), jsbsim, vtk or daveml (with each node's standard deviation when
@@ -35,7 +35,7 @@ struct HYDROCOEF_EXPORT TableExportOptions {
   bool single_precision = false;  ///< c: float tables and arithmetic (--float)
   std::string identifier;         ///< c: prefix of its names ("" : from the surface name)
   /// InputError for an unknown format, or --float / --identifier with a format other than c.
-  void validate() const;
+  HYDROCOEF_EXPORT void validate() const;
 };
 
 /// One axis of an exported table.
@@ -48,7 +48,7 @@ struct TableExportAxis {
 };
 
 /// What an export wrote.
-struct HYDROCOEF_EXPORT TableExportResult {
+struct TableExportResult {
   std::string surface;
   std::string body;
   std::string format;          ///< as given, canonical
@@ -65,8 +65,8 @@ struct HYDROCOEF_EXPORT TableExportResult {
   /// (a controller at rest would fail there).
   std::vector<std::string> notes;
 
-  std::string text() const;  ///< what `export` prints
-  std::string json() const;  ///< what `export --json` prints
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `export` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `export --json` prints
 };
 
 /// Writes a stored gridded surface in a format, as `hydrocoef export`
@@ -77,7 +77,7 @@ HYDROCOEF_EXPORT TableExportResult export_surface(const Database& db, const Tabl
 
 /// What `hydrocoef export-gazebo` writes: the options of the command, text
 /// as the command line gives it (the added mass's source sentence quotes it).
-struct HYDROCOEF_EXPORT GazeboExportOptions {
+struct GazeboExportOptions {
   std::string body;    ///< whose fits are exported
   std::string flavor;  ///< "uuv" (uuv_simulator fossen model) or "gz" (gz-sim Hydrodynamics)
   std::string output;  ///< the file to write
@@ -105,7 +105,7 @@ struct HYDROCOEF_EXPORT GazeboExportOptions {
   /// InputError, with the CLI's message, for an unknown flavor or link axes,
   /// --link with uuv, a --fit that is not DOF=FIT, not exactly one added-mass
   /// source, options of one source given with another, or a malformed number list.
-  void validate() const;
+  HYDROCOEF_EXPORT void validate() const;
 };
 
 /// One damping law exported.
@@ -133,7 +133,7 @@ struct GazeboElementExport {
 
 /// What export-gazebo wrote. Matrices are 6x6 row-major (36 numbers), rows
 /// X..N, columns u..r, in hydrocoef's body axes (FRD), on-body signs.
-struct HYDROCOEF_EXPORT GazeboExportResult {
+struct GazeboExportResult {
   std::string body;
   std::string flavor;  ///< "uuv" or "gz"
   std::string file;
@@ -147,8 +147,8 @@ struct HYDROCOEF_EXPORT GazeboExportResult {
   std::vector<GazeboElementExport> elements;
   std::vector<std::string> notes;
 
-  std::string text() const;  ///< what `export-gazebo` prints
-  std::string json() const;  ///< what `export-gazebo --json` prints
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `export-gazebo` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `export-gazebo --json` prints
   struct Access;
 
  private:

@@ -231,7 +231,7 @@ struct SurfaceOutputReport {
 
 /// A stored surface described whole: `hydrocoef surface show` (and, one per
 /// surface, `surface list --json`).
-struct HYDROCOEF_EXPORT SurfaceReport {
+struct SurfaceReport {
   std::string name;
   std::string body;
   std::string kind;                ///< "grid", "rbf" or "gp"
@@ -243,20 +243,20 @@ struct HYDROCOEF_EXPORT SurfaceReport {
   std::vector<SurfaceAxisReport> axes;
   std::vector<SurfaceOutputReport> outputs;
 
-  std::string text() const;  ///< what `surface show` prints
-  std::string json() const;  ///< what `surface show --json` prints (breakpoint values included)
-  struct Access;             ///< the library's own
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `surface show` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `surface show --json` prints (breakpoint values included)
+  struct Access;                              ///< the library's own
 
  private:
   std::string text_, json_;
 };
 
 /// The stored surfaces: `hydrocoef surface list`.
-struct HYDROCOEF_EXPORT SurfaceList {
+struct SurfaceList {
   std::vector<SurfaceReport> surfaces;  ///< by name
 
-  std::string text() const;  ///< the table `surface list` prints
-  std::string json() const;  ///< what `surface list --json` prints
+  HYDROCOEF_EXPORT std::string text() const;  ///< the table `surface list` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `surface list --json` prints
   struct Access;
 
  private:
@@ -264,7 +264,7 @@ struct HYDROCOEF_EXPORT SurfaceList {
 };
 
 /// A surface built and stored: `hydrocoef surface build` (one of `surface rebuild`).
-struct HYDROCOEF_EXPORT SurfaceBuildReport {
+struct SurfaceBuildReport {
   SurfaceReport surface;           ///< as stored (its text() and json() are show's)
   std::int64_t id = 0;             ///< its id in the database
   std::size_t runs_measured = 0;   ///< selected runs of the body
@@ -273,8 +273,8 @@ struct HYDROCOEF_EXPORT SurfaceBuildReport {
   std::size_t runs_skipped = 0;    ///< runs (or images) without every output
   std::string mirror;              ///< the mirror ("v", "v,w/current_v"), "" for none
 
-  std::string text() const;  ///< what `surface build` prints
-  std::string json() const;  ///< what `surface build --json` prints
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `surface build` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `surface build --json` prints
   struct Access;
 
  private:
@@ -282,19 +282,19 @@ struct HYDROCOEF_EXPORT SurfaceBuildReport {
 };
 
 /// Which stored surfaces `surface rebuild` builds again.
-struct HYDROCOEF_EXPORT SurfaceRebuildOptions {
-  std::string name;         ///< one surface ("" : every surface, of `body` when given)
-  std::string body;         ///< only this body's surfaces ("" : every body)
-  bool stale_only = false;  ///< only surfaces whose runs changed (--stale)
-  void validate() const;    ///< nothing to refuse today; called first
+struct SurfaceRebuildOptions {
+  std::string name;                        ///< one surface ("" : every surface, of `body` when given)
+  std::string body;                        ///< only this body's surfaces ("" : every body)
+  bool stale_only = false;                 ///< only surfaces whose runs changed (--stale)
+  HYDROCOEF_EXPORT void validate() const;  ///< nothing to refuse today; called first
 };
 
 /// Surfaces built again: `hydrocoef surface rebuild`.
-struct HYDROCOEF_EXPORT SurfaceRebuildReport {
+struct SurfaceRebuildReport {
   std::vector<SurfaceBuildReport> rebuilt;
 
-  std::string text() const;  ///< each build's text, or "no surface to rebuild"
-  std::string json() const;  ///< a JSON array of the builds' JSON
+  HYDROCOEF_EXPORT std::string text() const;  ///< each build's text, or "no surface to rebuild"
+  HYDROCOEF_EXPORT std::string json() const;  ///< a JSON array of the builds' JSON
 };
 
 /// Builds a surface from the selected runs and stores it with its build
@@ -311,7 +311,7 @@ HYDROCOEF_EXPORT SurfaceReport surface_show(const Database& db, const std::strin
 
 /// A query of a stored surface: the options of `hydrocoef query`. Either a
 /// point (one value per axis) or a CSV file of points (`input`).
-struct HYDROCOEF_EXPORT SurfaceQueryOptions {
+struct SurfaceQueryOptions {
   std::string name;  ///< the surface
   /// The point: (axis, value) pairs [axis unit], each axis of the surface once, any order.
   std::vector<std::pair<std::string, double>> point;
@@ -326,11 +326,11 @@ struct HYDROCOEF_EXPORT SurfaceQueryOptions {
   std::function<void(const std::string&)> warning;
   /// InputError "give either a point (AXIS=VALUE ...) or --input, not both"
   /// or "no point; ..." as the CLI says.
-  void validate() const;
+  HYDROCOEF_EXPORT void validate() const;
 };
 
 /// The answer of `hydrocoef query`.
-struct HYDROCOEF_EXPORT SurfaceQueryResult {
+struct SurfaceQueryResult {
   std::string surface;  ///< its name
   bool stale = false;
   std::vector<std::string> warnings;  ///< as given to SurfaceQueryOptions::warning
@@ -352,13 +352,13 @@ struct HYDROCOEF_EXPORT SurfaceQueryResult {
   std::string output;      ///< where they were written ("-" : standard output)
 
   /// A point: what `query` prints; a batch: "" (the CSV is the output).
-  std::string text() const;
+  HYDROCOEF_EXPORT std::string text() const;
   /// A point: what `query --json` prints; a batch written to a file: its
   /// summary {"surface", "points", "output"}; a batch to standard output: "".
-  std::string json() const;
+  HYDROCOEF_EXPORT std::string json() const;
   /// A batch written to a file: "N points of surface 'S' written to FILE"
   /// (the CLI prints it on standard error); "" otherwise.
-  std::string note() const;
+  HYDROCOEF_EXPORT std::string note() const;
   struct Access;
 
  private:
