@@ -20,7 +20,7 @@ parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--db", required=True)
 parser.add_argument("--out", help="folder of the exported files (default: the database's)")
 args = parser.parse_args()
-out = pathlib.Path(args.out or pathlib.Path(args.db).resolve().parent)
+out = pathlib.Path(args.out or pathlib.Path(args.db).parent)
 
 with hydrocoef.Database(args.db, mode="create") as db:
     db.import_files(TABLES / "asr-v-yaw-damping.csv", body="asr-v",
