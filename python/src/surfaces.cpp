@@ -235,7 +235,7 @@ std::vector<std::vector<double>> breakpoints_of(const Surface& surface, const py
     const auto array = py::module_::import("numpy").attr("asarray")(source[py::str(axis)], "dtype"_a = "float64");
     out.push_back(array.attr("ravel")().cast<std::vector<double>>());
   }
-  if (py::len(source) != axes.size())
+  if (args.empty() && py::len(source) != axes.size())  // keywords: each an axis (a mapping may hold more)
     for (const auto& item : source.attr("keys")())
       if (std::find(axes.begin(), axes.end(), py::cast<std::string>(item)) == axes.end())
         throw py::type_error("'" + py::cast<std::string>(item) + "' is not an axis; " + usage);
