@@ -21,6 +21,8 @@ parser.add_argument("--db", required=True)
 parser.add_argument("--out", help="folder of the exported files (default: the database's)")
 args = parser.parse_args()
 out = pathlib.Path(args.out or pathlib.Path(args.db).parent)
+out.mkdir(parents=True, exist_ok=True)
+pathlib.Path(args.db).parent.mkdir(parents=True, exist_ok=True)
 
 with hydrocoef.Database(args.db, mode="create") as db:
     db.import_files(TABLES / "asr-v-yaw-damping.csv", body="asr-v",

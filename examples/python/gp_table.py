@@ -23,6 +23,7 @@ TABLES = pathlib.Path(__file__).resolve().parents[1] / "asr-v"
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--db", required=True)
 args = parser.parse_args()
+pathlib.Path(args.db).parent.mkdir(parents=True, exist_ok=True)
 
 with hydrocoef.Database(args.db, mode="create") as db:
     db.import_files(TABLES / "asr-v-surge-damping.csv", body="asr-v",

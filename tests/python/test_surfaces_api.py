@@ -110,7 +110,7 @@ def test_exports_write_the_cli_files(gp_db, tmp_path):
     (tmp_path / "cli").mkdir()
     (tmp_path / "api").mkdir()
     with hydrocoef.Database(gp_db, mode="r") as db:
-        for fmt in ("csv", "c", "daveml"):
+        for fmt in ("csv", "c", "json"):
             run_cli(gp_db, "export", "yaw", "--format", fmt, "-o", str(tmp_path / "cli" / f"yaw.{fmt}"))
             result = db.export_surface("yaw", format=fmt, output=tmp_path / "api" / f"yaw.{fmt}")
             assert (tmp_path / "api" / f"yaw.{fmt}").read_bytes() == (tmp_path / "cli" / f"yaw.{fmt}").read_bytes()
