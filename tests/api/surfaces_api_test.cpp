@@ -115,9 +115,9 @@ class SurfacesApi : public ::testing::Test {
     for (const auto& args :
          std::vector<std::vector<std::string>>{{"surface", "build", "grid-pchip", "--body", "grid", "--outputs", "X,Y",
                                                 "--axes", "u,v", "--method", "pchip"},
-                                               {"surface", "build", "grid-linear", "--body", "grid", "--outputs", "X,Y", "--axes", "u,v", "--method",
-              "linear", "--extrapolate", "clamp"},
-             {"surface", "build", "gp", "--body", "asr-v", "--outputs", "X", "--axes",
+                                               {"surface", "build", "grid-linear", "--body", "grid", "--outputs", "X,Y",
+                                                "--axes", "u,v", "--method", "linear", "--extrapolate", "clamp"},
+                                               {"surface", "build", "gp", "--body", "asr-v", "--outputs", "X", "--axes",
                                                 "u", "--method", "gp", "--starts", "2", "--extrapolate", "clamp"}}) {
       const auto result = cli(args);
       ASSERT_EQ(result.exit_code, 0) << result.err;
