@@ -230,6 +230,11 @@ struct SurfaceBuildOptions {
   std::string gp_kernel = "matern52";      ///< gp: matern52 or squared-exponential
   int gp_degree = 1;                       ///< gp: mean of degree 0, 1, 2
   int gp_starts = 5;                       ///< gp: optimiser starts (1 to 100)
+  unsigned gp_seed = 1;                    ///< gp: seed of the optimiser starts after the third
+  /// InputError, with `hydrocoef surface build`'s message, for a bad
+  /// method, policy, kernel, degree, start count or resampling (defined with
+  /// the surface operations, src/api/surface_build.cpp).
+  HYDROCOEF_EXPORT void validate() const;
 };
 
 class HYDROCOEF_EXPORT Database {

@@ -11,7 +11,10 @@
 //                              list fits and surfaces, read a surface
 //   hydrocoef/surface.hpp      Surface: a coefficient surface evaluated at a
 //                              point, with its gradient, or at many points at
-//                              once on every core
+//                              once on every core; tabulated for a controller;
+//                              surface_build, _rebuild, _list, _show, query_surface
+//   hydrocoef/exports.hpp      export_surface, export_gazebo: a gridded surface
+//                              or a body's fits written for another tool
 //   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
 //                              trajectory as columns, with the Monte Carlo
 //                              bands and the comparison with a measured
@@ -34,6 +37,7 @@
 
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
+#include "hydrocoef/exports.hpp"
 #include "hydrocoef/plot.hpp"
 #include "hydrocoef/simulation.hpp"
 #include "hydrocoef/surface.hpp"

@@ -22,8 +22,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hydrocoef/error.hpp"
@@ -34,6 +37,9 @@ namespace hydrocoef {
 // inside the library it keeps these classes apart from the internal ones of
 // the same name (the store's Database).
 inline namespace api {
+
+class Database;              // hydrocoef/database.hpp
+struct SurfaceBuildOptions;  // hydrocoef/database.hpp
 
 /// A column of input numbers for Surface::evaluate_batch: point i's value is
 /// data[i * stride]. stride is in elements (doubles), not bytes; it may be 0
@@ -48,6 +54,34 @@ struct ConstColumn {
 struct Column {
   double* data = nullptr;
   std::ptrdiff_t stride = 1;
+};
+
+/// One of the points of a surface's range where an output's standard
+/// deviation is largest (Surface::largest_standard_deviations).
+struct SigmaPeak {
+  std::vector<double> point;        ///< one coordinate per axis, in Surface::axes() order and axis units
+  double standard_deviation = 0.0;  ///< of the output there, in its unit
+};
+
+/// A surface tabulated on breakpoints (Surface::tabulate, or a gridded
+/// surface's own nodes): what a controller's lookup table needs.
+///
+/// Layout: node (i_0, ..., i_{d-1}), i_a the index into breakpoints[a], has
+/// the flat index  i_0 + n_0 * (i_1 + n_1 * (i_2 + ...))  (the first axis
+/// varies fastest); values[k][flat] is output k there.
+struct SurfaceTable {
+  std::vector<std::string> axes;                 ///< as Surface::axes()
+  std::vector<std::string> axis_units;           ///< as Surface::axis_units()
+  std::vector<std::string> outputs;              ///< as Surface::outputs()
+  std::vector<std::string> output_units;         ///< as Surface::output_units()
+  std::vector<std::vector<double>> breakpoints;  ///< per axis, increasing [axis unit]
+  std::vector<std::vector<double>> values;       ///< per output, one per node [output unit]
+  /// Per output, one per node, the surface's standard deviation there [output
+  /// unit] (as Surface::evaluate_with_standard_deviation); empty when the
+  /// surface states none (Surface::has_standard_deviation() false).
+  std::vector<std::vector<double>> standard_deviation;
+
+  std::size_t node_count() const noexcept { return values.empty() ? 0 : values.front().size(); }
 };
 
 class HYDROCOEF_EXPORT Surface {
@@ -129,6 +163,34 @@ class HYDROCOEF_EXPORT Surface {
                       const std::vector<Column>& gradients, unsigned threads = 0,
                       const std::vector<Column>& standard_deviations = {}) const;
 
+  /// True for a gridded table: methods nearest, linear, pchip, makima and
+  /// natural-spline, and an RBF surface resampled on a grid (`surface build
+  /// --resample`). GP surfaces and plain RBF surfaces are not gridded.
+  bool gridded() const;
+  /// A gridded surface's own table: its breakpoints per axis, its node values
+  /// as stored and, when it states one, the standard deviation at each node (the runs'
+  /// uncertainty there, with the leave-one-out RMS in quadrature). InputError
+  /// for a surface that is not gridded (tabulate() gives any surface on
+  /// breakpoints of one's choosing).
+  SurfaceTable table() const;
+  /// The surface evaluated at every node of the grid the breakpoints make
+  /// (one list per axis, in axes() order, each finite and strictly
+  /// increasing), with its standard deviation when it states one: a GP (or
+  /// any) surface made into a lookup table for a controller. On `threads`
+  /// threads (0: every core). InputError for a wrong number of lists, an
+  /// empty, non-finite or unordered list, more than 10^8 nodes, or a node the
+  /// surface refuses (outside an axis under "error"): "point I: MESSAGE" as
+  /// evaluate_batch says it, I the node's flat index.
+  SurfaceTable tabulate(const std::vector<std::vector<double>>& breakpoints, unsigned threads = 0) const;
+  /// Per output (outputs() order), the `count` points of the surface's range
+  /// where its standard deviation is largest, largest first, as `hydrocoef
+  /// surface show` lists them. GP: the posterior's, searched over a space-
+  /// filling set of candidates (1024 up to 200 runs, fewer for more runs, at
+  /// least 64). Grid and RBF surfaces: every grid node (up to 100000) and a
+  /// lattice of about 4096 points over the range, the points at least 1% of
+  /// the range apart. Empty when the surface states no standard deviation.
+  std::vector<std::vector<SigmaPeak>> largest_standard_deviations(std::size_t count = 3) const;
+
   /// Made by Database::surface(); Impl is the library's own.
   struct Impl;
   explicit Surface(std::shared_ptr<const Impl> impl);
@@ -136,6 +198,176 @@ class HYDROCOEF_EXPORT Surface {
  private:
   std::shared_ptr<const Impl> impl_;
 };
+
+// ---------------------------------------------------------------------------
+// The surface commands as library calls: `hydrocoef surface build | rebuild |
+// list | show` and `hydrocoef query` are these functions and print their
+// results' text() or json(). Each takes a Database (hydrocoef/database.hpp):
+// writes need one opened ReadWrite or Create (InputError for a read-only one,
+// the file untouched).
+
+/// One axis of a stored surface, as `surface show` describes it.
+struct SurfaceAxisReport {
+  std::string name;
+  std::string unit;                 ///< "" when unknown (SI)
+  double lower = 0.0, upper = 0.0;  ///< the range it was built over [unit]
+  std::string out_of_range;         ///< the policy, as Surface::out_of_range
+  std::vector<double> breakpoints;  ///< gridded surfaces: the table's breakpoints; empty otherwise
+};
+
+/// One output of a stored surface, with its quality figures.
+struct SurfaceOutputReport {
+  std::string name;
+  std::string unit;
+  /// Leave-one-out error of the runs [unit]: largest magnitude and RMS; NaN
+  /// when not known (too few runs, or stored before it was kept).
+  double loo_max = 0.0, loo_rms = 0.0;
+  /// The run with the largest leave-one-out error and that error; 0 and NaN when not known.
+  std::int64_t worst_run = 0;
+  double worst_error = 0.0;
+  /// Where the standard deviation is largest (Surface::largest_standard_deviations); empty when none is stated.
+  std::vector<SigmaPeak> largest_sd;
+};
+
+/// A stored surface described whole: `hydrocoef surface show` (and, one per
+/// surface, `surface list --json`).
+struct SurfaceReport {
+  std::string name;
+  std::string body;
+  std::string kind;                ///< "grid", "rbf" or "gp"
+  std::string method;              ///< as Surface::method()
+  std::string created_at;          ///< UTC, ISO 8601
+  bool stale = false;              ///< forces of the body changed since it was built
+  std::vector<std::int64_t> runs;  ///< the runs it was built from
+  std::string built_from;          ///< the selection, in the selection language ("all runs", "u>=0.1, mirror v")
+  std::vector<SurfaceAxisReport> axes;
+  std::vector<SurfaceOutputReport> outputs;
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `surface show` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `surface show --json` prints (breakpoint values included)
+  struct Access;                              ///< the library's own
+
+ private:
+  std::string text_, json_;
+};
+
+/// The stored surfaces: `hydrocoef surface list`.
+struct SurfaceList {
+  std::vector<SurfaceReport> surfaces;  ///< by name
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< the table `surface list` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `surface list --json` prints
+  struct Access;
+
+ private:
+  std::string text_, json_;
+};
+
+/// A surface built and stored: `hydrocoef surface build` (one of `surface rebuild`).
+struct SurfaceBuildReport {
+  SurfaceReport surface;           ///< as stored (its text() and json() are show's)
+  std::int64_t id = 0;             ///< its id in the database
+  std::size_t runs_measured = 0;   ///< selected runs of the body
+  std::size_t mirror_images = 0;   ///< images added beside them (never stored as runs)
+  std::size_t images_skipped = 0;  ///< images left out at the key of a measured run
+  std::size_t runs_skipped = 0;    ///< runs (or images) without every output
+  std::string mirror;              ///< the mirror ("v", "v,w/current_v"), "" for none
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `surface build` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `surface build --json` prints
+  struct Access;
+
+ private:
+  std::string text_, json_;
+};
+
+/// Which stored surfaces `surface rebuild` builds again.
+struct SurfaceRebuildOptions {
+  std::string name;                        ///< one surface ("" : every surface, of `body` when given)
+  std::string body;                        ///< only this body's surfaces ("" : every body)
+  bool stale_only = false;                 ///< only surfaces whose runs changed (--stale)
+  HYDROCOEF_EXPORT void validate() const;  ///< nothing to refuse today; called first
+};
+
+/// Surfaces built again: `hydrocoef surface rebuild`.
+struct SurfaceRebuildReport {
+  std::vector<SurfaceBuildReport> rebuilt;
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< each build's text, or "no surface to rebuild"
+  HYDROCOEF_EXPORT std::string json() const;  ///< a JSON array of the builds' JSON
+};
+
+/// Builds a surface from the selected runs and stores it with its build
+/// specification, as `hydrocoef surface build` (options.validate() first).
+HYDROCOEF_EXPORT SurfaceBuildReport surface_build(Database& db, const SurfaceBuildOptions& options);
+/// Builds stored surfaces again from the current runs with the specification
+/// each was built with, as `hydrocoef surface rebuild`.
+HYDROCOEF_EXPORT SurfaceRebuildReport surface_rebuild(Database& db, const SurfaceRebuildOptions& options);
+/// The stored surfaces (of one body, or all when body is ""), as `hydrocoef surface list`.
+HYDROCOEF_EXPORT SurfaceList surface_list(const Database& db, const std::string& body = "");
+/// One stored surface described, as `hydrocoef surface show NAME`. InputError
+/// listing the stored names when there is none of that name.
+HYDROCOEF_EXPORT SurfaceReport surface_show(const Database& db, const std::string& name);
+
+/// A query of a stored surface: the options of `hydrocoef query`. Either a
+/// point (one value per axis) or a CSV file of points (`input`).
+struct SurfaceQueryOptions {
+  std::string name;  ///< the surface
+  /// The point: (axis, value) pairs [axis unit], each axis of the surface once, any order.
+  std::vector<std::pair<std::string, double>> point;
+  /// A CSV of points whose header names the axes ("-" : standard input); "" for a point.
+  std::string input;
+  /// With input: where the CSV of results goes ("-" : standard output).
+  std::string output = "-";
+  bool gradient = false;     ///< also d output / d axis [output unit per axis unit]
+  bool uncertainty = false;  ///< also each output's standard deviation (--uncertainty)
+  /// Called with a warning before the surface is evaluated (a stale surface);
+  /// the CLI prints it on standard error. Unset: warnings are only in the result.
+  std::function<void(const std::string&)> warning;
+  /// InputError "give either a point (AXIS=VALUE ...) or --input, not both"
+  /// or "no point; ..." as the CLI says.
+  HYDROCOEF_EXPORT void validate() const;
+};
+
+/// The answer of `hydrocoef query`.
+struct SurfaceQueryResult {
+  std::string surface;  ///< its name
+  bool stale = false;
+  std::vector<std::string> warnings;  ///< as given to SurfaceQueryOptions::warning
+  // A point (options.point):
+  std::vector<std::string> axes;     ///< the surface's axes
+  std::vector<double> point;         ///< one per axis, in axes order
+  std::vector<std::string> outputs;  ///< the surface's outputs
+  std::vector<std::string> units;    ///< one per output
+  std::vector<double> values;        ///< one per output [unit]
+  /// With uncertainty: one per output [unit]; empty otherwise.
+  std::vector<double> standard_deviation;
+  /// With uncertainty on a GP surface: a new run's standard deviation there (the
+  /// discrepancy added); empty otherwise.
+  std::vector<double> new_run_standard_deviation;
+  /// With gradient: gradient[k * axes.size() + a] = d output_k / d axis_a; empty otherwise.
+  std::vector<double> gradient;
+  // A batch (options.input):
+  std::size_t points = 0;  ///< rows answered
+  std::string output;      ///< where they were written ("-" : standard output)
+
+  /// A point: what `query` prints; a batch: "" (the CSV is the output).
+  HYDROCOEF_EXPORT std::string text() const;
+  /// A point: what `query --json` prints; a batch written to a file: its
+  /// summary {"surface", "points", "output"}; a batch to standard output: "".
+  HYDROCOEF_EXPORT std::string json() const;
+  /// A batch written to a file: "N points of surface 'S' written to FILE"
+  /// (the CLI prints it on standard error); "" otherwise.
+  HYDROCOEF_EXPORT std::string note() const;
+  struct Access;
+
+ private:
+  std::string text_, json_, note_;
+};
+
+/// Evaluates a stored surface at a point, or at every row of a CSV, as
+/// `hydrocoef query` (options.validate() first). InputError as the CLI's.
+HYDROCOEF_EXPORT SurfaceQueryResult query_surface(const Database& db, const SurfaceQueryOptions& options);
 
 }  // namespace api
 }  // namespace hydrocoef

@@ -28,9 +28,13 @@ import os as _os
 from . import _hydrocoef
 from ._hydrocoef import (Fit, ImportedFile, ImportSummary, InputError, Surface,
                          SurfaceInfo, __version__)
+from ._hydrocoef import (GazeboExportResult, SurfaceBuildReport, SurfaceList, SurfaceQueryResult,
+                         SurfaceRebuildReport, SurfaceReport, TableExportResult)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
+__all__ += ["SurfaceReport", "SurfaceList", "SurfaceBuildReport", "SurfaceRebuildReport", "SurfaceQueryResult",
+            "TableExportResult", "GazeboExportResult"]
 
 
 class Table(dict):

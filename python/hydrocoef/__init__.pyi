@@ -43,6 +43,12 @@ class Surface:
     def __call__(self, values: Mapping[str, _Values] | None = ..., /, *, gradient: bool = ..., uncertainty: bool = ...,
                  threads: int = ...,
                  **axes: _Values) -> dict[str, np.ndarray]: ...
+    @property
+    def gridded(self) -> bool: ...
+    def table(self) -> dict[str, np.ndarray]: ...
+    def tabulate(self, breakpoints: Mapping[str, npt.ArrayLike] | None = ..., /, *, threads: int = ...,
+                 **axes: npt.ArrayLike) -> dict[str, np.ndarray]: ...
+    def largest_standard_deviations(self, count: int = 3) -> dict[str, list[dict[str, Any]]]: ...
 
 class Fit:
     name: str
@@ -79,6 +85,139 @@ class SurfaceInfo:
     stale: bool
     run_count: int
     created_at: str
+
+class SurfaceAxisReport:
+    name: str
+    unit: str
+    lower: float
+    upper: float
+    out_of_range: str
+    breakpoints: list[float]
+
+class SurfaceOutputReport:
+    name: str
+    unit: str
+    loo_max: float
+    loo_rms: float
+    worst_run: int
+    worst_error: float
+    @property
+    def largest_sd(self) -> list[tuple[list[float], float]]: ...
+
+class SurfaceReport:
+    name: str
+    body: str
+    kind: str
+    method: str
+    created_at: str
+    stale: bool
+    runs: list[int]
+    built_from: str
+    axes: list[SurfaceAxisReport]
+    outputs: list[SurfaceOutputReport]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class SurfaceList:
+    surfaces: list[SurfaceReport]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class SurfaceBuildReport:
+    surface: SurfaceReport
+    id: int
+    runs_measured: int
+    mirror_images: int
+    images_skipped: int
+    runs_skipped: int
+    mirror: str
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class SurfaceRebuildReport:
+    rebuilt: list[SurfaceBuildReport]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class SurfaceQueryResult:
+    surface: str
+    stale: bool
+    warnings: list[str]
+    axes: list[str]
+    point: list[float]
+    outputs: list[str]
+    units: list[str]
+    values: list[float]
+    standard_deviation: list[float]
+    new_run_standard_deviation: list[float]
+    gradient: list[float]
+    points: int
+    output: str
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+    def note(self) -> str: ...
+
+class TableExportAxis:
+    name: str
+    unit: str
+    breakpoints: int
+    lower: float
+    upper: float
+    extrapolation: str
+
+class TableExportResult:
+    surface: str
+    body: str
+    format: str
+    method: str
+    content_sha256: str
+    runs: list[int]
+    stale: bool
+    nodes: int
+    files: list[str]
+    axes: list[TableExportAxis]
+    outputs: list[str]
+    output_units: list[str]
+    notes: list[str]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class GazeboFitExport:
+    dof: str
+    variable: str
+    name: str
+    id: int
+    terms: str
+    stored_sign: str
+    linear: float
+    quadratic: float
+    linear_unit: str
+    quadratic_unit: str
+    runs: list[int]
+    dropped_constant: float
+
+class GazeboElementExport:
+    name: str
+    values: list[float]
+    unit: str
+
+class GazeboExportResult:
+    body: str
+    flavor: str
+    file: str
+    frame: str
+    link_name: str
+    linear_b: list[float]
+    quadratic_b: list[float]
+    added_mass_b: list[float]
+    added_mass_source: str
+    linearized_at: float
+    fits: list[GazeboFitExport]
+    missing: list[str]
+    elements: list[GazeboElementExport]
+    notes: list[str]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
 
 class ImportedFile:
     path: str
@@ -128,7 +267,31 @@ class Database:
                       rbf_degree: int = 1, rbf_smoothing: float = 0.0,
                       resample: Sequence[Sequence[float]] | None = None, resample_method: str = "linear",
                       far_threshold: float = 0.25, replace: bool = False, gp_kernel: str = "matern52",
-                      gp_degree: int = 1, gp_starts: int = 5) -> SurfaceInfo: ...
+                      gp_degree: int = 1, gp_starts: int = 5, gp_seed: int = 1) -> SurfaceInfo: ...
+    def surface_build(self, name: str, *, body: str, axes: _Texts, outputs: _Texts, method: str = "linear",
+                      extrapolate: _Texts = None, where: _Texts = None, exclude_runs: Sequence[int] | None = None,
+                      mirror: _Texts = None, mirror_odd: _Texts = None, rbf_kernel: str = "cubic",
+                      rbf_degree: int = 1, rbf_smoothing: float = 0.0,
+                      resample: Sequence[Sequence[float]] | None = None, resample_method: str = "linear",
+                      far_threshold: float = 0.25, replace: bool = False, gp_kernel: str = "matern52",
+                      gp_degree: int = 1, gp_starts: int = 5, gp_seed: int = 1) -> SurfaceBuildReport: ...
+    def surface_rebuild(self, name: str | None = None, *, body: str | None = None,
+                        stale_only: bool = False) -> SurfaceRebuildReport: ...
+    def surface_list(self, body: str | None = None) -> SurfaceList: ...
+    def surface_show(self, name: str) -> SurfaceReport: ...
+    def query_surface(self, name: str, point: Mapping[str, float] | None = None, *, input: _Path | None = None,
+                      output: str = "-", gradient: bool = False, uncertainty: bool = False) -> SurfaceQueryResult: ...
+    def export_surface(self, name: str, *, format: str, output: _Path, single_precision: bool = False,
+                       identifier: str = "") -> TableExportResult: ...
+    def export_gazebo(self, body: str, *, flavor: str, output: _Path, fits: _Texts = None,
+                      added_mass: Union[str, Sequence[float], None] = None, added_mass_matrix: _Path | None = None,
+                      sphere_radius: float | None = None, rho: float | None = None,
+                      added_mass_rotation: Union[str, Sequence[float], None] = None,
+                      added_mass_from_database: str | None = None, same: _Texts = None, zero: _Texts = None,
+                      added_mass_period: float | None = None, drop_constant: bool = False,
+                      allow_missing: bool = False, allow_unphysical: bool = False,
+                      linearize_at: float | None = None, link: str | None = None, link_axes: str | None = None,
+                      where: _Texts = None, exclude_runs: Iterable[int] | None = None) -> GazeboExportResult: ...
     def rebuild_surfaces(self, name: str | None = None, *, stale_only: bool = False) -> list[SurfaceInfo]: ...
     def surfaces(self, body: str | None = None) -> list[SurfaceInfo]: ...
     def surface(self, name: str) -> Surface: ...

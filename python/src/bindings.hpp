@@ -6,6 +6,7 @@
 //   database.cpp    Database: open, close, runs, import_files (ImportedFile, ImportSummary)
 //   surfaces.cpp    Surface (its call on numpy arrays), SurfaceInfo, Database's surface methods
 //   fits.cpp        Fit, Database.fit and Database.fits
+//   exports.cpp     Database.export_surface and export_gazebo, their results
 //   simulation.cpp  simulate's compiled part
 //   common.cpp      the helpers below that are not one topic's
 #pragma once
@@ -30,6 +31,7 @@ void bind_errors(py::module_& m);
 py::class_<hydrocoef::Database> declare_database(py::module_& m);
 void bind_surfaces(py::module_& m, py::class_<hydrocoef::Database>& database);
 void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database);
+void bind_exports(py::module_& m, py::class_<hydrocoef::Database>& database);
 void bind_database(py::module_& m, py::class_<hydrocoef::Database>& database);
 void bind_simulation(py::module_& m);
 

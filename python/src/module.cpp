@@ -20,11 +20,16 @@ PYBIND11_MODULE(_hydrocoef, m) {
   auto database = hydrocoef_python::declare_database(m);
   hydrocoef_python::bind_surfaces(m, database);
   hydrocoef_python::bind_fits(m, database);
+  hydrocoef_python::bind_exports(m, database);
   hydrocoef_python::bind_database(m, database);
 
   // The public classes say they are hydrocoef's (help(), repr of the type), not the extension's
   // (Database is: hydrocoef.Database is its Python subclass in __init__.py).
   for (const char* name : {"Surface", "Fit", "SurfaceInfo", "ImportedFile", "ImportSummary", "InputError"})
+    m.attr(name).attr("__module__") = "hydrocoef";
+  for (const char* name : {"SurfaceReport", "SurfaceAxisReport", "SurfaceOutputReport", "SurfaceList",
+                           "SurfaceBuildReport", "SurfaceRebuildReport", "SurfaceQueryResult", "TableExportResult",
+                           "TableExportAxis", "GazeboExportResult", "GazeboFitExport", "GazeboElementExport"})
     m.attr(name).attr("__module__") = "hydrocoef";
 
   hydrocoef_python::bind_simulation(m);

@@ -1,6 +1,9 @@
 // Surfaces in Python: hydrocoef.Surface (a stored surface, called on numpy
-// arrays), SurfaceInfo (what `hydrocoef surface list` shows), and the
-// Database methods that list, build, rebuild and read surfaces.
+// arrays, tabulated for a controller), SurfaceInfo (what `hydrocoef surface
+// list` shows), the reports of the surface commands (SurfaceReport,
+// SurfaceList, SurfaceBuildReport, SurfaceRebuildReport, SurfaceQueryResult),
+// and the Database methods that list, build, rebuild, show, query and read
+// surfaces (the C++ API's calls of include/hydrocoef/surface.hpp).
 //
 // Surface calls take numpy arrays where they are: a float64 array that is
 // contiguous, or one-dimensional with a stride that is a whole number of
@@ -14,6 +17,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
@@ -197,6 +201,126 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
   return result;
 }
 
+/// tp_new of the report classes: refuses (as made_by_the_module_only, with
+/// the call that makes each).
+PyObject* refuse_new_report(PyTypeObject* type, PyObject*, PyObject*) {
+  const char* dot = std::strrchr(type->tp_name, '.');
+  const std::string name = dot ? dot + 1 : type->tp_name;
+  PyErr_SetString(PyExc_TypeError, ("hydrocoef." + name +
+                                    " objects come from the Database's surface methods (surface_show, surface_list, "
+                                    "surface_build, surface_rebuild, query_surface); they cannot be made directly")
+                                       .c_str());
+  return nullptr;
+}
+
+py::custom_type_setup made_by_a_surface_call() {
+  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new_report; });
+}
+
+/// The values of `source` (a mapping or the keywords) for each axis, as lists of breakpoints.
+std::vector<std::vector<double>> breakpoints_of(const Surface& surface, const py::args& args,
+                                                const py::kwargs& kwargs) {
+  const auto& axes = surface.axes();
+  const std::string usage =
+      "surface '" + surface.name() + "' is tabulated on breakpoints for each axis: " + joined(axes);
+  py::object source = kwargs;
+  if (args.size() == 1 && kwargs.empty() && py::hasattr(args[0], "keys"))
+    source = args[0];
+  else if (!args.empty())
+    throw py::type_error("positional values are not taken; " + usage + ", as keywords or as one mapping");
+  std::vector<std::vector<double>> out;
+  for (const auto& axis : axes) {
+    if (!source.attr("__contains__")(axis).cast<bool>())
+      throw py::type_error("no breakpoints for " + axis + "; " + usage);
+    const auto array = py::module_::import("numpy").attr("asarray")(source[py::str(axis)], "dtype"_a = "float64");
+    out.push_back(array.attr("ravel")().cast<std::vector<double>>());
+  }
+  if (args.empty() && py::len(source) != axes.size())  // keywords: each an axis (a mapping may hold more)
+    for (const auto& item : source.attr("keys")())
+      if (std::find(axes.begin(), axes.end(), py::cast<std::string>(item)) == axes.end())
+        throw py::type_error("'" + py::cast<std::string>(item) + "' is not an axis; " + usage);
+  return out;
+}
+
+/// A table as a dict: each axis's breakpoints (1-D), each output's values and
+/// "sigma_OUT" (when stated), shaped (n_axis0, n_axis1, ...).
+py::dict table_dict(const hydrocoef::SurfaceTable& table) {
+  py::dict out;
+  std::vector<py::ssize_t> shape, strides;
+  py::ssize_t stride = sizeof(double);
+  for (std::size_t a = 0; a < table.axes.size(); ++a) {
+    out[py::str(table.axes[a])] =
+        py::array_t<double>(static_cast<py::ssize_t>(table.breakpoints[a].size()), table.breakpoints[a].data());
+    shape.push_back(static_cast<py::ssize_t>(table.breakpoints[a].size()));
+    strides.push_back(stride);
+    stride *= shape.back();
+  }
+  // Flat index i_0 + n_0 (i_1 + ...): the first axis fastest, Fortran order.
+  const auto array = [&](const std::vector<double>& values) {
+    py::array_t<double> result(shape, strides);
+    std::copy(values.begin(), values.end(), result.mutable_data());
+    return result;
+  };
+  for (std::size_t k = 0; k < table.outputs.size(); ++k) out[py::str(table.outputs[k])] = array(table.values[k]);
+  for (std::size_t k = 0; k < table.standard_deviation.size(); ++k)
+    out[py::str("sigma_" + table.outputs[k])] = array(table.standard_deviation[k]);
+  return out;
+}
+
+/// The points where each output's standard deviation is largest, {output: [{"point": {axis: x}, "sd": s}, ...]}.
+py::dict peaks_dict(const Surface& surface, std::size_t count) {
+  const auto peaks = surface.largest_standard_deviations(count);
+  py::dict out;
+  for (std::size_t k = 0; k < peaks.size(); ++k) {
+    py::list list;
+    for (const auto& peak : peaks[k]) {
+      py::dict point;
+      for (std::size_t a = 0; a < surface.axes().size(); ++a) point[py::str(surface.axes()[a])] = peak.point[a];
+      list.append(py::dict("point"_a = point, "sd"_a = peak.standard_deviation));
+    }
+    out[py::str(surface.outputs()[k])] = list;
+  }
+  return out;
+}
+
+/// The keywords of build_surface and surface_build as SurfaceBuildOptions.
+hydrocoef::SurfaceBuildOptions build_options(
+    const std::string& name, const std::string& body, const py::object& axes, const py::object& outputs,
+    const std::string& method, const py::object& extrapolate, const py::object& where, const py::object& exclude_runs,
+    const py::object& mirror, const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree,
+    double rbf_smoothing, const py::object& resample, const std::string& resample_method, double far_threshold,
+    bool replace, const std::string& gp_kernel, int gp_degree, int gp_starts, unsigned gp_seed) {
+  hydrocoef::SurfaceBuildOptions options;
+  options.name = name;
+  options.body = body;
+  options.axes = texts(axes, "axes");
+  options.outputs = texts(outputs, "outputs");
+  options.method = method;
+  options.extrapolate = texts(extrapolate, "extrapolate");
+  options.where = texts(where, "where");
+  options.exclude_runs = run_ids(exclude_runs, "exclude_runs");
+  options.mirror = texts(mirror, "mirror");
+  options.mirror_odd = texts(mirror_odd, "mirror_odd");
+  options.rbf_kernel = rbf_kernel;
+  options.rbf_degree = rbf_degree;
+  options.rbf_smoothing = rbf_smoothing;
+  if (!resample.is_none()) {
+    try {
+      options.resample = resample.cast<std::vector<std::vector<double>>>();
+    } catch (const py::cast_error&) {
+      throw py::type_error("resample: expected one list of numbers per axis");
+    }
+  }
+  options.resample_method = resample_method;
+  options.far_threshold = far_threshold;
+  options.replace = replace;
+  options.gp_kernel = gp_kernel;
+  options.gp_degree = gp_degree;
+  options.gp_starts = gp_starts;
+  options.gp_seed = gp_seed;
+  return options;
+}
+
 }  // namespace
 
 void bind_surfaces(py::module_& m, py::class_<Database>& database) {
@@ -287,6 +411,52 @@ unknown axis or values that are not real numbers; ValueError for arrays of
 different shapes.)doc");
   }
 
+  surface_class
+      .def_property_readonly(
+          "gridded", [](const Surface& s) { return s.gridded(); },
+          "True for a gridded table (nearest .. natural-spline, or an RBF resampled on a grid); False for gp and rbf.")
+      .def(
+          "table",
+          [](const Surface& s) {
+            hydrocoef::SurfaceTable table;
+            {
+              py::gil_scoped_release release;
+              table = s.table();
+            }
+            return table_dict(table);
+          },
+          R"doc(A gridded surface's own table: {axis: breakpoints (1-D)} and {output: node values}, with
+{"sigma_OUT": standard deviation at each node} when the surface states one; the node arrays are
+shaped (len(axis 0), len(axis 1), ...), a[i0, i1, ...] at (breakpoints0[i0], breakpoints1[i1], ...).
+InputError for a surface that is not gridded (gp, rbf): tabulate() gives any surface on chosen breakpoints.)doc")
+      .def(
+          "tabulate",
+          [](const Surface& s, const py::args& args, py::kwargs kwargs) {
+            long threads = 0;
+            if (kwargs.contains("threads")) threads = py::cast<long>(kwargs.attr("pop")("threads"));
+            if (threads < 0 || threads > 4096)
+              throw py::value_error("threads=" + std::to_string(threads) + ": expected 0 (every core) to 4096");
+            const auto breakpoints = breakpoints_of(s, args, kwargs);
+            hydrocoef::SurfaceTable table;
+            {
+              py::gil_scoped_release release;
+              table = s.tabulate(breakpoints, static_cast<unsigned>(threads));
+            }
+            return table_dict(table);
+          },
+          R"doc(tabulate(self, breakpoints=None, /, *, threads=0, **axes) -> dict[str, numpy.ndarray]
+
+The surface (a GP included) evaluated at every node of the grid of the given breakpoints (one
+increasing sequence per axis, by keyword or as one mapping): a lookup table for a controller.
+Returns the same dict as table(): the breakpoints, each output's values and, when the surface
+states one, "sigma_OUT", shaped (len(axis 0), len(axis 1), ...). InputError for unordered or
+non-finite breakpoints, or a node outside an axis whose policy is 'error'.)doc")
+      .def(
+          "largest_standard_deviations", [](const Surface& s, std::size_t count) { return peaks_dict(s, count); },
+          "count"_a = 3,
+          "{output: [{'point': {axis: value}, 'sd': sd}, ...]}: where each output's standard deviation is largest, "
+          "largest first, as `hydrocoef surface show` lists them ({} when the surface states none).");
+
   py::class_<hydrocoef::SurfaceInfo>(m, "SurfaceInfo", py::is_final(), made_by_the_module_only(),
                                      "A stored surface, as `hydrocoef surface list` shows it.")
       .def_readonly("name", &hydrocoef::SurfaceInfo::name)
@@ -317,34 +487,11 @@ different shapes.)doc");
              const py::object& where, const py::object& exclude_runs, const py::object& mirror,
              const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
              const py::object& resample, const std::string& resample_method, double far_threshold, bool replace,
-             const std::string& gp_kernel, int gp_degree, int gp_starts) {
-            hydrocoef::SurfaceBuildOptions options;
-            options.name = name;
-            options.body = body;
-            options.axes = texts(axes, "axes");
-            options.outputs = texts(outputs, "outputs");
-            options.method = method;
-            options.extrapolate = texts(extrapolate, "extrapolate");
-            options.where = texts(where, "where");
-            options.exclude_runs = run_ids(exclude_runs, "exclude_runs");
-            options.mirror = texts(mirror, "mirror");
-            options.mirror_odd = texts(mirror_odd, "mirror_odd");
-            options.rbf_kernel = rbf_kernel;
-            options.rbf_degree = rbf_degree;
-            options.rbf_smoothing = rbf_smoothing;
-            if (!resample.is_none()) {
-              try {
-                options.resample = resample.cast<std::vector<std::vector<double>>>();
-              } catch (const py::cast_error&) {
-                throw py::type_error("resample: expected one list of numbers per axis");
-              }
-            }
-            options.resample_method = resample_method;
-            options.far_threshold = far_threshold;
-            options.replace = replace;
-            options.gp_kernel = gp_kernel;
-            options.gp_degree = gp_degree;
-            options.gp_starts = gp_starts;
+             const std::string& gp_kernel, int gp_degree, int gp_starts, unsigned gp_seed) {
+            const auto options =
+                build_options(name, body, axes, outputs, method, extrapolate, where, exclude_runs, mirror, mirror_odd,
+                              rbf_kernel, rbf_degree, rbf_smoothing, resample, resample_method, far_threshold, replace,
+                              gp_kernel, gp_degree, gp_starts, gp_seed);
             Database& d = database_of(self);
             py::gil_scoped_release release;
             return d.build_surface(options);
@@ -353,7 +500,7 @@ different shapes.)doc");
           "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(), "mirror_odd"_a = py::none(),
           "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0, "resample"_a = py::none(),
           "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false, "gp_kernel"_a = "matern52",
-          "gp_degree"_a = 1, "gp_starts"_a = 5,
+          "gp_degree"_a = 1, "gp_starts"_a = 5, "gp_seed"_a = 1u,
           R"doc(Builds a surface from the selected runs and stores it, as `hydrocoef surface build`.
 
 axes: velocity components (u..r) or disturbance names; outputs: X..N (forces on the body).
@@ -363,7 +510,7 @@ extrapolate: one policy for every axis or "AXIS=POLICY" entries (error, clamp, l
 rbf: error, clamp, extrapolate). where / exclude_runs / mirror / mirror_odd: as for fit().
 rbf_kernel, rbf_degree, rbf_smoothing, resample (one list of breakpoints per axis),
 resample_method, far_threshold: the RBF options. gp_kernel (matern52, squared-exponential), gp_degree
-(its mean, 0 to 2), gp_starts: the GP options. replace: replace a stored surface of that name.
+(its mean, 0 to 2), gp_starts, gp_seed: the GP options. replace: replace a stored surface of that name.
 Returns a SurfaceInfo; the surface keeps its build specification for rebuild_surfaces().)doc")
       .def(
           "rebuild_surfaces",
@@ -379,6 +526,161 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
       .def(
           "surface", [](py::handle self, const std::string& name) { return database_of(self).surface(name); }, "name"_a,
           "One stored surface, read whole (it stays valid after close()). InputError listing the names when absent.");
+
+  // The reports of the surface commands: the numbers as attributes, and
+  // text() / json(), what the CLI prints (and with --json).
+  py::class_<hydrocoef::SurfaceAxisReport>(m, "SurfaceAxisReport", py::is_final(), made_by_a_surface_call())
+      .def_readonly("name", &hydrocoef::SurfaceAxisReport::name)
+      .def_readonly("unit", &hydrocoef::SurfaceAxisReport::unit)
+      .def_readonly("lower", &hydrocoef::SurfaceAxisReport::lower)
+      .def_readonly("upper", &hydrocoef::SurfaceAxisReport::upper)
+      .def_readonly("out_of_range", &hydrocoef::SurfaceAxisReport::out_of_range)
+      .def_readonly("breakpoints", &hydrocoef::SurfaceAxisReport::breakpoints, "Gridded surfaces; [] otherwise.");
+  py::class_<hydrocoef::SurfaceOutputReport>(m, "SurfaceOutputReport", py::is_final(), made_by_a_surface_call())
+      .def_readonly("name", &hydrocoef::SurfaceOutputReport::name)
+      .def_readonly("unit", &hydrocoef::SurfaceOutputReport::unit)
+      .def_readonly("loo_max", &hydrocoef::SurfaceOutputReport::loo_max)
+      .def_readonly("loo_rms", &hydrocoef::SurfaceOutputReport::loo_rms)
+      .def_readonly("worst_run", &hydrocoef::SurfaceOutputReport::worst_run)
+      .def_readonly("worst_error", &hydrocoef::SurfaceOutputReport::worst_error)
+      .def_property_readonly(
+          "largest_sd",
+          [](const hydrocoef::SurfaceOutputReport& o) {
+            py::list out;
+            for (const auto& peak : o.largest_sd) out.append(py::make_tuple(peak.point, peak.standard_deviation));
+            return out;
+          },
+          "[(point as a list in axis order, sd), ...], largest first.");
+  py::class_<hydrocoef::SurfaceReport>(m, "SurfaceReport", py::is_final(), made_by_a_surface_call(),
+                                       "A stored surface described whole, as `hydrocoef surface show`.")
+      .def_readonly("name", &hydrocoef::SurfaceReport::name)
+      .def_readonly("body", &hydrocoef::SurfaceReport::body)
+      .def_readonly("kind", &hydrocoef::SurfaceReport::kind)
+      .def_readonly("method", &hydrocoef::SurfaceReport::method)
+      .def_readonly("created_at", &hydrocoef::SurfaceReport::created_at)
+      .def_readonly("stale", &hydrocoef::SurfaceReport::stale)
+      .def_readonly("runs", &hydrocoef::SurfaceReport::runs)
+      .def_readonly("built_from", &hydrocoef::SurfaceReport::built_from)
+      .def_readonly("axes", &hydrocoef::SurfaceReport::axes)
+      .def_readonly("outputs", &hydrocoef::SurfaceReport::outputs)
+      .def("text", &hydrocoef::SurfaceReport::text)
+      .def("json", &hydrocoef::SurfaceReport::json);
+  py::class_<hydrocoef::SurfaceList>(m, "SurfaceList", py::is_final(), made_by_a_surface_call(),
+                                     "The stored surfaces, as `hydrocoef surface list`.")
+      .def_readonly("surfaces", &hydrocoef::SurfaceList::surfaces)
+      .def("text", &hydrocoef::SurfaceList::text)
+      .def("json", &hydrocoef::SurfaceList::json);
+  py::class_<hydrocoef::SurfaceBuildReport>(m, "SurfaceBuildReport", py::is_final(), made_by_a_surface_call(),
+                                            "A surface built and stored, as `hydrocoef surface build`.")
+      .def_readonly("surface", &hydrocoef::SurfaceBuildReport::surface)
+      .def_readonly("id", &hydrocoef::SurfaceBuildReport::id)
+      .def_readonly("runs_measured", &hydrocoef::SurfaceBuildReport::runs_measured)
+      .def_readonly("mirror_images", &hydrocoef::SurfaceBuildReport::mirror_images)
+      .def_readonly("images_skipped", &hydrocoef::SurfaceBuildReport::images_skipped)
+      .def_readonly("runs_skipped", &hydrocoef::SurfaceBuildReport::runs_skipped)
+      .def_readonly("mirror", &hydrocoef::SurfaceBuildReport::mirror)
+      .def("text", &hydrocoef::SurfaceBuildReport::text)
+      .def("json", &hydrocoef::SurfaceBuildReport::json);
+  py::class_<hydrocoef::SurfaceRebuildReport>(m, "SurfaceRebuildReport", py::is_final(), made_by_a_surface_call(),
+                                              "Surfaces built again, as `hydrocoef surface rebuild`.")
+      .def_readonly("rebuilt", &hydrocoef::SurfaceRebuildReport::rebuilt)
+      .def("text", &hydrocoef::SurfaceRebuildReport::text)
+      .def("json", &hydrocoef::SurfaceRebuildReport::json);
+  py::class_<hydrocoef::SurfaceQueryResult>(m, "SurfaceQueryResult", py::is_final(), made_by_a_surface_call(),
+                                            "The answer of `hydrocoef query`: a point, or a batch written as CSV.")
+      .def_readonly("surface", &hydrocoef::SurfaceQueryResult::surface)
+      .def_readonly("stale", &hydrocoef::SurfaceQueryResult::stale)
+      .def_readonly("warnings", &hydrocoef::SurfaceQueryResult::warnings)
+      .def_readonly("axes", &hydrocoef::SurfaceQueryResult::axes)
+      .def_readonly("point", &hydrocoef::SurfaceQueryResult::point)
+      .def_readonly("outputs", &hydrocoef::SurfaceQueryResult::outputs)
+      .def_readonly("units", &hydrocoef::SurfaceQueryResult::units)
+      .def_readonly("values", &hydrocoef::SurfaceQueryResult::values)
+      .def_readonly("standard_deviation", &hydrocoef::SurfaceQueryResult::standard_deviation)
+      .def_readonly("new_run_standard_deviation", &hydrocoef::SurfaceQueryResult::new_run_standard_deviation)
+      .def_readonly("gradient", &hydrocoef::SurfaceQueryResult::gradient,
+                    "gradient[k * len(axes) + a] = d output_k / d axis_a.")
+      .def_readonly("points", &hydrocoef::SurfaceQueryResult::points)
+      .def_readonly("output", &hydrocoef::SurfaceQueryResult::output)
+      .def("text", &hydrocoef::SurfaceQueryResult::text)
+      .def("json", &hydrocoef::SurfaceQueryResult::json)
+      .def("note", &hydrocoef::SurfaceQueryResult::note);
+
+  database
+      .def(
+          "surface_build",
+          [](py::handle self, const std::string& name, const std::string& body, const py::object& axes,
+             const py::object& outputs, const std::string& method, const py::object& extrapolate,
+             const py::object& where, const py::object& exclude_runs, const py::object& mirror,
+             const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
+             const py::object& resample, const std::string& resample_method, double far_threshold, bool replace,
+             const std::string& gp_kernel, int gp_degree, int gp_starts, unsigned gp_seed) {
+            const auto options =
+                build_options(name, body, axes, outputs, method, extrapolate, where, exclude_runs, mirror, mirror_odd,
+                              rbf_kernel, rbf_degree, rbf_smoothing, resample, resample_method, far_threshold, replace,
+                              gp_kernel, gp_degree, gp_starts, gp_seed);
+            Database& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::surface_build(d, options);
+          },
+          "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear", "extrapolate"_a = py::none(),
+          "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(), "mirror_odd"_a = py::none(),
+          "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0, "resample"_a = py::none(),
+          "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false, "gp_kernel"_a = "matern52",
+          "gp_degree"_a = 1, "gp_starts"_a = 5, "gp_seed"_a = 1u,
+          "As build_surface (the same keywords), returning the SurfaceBuildReport `hydrocoef surface build` prints.")
+      .def(
+          "surface_rebuild",
+          [](py::handle self, const py::object& name, const py::object& body, bool stale_only) {
+            hydrocoef::SurfaceRebuildOptions options;
+            options.name = name.is_none() ? "" : name.cast<std::string>();
+            options.body = body.is_none() ? "" : body.cast<std::string>();
+            options.stale_only = stale_only;
+            Database& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::surface_rebuild(d, options);
+          },
+          "name"_a = py::none(), py::kw_only(), "body"_a = py::none(), "stale_only"_a = false,
+          "Builds stored surfaces again (the one named, else every one, of body when given, only stale ones with "
+          "stale_only=True), as `hydrocoef surface rebuild`: a SurfaceRebuildReport.")
+      .def(
+          "surface_list",
+          [](py::handle self, const py::object& body) {
+            Database& d = database_of(self);
+            const std::string which = body.is_none() ? "" : body.cast<std::string>();
+            py::gil_scoped_release release;
+            return hydrocoef::surface_list(d, which);
+          },
+          "body"_a = py::none(), "The stored surfaces described, as `hydrocoef surface list`: a SurfaceList.")
+      .def(
+          "surface_show",
+          [](py::handle self, const std::string& name) {
+            Database& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::surface_show(d, name);
+          },
+          "name"_a, "One stored surface described whole, as `hydrocoef surface show`: a SurfaceReport.")
+      .def(
+          "query_surface",
+          [](py::handle self, const std::string& name, const py::object& point, const py::object& input,
+             const std::string& output, bool gradient, bool uncertainty) {
+            hydrocoef::SurfaceQueryOptions options;
+            options.name = name;
+            if (!point.is_none())
+              for (const auto& item : point.cast<py::dict>())
+                options.point.emplace_back(py::cast<std::string>(item.first), py::cast<double>(item.second));
+            options.input = input.is_none() ? "" : py::str(input).cast<std::string>();
+            options.output = output;
+            options.gradient = gradient;
+            options.uncertainty = uncertainty;
+            Database& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::query_surface(d, options);
+          },
+          "name"_a, "point"_a = py::none(), py::kw_only(), "input"_a = py::none(), "output"_a = "-",
+          "gradient"_a = false, "uncertainty"_a = false,
+          "A stored surface at a point ({axis: value}), or at every row of the CSV `input` written to `output`, as "
+          "`hydrocoef query`: a SurfaceQueryResult (text() and json() are the CLI's).");
 }
 
 }  // namespace hydrocoef_python

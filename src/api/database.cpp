@@ -163,49 +163,7 @@ std::vector<SurfaceInfo> Database::surfaces(const std::string& body) const {
   return out;
 }
 
-SurfaceInfo Database::build_surface(const SurfaceBuildOptions& options) {
-  SurfaceBuildSpec spec;
-  spec.surface.axes = options.axes;
-  spec.surface.outputs = options.outputs;
-  spec.surface.method = options.method;
-  spec.surface.out_of_range = out_of_range_policies(options.axes, options.extrapolate, "extrapolate");
-  spec.surface.rbf.kernel = parse_rbf_kernel(options.rbf_kernel);
-  spec.surface.rbf.polynomial_degree = options.rbf_degree;
-  spec.surface.rbf.smoothing = options.rbf_smoothing;
-  if (options.method == "gp") {
-    spec.surface.gp.kernel = parse_gp_kernel(options.gp_kernel);
-    if (options.gp_degree < 0 || options.gp_degree > 2)
-      throw InputError("gp_degree " + std::to_string(options.gp_degree) + ": expected 0, 1 or 2");
-    if (options.gp_starts < 1 || options.gp_starts > 100)
-      throw InputError("gp_starts " + std::to_string(options.gp_starts) + ": expected 1 to 100");
-    spec.surface.gp.mean_degree = options.gp_degree;
-    spec.surface.gp.starts = options.gp_starts;
-  }
-  if (!options.resample.empty()) spec.surface.resample = options.resample;
-  spec.surface.resample_method = options.resample_method;
-  spec.surface.far_threshold = options.far_threshold;
-  spec.where = options.where;
-  spec.exclude_runs = options.exclude_runs;
-  spec.mirror_planes = options.mirror;
-  spec.mirror_odd = options.mirror_odd;
-  const std::lock_guard lock(impl_->mutex);
-  const SurfaceBuildResult result =
-      build_and_store_surface(impl_->writable_store("a surface build"), options.name, options.body, spec,
-                              options.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse);
-  return surface_info(result.stored.record, result.stored.surface);
-}
-
-std::vector<SurfaceInfo> Database::rebuild_surfaces(const std::string& name, bool stale_only) {
-  const std::lock_guard lock(impl_->mutex);
-  auto& store = impl_->writable_store("a surface rebuild");
-  std::vector<SurfaceInfo> out;
-  for (const SurfaceRecord& record :
-       surfaces_to_rebuild(store, name.empty() ? std::nullopt : std::optional(name), std::nullopt, stale_only)) {
-    const SurfaceBuildResult result = rebuild_surface(store, record);
-    out.push_back(surface_info(result.stored.record, result.stored.surface));
-  }
-  return out;
-}
+// build_surface and rebuild_surfaces: src/api/surface_build.cpp, with the surface commands.
 
 Surface Database::surface(const std::string& name) const {
   const std::lock_guard lock(impl_->mutex);

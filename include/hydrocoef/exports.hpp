@@ -1,0 +1,164 @@
+// Exports as library calls: `hydrocoef export` (a stored gridded surface as a
+// file another tool loads) and `hydrocoef export-gazebo` (a body's damping-law
+// fits and an added-mass matrix as Gazebo hydrodynamics parameters). The CLI
+// commands are these functions and print their results' text() or json().
+//
+// Units and frames: SI; body axes x forward, y starboard, z down (FRD); the
+// tables' outputs and the damping coefficients are forces on the body (a
+// damping coefficient is negative, SNAME "on-body" signs). Every file is
+// written whole or not at all; a refused export writes nothing and never
+// touches the database.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hydrocoef/database.hpp"
+#include "hydrocoef/error.hpp"
+#include "hydrocoef/export.hpp"
+
+namespace hydrocoef {
+inline namespace api {
+
+/// What `hydrocoef export` writes: a stored gridded surface (a table, or an
+/// RBF resampled with --resample) in one of the formats.
+struct TableExportOptions {
+  std::string name;  ///< the stored surface
+  /// csv, csv-wide, json, c (C99 header), mat (MATLAB v5 + Simulink set-up
+  /// script), jsbsim, vtk or daveml (with each node's standard deviation when
+  /// the surface states one).
+  std::string format;
+  std::string output;             ///< the file to write (mat: a set-up script beside it)
+  bool single_precision = false;  ///< c: float tables and arithmetic (--float)
+  std::string identifier;         ///< c: prefix of its names ("" : from the surface name)
+  /// InputError for an unknown format, or --float / --identifier with a format other than c.
+  HYDROCOEF_EXPORT void validate() const;
+};
+
+/// One axis of an exported table.
+struct TableExportAxis {
+  std::string name;
+  std::string unit;
+  std::size_t breakpoints = 0;
+  double lower = 0.0, upper = 0.0;  ///< the valid range: first and last breakpoint
+  std::string extrapolation;        ///< out-of-range policy: error, clamp, linear, method
+};
+
+/// What an export wrote.
+struct TableExportResult {
+  std::string surface;
+  std::string body;
+  std::string format;          ///< as given, canonical
+  std::string method;          ///< the table's interpolation
+  std::string content_sha256;  ///< of the stored surface (provenance in every file)
+  std::vector<std::int64_t> runs;
+  bool stale = false;  ///< forces changed since the surface was built
+  std::size_t nodes = 0;
+  std::vector<std::string> files;  ///< the files written
+  std::vector<TableExportAxis> axes;
+  std::vector<std::string> outputs;
+  std::vector<std::string> output_units;
+  /// Warnings: an axis refusing values outside a range that leaves out zero
+  /// (a controller at rest would fail there).
+  std::vector<std::string> notes;
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `export` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `export --json` prints
+};
+
+/// Writes a stored gridded surface in a format, as `hydrocoef export`
+/// (options.validate() first). InputError, nothing written, for a surface
+/// that is not gridded (naming --resample), a format that cannot express the
+/// table, or a path that cannot be written.
+HYDROCOEF_EXPORT TableExportResult export_surface(const Database& db, const TableExportOptions& options);
+
+/// What `hydrocoef export-gazebo` writes: the options of the command, text
+/// as the command line gives it (the added mass's source sentence quotes it).
+struct GazeboExportOptions {
+  std::string body;    ///< whose fits are exported
+  std::string flavor;  ///< "uuv" (uuv_simulator fossen model) or "gz" (gz-sim Hydrodynamics)
+  std::string output;  ///< the file to write
+  /// "DOF=FITNAME": the law of a force component (several per DOF when in
+  /// different velocities). Default: the body's single fit of each DOF in its own velocity.
+  std::vector<std::string> fits;
+  // Exactly one source of the added mass Ma (positive, body axes):
+  std::optional<std::string> added_mass;                ///< diagonal "d1,...,d6" (kg x3, kg m^2 x3)
+  std::optional<std::string> added_mass_matrix;         ///< a file of 36 numbers, row by row
+  std::optional<double> sphere_radius;                  ///< a sphere of this radius [m], with rho
+  std::optional<double> rho;                            ///< fluid density for sphere_radius [kg/m^3]
+  std::optional<std::string> added_mass_rotation;       ///< with sphere_radius: "a,b,c" [kg m^2]
+  std::optional<std::string> added_mass_from_database;  ///< BODY: assembled from its forced-oscillation runs
+  std::vector<std::string> same;                        ///< with it: "DOF=DOF" for a DOF no run moves
+  std::vector<std::string> zero;                        ///< with it: DOFs whose added mass is zero
+  std::optional<double> added_mass_period;              ///< with it: the runs' period [s]
+  bool drop_constant = false;                           ///< drop a law's constant term instead of refusing
+  bool allow_missing = false;                           ///< write 0 for a DOF without a law instead of refusing
+  bool allow_unphysical = false;                        ///< write energy-feeding laws instead of refusing
+  std::optional<double> linearize_at;                   ///< U0 [m/s]: each b x|x| replaced by its slope there
+  std::optional<std::string> link;                      ///< gz: <link_name> (default base_link)
+  std::optional<std::string> link_axes;                 ///< gz: "flu" (default) or "frd"
+  std::vector<std::string> where;                       ///< only the fits made from this selection of runs
+  std::vector<std::int64_t> exclude_runs;               ///< with where: the fits made with these runs left out
+  /// InputError, with the CLI's message, for an unknown flavor or link axes,
+  /// --link with uuv, a --fit that is not DOF=FIT, not exactly one added-mass
+  /// source, options of one source given with another, or a malformed number list.
+  HYDROCOEF_EXPORT void validate() const;
+};
+
+/// One damping law exported.
+struct GazeboFitExport {
+  std::string dof;       ///< X..N
+  std::string variable;  ///< u..r
+  std::string name;      ///< the fit
+  std::int64_t id = 0;
+  std::string terms;
+  std::string stored_sign;  ///< "on-body" or "opposing" (negated to on-body)
+  double linear = 0.0;      ///< on-body coefficient of x [linear_unit]
+  double quadratic = 0.0;   ///< on-body coefficient of x|x| [quadratic_unit]
+  std::string linear_unit;  ///< e.g. "N/(m/s)"
+  std::string quadratic_unit;
+  std::vector<std::int64_t> runs;
+  double dropped_constant = 0.0;  ///< with drop_constant: the constant dropped [N or N m]; NaN when none
+};
+
+/// One SDF element written: name, numbers (1, 6 or 36), unit.
+struct GazeboElementExport {
+  std::string name;
+  std::vector<double> values;
+  std::string unit;
+};
+
+/// What export-gazebo wrote. Matrices are 6x6 row-major (36 numbers), rows
+/// X..N, columns u..r, in hydrocoef's body axes (FRD), on-body signs.
+struct GazeboExportResult {
+  std::string body;
+  std::string flavor;  ///< "uuv" or "gz"
+  std::string file;
+  std::string frame;      ///< of the written parameters: "frd" or "flu"
+  std::string link_name;  ///< gz only ("" for uuv)
+  std::vector<double> linear_b, quadratic_b, added_mass_b;
+  std::string added_mass_source;
+  double linearized_at = 0.0;  ///< U0 [m/s]; NaN when not linearised
+  std::vector<GazeboFitExport> fits;
+  std::vector<std::string> missing;  ///< DOFs written 0 (allow_missing)
+  std::vector<GazeboElementExport> elements;
+  std::vector<std::string> notes;
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `export-gazebo` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `export-gazebo --json` prints
+  struct Access;
+
+ private:
+  std::string text_, json_;
+};
+
+/// Writes a body's fits and an added mass as Gazebo parameters, as
+/// `hydrocoef export-gazebo` (options.validate() first). InputError, nothing
+/// written, for what the flavor cannot express (see the CLI's help).
+HYDROCOEF_EXPORT GazeboExportResult export_gazebo(const Database& db, const GazeboExportOptions& options);
+
+}  // namespace api
+}  // namespace hydrocoef

@@ -1,0 +1,112 @@
+// export_surface (include/hydrocoef/exports.hpp): `hydrocoef export`, a stored
+// gridded surface written for another tool (src/export/), and what the
+// command prints about it.
+#include "src/api/internal.hpp"
+#include "src/api/surface_report.hpp"
+
+#include <sstream>
+
+#include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
+#include "src/export/export.hpp"
+#include "src/surface/grid_table.hpp"
+
+namespace hydrocoef {
+inline namespace api {
+
+void TableExportOptions::validate() const {
+  const ExportFormat parsed = parse_export_format(format);
+  if (single_precision && parsed != ExportFormat::CHeader)
+    throw InputError("--float applies to --format c only; expected it with c (got --format " + format + ")");
+  if (!identifier.empty() && parsed != ExportFormat::CHeader)
+    throw InputError("--identifier applies to --format c only; expected it with c (got --format " + format + ")");
+}
+
+TableExportResult export_surface(const Database& db, const TableExportOptions& options) {
+  options.validate();
+  const ExportFormat format = parse_export_format(options.format);
+  StoredSurface stored = [&] {
+    auto& impl = Database::Access::impl(db);
+    const std::lock_guard lock(impl.mutex);
+    return load_surface(impl.open_store(), options.name);
+  }();
+  const ExportMetadata metadata = metadata_from_record(stored.record, stored.surface);
+  const GridTable& table = *stored.surface.grid();
+  ExportOptions writing;
+  writing.single_precision = options.single_precision;
+  writing.c_identifier = options.identifier;
+
+  TableExportResult out;
+  for (const auto& file : export_table(table, metadata, format, options.output, writing))
+    out.files.push_back(file.string());
+  out.surface = metadata.surface_name;
+  out.body = metadata.body;
+  out.format = std::string(export_format_name(format));
+  out.method = std::string(interpolation_name(table.method()));
+  out.content_sha256 = metadata.content_sha256;
+  out.runs = metadata.run_ids;
+  out.stale = metadata.stale;
+  out.nodes = table.node_count();
+  for (std::size_t a = 0; a < table.axis_count(); ++a) {
+    const GridAxis& axis = table.axes()[a];
+    const double lower = axis.breakpoints.front(), upper = axis.breakpoints.back();
+    out.axes.push_back({axis.name, metadata.axis_units[a], axis.breakpoints.size(), lower, upper,
+                        std::string(extrapolation_name(axis.extrapolation))});
+    // A table whose range leaves out zero on an axis that refuses values
+    // outside it fails at rest (u = 0) in the controller: say so, once per axis.
+    if (axis.extrapolation == Extrapolation::Error && (lower > 0.0 || upper < 0.0))
+      out.notes.push_back("axis " + axis.name + " covers [" + shortest_number(lower) + ", " + shortest_number(upper) +
+                          "] and refuses values outside it (policy error): a query at " + axis.name +
+                          " = 0 (at rest) fails; build the surface with --extrapolate " + axis.name + "=clamp or " +
+                          axis.name + "=linear if the controller will ask there");
+  }
+  out.outputs = table.outputs();
+  out.output_units = metadata.output_units;
+  return out;
+}
+
+std::string TableExportResult::json() const {
+  nlohmann::json out = {{"surface", surface},
+                        {"body", body},
+                        {"format", format},
+                        {"method", method},
+                        {"content_sha256", content_sha256},
+                        {"runs", runs},
+                        {"stale", stale},
+                        {"nodes", nodes}};
+  out["files"] = files;
+  for (const auto& axis : axes)
+    out["axes"].push_back({{"name", axis.name},
+                           {"unit", axis.unit},
+                           {"breakpoints", axis.breakpoints},
+                           {"valid_range", {axis.lower, axis.upper}},
+                           {"extrapolation", axis.extrapolation}});
+  for (std::size_t k = 0; k < outputs.size(); ++k)
+    out["outputs"].push_back({{"name", outputs[k]}, {"unit", output_units[k]}});
+  out["notes"] = notes;
+  return escape::json_text(out, 2) + '\n';
+}
+
+std::string TableExportResult::text() const {
+  std::ostringstream out;
+  out << "exported surface " << escape::one_line(surface) << " (" << method << ", " << nodes << " nodes) as " << format
+      << "\n";
+  for (const auto& axis : axes)
+    out << "  axis " << escape::one_line(axis.name) << " [" << escape::one_line(axis.unit) << "] in ["
+        << shortest_number(axis.lower) << ", " << shortest_number(axis.upper) << "], outside: " << axis.extrapolation
+        << '\n';
+  out << "  outputs";
+  for (std::size_t k = 0; k < outputs.size(); ++k)
+    out << ' ' << escape::one_line(outputs[k]) << " [" << escape::one_line(output_units[k]) << "]";
+  out << ", forces on the body\n  content sha256 " << escape::one_line(content_sha256) << '\n';
+  for (const auto& file : files) out << "  wrote " << escape::one_line(file) << '\n';
+  for (const auto& note : notes) out << "  note: " << escape::one_line(note) << '\n';
+  if (stale)
+    out << "  note: the body's forces changed since this surface was built; rebuild it with "
+           "hydrocoef surface rebuild "
+        << escape::one_line(surface) << '\n';
+  return out.str();
+}
+
+}  // namespace api
+}  // namespace hydrocoef
