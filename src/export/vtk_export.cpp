@@ -46,6 +46,8 @@ void write_vtk(const GridTable& table, const ExportMetadata& metadata, const std
   int dims[3] = {1, 1, 1};
   vtkNew<vtkDoubleArray> coordinates[3];
   for (std::size_t a = 0; a < 3; ++a) {
+    // Named, so the file does not carry VTK's default name (the array's address) and two exports are equal.
+    coordinates[a]->SetName(a < n ? table.axes()[a].name.c_str() : (std::string("unused_") + "xyz"[a]).c_str());
     if (a < n) {
       const std::vector<double>& x = table.axes()[a].breakpoints;
       dims[a] = static_cast<int>(x.size());
