@@ -88,7 +88,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& global) {
 
   auto fits_args = std::make_shared<FitsArgs>();
   auto* list = app.add_subcommand("fits", "List stored damping-law fits");
-  list->add_option("--body", fits_args->options.body, "Only fits of this body");
+  list->add_option("--body", fits_args->body, "Only fits of this body");
   list->add_flag("--json", fits_args->json, "Print JSON");
   list->callback([fits_args, list, &global] {
     if (!list->get_subcommands().empty()) return;  // "fits" lists only when no subcommand (evaluate) was given

@@ -12,6 +12,8 @@
 
 #include "src/api/internal.hpp"
 
+#include "hydrocoef/records.hpp"
+
 namespace hydrocoef {
 inline namespace api {
 

@@ -1,7 +1,10 @@
 // `hydrocoef report` (include/hydrocoef/records.hpp): the self-contained HTML
 // page of a database (src/report/report.hpp) and what the command prints.
 #include "src/api/internal.hpp"
+#include "hydrocoef/records.hpp"
 #include "src/core/escape.hpp"
+
+#include <nlohmann/json.hpp>
 #include "src/report/report.hpp"
 
 #include <sstream>

@@ -3,6 +3,8 @@
 #include "src/api/internal.hpp"
 #include "src/api/records_report.hpp"
 #include "src/core/escape.hpp"
+
+#include <nlohmann/json.hpp>
 #include "src/pipeline/run_curation.hpp"
 
 #include <algorithm>
