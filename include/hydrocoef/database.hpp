@@ -49,7 +49,7 @@ enum class OpenMode {
 
 /// Runs as columns: entry i of every column is run i. Runs are ordered by
 /// body and key, as `hydrocoef runs` lists them.
-struct RunTable {
+struct HYDROCOEF_EXPORT RunTable {
   std::vector<std::int64_t> id;  ///< the run's id in the database
   std::vector<std::string> body;
   /// u, v, w [m/s], p, q, r [rad/s]: the run's body velocity (0 where the run does not state it).
@@ -85,7 +85,7 @@ struct RunTable {
 };
 
 /// How Database::import_files reads its inputs: the options of `hydrocoef import`.
-struct ImportOptions {
+struct HYDROCOEF_EXPORT ImportOptions {
   /// auto (by extension and content), table, monitor, history, cfdpost or vtk.
   std::string format = "auto";
   /// The body of runs whose settings name none ("" : "vehicle", as the CLI).
@@ -175,7 +175,7 @@ struct ImportedFile {
 };
 
 /// What Database::import_files did, as `hydrocoef import` reports it.
-struct ImportSummary {
+struct HYDROCOEF_EXPORT ImportSummary {
   std::vector<ImportedFile> files;  ///< in the order the inputs were planned (folders expanded)
   std::vector<std::string> notes;   ///< of the whole import (twins, settings a format ignores, ...)
   std::size_t excluded = 0;         ///< files left out by include/exclude
@@ -200,7 +200,7 @@ struct ImportSummary {
 
 /// A damping law to fit: the options of `hydrocoef fit`.
 ///   F_output(x) = sum_k c_k term_k(x), terms of one velocity component x.
-struct FitOptions {
+struct HYDROCOEF_EXPORT FitOptions {
   std::string body;
   std::string output;  ///< force component: X Y Z K M N (the CLI's --dof)
   std::string terms;   ///< e.g. "1,u,u|u|": 1, x, x|x|, x^2, x^3, |x|
@@ -244,7 +244,7 @@ struct FitCoefficient {
 };
 
 /// A fitted damping law: what `hydrocoef fit --json` prints, or a stored fit.
-struct FitSummary {
+struct HYDROCOEF_EXPORT FitSummary {
   std::string name;
   std::string body;
   std::string output;    ///< X..N

@@ -73,7 +73,7 @@ struct RunImport {
 };
 
 /// One run with its provenance: `hydrocoef runs show ID`.
-struct RunDetails {
+struct HYDROCOEF_EXPORT RunDetails {
   std::int64_t id = 0;
   std::string body;
   std::array<double, 6> velocity{};  ///< u, v, w [m/s], p, q, r [rad/s]
@@ -104,7 +104,7 @@ HYDROCOEF_EXPORT RunDetails show_run(const Database& database, std::int64_t id);
 
 /// Which runs `hydrocoef runs delete` removes: those named by id, and those
 /// `where`/`source` select (of `body` when given).
-struct DeleteRunsOptions {
+struct HYDROCOEF_EXPORT DeleteRunsOptions {
   std::vector<std::int64_t> ids;
   std::string body;                        ///< "" every body
   std::vector<std::string> where;          ///< selection clauses, as for runs()
@@ -117,7 +117,7 @@ struct DeleteRunsOptions {
   void validate() const;
 };
 
-struct DeleteSummary {
+struct HYDROCOEF_EXPORT DeleteSummary {
   std::string database;
   std::size_t runs = 0;
   std::size_t components = 0;  ///< force components deleted
@@ -167,7 +167,7 @@ struct LevelCurve {
 };
 
 /// What `hydrocoef fit --by` makes.
-struct LevelFits {
+struct HYDROCOEF_EXPORT LevelFits {
   std::string name;  ///< the base name; each level's is BASE[by=LEVEL]
   std::string body;
   std::string output;
@@ -198,7 +198,7 @@ struct LevelFits {
 HYDROCOEF_EXPORT LevelFits fit_by_level(Database& database, const FitOptions& options);
 
 /// What `hydrocoef fit --refit` did: each fit as it was and as made again.
-struct Refits {
+struct HYDROCOEF_EXPORT Refits {
   std::string database;
   std::vector<FitSummary> previous;
   std::vector<FitSummary> made;
@@ -213,7 +213,7 @@ struct Refits {
 HYDROCOEF_EXPORT Refits refit_fits(Database& database, const FitOptions& options);
 
 /// The stored fits, as `hydrocoef fits` lists them.
-struct FitList {
+struct HYDROCOEF_EXPORT FitList {
   std::string database;
   std::vector<FitSummary> fits;  ///< by name
 
@@ -225,7 +225,7 @@ struct FitList {
 HYDROCOEF_EXPORT FitList list_fits(const Database& database, const std::string& body = "");
 
 /// Where to evaluate a stored fit's law: `hydrocoef fits evaluate NAME --at X`.
-struct FitEvaluationOptions {
+struct HYDROCOEF_EXPORT FitEvaluationOptions {
   std::string name;        ///< the stored fit
   std::vector<double> at;  ///< values of the law's velocity component [m/s or rad/s]
 
@@ -236,7 +236,7 @@ struct FitEvaluationOptions {
 /// A stored law at given velocities, with the standard error of its value
 /// from the coefficients' covariance C: sqrt(b(x)^T C b(x)), b(x) the law's
 /// terms at x. Values in the fit's sign convention.
-struct FitEvaluation {
+struct HYDROCOEF_EXPORT FitEvaluation {
   std::string name;
   std::string output;           ///< X..N
   std::string variable;         ///< u..r
@@ -261,7 +261,7 @@ HYDROCOEF_EXPORT FitEvaluation evaluate_fit(const Database& database, const FitE
 
 // ---- merge, copy, migrate ------------------------------------------------------
 
-struct MergeOptions {
+struct HYDROCOEF_EXPORT MergeOptions {
   /// Shard databases: SQLite paths, sqlite:PATH or postgresql:// URLs.
   std::vector<std::string> shards;
   /// Called after each shard is read (may be empty): shards done, shards in all.
@@ -283,7 +283,7 @@ struct MergedShard {
   std::size_t pmm_added = 0, pmm_already = 0;
 };
 
-struct MergeSummary {
+struct HYDROCOEF_EXPORT MergeSummary {
   std::string into;  ///< the database merged into
   std::vector<MergedShard> shards;
 
@@ -296,7 +296,7 @@ struct MergeSummary {
 /// shard, and nothing is merged.
 HYDROCOEF_EXPORT MergeSummary merge_databases(Database& into, const MergeOptions& options);
 
-struct CopySummary {
+struct HYDROCOEF_EXPORT CopySummary {
   std::string from, to;
   std::vector<std::pair<std::string, std::size_t>> rows;  ///< rows copied, by table
 
@@ -309,7 +309,7 @@ struct CopySummary {
 /// is `from`.
 HYDROCOEF_EXPORT CopySummary copy_database(const Database& from, Database& to);
 
-struct MigrationSummary {
+struct HYDROCOEF_EXPORT MigrationSummary {
   std::string database;
   int from = 0;  ///< the schema version the database was at when opened
   int to = 0;    ///< its version now
@@ -325,7 +325,7 @@ HYDROCOEF_EXPORT MigrationSummary migration(const Database& database);
 // ---- report ----------------------------------------------------------------------
 
 /// `hydrocoef report`: one self-contained HTML page of the database.
-struct ReportOptions {
+struct HYDROCOEF_EXPORT ReportOptions {
   std::string output;  ///< directory for index.html and plots/ (created if needed)
   std::string body;    ///< "" every body
   std::vector<std::string> where;          ///< selection clauses: only these runs, and what is built from them
@@ -338,7 +338,7 @@ struct ReportOptions {
   void validate() const;
 };
 
-struct ReportSummary {
+struct HYDROCOEF_EXPORT ReportSummary {
   std::string database;
   std::string index;               ///< OUTPUT/index.html
   std::vector<std::string> plots;  ///< the SVG files embedded

@@ -28,9 +28,13 @@ import os as _os
 from . import _hydrocoef
 from ._hydrocoef import (Fit, ImportedFile, ImportSummary, InputError, Surface,
                          SurfaceInfo, __version__)
+from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
+                         MigrationSummary, Refits, ReportSummary, RunDetails)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "simulate",
            "InputError", "__version__"]
+__all__ += ["LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary", "MergeSummary",
+            "CopySummary", "MigrationSummary", "ReportSummary"]
 
 
 class Table(dict):

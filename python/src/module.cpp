@@ -26,6 +26,9 @@ PYBIND11_MODULE(_hydrocoef, m) {
   // (Database is: hydrocoef.Database is its Python subclass in __init__.py).
   for (const char* name : {"Surface", "Fit", "SurfaceInfo", "ImportedFile", "ImportSummary", "InputError"})
     m.attr(name).attr("__module__") = "hydrocoef";
+  for (const char* name : {"LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary",
+                           "MergeSummary", "CopySummary", "MigrationSummary", "ReportSummary"})
+    m.attr(name).attr("__module__") = "hydrocoef";
 
   hydrocoef_python::bind_simulation(m);
 }
