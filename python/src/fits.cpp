@@ -213,9 +213,9 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
              bool weighted) {
             const auto options = fit_options(body, output, terms, where, exclude_runs, mirror, mirror_odd, loss, name,
                                              replace, store, weighted);
-            auto& database = database_of(self);
+            auto& db = database_of(self);
             py::gil_scoped_release release;
-            return database.fit(options);
+            return db.fit(options);
           },
           py::kw_only(), "body"_a, "output"_a, "terms"_a, "where"_a = py::none(), "exclude_runs"_a = py::none(),
           "mirror"_a = py::none(), "mirror_odd"_a = py::none(), "loss"_a = "squared", "name"_a = py::none(),
@@ -238,9 +238,9 @@ squares even when every run states an uncertainty (the CLI's --unweighted). Retu
             options.by = by;
             options.curve = curve;
             options.strict = strict;
-            auto& database = database_of(self);
+            auto& db = database_of(self);
             py::gil_scoped_release release;
-            return hydrocoef::fit_by_level(database, options);
+            return hydrocoef::fit_by_level(db, options);
           },
           py::kw_only(), "body"_a, "output"_a, "terms"_a, "by"_a, "curve"_a = "polynomial:2", "strict"_a = false,
           "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(), "mirror_odd"_a = py::none(),
@@ -254,9 +254,9 @@ level with too few runs (else it is skipped with a note). Other arguments as fit
             hydrocoef::FitOptions options;
             options.name = name.is_none() ? "" : name.cast<std::string>();
             options.body = body.is_none() ? "" : body.cast<std::string>();
-            auto& database = database_of(self);
+            auto& db = database_of(self);
             py::gil_scoped_release release;
-            return hydrocoef::refit_fits(database, options);
+            return hydrocoef::refit_fits(db, options);
           },
           "name"_a = py::none(), "body"_a = py::none(),
           "Makes stored fits again from the runs their selections pick now (`hydrocoef fit --refit`): the one "
@@ -268,9 +268,9 @@ level with too few runs (else it is skipped with a note). Other arguments as fit
             options.name = name;
             const auto values = py::module_::import("numpy").attr("asarray")(at, "dtype"_a = "float64");
             options.at = values.attr("ravel")().cast<std::vector<double>>();
-            const auto& database = database_of(self);
+            const auto& db = database_of(self);
             py::gil_scoped_release release;
-            return hydrocoef::evaluate_fit(database, options);
+            return hydrocoef::evaluate_fit(db, options);
           },
           "name"_a, "at"_a,
           R"doc(A stored fit's law at velocities `at` (a number or an array, m/s or rad/s), with the standard
