@@ -9,8 +9,8 @@
 #include <memory>
 
 #include "cli/common.hpp"
-#include "hydrocoef/records.hpp"
 #include "cli/surface_options.hpp"
+#include "hydrocoef/records.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
 

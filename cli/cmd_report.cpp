@@ -33,8 +33,7 @@ void add_report_command(CLI::App& app, const GlobalOptions& global) {
   auto* command = app.add_subcommand("report",
                                      "Write a self-contained HTML report: runs and their quality, fits, surfaces, mesh "
                                      "studies, forced oscillation and plots");
-  command->add_option("-o,--output", args->options.output, "Directory to write index.html and plots/ into")
-      ->required();
+  command->add_option("-o,--output", args->options.output, "Directory to write index.html and plots/ into")->required();
   command->add_option("--body", args->options.body, "Only this body's runs, fits and surfaces");
   command->add_option("--trajectory", args->options.trajectories, "Simulated trajectory CSV to plot (repeatable)");
   command->add_option("--experiment", args->options.experiment, "Measured CSV overlaid on the trajectories");

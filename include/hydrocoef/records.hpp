@@ -157,13 +157,13 @@ struct SkippedFitLevel {
 /// One coefficient as a curve of the level.
 struct LevelCurve {
   std::string term;
-  std::string kind;                 ///< "polynomial" or "pchip"
-  int degree = 0;                   ///< of the polynomial (3 for pchip)
-  std::vector<double> polynomial;   ///< a_0 + a_1 x + ... (polynomial)
-  std::vector<double> levels;       ///< the levels fitted
-  std::vector<double> values;       ///< the coefficient at each level
-  double rmse = 0.0;                ///< of the curve through the values
-  std::string unit;                 ///< the coefficient's unit
+  std::string kind;                ///< "polynomial" or "pchip"
+  int degree = 0;                  ///< of the polynomial (3 for pchip)
+  std::vector<double> polynomial;  ///< a_0 + a_1 x + ... (polynomial)
+  std::vector<double> levels;      ///< the levels fitted
+  std::vector<double> values;      ///< the coefficient at each level
+  double rmse = 0.0;               ///< of the curve through the values
+  std::string unit;                ///< the coefficient's unit
 };
 
 /// What `hydrocoef fit --by` makes.
@@ -326,8 +326,8 @@ HYDROCOEF_EXPORT MigrationSummary migration(const Database& database);
 
 /// `hydrocoef report`: one self-contained HTML page of the database.
 struct HYDROCOEF_EXPORT ReportOptions {
-  std::string output;  ///< directory for index.html and plots/ (created if needed)
-  std::string body;    ///< "" every body
+  std::string output;                      ///< directory for index.html and plots/ (created if needed)
+  std::string body;                        ///< "" every body
   std::vector<std::string> where;          ///< selection clauses: only these runs, and what is built from them
   std::vector<std::int64_t> exclude_runs;  ///< run ids left out
   std::vector<std::string> trajectories;   ///< simulated trajectory CSVs to plot

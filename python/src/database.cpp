@@ -133,15 +133,15 @@ void bind_records(py::module_& m) {
       .def_readonly("kinematic_viscosity", &hydrocoef::RunDetails::kinematic_viscosity)
       .def_readonly("reference_point", &hydrocoef::RunDetails::reference_point)
       .def_readonly("flags", &hydrocoef::RunDetails::flags)
-      .def_property_readonly("imports",
-                             [](const hydrocoef::RunDetails& r) {
-                               py::list out;
-                               for (const auto& i : r.imports)
-                                 out.append(py::dict("id"_a = i.id, "path"_a = i.path, "sha256"_a = i.sha256,
-                                                     "importer"_a = i.importer, "imported_at"_a = i.imported_at,
-                                                     "reading"_a = i.reading));
-                               return out;
-                             })
+      .def_property_readonly(
+          "imports",
+          [](const hydrocoef::RunDetails& r) {
+            py::list out;
+            for (const auto& i : r.imports)
+              out.append(py::dict("id"_a = i.id, "path"_a = i.path, "sha256"_a = i.sha256, "importer"_a = i.importer,
+                                  "imported_at"_a = i.imported_at, "reading"_a = i.reading));
+            return out;
+          })
       .def("text", &hydrocoef::RunDetails::text)
       .def("json", &hydrocoef::RunDetails::json);
 
@@ -158,21 +158,20 @@ void bind_records(py::module_& m) {
   py::class_<hydrocoef::MergeSummary>(m, "MergeSummary", py::is_final(), made_by_the_module_only(),
                                       "What Database.merge did.")
       .def_readonly("into", &hydrocoef::MergeSummary::into)
-      .def_property_readonly("shards",
-                             [](const hydrocoef::MergeSummary& s) {
-                               py::list out;
-                               for (const auto& o : s.shards)
-                                 out.append(py::dict(
-                                     "shard"_a = o.shard, "imports_added"_a = o.imports_added,
-                                     "imports_already"_a = o.imports_already, "runs_created"_a = o.runs_created,
-                                     "runs_extended"_a = o.runs_extended, "components"_a = o.components,
-                                     "fits_added"_a = o.fits_added, "fits_already"_a = o.fits_already,
-                                     "surfaces_added"_a = o.surfaces_added, "surfaces_already"_a = o.surfaces_already,
-                                     "mesh_studies_added"_a = o.mesh_studies_added,
-                                     "mesh_studies_already"_a = o.mesh_studies_already, "pmm_added"_a = o.pmm_added,
-                                     "pmm_already"_a = o.pmm_already));
-                               return out;
-                             })
+      .def_property_readonly(
+          "shards",
+          [](const hydrocoef::MergeSummary& s) {
+            py::list out;
+            for (const auto& o : s.shards)
+              out.append(py::dict(
+                  "shard"_a = o.shard, "imports_added"_a = o.imports_added, "imports_already"_a = o.imports_already,
+                  "runs_created"_a = o.runs_created, "runs_extended"_a = o.runs_extended, "components"_a = o.components,
+                  "fits_added"_a = o.fits_added, "fits_already"_a = o.fits_already,
+                  "surfaces_added"_a = o.surfaces_added, "surfaces_already"_a = o.surfaces_already,
+                  "mesh_studies_added"_a = o.mesh_studies_added, "mesh_studies_already"_a = o.mesh_studies_already,
+                  "pmm_added"_a = o.pmm_added, "pmm_already"_a = o.pmm_already));
+            return out;
+          })
       .def("text", &hydrocoef::MergeSummary::text)
       .def("json", &hydrocoef::MergeSummary::json);
 
@@ -369,9 +368,8 @@ hydrocoef-run.json; replace / also: see `hydrocoef import --help`; jobs: 0 every
 Returns an ImportSummary. Every input is read before the database is written:
 a bad one raises InputError and leaves the database as it was. The GIL is released.)doc")
       .def(
-          "show_run",
-          [](py::handle self, std::int64_t id) { return hydrocoef::show_run(database_of(self), id); }, "id"_a,
-          "One run with its provenance, as `hydrocoef runs show ID`. Returns a RunDetails.")
+          "show_run", [](py::handle self, std::int64_t id) { return hydrocoef::show_run(database_of(self), id); },
+          "id"_a, "One run with its provenance, as `hydrocoef runs show ID`. Returns a RunDetails.")
       .def(
           "delete_runs",
           [](py::handle self, const py::object& ids, const py::object& where, const py::object& body,

@@ -163,17 +163,17 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
                                  out.append(py::dict("level"_a = s.level, "runs"_a = s.runs, "reason"_a = s.reason));
                                return out;
                              })
-      .def_property_readonly("curves",
-                             [](const hydrocoef::LevelFits& f) {
-                               py::dict out;
-                               for (const auto& c : f.curves)
-                                 out[py::str(c.term)] = py::dict("kind"_a = c.kind, "degree"_a = c.degree,
-                                                                 "polynomial"_a = c.polynomial, "levels"_a = c.levels,
-                                                                 "values"_a = c.values, "rmse"_a = c.rmse,
-                                                                 "unit"_a = c.unit);
-                               return out;
-                             },
-                             "{term: {kind, degree, polynomial (a_0, a_1, ...), levels, values, rmse, unit}}.")
+      .def_property_readonly(
+          "curves",
+          [](const hydrocoef::LevelFits& f) {
+            py::dict out;
+            for (const auto& c : f.curves)
+              out[py::str(c.term)] =
+                  py::dict("kind"_a = c.kind, "degree"_a = c.degree, "polynomial"_a = c.polynomial,
+                           "levels"_a = c.levels, "values"_a = c.values, "rmse"_a = c.rmse, "unit"_a = c.unit);
+            return out;
+          },
+          "{term: {kind, degree, polynomial (a_0, a_1, ...), levels, values, rmse, unit}}.")
       .def_readonly("warnings", &hydrocoef::LevelFits::warnings)
       .def("text", &hydrocoef::LevelFits::text)
       .def("json", &hydrocoef::LevelFits::json);
@@ -194,12 +194,14 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
       .def_readonly("unit", &hydrocoef::FitEvaluation::unit)
       .def_readonly("variable_unit", &hydrocoef::FitEvaluation::variable_unit)
       .def_property_readonly("at", [](const hydrocoef::FitEvaluation& e) { return numpy_copy(e.at); })
-      .def_property_readonly("value", [](const hydrocoef::FitEvaluation& e) { return numpy_copy(e.value); },
-                             "The law at each velocity [N or N m].")
-      .def_property_readonly("std_error", [](const hydrocoef::FitEvaluation& e) { return numpy_copy(e.std_error); },
-                             "One sigma of each value from the coefficients' covariance (nan when not recorded).")
-      .def_property_readonly("fitted_range",
-                             [](const hydrocoef::FitEvaluation& e) { return py::make_tuple(e.fitted_min, e.fitted_max); })
+      .def_property_readonly(
+          "value", [](const hydrocoef::FitEvaluation& e) { return numpy_copy(e.value); },
+          "The law at each velocity [N or N m].")
+      .def_property_readonly(
+          "std_error", [](const hydrocoef::FitEvaluation& e) { return numpy_copy(e.std_error); },
+          "One sigma of each value from the coefficients' covariance (nan when not recorded).")
+      .def_property_readonly(
+          "fitted_range", [](const hydrocoef::FitEvaluation& e) { return py::make_tuple(e.fitted_min, e.fitted_max); })
       .def_readonly("stale", &hydrocoef::FitEvaluation::stale)
       .def("text", &hydrocoef::FitEvaluation::text)
       .def("json", &hydrocoef::FitEvaluation::json);

@@ -110,8 +110,8 @@ RunTable Database::runs(const std::vector<std::string>& where, const std::string
     table.source.push_back(join(std::vector<std::string>(sources.begin(), sources.end()), ";"));
     table.history_flags.push_back(join(run_flags(run), ","));
   }
-  RunTable::Access::set(table, std::make_shared<const RunTable::Rendering>(RunTable::Rendering{
-                                   std::move(runs), optional_body(body), impl_->path}));
+  RunTable::Access::set(table, std::make_shared<const RunTable::Rendering>(
+                                   RunTable::Rendering{std::move(runs), optional_body(body), impl_->path}));
   return table;
 }
 

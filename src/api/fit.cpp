@@ -59,8 +59,8 @@ std::vector<std::string> coefficient_units(const std::string& terms, const std::
 }
 
 void FitOptions::validate() const {
-  if (refit && (!output.empty() || !terms.empty() || !by.empty() || !where.empty() || !exclude_runs.empty() ||
-                !mirror.empty()))
+  if (refit &&
+      (!output.empty() || !terms.empty() || !by.empty() || !where.empty() || !exclude_runs.empty() || !mirror.empty()))
     throw InputError(
         "--refit makes stored fits again as they were made; expected only --name, --body and --json with it");
 }
@@ -68,8 +68,9 @@ void FitOptions::validate() const {
 FitSummary Database::fit(const FitOptions& options) {
   options.validate();
   if (!options.by.empty() || options.refit)
-    throw std::invalid_argument("hydrocoef::Database::fit: options.by and options.refit are for fit_by_level and "
-                                "refit_fits");
+    throw std::invalid_argument(
+        "hydrocoef::Database::fit: options.by and options.refit are for fit_by_level and "
+        "refit_fits");
   const FitRequest request = fit_request(options);
   const std::lock_guard lock(impl_->mutex);
   const FitResult result = fit_stored_runs(fit_store(*impl_, options.store), request);

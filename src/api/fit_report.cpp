@@ -84,8 +84,7 @@ std::string fit_text(const FitResult& result, const std::string& dof, const std:
       << (samples.sign == SignConvention::OnBody ? "force on the body (damping is negative)"
                                                  : "as tabulated, positive opposes motion")
       << "\n\n";
-  out << std::left << "  " << std::setw(8) << "term" << std::setw(16) << "coefficient" << std::setw(14)
-      << "std. error"
+  out << std::left << "  " << std::setw(8) << "term" << std::setw(16) << "coefficient" << std::setw(14) << "std. error"
       << "unit\n";
   for (std::size_t k = 0; k < spec.terms.size(); ++k)
     out << "  " << std::setw(8) << term_name(spec.terms[k], spec.variable) << std::setw(16)
@@ -364,8 +363,8 @@ LevelFits level_fits(const LevelFitResult& result, const LevelFitRequest& reques
   for (const auto& level : result.skipped) out.skipped.push_back({level.level, level.runs, level.reason});
   for (std::size_t k = 0; k < result.curves.size(); ++k) {
     const auto& c = result.curves[k];
-    out.curves.push_back({c.term, c.kind == CurveKind::Pchip ? "pchip" : "polynomial", c.degree, c.polynomial,
-                          c.levels, c.values, c.rmse, setup.coefficient_units[k]});
+    out.curves.push_back({c.term, c.kind == CurveKind::Pchip ? "pchip" : "polynomial", c.degree, c.polynomial, c.levels,
+                          c.values, c.rmse, setup.coefficient_units[k]});
   }
   out.warnings = warning_texts(setup.warnings);
   LevelFits::Access::set(out, level_text(result, request, database), level_json(result, request));
@@ -463,9 +462,8 @@ std::string FitEvaluation::text() const {
         << significant(value[i], 7) << significant(std_error[i], 3) << '\n';
   }
   if (!std::isnan(fitted_min))
-    out << "\n  fitted over " << variable << " = " << significant(fitted_min, 6) << " to "
-        << significant(fitted_max, 6) << " " << variable_unit
-        << (extrapolated ? "; * = outside it (extrapolated)" : "") << '\n';
+    out << "\n  fitted over " << variable << " = " << significant(fitted_min, 6) << " to " << significant(fitted_max, 6)
+        << " " << variable_unit << (extrapolated ? "; * = outside it (extrapolated)" : "") << '\n';
   if (no_covariance)
     out << "  note: n/a: no covariance of the coefficients (a fit of an older hydrocoef: fit --refit makes it "
            "again with one; or as many runs as terms)\n";

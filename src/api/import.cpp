@@ -140,8 +140,7 @@ SettingsLayer command_line_layer(const ImportOptions& options) {
       auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
       object[key] = value.is_discarded() ? nlohmann::json(text) : std::move(value);
     }
-    const SettingsLayer map =
-        settings_from_json(object, SettingOrigin{SettingSource::CommandLine, "import settings"});
+    const SettingsLayer map = settings_from_json(object, SettingOrigin{SettingSource::CommandLine, "import settings"});
     for (const auto& [name, setting] : map.values) {
       if (layer.values.count(name))
         throw InputError(name == "body" ? std::string("import: the body is given twice (as the body option and in the "

@@ -158,9 +158,9 @@ std::string import_json(const ImportResult& result, const std::string& database)
 std::string summary_line(const ImportResult& result, const std::string& database) {
   const std::size_t files = result.outcomes.size(), created = result.runs_created;
   std::ostringstream line;
-  line << "imported " << files << (files == 1 ? " input" : " inputs") << " into " << escape::one_line(database)
-       << ": " << created << " new " << (created == 1 ? "run" : "runs") << ", " << result.runs_extended
-       << " extended, " << result.already_imported << " already imported"
+  line << "imported " << files << (files == 1 ? " input" : " inputs") << " into " << escape::one_line(database) << ": "
+       << created << " new " << (created == 1 ? "run" : "runs") << ", " << result.runs_extended << " extended, "
+       << result.already_imported << " already imported"
        << (result.replaced ? ", " + std::to_string(result.replaced) + " replaced" : std::string())
        << (result.plan.excluded ? ", " + std::to_string(result.plan.excluded) + " left out by the filters"
                                 : std::string())

@@ -1,8 +1,8 @@
 // Whole databases (include/hydrocoef/records.hpp): `hydrocoef merge` (shards
 // into one, src/store/merge.cpp), `copy` (every row into an empty database,
 // src/store/copy.cpp) and `migrate` (the schema versions), with what each prints.
-#include "src/api/internal.hpp"
 #include "hydrocoef/records.hpp"
+#include "src/api/internal.hpp"
 #include "src/core/escape.hpp"
 
 #include <nlohmann/json.hpp>

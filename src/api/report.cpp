@@ -1,7 +1,7 @@
 // `hydrocoef report` (include/hydrocoef/records.hpp): the self-contained HTML
 // page of a database (src/report/report.hpp) and what the command prints.
-#include "src/api/internal.hpp"
 #include "hydrocoef/records.hpp"
+#include "src/api/internal.hpp"
 #include "src/core/escape.hpp"
 
 #include <nlohmann/json.hpp>
@@ -63,9 +63,9 @@ std::string ReportSummary::text() const {
   // the database) are printed through escape::one_line.
   std::ostringstream out;
   out << "report of " << escape::one_line(database) << ": " << runs << " runs (" << histories
-      << " force histories drawn), " << fits << " fits, " << surfaces << " surfaces (" << sigma_maps
-      << " sigma maps), " << mesh_study_rows << " mesh-study rows, " << pmm_fits << " forced-oscillation fits, "
-      << plots.size() << " plots\n  page " << escape::one_line(index)
+      << " force histories drawn), " << fits << " fits, " << surfaces << " surfaces (" << sigma_maps << " sigma maps), "
+      << mesh_study_rows << " mesh-study rows, " << pmm_fits << " forced-oscillation fits, " << plots.size()
+      << " plots\n  page " << escape::one_line(index)
       << " (self-contained: open it in any browser, no network needed)\n  plots and their values in "
       << escape::one_line((std::filesystem::path(index).parent_path() / "plots").string()) << "\n";
   for (const auto& note : notes) out << "  note: " << escape::one_line(note) << '\n';

@@ -184,11 +184,10 @@ std::string runs_table(const std::vector<StoredRun>& runs, const std::optional<s
   }
   table << runs.size() << (runs.size() == 1 ? " run" : " runs") << "; SI units (m/s, rad/s, N, N m); forces on the body"
         << (any_tabulated ? "; * = as tabulated, positive opposes motion" : "")
-        << (any_history
-                ? "; history: from a force history, 'converged' when its solver met the case's criteria (final "
-                  "iterate), 'ok' for a window mean with nothing to act on, else its flags ('runs show ID' "
-                  "gives the windows, standard errors and why)"
-                : "")
+        << (any_history ? "; history: from a force history, 'converged' when its solver met the case's criteria (final "
+                          "iterate), 'ok' for a window mean with nothing to act on, else its flags ('runs show ID' "
+                          "gives the windows, standard errors and why)"
+                        : "")
         << '\n';
   return table.str();
 }
@@ -236,20 +235,20 @@ std::string run_text(const StoredRun& run, const std::map<std::int64_t, ImportRe
       out << "  convergence: "
           << (st.convergence.empty()
                   ? std::string("not recorded (imported by an older hydrocoef)")
-                  : escape::one_line(st.convergence) +
-                        (st.convergence_reason.empty() ? std::string() : ": " + escape::one_line(st.convergence_reason)))
+                  : escape::one_line(st.convergence) + (st.convergence_reason.empty()
+                                                            ? std::string()
+                                                            : ": " + escape::one_line(st.convergence_reason)))
           << '\n';
       break;
     }
   for (const auto& [id, record] : imports) {
     // One line of database text: every field through escape::one_line at once.
     out << "  import " << id << ": "
-        << escape::one_line(record.path + " (" +
-                            (record.resolved_path.empty() ? "path not resolved" : record.resolved_path) +
-                            "), sha256 " + record.sha256.substr(0, 16) + "..., " + record.importer + " " +
-                            record.importer_version + ", hydrocoef " +
-                            (record.hydrocoef_version.empty() ? "(older)" : record.hydrocoef_version) + ", " +
-                            record.imported_at + (record.reading.empty() ? "" : ", reading '" + record.reading + "'"))
+        << escape::one_line(
+               record.path + " (" + (record.resolved_path.empty() ? "path not resolved" : record.resolved_path) +
+               "), sha256 " + record.sha256.substr(0, 16) + "..., " + record.importer + " " + record.importer_version +
+               ", hydrocoef " + (record.hydrocoef_version.empty() ? "(older)" : record.hydrocoef_version) + ", " +
+               record.imported_at + (record.reading.empty() ? "" : ", reading '" + record.reading + "'"))
         << '\n';
     const auto settings = nlohmann::json::parse(record.settings.empty() ? "{}" : record.settings, nullptr, false);
     if (settings.is_object())
