@@ -1,40 +1,28 @@
 // hydrocoef import: CFD results (files, folders, solver case folders) into
-// the run database. The library plans and reads the import
-// (src/pipeline/import_files.hpp); this command parses the options, shows
-// progress, stores the runs in one transaction and prints what happened.
+// the run database. The library reads every input, then stores the runs in one
+// transaction (hydrocoef/records.hpp: prepare_import, import_prepared); this
+// command parses the options, shows progress and prints what happened.
 #include <unistd.h>
 
-#include <chrono>
 #include <iostream>
 #include <map>
 #include <memory>
 
 #include "cli/common.hpp"
-#include "cli/import_output.hpp"
 #include "cli/surface_options.hpp"
+#include "hydrocoef/records.hpp"
 #include "src/core/error.hpp"
 #include "src/core/escape.hpp"
-#include "src/pipeline/import_files.hpp"
-#include "src/pipeline/sweep_keys.hpp"
-#include "src/store/database.hpp"
 
 namespace hydrocoef::cli {
 namespace {
 
 struct ImportArgs {
   std::vector<std::string> inputs;
-  std::string format = "auto";
+  hydrocoef::ImportOptions options;
   SurfaceArgs surface;
-  std::vector<std::string> include, exclude;
-  std::optional<std::string> manifest, key_pattern;
-  bool prefer_surfaces = false;
-  // tables, monitors, histories
-  std::vector<std::string> columns, units, disturbance_columns, ignored, monitors;
-  std::optional<std::string> sign;
-  std::size_t average_last = 1;
-  unsigned jobs = 0;
-  bool replace = false, json = false, quiet = false;
-  std::string also;
+  std::vector<std::string> columns, units, monitors;  ///< NAME=VALUE each
+  bool json = false, quiet = false;
 };
 
 std::map<std::string, std::string> assignments(const std::vector<std::string>& texts, const std::string& option) {
@@ -47,46 +35,46 @@ std::map<std::string, std::string> assignments(const std::vector<std::string>& t
 }
 
 void run_import(const ImportArgs& args, const GlobalOptions& global) {
-  ImportRequest request;
-  for (const auto& input : args.inputs) request.inputs.emplace_back(input);
-  request.command_line = command_line_settings(args.surface);
-  if (args.sign) request.command_line.set("sign", *args.sign, "--sign");
-  request.format = args.format;
-  request.columns.columns = assignments(args.columns, "--column");
-  request.columns.units = assignments(args.units, "--unit");
-  request.columns.disturbance_columns = args.disturbance_columns;
-  request.columns.ignored_columns = args.ignored;
-  request.columns.monitors = assignments(args.monitors, "--monitor");
-  request.columns.average_last = args.average_last;
-  request.jobs = args.jobs;
-  std::optional<Manifest> manifest;
-  std::optional<NamePattern> pattern;
-  if (args.manifest) manifest = Manifest::read(*args.manifest);
-  if (args.key_pattern) pattern.emplace(*args.key_pattern);
-  request.plan.include = args.include;
-  request.plan.exclude = args.exclude;
-  request.plan.manifest = manifest ? &*manifest : nullptr;
-  request.plan.key_pattern = pattern ? &*pattern : nullptr;
-  request.plan.use_sidecars = !args.surface.no_sidecar;
-  request.plan.prefer_surfaces = args.prefer_surfaces;
+  hydrocoef::ImportOptions options = args.options;
+  const SurfaceArgs& s = args.surface;
+  options.columns = assignments(args.columns, "--column");
+  options.units = assignments(args.units, "--unit");
+  options.monitors = assignments(args.monitors, "--monitor");
+  options.body = s.body;
+  options.use_sidecars = !s.no_sidecar;
+  options.locations = s.locations;
+  options.pressure = s.pressure;
+  options.shear = s.shear;
+  options.pressure_kind = s.pressure_kind;
+  options.shear_convention = s.shear_convention;
+  options.rho = s.rho;
+  options.nu = s.nu;
+  options.p_ref = s.p_ref;
+  options.ref_point = s.ref_point;
+  options.length_unit = s.length_unit;
+  options.pressure_unit = s.pressure_unit;
+  options.axes = s.axes;
+  options.origin = s.origin;
+  options.flow = s.flow;
+  options.normals = s.normals;
+  options.symmetry = s.symmetry;
+  options.window = s.window;
+  options.uncertainty = s.uncertainty;
+  options.set = s.set;
+  options.at_rest = s.at_rest;
   const bool progress = isatty(STDERR_FILENO) && !args.quiet;
   if (progress)
-    request.progress = [](std::size_t done, std::size_t total, const std::filesystem::path& path) {
-      std::cerr << "\r\033[K[" << done << "/" << total << "] " << escape::one_line(path.filename().string())
-                << std::flush;
+    options.progress = [](std::size_t done, std::size_t total, const std::string& path) {
+      std::cerr << "\r\033[K[" << done << "/" << total << "] "
+                << escape::one_line(std::filesystem::path(path).filename().string()) << std::flush;
     };
-
   // Everything is read before the database is opened: a bad input leaves it
   // as it was (or not made at all).
-  ImportResult result = read_import(request);
+  auto prepared = hydrocoef::prepare_import(args.inputs, options);
   if (progress) std::cerr << "\r\033[K" << std::flush;
-  RunDatabase database(global.database);
-  ImportPolicy import_options;
-  import_options.components = args.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
-  import_options.replace = args.replace;
-  import_options.also = args.also;
-  store_import(database, result, import_options);
-  print_import(result, global.database, args.json, args.quiet);
+  auto database = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::Create);
+  const auto summary = hydrocoef::import_prepared(database, std::move(prepared));
+  std::cout << (args.json ? summary.json() : summary.text(args.quiet));
 }
 
 }  // namespace
@@ -98,7 +86,7 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("inputs", args->inputs, "Files, folders or case folders to import (all in one transaction)")
       ->required();
   command
-      ->add_option("--format", args->format,
+      ->add_option("--format", args->options.format,
                    "auto (by extension and content), table, monitor, history, cfdpost, vtk or cfx-out (the wall "
                    "force summary of a CFX solver output)")
       ->capture_default_str();
@@ -108,37 +96,38 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
       ->description(
           "Surface exports: a patch, block, zone or [Name] to integrate; CFX .out: a boundary or domain group of the "
           "wall force summary (default its domain group's totals) (repeatable; several are summed)");
-  command->add_option("--include", args->include,
+  command->add_option("--include", args->options.include,
                       "Folders: import only files matching this glob (repeatable; applied before twins are paired)");
-  command->add_option("--exclude", args->exclude,
+  command->add_option("--exclude", args->options.exclude,
                       "Folders: leave out files matching this glob (repeatable; applied before twins are paired)");
-  command->add_option("--manifest", args->manifest, "A sweep manifest: CSV of path and key columns (see the README)");
-  command->add_option("--key-from-name", args->key_pattern,
+  command->add_option("--manifest", args->options.manifest,
+                      "A sweep manifest: CSV of path and key columns (see the README)");
+  command->add_option("--key-from-name", args->options.key_from_name,
                       "Run keys from folder or file names, e.g. 'u{u}_v{v}' or 'r{r [deg s^-1]}', of folder contents "
                       "and of files and case folders named on the command line (their path as given)");
-  command->add_flag("--prefer-surfaces", args->prefer_surfaces,
+  command->add_flag("--prefer-surfaces", args->options.prefer_surfaces,
                     "Of a force history and surface exports of one run, import the surfaces (in an OpenFOAM case "
                     "folder: the export under its VTK/ rather than postProcessing's forces)");
   command->add_option("--column", args->columns,
                       "Tables and histories: map a header to a component, COMPONENT=HEADER, e.g. X=Drag (repeatable)");
   command->add_option("--unit", args->units, "Unit of a column without one, NAME=UNIT, e.g. X=kN (repeatable)");
-  command->add_option("--disturbance", args->disturbance_columns,
+  command->add_option("--disturbance", args->options.disturbance_columns,
                       "Table: a header whose values are a disturbance parameter (repeatable)");
-  command->add_option("--ignore", args->ignored, "Table: a header to skip (repeatable)");
-  command->add_option("--sign", args->sign,
+  command->add_option("--ignore", args->options.ignored_columns, "Table: a header to skip (repeatable)");
+  command->add_option("--sign", args->options.sign,
                       "Tables, monitors, histories: on-body (force on the body; the default) or opposing (positive "
                       "opposes motion)");
   command->add_option("--monitor", args->monitors, "Monitor: COMPONENT=COLUMN, e.g. X=\"USER POINT,Fx\" (repeatable)");
   command
-      ->add_option("--average-last", args->average_last,
+      ->add_option("--average-last", args->options.average_last,
                    "Monitor: average the last N iterations (as --window last:N; by default the steady window "
                    "is found as for any force history)")
       ->capture_default_str();
-  command->add_option("--jobs", args->jobs, "Inputs read in parallel (default: the number of cores)");
-  command->add_flag("--replace", args->replace,
+  command->add_option("--jobs", args->options.jobs, "Inputs read in parallel (default: the number of cores)");
+  command->add_flag("--replace", args->options.replace,
                     "Replace the runs of an earlier import of the same file with other settings, and supersede force "
                     "components that runs already have from other files");
-  command->add_option("--also", args->also,
+  command->add_option("--also", args->options.also,
                       "Keep this as a second, named reading of a file imported before (e.g. --also mean for pMean "
                       "beside p); an identifier");
   command->add_flag("--quiet", args->quiet, "Print only the summary line");

@@ -1,21 +1,12 @@
 // hydrocoef runs: list stored runs with their key and force components;
 // runs show ID: one run with its full provenance; runs delete: remove runs
-// (by id, --where selection or --source file) in one transaction.
-#include <algorithm>
-#include <filesystem>
-#include <iomanip>
+// (by id, --where selection or --source file) in one transaction. The library
+// reads, deletes and renders (hydrocoef/database.hpp, records.hpp).
 #include <iostream>
 #include <memory>
-#include <set>
-#include <sstream>
 
 #include "cli/common.hpp"
-#include "cli/runs_output.hpp"
-#include "src/core/error.hpp"
-#include "src/core/escape.hpp"
-#include "src/core/sign_convention.hpp"
-#include "src/pipeline/run_curation.hpp"
-#include "src/store/database.hpp"
+#include "hydrocoef/records.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -28,19 +19,9 @@ struct RunsArgs {
 };
 
 void run_runs(const RunsArgs& args, const GlobalOptions& global) {
-  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
-  RunFilter filter;
-  filter.body = args.body;
-  const auto runs = selected_runs(database, filter, parse_selection(args.selection.where, args.selection.exclude_runs));
-  if (args.csv) {
-    print_runs_csv(runs);
-  } else if (args.json) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const auto& run : runs) out.push_back(run_json(run));
-    std::cout << escape::json_text(out, 2) << '\n';
-  } else {
-    print_runs_table(runs, args.body, global.database);
-  }
+  const auto database = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly);
+  const auto runs = database.runs(args.selection.where, args.body.value_or(""), args.selection.exclude_runs);
+  std::cout << (args.csv ? runs.csv() : args.json ? runs.json() : runs.text());
 }
 
 struct ShowArgs {
@@ -49,47 +30,24 @@ struct ShowArgs {
 };
 
 void run_show(const ShowArgs& args, const GlobalOptions& global) {
-  RunDatabase database(global.database, RunDatabase::OpenMode::ReadOnly);
-  const auto all = database.runs();
-  const auto found = std::find_if(all.begin(), all.end(), [&](const StoredRun& run) { return run.id == args.id; });
-  if (found == all.end())
-    throw InputError(SourceLocation{global.database},
-                     "no run " + std::to_string(args.id) + "; 'hydrocoef runs' lists them");
-  const StoredRun& run = *found;
-  std::map<std::int64_t, ImportRecord> imports;
-  for (const auto& force : run.tau_b)
-    if (force && force->import_id && !imports.count(force->import_id))
-      if (auto record = database.import_record(force->import_id)) imports.emplace(force->import_id, std::move(*record));
-  print_run(run, imports, args.json);
+  const auto database = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly);
+  const auto run = hydrocoef::show_run(database, args.id);
+  std::cout << (args.json ? run.json() : run.text());
 }
 
 struct DeleteArgs {
-  std::vector<std::int64_t> ids;
-  std::optional<std::string> body;
+  hydrocoef::DeleteRunsOptions options;
   SelectionArgs selection;
-  std::optional<std::string> source;
   bool json = false;
 };
 
 void run_delete(const DeleteArgs& args, const GlobalOptions& global) {
-  RunDatabase database(global.database, RunDatabase::OpenMode::MustExist);
-  const DeleteOutcome outcome = delete_runs(
-      database, RunDeletion{args.ids, args.body, args.selection.where, args.selection.exclude_runs, args.source});
-  if (args.json) {
-    std::cout << escape::json_text({{"deleted_runs", outcome.runs},
-                                    {"deleted_components", outcome.components},
-                                    {"fits_made_stale", outcome.fits_made_stale},
-                                    {"surfaces_made_stale", outcome.surfaces_made_stale},
-                                    {"imports_removed", outcome.imports_removed}},
-                                   2)
-              << '\n';
-    return;
-  }
-  std::cout << "deleted " << outcome.runs << (outcome.runs == 1 ? " run" : " runs") << " (" << outcome.components
-            << " force components) from " << escape::one_line(global.database) << "; " << outcome.fits_made_stale
-            << " fits and " << outcome.surfaces_made_stale
-            << " surfaces became stale (hydrocoef fits / surface list show them; "
-            << "surface rebuild --stale builds the surfaces again)\n";
+  auto options = args.options;
+  options.where = args.selection.where;
+  options.exclude_runs = args.selection.exclude_runs;
+  auto database = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadWrite);
+  const auto deleted = hydrocoef::delete_runs(database, options);
+  std::cout << (args.json ? deleted.json() : deleted.text());
 }
 
 }  // namespace
@@ -120,10 +78,10 @@ void add_runs_command(CLI::App& app, const GlobalOptions& global) {
       "delete",
       "Delete runs by id, by --where selection or by --source file, in one transaction; fits and surfaces "
       "built from them become stale");
-  delete_command->add_option("ids", remove->ids, "Run ids");
-  delete_command->add_option("--body", remove->body, "With --where or --source: only runs of this body");
+  delete_command->add_option("ids", remove->options.ids, "Run ids");
+  delete_command->add_option("--body", remove->options.body, "With --where or --source: only runs of this body");
   add_selection_options(*delete_command, remove->selection);
-  delete_command->add_option("--source", remove->source, "Runs with a force component from this file");
+  delete_command->add_option("--source", remove->options.source, "Runs with a force component from this file");
   delete_command->add_flag("--json", remove->json, "Print JSON");
   delete_command->callback([remove, &global] { run_delete(*remove, global); });
 }

@@ -25,8 +25,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +49,7 @@ enum class OpenMode {
 
 /// Runs as columns: entry i of every column is run i. Runs are ordered by
 /// body and key, as `hydrocoef runs` lists them.
-struct RunTable {
+struct HYDROCOEF_EXPORT RunTable {
   std::vector<std::int64_t> id;  ///< the run's id in the database
   std::vector<std::string> body;
   /// u, v, w [m/s], p, q, r [rad/s]: the run's body velocity (0 where the run does not state it).
@@ -67,10 +70,22 @@ struct RunTable {
   std::vector<std::string> history_flags;
 
   std::size_t size() const noexcept { return id.size(); }
+
+  /// What `hydrocoef runs` prints: the table (text), every run with its
+  /// fluid, reference point, forces and statistics (json), or the CSV (csv).
+  std::string text() const;
+  std::string json() const;
+  std::string csv() const;
+
+  struct Rendering;  ///< the library's own: the runs as read, for text(), json() and csv()
+  struct Access;     ///< the library's own
+
+ private:
+  std::shared_ptr<const Rendering> rendering_;
 };
 
 /// How Database::import_files reads its inputs: the options of `hydrocoef import`.
-struct ImportOptions {
+struct HYDROCOEF_EXPORT ImportOptions {
   /// auto (by extension and content), table, monitor, history, cfdpost or vtk.
   std::string format = "auto";
   /// The body of runs whose settings name none ("" : "vehicle", as the CLI).
@@ -113,6 +128,38 @@ struct ImportOptions {
   std::string also;
   /// Inputs read in parallel (0: every core).
   unsigned jobs = 0;
+
+  /// Run settings as the options of `hydrocoef import` give them (unset: not
+  /// given), each checked as the CLI checks it and refused naming the option
+  /// (e.g. "--rho: expected a finite number"). They stand beside `settings`:
+  /// a setting given both ways is refused.
+  std::vector<std::string> locations;           ///< --location: patches, zones, [Name]s integrated
+  std::optional<std::string> pressure;          ///< --pressure: pressure array
+  std::optional<std::string> shear;             ///< --shear: a vector array, three arrays x,y,z, or "none"
+  std::optional<std::string> pressure_kind;     ///< --pressure-kind: static or kinematic
+  std::optional<std::string> shear_convention;  ///< --shear-convention: on-wall or on-fluid
+  std::optional<double> rho;                    ///< --rho [kg m^-3]
+  std::optional<double> nu;                     ///< --nu [m^2 s^-1]
+  std::optional<double> p_ref;                  ///< --p-ref [Pa]
+  std::optional<std::string> ref_point;         ///< --ref-point "x,y,z" [m], body axes
+  std::optional<std::string> length_unit;       ///< --length-unit
+  std::optional<std::string> pressure_unit;     ///< --pressure-unit
+  std::optional<std::string> axes;              ///< --axes: body axes in CFD axes, e.g. "-x,y,-z"
+  std::optional<std::string> origin;            ///< --origin "x,y,z" [m], CFD coordinates
+  std::optional<std::string> flow;              ///< --flow "x,y,z" [m/s], free stream in CFD axes
+  std::optional<std::string> normals;           ///< --normals: auto, as-given or flip
+  std::optional<std::string> symmetry;          ///< --symmetry, e.g. "y=0"
+  std::optional<std::string> window;            ///< --window: auto, T0:T1 or last:N
+  std::optional<std::string> sign;              ///< --sign: on-body or opposing
+  std::vector<std::string> uncertainty;         ///< --uncertainty "X=0.01", "N=2%"
+  std::vector<std::string> set;                 ///< --set "NAME=VALUE": run key (velocity or disturbance, SI)
+  bool at_rest = false;                         ///< --at-rest
+  /// Called after each input is read (from the reading threads, one at a
+  /// time): inputs done, inputs in all, the input's path. May be empty.
+  std::function<void(std::size_t done, std::size_t total, const std::string& path)> progress;
+
+  /// InputError, with the CLI's message, for a malformed option.
+  void validate() const;
 };
 
 /// What an import did with one input.
@@ -128,18 +175,32 @@ struct ImportedFile {
 };
 
 /// What Database::import_files did, as `hydrocoef import` reports it.
-struct ImportSummary {
+struct HYDROCOEF_EXPORT ImportSummary {
   std::vector<ImportedFile> files;  ///< in the order the inputs were planned (folders expanded)
   std::vector<std::string> notes;   ///< of the whole import (twins, settings a format ignores, ...)
   std::size_t excluded = 0;         ///< files left out by include/exclude
   std::size_t runs_created = 0;
   std::size_t runs_extended = 0;
   std::size_t already_imported = 0;
+  std::size_t replaced = 0;  ///< inputs whose earlier import was replaced
+  std::string database;      ///< the database's location, as opened
+
+  /// What `hydrocoef import` prints: a line per input, the notes and the
+  /// summary line (only the summary line when quiet); or its JSON (every
+  /// input with its settings, statistics and integrated surface, the totals,
+  /// the stage times and the notes).
+  std::string text(bool quiet = false) const;
+  std::string json() const;
+
+  struct Access;  ///< the library's own
+
+ private:
+  std::string text_, summary_line_, json_;
 };
 
 /// A damping law to fit: the options of `hydrocoef fit`.
 ///   F_output(x) = sum_k c_k term_k(x), terms of one velocity component x.
-struct FitOptions {
+struct HYDROCOEF_EXPORT FitOptions {
   std::string body;
   std::string output;  ///< force component: X Y Z K M N (the CLI's --dof)
   std::string terms;   ///< e.g. "1,u,u|u|": 1, x, x|x|, x^2, x^3, |x|
@@ -155,6 +216,23 @@ struct FitOptions {
   std::string name;              ///< "" : body:output(terms)[@selection], as the CLI names it
   bool replace = false;          ///< replace a stored fit of the same name (else refused)
   bool store = true;             ///< false: fit only (the CLI's --no-store)
+  /// Weight each run by its standard uncertainty when every selected run
+  /// states one (a mean over a force history, or an uncertainty given at
+  /// import); false: ordinary least squares (the CLI's --unweighted).
+  bool weighted = true;
+  /// fit_by_level: the velocity component or disturbance whose levels are
+  /// fitted separately (the CLI's --by); each coefficient is then fitted as a
+  /// curve of the level: "polynomial:D" (degree D) or "pchip" (--curve).
+  std::string by;
+  std::string curve = "polynomial:2";
+  bool strict = false;  ///< fit_by_level: refuse a level with too few runs (else skip it with a note)
+  /// refit_fits: make stored fits again (the CLI's --refit): the one named,
+  /// else every stale one (of `body` when given); no other field may be set.
+  bool refit = false;
+
+  /// InputError, with the CLI's message, for options that do not go
+  /// together (--refit with a law to fit, --by without ...).
+  void validate() const;
 };
 
 /// One coefficient of a fitted law.
@@ -166,7 +244,7 @@ struct FitCoefficient {
 };
 
 /// A fitted damping law: what `hydrocoef fit --json` prints, or a stored fit.
-struct FitSummary {
+struct HYDROCOEF_EXPORT FitSummary {
   std::string name;
   std::string body;
   std::string output;    ///< X..N
@@ -187,6 +265,29 @@ struct FitSummary {
   std::int64_t id = 0;                ///< its id in the database; 0 when not stored
   bool stale = false;                 ///< a force of its runs changed since (fits() only)
   std::string created_at;             ///< UTC, ISO 8601 (fits() only)
+  /// "uncertainty" (each run weighted by 1/s^2 of its standard uncertainty) or "none".
+  std::string weighting = "none";
+  /// Weighted fits: chi^2/(n-k); NaN for unweighted fits or n <= k.
+  double chi2_reduced = std::numeric_limits<double>::quiet_NaN();
+  /// What the covariance of a weighted fit was scaled by (the Birge ratio
+  /// squared when above 1); 1 otherwise (fit only).
+  double covariance_scale = 1.0;
+  /// The coefficients' covariance, k x k row by row [unit_i unit_j]; its
+  /// diagonal is the std_errors squared. Empty when not recorded (fits of an
+  /// older hydrocoef).
+  std::vector<double> covariance;
+  std::size_t mirror_images = 0;                ///< samples that are mirror images (fit only)
+  std::vector<std::string> varying_conditions;  ///< key parts that take several values over the runs (fit only)
+
+  /// What `hydrocoef fit` prints of a fit just made, or `hydrocoef fits` of a
+  /// stored one (its entry of the list; json(): its object of the array).
+  std::string text() const;
+  std::string json() const;
+
+  struct Access;  ///< the library's own
+
+ private:
+  std::string text_, json_;
 };
 
 /// A stored surface, as `hydrocoef surface list` shows it.
@@ -264,12 +365,16 @@ class HYDROCOEF_EXPORT Database {
   /// Imports files, folders and case folders in one transaction, as
   /// `hydrocoef import` does (same planning, readers, settings precedence,
   /// identity of an import). Every input is read before the database is
-  /// touched: a bad input leaves it as it was.
+  /// touched: a bad input leaves it as it was. (prepare_import and
+  /// import_prepared, hydrocoef/records.hpp, do the same in two steps, to
+  /// read before a database is even opened.)
   ImportSummary import_files(const std::vector<std::string>& paths, const ImportOptions& options = {});
 
   /// Fits a damping law to the selected runs and stores it (unless
   /// options.store is false), as `hydrocoef fit` does. InputError when no run
   /// is selected, a name is taken (without replace), or an option is bad.
+  /// options.by and options.refit must be unset (std::invalid_argument
+  /// otherwise): fit_by_level and refit_fits (hydrocoef/records.hpp) do those.
   FitSummary fit(const FitOptions& options);
   /// The stored fits (of one body, or all when body is ""), by name.
   std::vector<FitSummary> fits(const std::string& body = "") const;

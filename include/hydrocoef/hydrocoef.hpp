@@ -9,6 +9,9 @@
 //   hydrocoef/database.hpp     Database: open a run database, list and select
 //                              runs, import CFD results, fit damping laws,
 //                              list fits and surfaces, read a surface
+//   hydrocoef/records.hpp      import in two steps, runs show and delete,
+//                              per-level fits, refits, fits listed and
+//                              evaluated, merge, copy, migrate, report
 //   hydrocoef/surface.hpp      Surface: a coefficient surface evaluated at a
 //                              point, with its gradient, or at many points at
 //                              once on every core; tabulated for a controller;
@@ -39,6 +42,7 @@
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/exports.hpp"
 #include "hydrocoef/plot.hpp"
+#include "hydrocoef/records.hpp"
 #include "hydrocoef/simulation.hpp"
 #include "hydrocoef/surface.hpp"
 #include "hydrocoef/version.hpp"

@@ -30,11 +30,15 @@ from ._hydrocoef import (Fit, ImportedFile, ImportSummary, InputError, Surface,
                          SurfaceInfo, __version__)
 from ._hydrocoef import (GazeboExportResult, SurfaceBuildReport, SurfaceList, SurfaceQueryResult,
                          SurfaceRebuildReport, SurfaceReport, TableExportResult)
+from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
+                         MigrationSummary, Refits, ReportSummary, RunDetails)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
 __all__ += ["SurfaceReport", "SurfaceList", "SurfaceBuildReport", "SurfaceRebuildReport", "SurfaceQueryResult",
             "TableExportResult", "GazeboExportResult"]
+__all__ += ["LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary", "MergeSummary",
+            "CopySummary", "MigrationSummary", "ReportSummary"]
 
 
 class Table(dict):

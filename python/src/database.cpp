@@ -1,7 +1,9 @@
 // hydrocoef.Database in Python: opening and closing (once per object),
-// the runs as numpy columns, and import_files with what it returns
-// (ImportedFile, ImportSummary). Fits and surfaces add their methods in
-// fits.cpp and surfaces.cpp.
+// the runs as numpy columns, import_files with what it returns
+// (ImportedFile, ImportSummary), one run with its provenance (show_run:
+// RunDetails), delete_runs, merge, copy_to, migration and report, each
+// result with the CLI's text() and json(). Fits and surfaces add their
+// methods in fits.cpp and surfaces.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -115,6 +117,101 @@ std::map<std::string, std::string> settings_texts(const py::object& settings) {
   return out;
 }
 
+/// The result classes of the records' operations: fields as attributes, text() and json().
+void bind_records(py::module_& m) {
+  py::class_<hydrocoef::RunDetails>(m, "RunDetails", py::is_final(), made_by_the_module_only(),
+                                    "One run with its provenance (Database.show_run).")
+      .def_readonly("id", &hydrocoef::RunDetails::id)
+      .def_readonly("body", &hydrocoef::RunDetails::body)
+      .def_readonly("velocity", &hydrocoef::RunDetails::velocity, "u, v, w [m/s], p, q, r [rad/s].")
+      .def_readonly("disturbances", &hydrocoef::RunDetails::disturbances)
+      .def_readonly("force", &hydrocoef::RunDetails::force, "X..N as stored (nan where none).")
+      .def_readonly("force_std_error", &hydrocoef::RunDetails::force_std_error)
+      .def_readonly("sign_convention", &hydrocoef::RunDetails::sign_convention)
+      .def_readonly("source", &hydrocoef::RunDetails::source)
+      .def_readonly("density", &hydrocoef::RunDetails::density)
+      .def_readonly("kinematic_viscosity", &hydrocoef::RunDetails::kinematic_viscosity)
+      .def_readonly("reference_point", &hydrocoef::RunDetails::reference_point)
+      .def_readonly("flags", &hydrocoef::RunDetails::flags)
+      .def_property_readonly(
+          "imports",
+          [](const hydrocoef::RunDetails& r) {
+            py::list out;
+            for (const auto& i : r.imports)
+              out.append(py::dict("id"_a = i.id, "path"_a = i.path, "sha256"_a = i.sha256, "importer"_a = i.importer,
+                                  "imported_at"_a = i.imported_at, "reading"_a = i.reading));
+            return out;
+          })
+      .def("text", &hydrocoef::RunDetails::text)
+      .def("json", &hydrocoef::RunDetails::json);
+
+  py::class_<hydrocoef::DeleteSummary>(m, "DeleteSummary", py::is_final(), made_by_the_module_only(),
+                                       "What Database.delete_runs did.")
+      .def_readonly("runs", &hydrocoef::DeleteSummary::runs)
+      .def_readonly("components", &hydrocoef::DeleteSummary::components)
+      .def_readonly("fits_made_stale", &hydrocoef::DeleteSummary::fits_made_stale)
+      .def_readonly("surfaces_made_stale", &hydrocoef::DeleteSummary::surfaces_made_stale)
+      .def_readonly("imports_removed", &hydrocoef::DeleteSummary::imports_removed)
+      .def("text", &hydrocoef::DeleteSummary::text)
+      .def("json", &hydrocoef::DeleteSummary::json);
+
+  py::class_<hydrocoef::MergeSummary>(m, "MergeSummary", py::is_final(), made_by_the_module_only(),
+                                      "What Database.merge did.")
+      .def_readonly("into", &hydrocoef::MergeSummary::into)
+      .def_property_readonly(
+          "shards",
+          [](const hydrocoef::MergeSummary& s) {
+            py::list out;
+            for (const auto& o : s.shards)
+              out.append(py::dict(
+                  "shard"_a = o.shard, "imports_added"_a = o.imports_added, "imports_already"_a = o.imports_already,
+                  "runs_created"_a = o.runs_created, "runs_extended"_a = o.runs_extended, "components"_a = o.components,
+                  "fits_added"_a = o.fits_added, "fits_already"_a = o.fits_already,
+                  "surfaces_added"_a = o.surfaces_added, "surfaces_already"_a = o.surfaces_already,
+                  "mesh_studies_added"_a = o.mesh_studies_added, "mesh_studies_already"_a = o.mesh_studies_already,
+                  "pmm_added"_a = o.pmm_added, "pmm_already"_a = o.pmm_already));
+            return out;
+          })
+      .def("text", &hydrocoef::MergeSummary::text)
+      .def("json", &hydrocoef::MergeSummary::json);
+
+  py::class_<hydrocoef::CopySummary>(m, "CopySummary", py::is_final(), made_by_the_module_only(),
+                                     "What Database.copy_to did.")
+      .def_readonly("source", &hydrocoef::CopySummary::from)
+      .def_readonly("target", &hydrocoef::CopySummary::to)
+      .def_property_readonly("rows",
+                             [](const hydrocoef::CopySummary& s) {
+                               py::dict out;
+                               for (const auto& [table, n] : s.rows) out[py::str(table)] = n;
+                               return out;
+                             })
+      .def("text", &hydrocoef::CopySummary::text)
+      .def("json", &hydrocoef::CopySummary::json);
+
+  py::class_<hydrocoef::MigrationSummary>(m, "MigrationSummary", py::is_final(), made_by_the_module_only(),
+                                          "The schema versions of a database (Database.migration).")
+      .def_readonly("database", &hydrocoef::MigrationSummary::database)
+      .def_readonly("from_version", &hydrocoef::MigrationSummary::from)
+      .def_readonly("to_version", &hydrocoef::MigrationSummary::to)
+      .def("text", &hydrocoef::MigrationSummary::text)
+      .def("json", &hydrocoef::MigrationSummary::json);
+
+  py::class_<hydrocoef::ReportSummary>(m, "ReportSummary", py::is_final(), made_by_the_module_only(),
+                                       "What Database.report wrote.")
+      .def_readonly("index", &hydrocoef::ReportSummary::index)
+      .def_readonly("plots", &hydrocoef::ReportSummary::plots)
+      .def_readonly("notes", &hydrocoef::ReportSummary::notes)
+      .def_readonly("runs", &hydrocoef::ReportSummary::runs)
+      .def_readonly("fits", &hydrocoef::ReportSummary::fits)
+      .def_readonly("surfaces", &hydrocoef::ReportSummary::surfaces)
+      .def_readonly("histories", &hydrocoef::ReportSummary::histories)
+      .def_readonly("sigma_maps", &hydrocoef::ReportSummary::sigma_maps)
+      .def_readonly("mesh_study_rows", &hydrocoef::ReportSummary::mesh_study_rows)
+      .def_readonly("pmm_fits", &hydrocoef::ReportSummary::pmm_fits)
+      .def("text", &hydrocoef::ReportSummary::text)
+      .def("json", &hydrocoef::ReportSummary::json);
+}
+
 }  // namespace
 
 Database& database_of(py::handle self) {
@@ -169,11 +266,18 @@ void bind_database(py::module_& m, py::class_<Database>& database) {
       .def_readonly("runs_created", &hydrocoef::ImportSummary::runs_created)
       .def_readonly("runs_extended", &hydrocoef::ImportSummary::runs_extended)
       .def_readonly("already_imported", &hydrocoef::ImportSummary::already_imported)
+      .def_readonly("replaced", &hydrocoef::ImportSummary::replaced)
+      .def_readonly("database", &hydrocoef::ImportSummary::database)
+      .def("text", &hydrocoef::ImportSummary::text, "quiet"_a = false,
+           "What `hydrocoef import` prints (quiet: the summary line only).")
+      .def("json", &hydrocoef::ImportSummary::json, "What `hydrocoef import --json` prints.")
       .def("__repr__", [](const hydrocoef::ImportSummary& s) {
         return "<hydrocoef.ImportSummary " + std::to_string(s.files.size()) +
                " inputs: " + std::to_string(s.runs_created) + " new runs, " + std::to_string(s.runs_extended) +
                " extended, " + std::to_string(s.already_imported) + " already imported>";
       });
+
+  bind_records(m);
 
   database
       .def(py::init([](const py::object& path, const std::string& mode) {
@@ -263,6 +367,79 @@ key_from_name: e.g. 'u{u}_v{v}'; manifest: a sweep CSV; sidecars: read FILE.json
 hydrocoef-run.json; replace / also: see `hydrocoef import --help`; jobs: 0 every core.
 Returns an ImportSummary. Every input is read before the database is written:
 a bad one raises InputError and leaves the database as it was. The GIL is released.)doc")
+      .def(
+          "show_run", [](py::handle self, std::int64_t id) { return hydrocoef::show_run(database_of(self), id); },
+          "id"_a, "One run with its provenance, as `hydrocoef runs show ID`. Returns a RunDetails.")
+      .def(
+          "delete_runs",
+          [](py::handle self, const py::object& ids, const py::object& where, const py::object& body,
+             const py::object& exclude_runs, const py::object& source) {
+            hydrocoef::DeleteRunsOptions options;
+            options.ids = run_ids(ids, "ids");
+            options.where = texts(where, "where");
+            options.body = body.is_none() ? "" : body.cast<std::string>();
+            options.exclude_runs = run_ids(exclude_runs, "exclude_runs");
+            options.source = source.is_none() ? "" : fspath(source);
+            auto& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::delete_runs(d, options);
+          },
+          "ids"_a = py::none(), py::kw_only(), "where"_a = py::none(), "body"_a = py::none(),
+          "exclude_runs"_a = py::none(), "source"_a = py::none(),
+          R"doc(Deletes runs in one transaction, as `hydrocoef runs delete`: those named by id, and those where /
+source (a file their forces came from) select, of body when given. Fits and surfaces built from them become
+stale. Returns a DeleteSummary.)doc")
+      .def(
+          "merge",
+          [](py::handle self, const py::object& shards) {
+            hydrocoef::MergeOptions options;
+            if (py::isinstance<py::str>(shards) || py::hasattr(shards, "__fspath__"))
+              options.shards.push_back(fspath(shards));
+            else
+              for (const auto& shard : shards) options.shards.push_back(fspath(shard));
+            auto& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::merge_databases(d, options);
+          },
+          "shards"_a,
+          "Merges shard databases (paths or URLs) into this one in one transaction, as `hydrocoef merge`. "
+          "Returns a MergeSummary.")
+      .def(
+          "copy_to",
+          [](py::handle self, py::handle target) {
+            const auto& from = database_of(self);
+            auto& to = database_of(target);
+            py::gil_scoped_release release;
+            return hydrocoef::copy_database(from, to);
+          },
+          "target"_a,
+          "Copies every row into the empty Database `target`, ids included, as `hydrocoef copy`. Returns a "
+          "CopySummary.")
+      .def(
+          "migration", [](py::handle self) { return hydrocoef::migration(database_of(self)); },
+          "The schema versions before and after opening (`hydrocoef migrate`): a MigrationSummary.")
+      .def(
+          "report",
+          [](py::handle self, const py::object& output, const py::object& body, const py::object& where,
+             const py::object& exclude_runs, const py::object& trajectories, const py::object& experiment,
+             const std::string& component) {
+            hydrocoef::ReportOptions options;
+            options.output = fspath(output);
+            options.body = body.is_none() ? "" : body.cast<std::string>();
+            options.where = texts(where, "where");
+            options.exclude_runs = run_ids(exclude_runs, "exclude_runs");
+            if (!trajectories.is_none())
+              for (const auto& t : trajectories) options.trajectories.push_back(fspath(t));
+            options.experiment = experiment.is_none() ? "" : fspath(experiment);
+            options.component = component;
+            const auto& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::write_report(d, options);
+          },
+          "output"_a, py::kw_only(), "body"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(),
+          "trajectories"_a = py::none(), "experiment"_a = py::none(), "component"_a = "r",
+          "Writes the self-contained HTML report into the folder `output`, as `hydrocoef report`. Returns a "
+          "ReportSummary.")
       .def("__repr__", [](py::handle self) {
         const Database& d = database_of(self);
         return "<hydrocoef.Database '" + d.path() + "'" +

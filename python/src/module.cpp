@@ -29,7 +29,9 @@ PYBIND11_MODULE(_hydrocoef, m) {
     m.attr(name).attr("__module__") = "hydrocoef";
   for (const char* name : {"SurfaceReport", "SurfaceAxisReport", "SurfaceOutputReport", "SurfaceList",
                            "SurfaceBuildReport", "SurfaceRebuildReport", "SurfaceQueryResult", "TableExportResult",
-                           "TableExportAxis", "GazeboExportResult", "GazeboFitExport", "GazeboElementExport"})
+                           "TableExportAxis", "GazeboExportResult", "GazeboFitExport", "GazeboElementExport",
+                           "LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary",
+                           "MergeSummary", "CopySummary", "MigrationSummary", "ReportSummary"})
     m.attr(name).attr("__module__") = "hydrocoef";
 
   hydrocoef_python::bind_simulation(m);

@@ -1,7 +1,8 @@
 // Database (include/hydrocoef/database.hpp): opening and closing, and what is
 // read back: runs as columns, fits, surfaces. The import is src/api/import.cpp,
-// the fit src/api/fit.cpp.
+// the fit src/api/fit.cpp; what the CLI prints of them src/api/*_report.cpp.
 #include "src/api/internal.hpp"
+#include "src/api/records_report.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/core/text.hpp"
 
@@ -109,38 +110,16 @@ RunTable Database::runs(const std::vector<std::string>& where, const std::string
     table.source.push_back(join(std::vector<std::string>(sources.begin(), sources.end()), ";"));
     table.history_flags.push_back(join(run_flags(run), ","));
   }
+  RunTable::Access::set(table, std::make_shared<const RunTable::Rendering>(
+                                   RunTable::Rendering{std::move(runs), optional_body(body), impl_->path}));
   return table;
 }
 
 std::vector<FitSummary> Database::fits(const std::string& body) const {
   const std::lock_guard lock(impl_->mutex);
   std::vector<FitSummary> out;
-  for (const FitRecord& record : impl_->open_store().fits(optional_body(body))) {
-    FitSummary fit;
-    fit.name = record.name;
-    fit.body = record.body;
-    fit.output = record.dof;
-    fit.variable = record.variable;
-    fit.terms = record.terms;
-    fit.loss = record.loss;
-    fit.where = record.run_filter;
-    fit.mirror = record.mirror;
-    fit.sign_convention = std::string(to_string(record.sign));
-    const auto units = coefficient_units(record.terms, record.dof, record.variable);
-    for (std::size_t k = 0; k < record.coefficients.size(); ++k) {
-      const auto& c = record.coefficients[k];
-      fit.coefficients.push_back(
-          {c.term, c.value, c.std_error.value_or(kNaN), k < units.size() ? units[k] : std::string()});
-    }
-    fit.rmse = record.rmse;
-    fit.r2 = record.r2;
-    fit.n = record.n;
-    fit.runs = record.run_ids;
-    fit.id = record.id;
-    fit.stale = record.stale;
-    fit.created_at = record.created_at;
-    out.push_back(std::move(fit));
-  }
+  for (const FitRecord& record : impl_->open_store().fits(optional_body(body)))
+    out.push_back(records::fit_summary(record));
   return out;
 }
 

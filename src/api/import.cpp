@@ -1,42 +1,166 @@
-// Database::import_files (include/hydrocoef/database.hpp): `hydrocoef import`
-// without its printing. The library plans and reads the inputs
-// and stores them in one transaction (src/pipeline/import_files.hpp: read_import,
-// store_import), as the CLI does.
+// The import (include/hydrocoef/database.hpp, records.hpp): `hydrocoef import`
+// without its printing. The library plans and reads the inputs and stores
+// them in one transaction (src/pipeline/import_files.hpp: read_import,
+// store_import), in two steps so that a caller can read before it opens a
+// database. The report of an import is src/api/import_report.cpp.
 #include "src/api/internal.hpp"
+#include "src/api/records_report.hpp"
+#include "src/core/numbers.hpp"
+#include "src/core/text.hpp"
+#include "src/loads/frame.hpp"
+#include "src/loads/symmetry.hpp"
+#include "src/pipeline/given_uncertainty.hpp"
+
+#include <cmath>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 namespace hydrocoef {
 inline namespace api {
+
+struct PreparedImport::Impl {
+  ImportResult result;
+  ImportPolicy policy;
+  bool stored = false;
+};
+
+struct PreparedImport::Access {
+  static PreparedImport make(std::unique_ptr<Impl> impl) { return PreparedImport(std::move(impl)); }
+  static Impl& impl(PreparedImport& prepared) {
+    if (!prepared.impl_) throw std::invalid_argument("hydrocoef::import_prepared: a moved-from PreparedImport");
+    return *prepared.impl_;
+  }
+};
+
+PreparedImport::PreparedImport(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+PreparedImport::PreparedImport(PreparedImport&&) noexcept = default;
+PreparedImport& PreparedImport::operator=(PreparedImport&&) noexcept = default;
+PreparedImport::~PreparedImport() = default;
+
 namespace {
 
-/// The caller's settings as the command line's layer: each value is JSON, or
-/// a plain text when it is not ("-x,y,-z"), read as a sidecar's keys are.
-SettingsLayer command_line_layer(const ImportOptions& options) {
-  nlohmann::json object = nlohmann::json::object();
-  for (const auto& [key, text] : options.settings) {
-    auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-    object[key] = value.is_discarded() ? nlohmann::json(text) : std::move(value);
+double finite_part(const std::string& text, const std::string& option, const std::string& whole) {
+  const auto value = parse_finite_number(text);
+  if (!value) throw InputError(option + " '" + whole + "': found '" + text + "', expected a finite number");
+  return *value;
+}
+
+/// "x,y,z" as three finite numbers, refused naming the option.
+std::vector<double> triple(const std::string& text, const std::string& option) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto comma = text.find(',', start);
+    if ((i < 2) == (comma == std::string::npos))
+      throw InputError(option + " '" + text + "': expected three comma-separated numbers x,y,z");
+    out.push_back(
+        finite_part(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option, text));
+    start = comma + 1;
   }
-  SettingsLayer layer = settings_from_json(object, SettingOrigin{SettingSource::CommandLine, "import settings"});
-  if (!options.body.empty()) {
-    if (layer.values.count("body"))
-      throw InputError("import: the body is given twice (as the body option and in the settings); expected one");
-    layer.set("body", std::string(check_name(NameKind::Body, options.body, {}, "the import's body")), "body");
+  return out;
+}
+
+/// The options of `hydrocoef import` as the command line's settings layer:
+/// each option given becomes the setting of the same meaning, remembered as
+/// coming from that option; then the `settings` map, read as a sidecar's keys are.
+SettingsLayer command_line_layer(const ImportOptions& options) {
+  SettingsLayer layer;
+  layer.origin = SettingOrigin{SettingSource::CommandLine, "command line"};
+  const auto set_text = [&](const char* name, const std::optional<std::string>& value, const char* option) {
+    if (value) layer.set(name, *value, option);
+  };
+  const auto set_number = [&](const char* name, const std::optional<double>& value, const char* option) {
+    if (!value) return;
+    if (!std::isfinite(*value)) throw InputError(std::string(option) + ": expected a finite number");
+    layer.set(name, *value, option);
+  };
+  const auto set_triple = [&](const char* name, const std::optional<std::string>& value, const char* option) {
+    if (value) layer.set(name, triple(*value, option), option);
+  };
+  if (!options.body.empty())
+    layer.set("body", std::string(check_name(NameKind::Body, options.body, {}, "--body")), "--body");
+  if (!options.locations.empty()) {
+    for (const auto& name : options.locations) check_name(NameKind::Field, name, {}, "--location");
+    layer.set("locations", options.locations, "--location");
+  }
+  set_text("pressure", options.pressure, "--pressure");
+  if (options.shear) {
+    std::vector<std::string> names;
+    std::stringstream list(*options.shear);
+    for (std::string name; std::getline(list, name, ',');) names.push_back(name);
+    if (names.size() != 1 && names.size() != 3)
+      throw InputError("--shear '" + *options.shear + "': expected one vector array, three arrays x,y,z, or none");
+    layer.set("shear", names, "--shear");
+  }
+  set_text("pressure_kind", options.pressure_kind, "--pressure-kind");
+  set_text("shear_convention", options.shear_convention, "--shear-convention");
+  set_number("rho", options.rho, "--rho");
+  set_number("nu", options.nu, "--nu");
+  set_number("p_ref", options.p_ref, "--p-ref");
+  set_triple("ref_point", options.ref_point, "--ref-point");
+  set_text("length_unit", options.length_unit, "--length-unit");
+  set_text("pressure_unit", options.pressure_unit, "--pressure-unit");
+  if (options.axes) {
+    parse_axes(*options.axes);  // refused here, naming the option, rather than later
+    layer.set("axes", *options.axes, "--axes");
+  }
+  set_triple("origin", options.origin, "--origin");
+  set_triple("flow", options.flow, "--flow");
+  set_text("normals", options.normals, "--normals");
+  if (options.symmetry) {
+    parse_symmetry(*options.symmetry);
+    layer.set("symmetry", *options.symmetry, "--symmetry");
+  }
+  set_text("window", options.window, "--window");
+  if (!options.uncertainty.empty()) {
+    const std::string text = join(options.uncertainty, ",");
+    (void)parse_given_uncertainty(text, "--uncertainty");  // refused here, naming the option
+    layer.set("uncertainty", text, "--uncertainty");
+  }
+  if (options.at_rest) layer.set("at_rest", std::string("yes"), "--at-rest");
+  for (const auto& text : options.set) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos || equals == 0) throw InputError("--set '" + text + "': expected NAME=VALUE");
+    const std::string name = text.substr(0, equals);
+    const double value = finite_part(text.substr(equals + 1), "--set", text);
+    if (velocity_index(name)) {
+      layer.set(name, value, "--set");
+    } else {
+      check_name(NameKind::Parameter, name, {}, "--set");
+      layer.set("disturbance." + name, value, "--set");
+    }
+  }
+  if (options.sign) layer.set("sign", *options.sign, "--sign");
+
+  // The settings map: each value JSON, or a plain text when it is not ("-x,y,-z").
+  if (!options.settings.empty()) {
+    nlohmann::json object = nlohmann::json::object();
+    for (const auto& [key, text] : options.settings) {
+      auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+      object[key] = value.is_discarded() ? nlohmann::json(text) : std::move(value);
+    }
+    const SettingsLayer map = settings_from_json(object, SettingOrigin{SettingSource::CommandLine, "import settings"});
+    for (const auto& [name, setting] : map.values) {
+      if (layer.values.count(name))
+        throw InputError(name == "body" ? std::string("import: the body is given twice (as the body option and in the "
+                                                      "settings); expected one")
+                                        : "import: the setting '" + name +
+                                              "' is given twice (as an option and in the settings); expected one");
+      layer.values[name] = setting;
+    }
   }
   return layer;
 }
 
 }  // namespace
 
-ImportSummary Database::import_files(const std::vector<std::string>& paths, const ImportOptions& options) {
-  {
-    const std::lock_guard lock(impl_->mutex);
-    impl_->writable_store("an import");  // refused before anything is read
-  }
+void ImportOptions::validate() const { (void)command_line_layer(*this); }
+
+PreparedImport prepare_import(const std::vector<std::string>& paths, const ImportOptions& options) {
   ImportRequest request;
   for (const auto& path : paths) request.inputs.emplace_back(path);
-  request.command_line = command_line_layer(options);
+  request.command_line = command_line_layer(options);  // validates the options
   request.format = options.format;
   request.columns.columns = options.columns;
   request.columns.units = options.units;
@@ -45,6 +169,10 @@ ImportSummary Database::import_files(const std::vector<std::string>& paths, cons
   request.columns.monitors = options.monitors;
   request.columns.average_last = options.average_last;
   request.jobs = options.jobs;
+  if (options.progress)
+    request.progress = [&options](std::size_t done, std::size_t total, const std::filesystem::path& path) {
+      options.progress(done, total, path.string());
+    };
   std::optional<Manifest> manifest;
   std::optional<NamePattern> pattern;
   if (!options.manifest.empty()) manifest = Manifest::read(options.manifest);
@@ -56,32 +184,31 @@ ImportSummary Database::import_files(const std::vector<std::string>& paths, cons
   request.plan.use_sidecars = options.use_sidecars;
   request.plan.prefer_surfaces = options.prefer_surfaces;
 
-  // Everything is read before the database is touched: a bad input leaves it as it was.
-  ImportResult result = read_import(request);
-  ImportPolicy store_options;
-  store_options.components = options.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
-  store_options.replace = options.replace;
-  store_options.also = options.also;
+  auto impl = std::make_unique<PreparedImport::Impl>();
+  impl->result = read_import(request);
+  impl->policy.components = options.replace ? ConflictPolicy::Replace : ConflictPolicy::Error;
+  impl->policy.replace = options.replace;
+  impl->policy.also = options.also;
+  return PreparedImport::Access::make(std::move(impl));
+}
+
+ImportSummary import_prepared(Database& database, PreparedImport&& prepared) {
+  auto& p = PreparedImport::Access::impl(prepared);
+  auto& impl = Database::Access::impl(database);
+  const std::lock_guard lock(impl.mutex);
+  auto& store = impl.writable_store("an import");
+  if (p.stored) throw InputError("import: these inputs were stored already; prepare the import again");
+  p.stored = true;
+  store_import(store, p.result, p.policy);
+  return records::import_summary(p.result, impl.path);
+}
+
+ImportSummary Database::import_files(const std::vector<std::string>& paths, const ImportOptions& options) {
   {
     const std::lock_guard lock(impl_->mutex);
-    store_import(impl_->writable_store("an import"), result, store_options);
+    impl_->writable_store("an import");  // refused before anything is read
   }
-  const auto& plan = result.plan;
-  const auto& inputs = result.inputs;
-  const auto& outcomes = result.outcomes;
-
-  ImportSummary summary;
-  summary.notes = plan.notes;
-  summary.excluded = plan.excluded;
-  for (std::size_t i = 0; i < outcomes.size() && i < inputs.size(); ++i) {
-    const ImportOutcome& o = outcomes[i];
-    summary.files.push_back({o.path, inputs[i].format, inputs[i].batch.runs.size(), o.runs_created, o.runs_extended,
-                             o.already_imported, o.replaced, inputs[i].notes});
-  }
-  summary.runs_created = result.runs_created;
-  summary.runs_extended = result.runs_extended;
-  summary.already_imported = result.already_imported;
-  return summary;
+  return import_prepared(*this, prepare_import(paths, options));
 }
 
 }  // namespace api
