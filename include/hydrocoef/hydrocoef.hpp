@@ -12,6 +12,8 @@
 //   hydrocoef/surface.hpp      Surface: a coefficient surface evaluated at a
 //                              point, with its gradient, or at many points at
 //                              once on every core
+//   hydrocoef/analysis.hpp     mesh studies (grid_convergence), forced oscillation (analyse_pmm,
+//                              added_mass_matrix, ...), where to run CFD next (suggest_runs)
 //   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
 //                              trajectory as columns
 //
@@ -28,6 +30,7 @@
 //   double n = yaw.evaluate({0.15})[0];                       // N m at r = 0.15 rad/s
 #pragma once
 
+#include "hydrocoef/analysis.hpp"
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/simulation.hpp"
