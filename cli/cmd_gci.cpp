@@ -32,8 +32,7 @@ void add_gci_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--volume", args->options.volume,
                       "Domain volume (m^D) for h = (V/N)^(1/D) from cells=N (default 1: h relative; ratios, order, "
                       "extrapolation and GCI are the same)");
-  command->add_option("--dimension", args->options.dimension, "D of h = (V/N)^(1/D): 1, 2 or 3")
-      ->capture_default_str();
+  command->add_option("--dimension", args->options.dimension, "D of h = (V/N)^(1/D): 1, 2 or 3")->capture_default_str();
   command->add_flag("--allow-unconverged", args->options.allow_unconverged,
                     "Run the study although a value did not converge or its iterative error is not below a tenth of "
                     "the change to the adjacent mesh (noted per component); refused by default, as Celik et al. "

@@ -29,7 +29,9 @@ void add_suggest_command(CLI::App& app, const GlobalOptions& global) {
       "a run is or is running, printed and as a sweep manifest for import --manifest");
   command->add_option("name", o.surface, "GP surface name")->required();
   command->add_option("--count", o.count, "Runs to propose (1 to 1000)")->capture_default_str();
-  command->add_option("--bounds", o.bounds, "AXIS=FROM:TO in SI units, comma-separated or repeated (default: the surface's range)")
+  command
+      ->add_option("--bounds", o.bounds,
+                   "AXIS=FROM:TO in SI units, comma-separated or repeated (default: the surface's range)")
       ->delimiter(',');
   command->add_option("--for", o.output, "The output whose uncertainty to reduce (default: the first)");
   command->add_option("--candidates", o.candidates, "Candidate points searched (Halton sequence)")

@@ -93,11 +93,11 @@ struct GciKey {
   std::string body;
   std::array<double, 6> velocity{};  ///< u, v, w [m/s], p, q, r [rad/s]
   std::map<std::string, double> disturbances;
-  std::string description;          ///< the key in words, as the CLI prints it
-  std::vector<double> levels;       ///< every level's parameter value, fine to coarse
-  std::vector<double> cell_sizes;   ///< every level's h, fine to coarse [m, or relative]
-  std::vector<std::int64_t> runs;   ///< every level's run id, fine to coarse
-  std::string cell_size_from;       ///< "cell_size" or "cells"
+  std::string description;         ///< the key in words, as the CLI prints it
+  std::vector<double> levels;      ///< every level's parameter value, fine to coarse
+  std::vector<double> cell_sizes;  ///< every level's h, fine to coarse [m, or relative]
+  std::vector<std::int64_t> runs;  ///< every level's run id, fine to coarse
+  std::string cell_size_from;      ///< "cell_size" or "cells"
   std::vector<GciComponent> components;
   std::vector<std::string> notes;
 };
@@ -135,28 +135,28 @@ HYDROCOEF_EXPORT GciStudy grid_convergence(Database& database, const GciOptions&
 /// constant/dynamicMeshDict; a CFX CCL with `ccl`) unless motion, amplitude
 /// and period are all given (then it is checked against the case's).
 struct HYDROCOEF_EXPORT PmmOptions {
-  std::string body;                                  ///< "" : "vehicle"
-  std::string axes;                                  ///< body axes in CFD axes, e.g. "-x,y,-z" ("" : x,y,z)
-  std::optional<std::array<double, 3>> origin;       ///< body origin in CFD coordinates [m]
-  std::optional<std::array<double, 3>> ref_point;    ///< moment reference point [m], body axes
-  std::optional<double> rho;                         ///< fluid density [kg m^-3]
-  std::optional<double> nu;                          ///< kinematic viscosity [m^2 s^-1]
-  std::map<std::string, double> set;                 ///< run key: velocity component or disturbance [SI]
-  std::map<std::string, std::string> columns;        ///< CSV histories: component -> header
-  std::map<std::string, std::string> units;          ///< CSV histories: unit of a column without one
-  std::optional<std::string> sign;                   ///< "on-body" (default) or "opposing"
-  std::optional<std::string> motion;                 ///< the moved DOF: surge ... yaw
-  std::optional<double> amplitude;                   ///< A [m, or rad]
-  std::optional<double> period;                      ///< T [s]
-  double phase = 0.0;                                ///< [rad]: x(t) = A sin(2 pi t / T + phase)
-  std::optional<std::string> ccl;                    ///< CFX: the case's CCL or solver output (.out)
-  int harmonics = 1;                                 ///< harmonics fitted, 1..10
-  std::optional<double> start;                       ///< keep whole periods from this time [s] (none: detected)
-  bool stream = false;                               ///< the body stood in an oscillating stream
-  std::optional<double> volume;                      ///< displaced volume V [m^3]
-  std::optional<double> restoring;                   ///< C of F = -C x on the moved DOF [N/m, N m/rad]
-  std::optional<double> size;                        ///< body size D [m] for KC and Stokes numbers
-  unsigned jobs = 0;                                 ///< inputs read in parallel (0: every core)
+  std::string body;                                ///< "" : "vehicle"
+  std::string axes;                                ///< body axes in CFD axes, e.g. "-x,y,-z" ("" : x,y,z)
+  std::optional<std::array<double, 3>> origin;     ///< body origin in CFD coordinates [m]
+  std::optional<std::array<double, 3>> ref_point;  ///< moment reference point [m], body axes
+  std::optional<double> rho;                       ///< fluid density [kg m^-3]
+  std::optional<double> nu;                        ///< kinematic viscosity [m^2 s^-1]
+  std::map<std::string, double> set;               ///< run key: velocity component or disturbance [SI]
+  std::map<std::string, std::string> columns;      ///< CSV histories: component -> header
+  std::map<std::string, std::string> units;        ///< CSV histories: unit of a column without one
+  std::optional<std::string> sign;                 ///< "on-body" (default) or "opposing"
+  std::optional<std::string> motion;               ///< the moved DOF: surge ... yaw
+  std::optional<double> amplitude;                 ///< A [m, or rad]
+  std::optional<double> period;                    ///< T [s]
+  double phase = 0.0;                              ///< [rad]: x(t) = A sin(2 pi t / T + phase)
+  std::optional<std::string> ccl;                  ///< CFX: the case's CCL or solver output (.out)
+  int harmonics = 1;                               ///< harmonics fitted, 1..10
+  std::optional<double> start;                     ///< keep whole periods from this time [s] (none: detected)
+  bool stream = false;                             ///< the body stood in an oscillating stream
+  std::optional<double> volume;                    ///< displaced volume V [m^3]
+  std::optional<double> restoring;                 ///< C of F = -C x on the moved DOF [N/m, N m/rad]
+  std::optional<double> size;                      ///< body size D [m] for KC and Stokes numbers
+  unsigned jobs = 0;                               ///< inputs read in parallel (0: every core)
   /// Called after each input is analysed (from one thread at a time).
   std::function<void(std::size_t done, std::size_t total, const std::string& path)> progress;
 
@@ -176,11 +176,11 @@ struct PmmComponent {
   double damping = 0.0;  ///< D[component][dof]
   double damping_se = 0.0;
   std::string damping_unit;
-  double explained = 0.0;                         ///< fraction of the variance the fit explains
-  std::vector<double> harmonics;                  ///< s1, c1, s2, c2, ... [N or N m]
-  std::optional<double> added_mass_coefficient;   ///< M_A / (rho V): the moved translation's own, rho and V given
-  double in_phase_spread = 0.0;                   ///< standard deviation of s1 over the periods
-  double quadrature_spread = 0.0;                 ///< of c1
+  double explained = 0.0;                        ///< fraction of the variance the fit explains
+  std::vector<double> harmonics;                 ///< s1, c1, s2, c2, ... [N or N m]
+  std::optional<double> added_mass_coefficient;  ///< M_A / (rho V): the moved translation's own, rho and V given
+  double in_phase_spread = 0.0;                  ///< standard deviation of s1 over the periods
+  double quadrature_spread = 0.0;                ///< of c1
 };
 
 /// One forced-oscillation run analysed.
@@ -363,12 +363,12 @@ HYDROCOEF_EXPORT AddedMassMatrix added_mass_matrix(const Database& database, con
 
 /// The options of `hydrocoef suggest`.
 struct HYDROCOEF_EXPORT SuggestOptions {
-  std::string surface;  ///< a GP surface's name (required)
-  std::size_t count = 5;  ///< runs to propose, 1 to 1000
-  std::vector<std::string> bounds;  ///< "AXIS=FROM:TO" [SI] (default: the surface's range)
-  std::string output;               ///< whose uncertainty to reduce ("" : the first output) (--for)
-  std::size_t candidates = 4096;    ///< candidate keys searched
-  std::vector<std::string> round;   ///< "AXIS=STEP" [SI] (default: 1/100 of the bounds, 1-2-5)
+  std::string surface;               ///< a GP surface's name (required)
+  std::size_t count = 5;             ///< runs to propose, 1 to 1000
+  std::vector<std::string> bounds;   ///< "AXIS=FROM:TO" [SI] (default: the surface's range)
+  std::string output;                ///< whose uncertainty to reduce ("" : the first output) (--for)
+  std::size_t candidates = 4096;     ///< candidate keys searched
+  std::vector<std::string> round;    ///< "AXIS=STEP" [SI] (default: 1/100 of the bounds, 1-2-5)
   std::vector<std::string> running;  ///< sweep manifests of runs asked for and not imported yet
   std::string manifest;              ///< write the runs as a sweep manifest CSV here ("" : none)
 
@@ -377,19 +377,19 @@ struct HYDROCOEF_EXPORT SuggestOptions {
 };
 
 struct SuggestedKey {
-  std::vector<double> key;         ///< on the surface's axes, in their order [SI]
-  double sd_before = 0.0;          ///< the standard deviation there before it was chosen
+  std::vector<double> key;  ///< on the surface's axes, in their order [SI]
+  double sd_before = 0.0;   ///< the standard deviation there before it was chosen
 };
 
 struct HYDROCOEF_EXPORT Suggestion {
   std::string surface;
   std::string output, unit;
   std::vector<std::string> axes;
-  std::vector<double> lower, upper;     ///< the bounds searched, per axis
-  std::vector<double> resolution;       ///< per axis: every key a multiple of it
-  std::vector<bool> resolution_given;   ///< per axis: given (else the default)
-  std::string mirror;                   ///< the surface's mirror planes ("" none)
-  std::string domain;                   ///< the fundamental domain in words ("" without a mirror)
+  std::vector<double> lower, upper;    ///< the bounds searched, per axis
+  std::vector<double> resolution;      ///< per axis: every key a multiple of it
+  std::vector<bool> resolution_given;  ///< per axis: given (else the default)
+  std::string mirror;                  ///< the surface's mirror planes ("" none)
+  std::string domain;                  ///< the fundamental domain in words ("" without a mirror)
   std::size_t candidates = 0;
   std::size_t imported_skipped = 0, running_skipped = 0;
   std::vector<SuggestedKey> runs;  ///< in the order chosen

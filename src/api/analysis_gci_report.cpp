@@ -53,23 +53,22 @@ std::string GciStudy::json() const {
                             {"notes", key.notes},
                             {"components", nlohmann::json::object()}};
     for (const auto& c : key.components)
-      entry["components"][c.component] = {
-          {"phi", c.phi},
-          {"h", {key.cell_sizes.at(0), key.cell_sizes.at(1), key.cell_sizes.at(2)}},
-          {"r21", c.r21},
-          {"r32", c.r32},
-          {"convergence", c.convergence},
-          {"apparent_order", optional_json(c.apparent_order)},
-          {"extrapolated", optional_json(c.extrapolated)},
-          {"relative_error", optional_json(c.relative_error)},
-          {"extrapolated_relative_error", optional_json(c.extrapolated_relative_error)},
-          {"gci_fine", optional_json(c.gci_fine)},
-          {"gci_medium", optional_json(c.gci_medium)},
-          {"asymptotic_ratio", optional_json(c.asymptotic_ratio)},
-          {"numerical_uncertainty", optional_json(c.numerical_uncertainty)},
-          {"values_convergence", c.values_convergence},
-          {"values_error", c.values_error},
-          {"note", c.note}};
+      entry["components"][c.component] = {{"phi", c.phi},
+                                          {"h", {key.cell_sizes.at(0), key.cell_sizes.at(1), key.cell_sizes.at(2)}},
+                                          {"r21", c.r21},
+                                          {"r32", c.r32},
+                                          {"convergence", c.convergence},
+                                          {"apparent_order", optional_json(c.apparent_order)},
+                                          {"extrapolated", optional_json(c.extrapolated)},
+                                          {"relative_error", optional_json(c.relative_error)},
+                                          {"extrapolated_relative_error", optional_json(c.extrapolated_relative_error)},
+                                          {"gci_fine", optional_json(c.gci_fine)},
+                                          {"gci_medium", optional_json(c.gci_medium)},
+                                          {"asymptotic_ratio", optional_json(c.asymptotic_ratio)},
+                                          {"numerical_uncertainty", optional_json(c.numerical_uncertainty)},
+                                          {"values_convergence", c.values_convergence},
+                                          {"values_error", c.values_error},
+                                          {"note", c.note}};
     out["keys"].push_back(entry);
   }
   return escape::json_text(out, 2);
@@ -80,9 +79,9 @@ std::string GciStudy::text() const {
   out << "grid convergence of body " << escape::one_line(body) << " (Celik et al. 2008, Fs = 1.25), mesh "
       << "levels by '" << escape::one_line(mesh_parameter) << "', fine (1) to coarse (3)\n";
   out << std::left << std::setw(28) << "key" << std::setw(3) << "F" << std::setw(11) << "h1" << std::setw(11) << "h2"
-      << std::setw(11) << "h3" << std::setw(8) << "r21" << std::setw(8) << "r32" << std::setw(9) << "p"
-      << std::setw(13) << " phi1" << std::setw(13) << "phi_ext" << std::setw(11) << "e_a" << std::setw(11) << "e_ext"
-      << std::setw(11) << "GCI_fine" << std::setw(11) << "u_num" << std::setw(12) << "convergence"
+      << std::setw(11) << "h3" << std::setw(8) << "r21" << std::setw(8) << "r32" << std::setw(9) << "p" << std::setw(13)
+      << " phi1" << std::setw(13) << "phi_ext" << std::setw(11) << "e_a" << std::setw(11) << "e_ext" << std::setw(11)
+      << "GCI_fine" << std::setw(11) << "u_num" << std::setw(12) << "convergence"
       << "notes\n";
   for (const auto& key : keys) {
     std::ostringstream text;
@@ -93,11 +92,11 @@ std::string GciStudy::text() const {
       out << std::setw(28) << text.str() << ' ' << std::setw(2) << c.component << std::setw(11)
           << significant(key.cell_sizes.at(0), 4) << std::setw(11) << significant(key.cell_sizes.at(1), 4)
           << std::setw(11) << significant(key.cell_sizes.at(2), 4) << std::setw(8) << significant(c.r21, 4)
-          << std::setw(8) << significant(c.r32, 4) << std::setw(9) << cell(c.apparent_order, 4) << ' '
-          << std::setw(12) << significant(c.phi[0], 6) << std::setw(13) << cell(c.extrapolated, 6) << std::setw(11)
+          << std::setw(8) << significant(c.r32, 4) << std::setw(9) << cell(c.apparent_order, 4) << ' ' << std::setw(12)
+          << significant(c.phi[0], 6) << std::setw(13) << cell(c.extrapolated, 6) << std::setw(11)
           << cell(c.relative_error, 3) << std::setw(11) << cell(c.extrapolated_relative_error, 3) << std::setw(11)
-          << cell(c.gci_fine, 3) << std::setw(11) << cell(c.numerical_uncertainty, 3) << std::setw(12)
-          << c.convergence << escape::one_line(c.note) << '\n';
+          << cell(c.gci_fine, 3) << std::setw(11) << cell(c.numerical_uncertainty, 3) << std::setw(12) << c.convergence
+          << escape::one_line(c.note) << '\n';
     }
     if (!key.components.empty()) {
       const auto& kinds = key.components.front().values_convergence;
@@ -107,9 +106,8 @@ std::string GciStudy::text() const {
     for (const auto& note : key.notes)
       out << "  note: " << escape::one_line(key.description) << ": " << escape::one_line(note) << '\n';
   }
-  if (!volume_given && std::any_of(keys.begin(), keys.end(), [](const GciKey& k) {
-        return k.cell_size_from == kCellCountParameter;
-      }))
+  if (!volume_given &&
+      std::any_of(keys.begin(), keys.end(), [](const GciKey& k) { return k.cell_size_from == kCellCountParameter; }))
     out << "  h = (1/cells)^(1/" << dimension
         << ") without --volume: relative sizes (the ratios, p, phi_ext and GCI do not depend on the volume)\n";
   if (single_level_keys > 0)

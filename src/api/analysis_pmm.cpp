@@ -51,8 +51,7 @@ SettingsLayer settings_of(const PmmOptions& options) {
     if (!std::isfinite(*value)) throw InputError(std::string(option) + ": expected a finite number");
     layer.set(name, *value, option);
   };
-  const auto set_triple = [&](const char* name, const std::optional<std::array<double, 3>>& value,
-                              const char* option) {
+  const auto set_triple = [&](const char* name, const std::optional<std::array<double, 3>>& value, const char* option) {
     if (!value) return;
     for (const double x : *value)
       if (!std::isfinite(x)) throw InputError(std::string(option) + ": expected three finite numbers x,y,z");
@@ -83,8 +82,8 @@ SettingsLayer settings_of(const PmmOptions& options) {
 }
 
 std::optional<HarmonicMotion> motion_of(const PmmOptions& options) {
-  const int given = int(options.motion.has_value()) + int(options.amplitude.has_value()) +
-                    int(options.period.has_value());
+  const int given =
+      int(options.motion.has_value()) + int(options.amplitude.has_value()) + int(options.period.has_value());
   if (given != 0 && given != 3)
     throw InputError("--motion, --amplitude and --period: found " + std::to_string(given) +
                      " of them; expected all three or none (none: the motion stated by the case)");
@@ -184,8 +183,7 @@ AddedMassOptions assembly_options(const AddedMassMatrixOptions& options) {
 Matrix6x6 matrix_of(const Matrix6& m) {
   Matrix6x6 out{};
   for (Eigen::Index i = 0; i < 6; ++i)
-    for (Eigen::Index j = 0; j < 6; ++j)
-      out[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = m(i, j);
+    for (Eigen::Index j = 0; j < 6; ++j) out[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = m(i, j);
   return out;
 }
 
@@ -213,8 +211,8 @@ AddedMassMatrix matrix_result(const AddedMassAssembly& a) {
   out.positive_definite = a.positive_definite;
   out.smallest_eigenvalue = a.smallest_eigenvalue;
   for (const auto& q : a.quadratic)
-    out.quadratic_damping.push_back({std::string(dof_name(q.dof)), q.omega, q.amplitudes, q.fit.linear,
-                                     q.fit.linear_se, q.fit.quadratic, q.fit.quadratic_se});
+    out.quadratic_damping.push_back({std::string(dof_name(q.dof)), q.omega, q.amplitudes, q.fit.linear, q.fit.linear_se,
+                                     q.fit.quadratic, q.fit.quadratic_se});
   for (const auto& f : a.by_frequency)
     out.by_frequency.push_back({std::string(dof_name(f.dof)), f.omega, 2.0 * std::numbers::pi / f.omega, f.runs,
                                 f.amplitude_min, f.amplitude_max, f.added_mass, f.added_mass_se, f.damping,
@@ -303,17 +301,14 @@ PmmDeletion delete_pmm_runs(Database& database, const std::vector<std::int64_t>&
   const std::lock_guard lock(impl.mutex);
   PmmDeletion out;
   for (const PmmDeleted& d : impl.writable_store("deleting forced-oscillation runs").delete_pmm_runs(ids))
-    out.deleted.push_back({d.id, d.body,
-                           d.dof >= 0 && d.dof < 6 ? std::string(dof_name(static_cast<std::size_t>(d.dof)))
-                                                   : std::string(),
-                           d.source_path});
+    out.deleted.push_back(
+        {d.id, d.body, d.dof >= 0 && d.dof < 6 ? std::string(dof_name(static_cast<std::size_t>(d.dof))) : std::string(),
+         d.source_path});
   out.database = impl.path;
   return out;
 }
 
-void AddedMassMatrixOptions::validate() const {
-  (void)assembly_options(*this);
-}
+void AddedMassMatrixOptions::validate() const { (void)assembly_options(*this); }
 
 AddedMassMatrix added_mass_matrix(const Database& database, const AddedMassMatrixOptions& options) {
   options.validate();

@@ -119,10 +119,9 @@ std::string PmmAnalysis::text() const {
     for (const auto& c : r.components) {
       out << "  " << std::left << std::setw(4) << c.component << std::right << std::setw(13) << significant(c.mean, 5)
           << std::setw(14) << significant(c.added_mass, 5) << std::setw(11) << significant(c.added_mass_se, 3) << " "
-          << std::left << std::setw(7) << c.added_mass_unit << std::right << std::setw(13)
-          << significant(c.damping, 5) << std::setw(11) << significant(c.damping_se, 3) << " " << std::left
-          << std::setw(8) << c.damping_unit << std::right << std::setw(9) << std::fixed << std::setprecision(2)
-          << 100.0 * c.explained << " %\n"
+          << std::left << std::setw(7) << c.added_mass_unit << std::right << std::setw(13) << significant(c.damping, 5)
+          << std::setw(11) << significant(c.damping_se, 3) << " " << std::left << std::setw(8) << c.damping_unit
+          << std::right << std::setw(9) << std::fixed << std::setprecision(2) << 100.0 * c.explained << " %\n"
           << std::defaultfloat << std::setprecision(6);
       if (c.added_mass_coefficient)
         out << "       added-mass coefficient M_A / (rho V) = " << significant(*c.added_mass_coefficient, 5)
@@ -196,18 +195,18 @@ std::string PmmDeletion::text() const {
 std::string AddedMassMatrix::json() const {
   nlohmann::json entry_list = nlohmann::json::array();
   for (const auto& e : entries)
-    entry_list.push_back({{"row", e.row},
-                          {"column", e.column},
-                          {"runs", e.runs},
-                          {"added_mass", e.added_mass},
-                          {"added_mass_se", e.added_mass_se},
-                          {"added_mass_spread", e.added_mass_spread},
-                          {"damping", e.damping},
-                          {"damping_se", e.damping_se},
-                          {"omega_rad_s", {e.omega_min, e.omega_max}},
-                          {"keulegan_carpenter",
-                           e.kc_min ? nlohmann::json{*e.kc_min, e.kc_max.value_or(*e.kc_min)} : nlohmann::json()},
-                          {"pmm_runs", e.pmm_runs}});
+    entry_list.push_back(
+        {{"row", e.row},
+         {"column", e.column},
+         {"runs", e.runs},
+         {"added_mass", e.added_mass},
+         {"added_mass_se", e.added_mass_se},
+         {"added_mass_spread", e.added_mass_spread},
+         {"damping", e.damping},
+         {"damping_se", e.damping_se},
+         {"omega_rad_s", {e.omega_min, e.omega_max}},
+         {"keulegan_carpenter", e.kc_min ? nlohmann::json{*e.kc_min, e.kc_max.value_or(*e.kc_min)} : nlohmann::json()},
+         {"pmm_runs", e.pmm_runs}});
   nlohmann::json quadratic = nlohmann::json::array();
   for (const auto& q : quadratic_damping)
     quadratic.push_back({{"dof", q.dof},
@@ -309,8 +308,8 @@ std::string AddedMassMatrix::text() const {
       const bool moves = translation(q.dof);
       out << "  " << std::left << std::setw(6) << q.dof << std::right << " omega " << significant(q.omega, 4)
           << " rad/s, " << q.amplitudes.size() << " runs: b1 = " << significant(q.linear, 5) << " +- "
-          << significant(q.linear_se, 2) << " " << (moves ? "N s/m" : "N m s") << ", b2 = "
-          << significant(q.quadratic, 5) << " +- " << significant(q.quadratic_se, 2)
+          << significant(q.linear_se, 2) << " " << (moves ? "N s/m" : "N m s")
+          << ", b2 = " << significant(q.quadratic, 5) << " +- " << significant(q.quadratic_se, 2)
           << (moves ? " N s^2/m^2" : " N m s^2") << "\n";
     }
   }

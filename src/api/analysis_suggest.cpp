@@ -85,8 +85,7 @@ std::string Suggestion::text() const {
   out << "next runs for surface " << escape::one_line(surface) << ": where the standard deviation of "
       << escape::one_line(output) << " is largest, each run counted before the next is chosen\n  bounds:";
   for (std::size_t a = 0; a < axes.size(); ++a)
-    out << " " << escape::one_line(axes[a]) << "=" << significant(lower.at(a), 6) << ":"
-        << significant(upper.at(a), 6);
+    out << " " << escape::one_line(axes[a]) << "=" << significant(lower.at(a), 6) << ":" << significant(upper.at(a), 6);
   out << "\n  keys rounded to:";
   for (std::size_t a = 0; a < axes.size(); ++a)
     out << " " << escape::one_line(axes[a]) << "=" << shortest_number(resolution.at(a))

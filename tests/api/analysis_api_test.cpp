@@ -113,9 +113,20 @@ class AnalysisApiTest : public ::testing::Test {
     return {(kPmm / "surge-A0.015-T2").string(), (kPmm / "surge-A0.045-T2").string()};
   }
   std::vector<std::string> sphere_cli_args() const {
-    return {"pmm",   sphere_inputs()[0], sphere_inputs()[1], "--body",   "sphere", "--axes=-x,y,-z",
-            "--rho", "998.2",            "--nu",             "1.004e-6", "--volume", number_text(kSphereVolume),
-            "--size", "0.3"};
+    return {"pmm",
+            sphere_inputs()[0],
+            sphere_inputs()[1],
+            "--body",
+            "sphere",
+            "--axes=-x,y,-z",
+            "--rho",
+            "998.2",
+            "--nu",
+            "1.004e-6",
+            "--volume",
+            number_text(kSphereVolume),
+            "--size",
+            "0.3"};
   }
 
   TempDir dir_;
@@ -135,8 +146,7 @@ TEST_F(AnalysisApiTest, GridConvergenceGivesTheCliStudy) {
   {
     auto db = Database::open(path_, OpenMode::ReadOnly);
     const auto study = hydrocoef::grid_convergence(db, options);
-    const std::string cli_json =
-        cli_out({"gci", "--body", "sphere", "--allow-unconverged", "--no-store", "--json"});
+    const std::string cli_json = cli_out({"gci", "--body", "sphere", "--allow-unconverged", "--no-store", "--json"});
     EXPECT_EQ(study.json() + "\n", cli_json);
     EXPECT_EQ(study.text(), cli_out({"gci", "--body", "sphere", "--allow-unconverged", "--no-store"}));
     const json document = json::parse(cli_json);
@@ -174,8 +184,7 @@ TEST_F(AnalysisApiTest, GridConvergenceGivesTheCliStudy) {
     auto db = Database::open(path_, OpenMode::ReadWrite);
     const auto study = hydrocoef::grid_convergence(db, options);
     EXPECT_TRUE(study.stored);
-    const std::string cli_json =
-        cli_out({"gci", "--body", "sphere", "--allow-unconverged", "--json"}, copy);
+    const std::string cli_json = cli_out({"gci", "--body", "sphere", "--allow-unconverged", "--json"}, copy);
     EXPECT_EQ(study.json() + "\n", cli_json);
     EXPECT_TRUE(json::parse(cli_json)["stored"].get<bool>());
   }
@@ -242,8 +251,8 @@ TEST_F(AnalysisApiTest, ForcedOscillationGivesTheCliNumbers) {
   matrix_options.same = {{"sway", "surge"}, {"heave", "surge"}};
   matrix_options.zero = {"roll", "pitch", "yaw"};
   const auto matrix = hydrocoef::added_mass_matrix(db, matrix_options);
-  const std::vector<std::string> matrix_args = {"added-mass", "sphere", "--same", "sway=surge", "--same",
-                                                "heave=surge", "--zero", "roll,pitch,yaw"};
+  const std::vector<std::string> matrix_args = {"added-mass", "sphere",      "--same", "sway=surge",
+                                                "--same",     "heave=surge", "--zero", "roll,pitch,yaw"};
   auto matrix_json_args = matrix_args;
   matrix_json_args.push_back("--json");
   const std::string matrix_json = cli_out(matrix_json_args);
