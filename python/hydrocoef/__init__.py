@@ -20,6 +20,8 @@ command-line tool prints.
 
 Contents: Database, Surface, Fit, SurfaceInfo, ImportSummary, ImportedFile,
 Table, simulate, InputError, __version__.
+Analyses: grid_convergence (gci), analyse_pmm and store_pmm (pmm), pmm_runs, delete_pmm_runs,
+added_mass_matrix (added-mass), suggest_runs (suggest).
 """
 
 import json as _json
@@ -28,9 +30,14 @@ import os as _os
 from . import _hydrocoef
 from ._hydrocoef import (Fit, ImportedFile, ImportSummary, InputError, Surface,
                          SurfaceInfo, __version__)
+from ._hydrocoef import (AddedMassMatrix, GciStudy, PmmAnalysis, PmmDeletion, PmmRunList, Suggestion,
+                         added_mass_matrix, analyse_pmm, delete_pmm_runs, grid_convergence, pmm_runs, store_pmm,
+                         suggest_runs)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "simulate",
            "InputError", "__version__"]
+__all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnalysis", "pmm_runs", "PmmRunList",
+            "delete_pmm_runs", "PmmDeletion", "added_mass_matrix", "AddedMassMatrix", "suggest_runs", "Suggestion"]
 
 
 class Table(dict):
