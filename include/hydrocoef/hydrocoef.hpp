@@ -18,6 +18,8 @@
 //                              surface_build, _rebuild, _list, _show, query_surface
 //   hydrocoef/exports.hpp      export_surface, export_gazebo: a gridded surface
 //                              or a body's fits written for another tool
+//   hydrocoef/analysis.hpp     mesh studies (grid_convergence), forced oscillation (analyse_pmm,
+//                              added_mass_matrix, ...), where to run CFD next (suggest_runs)
 //   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
 //                              trajectory as columns, with the Monte Carlo
 //                              bands and the comparison with a measured
@@ -38,6 +40,7 @@
 //   double n = yaw.evaluate({0.15})[0];                       // N m at r = 0.15 rad/s
 #pragma once
 
+#include "hydrocoef/analysis.hpp"
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/exports.hpp"

@@ -20,6 +20,8 @@ command-line tool prints.
 
 Contents: Database, Surface, Fit, SurfaceInfo, ImportSummary, ImportedFile,
 Table, simulate (Simulation), equilibrium (Equilibrium), InputError, __version__.
+Analyses: grid_convergence (gci), analyse_pmm and store_pmm (pmm), pmm_runs, delete_pmm_runs,
+added_mass_matrix (added-mass), suggest_runs (suggest).
 """
 
 import json as _json
@@ -30,6 +32,9 @@ from ._hydrocoef import (Fit, ImportedFile, ImportSummary, InputError, Surface,
                          SurfaceInfo, __version__)
 from ._hydrocoef import (GazeboExportResult, SurfaceBuildReport, SurfaceList, SurfaceQueryResult,
                          SurfaceRebuildReport, SurfaceReport, TableExportResult)
+from ._hydrocoef import (AddedMassMatrix, GciStudy, PmmAnalysis, PmmDeletion, PmmRunList, Suggestion,
+                         added_mass_matrix, analyse_pmm, delete_pmm_runs, grid_convergence, pmm_runs, store_pmm,
+                         suggest_runs)
 from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
                          MigrationSummary, Refits, ReportSummary, RunDetails)
 
@@ -39,6 +44,8 @@ __all__ += ["SurfaceReport", "SurfaceList", "SurfaceBuildReport", "SurfaceRebuil
             "TableExportResult", "GazeboExportResult"]
 __all__ += ["LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary", "MergeSummary",
             "CopySummary", "MigrationSummary", "ReportSummary"]
+__all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnalysis", "pmm_runs", "PmmRunList",
+            "delete_pmm_runs", "PmmDeletion", "added_mass_matrix", "AddedMassMatrix", "suggest_runs", "Suggestion"]
 
 
 class Table(dict):

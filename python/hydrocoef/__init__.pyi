@@ -480,3 +480,240 @@ def equilibrium(vehicle: Union[_Path, Mapping[str, Any]], database: Union[_Path,
                 disturbances: Mapping[str, float] | None = None,
                 attitude_deg: Sequence[float] = (0.0, 0.0, 0.0), samples: int = 0, seed: int = 1,
                 percentiles: Sequence[float] | None = None, threads: int = 0) -> Equilibrium: ...
+
+# Analyses (python/src/analysis.cpp, include/hydrocoef/analysis.hpp). Each result has .text() (what the
+# CLI prints) and .json() (what --json prints).
+class GciComponent:
+    component: str
+    phi: list[float]
+    r21: float
+    r32: float
+    convergence: str
+    apparent_order: float | None
+    extrapolated: float | None
+    relative_error: float | None
+    extrapolated_relative_error: float | None
+    gci_fine: float | None
+    gci_medium: float | None
+    asymptotic_ratio: float | None
+    numerical_uncertainty: float | None
+    values_convergence: list[str]
+    values_error: list[float]
+    note: str
+
+class GciKey:
+    body: str
+    velocity: list[float]
+    disturbances: dict[str, float]
+    description: str
+    levels: list[float]
+    cell_sizes: list[float]
+    runs: list[int]
+    cell_size_from: str
+    components: list[GciComponent]
+    notes: list[str]
+
+class GciStudy:
+    body: str
+    mesh_parameter: str
+    safety_factor: float
+    coverage_factor: float
+    keys: list[GciKey]
+    single_level_keys: int
+    runs_without_level: int
+    stored: bool
+    fits_made_stale: int
+    surfaces_made_stale: int
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class PmmComponent:
+    component: str
+    mean: float
+    added_mass: float
+    added_mass_se: float
+    added_mass_unit: str
+    damping: float
+    damping_se: float
+    damping_unit: str
+    explained: float
+    harmonics: list[float]
+    added_mass_coefficient: float | None
+    in_phase_spread: float
+    quadrature_spread: float
+
+class PmmRun:
+    path: str
+    format: str
+    body: str
+    velocity: list[float]
+    dof: str
+    amplitude: float
+    omega: float
+    period: float
+    phase: float
+    motion_source: str
+    medium: str
+    window_start: float
+    window_end: float
+    periods: int
+    transient_periods: int
+    samples: int
+    harmonics: int
+    size: float | None
+    keulegan_carpenter: float | None
+    stokes_number: float | None
+    rho: float | None
+    displaced_volume: float | None
+    restoring: float | None
+    notes: list[str]
+    components: list[PmmComponent]
+    stored_id: int
+    replaced: bool
+
+class PmmAnalysis:
+    runs: list[PmmRun]
+    stored: bool
+    database: str
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class PmmRunSummary:
+    id: int
+    body: str
+    dof: str
+    amplitude: float
+    amplitude_unit: str
+    period: float
+    omega: float
+    medium: str
+    restoring: float | None
+    added_mass: float | None
+    damping: float | None
+    added_mass_unit: str
+    damping_unit: str
+    source_path: str
+    created_at: str
+
+class PmmRunList:
+    runs: list[PmmRunSummary]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class PmmDeletedRun:
+    id: int
+    body: str
+    dof: str
+    source_path: str
+
+class PmmDeletion:
+    database: str
+    deleted: list[PmmDeletedRun]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class AddedMassEntry:
+    row: str
+    column: str
+    name: str
+    unit: str
+    runs: int
+    added_mass: float
+    added_mass_se: float
+    added_mass_spread: float
+    damping: float
+    damping_se: float
+    omega_min: float
+    omega_max: float
+    kc_min: float | None
+    kc_max: float | None
+    pmm_runs: list[int]
+
+class AddedMassFrequency:
+    dof: str
+    omega: float
+    period: float
+    runs: int
+    amplitude_min: float
+    amplitude_max: float
+    added_mass: float
+    added_mass_se: float
+    damping: float
+    damping_se: float
+    used: bool
+
+class QuadraticDampingFit:
+    dof: str
+    omega: float
+    amplitudes: list[float]
+    linear: float
+    linear_se: float
+    quadratic: float
+    quadratic_se: float
+
+class AddedMassMatrix:
+    body: str
+    omega: float
+    period: float
+    records: int
+    other_frequency_records: int
+    @property
+    def added_mass(self) -> np.ndarray: ...
+    @property
+    def added_mass_se(self) -> np.ndarray: ...
+    @property
+    def damping(self) -> np.ndarray: ...
+    @property
+    def damping_se(self) -> np.ndarray: ...
+    entries: list[AddedMassEntry]
+    missing: list[str]
+    notes: list[str]
+    positive_definite: bool
+    smallest_eigenvalue: float
+    quadratic_damping: list[QuadraticDampingFit]
+    by_frequency: list[AddedMassFrequency]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class SuggestedKey:
+    key: list[float]
+    sd_before: float
+
+class Suggestion:
+    surface: str
+    output: str
+    unit: str
+    axes: list[str]
+    lower: list[float]
+    upper: list[float]
+    resolution: list[float]
+    resolution_given: list[bool]
+    mirror: str
+    domain: str
+    candidates: int
+    imported_skipped: int
+    running_skipped: int
+    runs: list[SuggestedKey]
+    largest_sd_after: float
+    manifest: str
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def grid_convergence(database: Database, *, body: str, mesh_parameter: str = "mesh", volume: float | None = None,
+                     dimension: int = 3, allow_unconverged: bool = False, store: bool = True) -> GciStudy: ...
+def analyse_pmm(inputs: Union[_Path, Sequence[_Path]], *, body: str = "", axes: str = "",
+                origin: Sequence[float] | None = None, ref_point: Sequence[float] | None = None,
+                rho: float | None = None, nu: float | None = None, set: Mapping[str, float] | None = None,
+                columns: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
+                sign: str | None = None, motion: str | None = None, amplitude: float | None = None,
+                period: float | None = None, phase: float = 0.0, ccl: str | None = None, harmonics: int = 1,
+                start: float | None = None, stream: bool = False, volume: float | None = None,
+                restoring: float | None = None, size: float | None = None, jobs: int = 0) -> PmmAnalysis: ...
+def store_pmm(database: Database, analysis: PmmAnalysis) -> None: ...
+def pmm_runs(database: Database, body: str | None = None) -> PmmRunList: ...
+def delete_pmm_runs(database: Database, ids: Iterable[int]) -> PmmDeletion: ...
+def added_mass_matrix(database: Database, body: str, *, same: Mapping[str, str] | None = None, zero: _Texts = None,
+                      period: float | None = None, allow_indefinite: bool = False) -> AddedMassMatrix: ...
+def suggest_runs(database: Database, surface: str, *, count: int = 5, bounds: _Texts = None,
+                 output: str | None = None, candidates: int = 4096, round: _Texts = None, running: _Texts = None,
+                 manifest: _Path | None = None) -> Suggestion: ...

@@ -35,4 +35,5 @@ PYBIND11_MODULE(_hydrocoef, m) {
     m.attr(name).attr("__module__") = "hydrocoef";
 
   hydrocoef_python::bind_simulation(m);
+  hydrocoef_python::register_analysis(m);
 }
