@@ -20,7 +20,6 @@ namespace {
 struct ImportArgs {
   std::vector<std::string> inputs;
   hydrocoef::ImportOptions options;
-  SurfaceArgs surface;
   std::vector<std::string> columns, units, monitors;  ///< NAME=VALUE each
   bool json = false, quiet = false;
 };
@@ -36,32 +35,9 @@ std::map<std::string, std::string> assignments(const std::vector<std::string>& t
 
 void run_import(const ImportArgs& args, const GlobalOptions& global) {
   hydrocoef::ImportOptions options = args.options;
-  const SurfaceArgs& s = args.surface;
   options.columns = assignments(args.columns, "--column");
   options.units = assignments(args.units, "--unit");
   options.monitors = assignments(args.monitors, "--monitor");
-  options.body = s.body;
-  options.use_sidecars = !s.no_sidecar;
-  options.locations = s.locations;
-  options.pressure = s.pressure;
-  options.shear = s.shear;
-  options.pressure_kind = s.pressure_kind;
-  options.shear_convention = s.shear_convention;
-  options.rho = s.rho;
-  options.nu = s.nu;
-  options.p_ref = s.p_ref;
-  options.ref_point = s.ref_point;
-  options.length_unit = s.length_unit;
-  options.pressure_unit = s.pressure_unit;
-  options.axes = s.axes;
-  options.origin = s.origin;
-  options.flow = s.flow;
-  options.normals = s.normals;
-  options.symmetry = s.symmetry;
-  options.window = s.window;
-  options.uncertainty = s.uncertainty;
-  options.set = s.set;
-  options.at_rest = s.at_rest;
   const bool progress = isatty(STDERR_FILENO) && !args.quiet;
   if (progress)
     options.progress = [](std::size_t done, std::size_t total, const std::string& path) {
@@ -90,8 +66,8 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
                    "auto (by extension and content), table, monitor, history, cfdpost, vtk or cfx-out (the wall "
                    "force summary of a CFX solver output)")
       ->capture_default_str();
-  command->add_option("--body", args->surface.body, "Body name the runs belong to (default vehicle)");
-  add_surface_options(*command, args->surface);
+  command->add_option("--body", args->options.body, "Body name the runs belong to (default vehicle)");
+  add_surface_options(*command, args->options);
   command->get_option("--location")
       ->description(
           "Surface exports: a patch, block, zone or [Name] to integrate; CFX .out: a boundary or domain group of the "

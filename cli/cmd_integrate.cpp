@@ -1,51 +1,22 @@
 // hydrocoef integrate: forces and moments of one surface export, printed and
-// not stored, with the run key its settings give.
+// not stored, with the run key its settings give. The work is
+// hydrocoef::integrate_surface (include/hydrocoef/integrate.hpp); this file
+// parses the options and prints the result.
 #include <iostream>
 #include <memory>
 
 #include "cli/common.hpp"
 #include "cli/surface_options.hpp"
-#include "src/core/error.hpp"
-#include "src/core/escape.hpp"
-#include "src/pipeline/import_files.hpp"
+#include "hydrocoef/integrate.hpp"
 
 namespace hydrocoef::cli {
 namespace {
 
 struct IntegrateArgs {
   std::string file;
-  std::string format = "auto";
-  SurfaceArgs surface;
+  ImportOptions options;
   bool json = false;
 };
-
-void run_integrate(const IntegrateArgs& args) {
-  ImportRequest request;
-  request.inputs = {args.file};
-  request.command_line = command_line_settings(args.surface);
-  request.format = args.format;
-  request.plan.use_sidecars = !args.surface.no_sidecar;
-  request.require_velocity = false;  // nothing is stored: the key is shown as the settings give it
-  const ImportPlan plan = plan_request(request);
-  const ImportedInput input = read_input(plan.inputs.front(), request);
-  if (!input.surface)
-    throw InputError(SourceLocation{args.file}, "is a " + input.format +
-                                                    ", not a surface export; expected a CFD-Post "
-                                                    "export or a VTK-family file (import reads the others)");
-  const auto& key = input.surface->batch.runs.front().key;
-  if (args.json) {
-    auto out = surface_run_json(*input.surface);
-    out["key"] = key_json(key);
-    out["settings"] = nlohmann::json::parse(input.batch.source.settings.empty() ? "{}" : input.batch.source.settings);
-    std::cout << escape::json_text(out, 2) << '\n';
-    return;
-  }
-  std::cout << surface_run_text(*input.surface);
-  std::cout << "  run key: " << escape::one_line(describe(key)) << '\n';
-  for (const auto& [name, setting] : input.settings.values)
-    if (setting.origin.source != SettingSource::CommandLine)
-      std::cout << "  setting " << escape::one_line(name) << " from " << escape::one_line(setting.origin.where) << '\n';
-}
 
 }  // namespace
 
@@ -58,11 +29,14 @@ void add_integrate_command(CLI::App& app) {
                    "CFD-Post export (.csv/.txt) or VTK-family file (.vtk .vtp .vtu .vtm "
                    ".case .cgns)")
       ->required();
-  command->add_option("--format", args->format, "auto, cfdpost or vtk")->capture_default_str();
-  add_surface_options(*command, args->surface);
-  command->add_option("--body", args->surface.body, "Body name (for the run key shown)");
+  command->add_option("--format", args->options.format, "auto, cfdpost or vtk")->capture_default_str();
+  add_surface_options(*command, args->options);
+  command->add_option("--body", args->options.body, "Body name (for the run key shown)");
   command->add_flag("--json", args->json, "Print JSON");
-  command->callback([args] { run_integrate(*args); });
+  command->callback([args] {
+    const SurfaceIntegration result = integrate_surface(args->file, args->options);
+    std::cout << (args->json ? result.json() : result.text());
+  });
 }
 
 }  // namespace hydrocoef::cli

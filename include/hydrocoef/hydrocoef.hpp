@@ -9,6 +9,8 @@
 //   hydrocoef/database.hpp     Database: open a run database, list and select
 //                              runs, import CFD results, fit damping laws,
 //                              list fits and surfaces, read a surface
+//   hydrocoef/integrate.hpp    integrate_surface: one surface export's forces
+//                              and moments, not stored
 //   hydrocoef/records.hpp      import in two steps, runs show and delete,
 //                              per-level fits, refits, fits listed and
 //                              evaluated, merge, copy, migrate, report
@@ -44,6 +46,7 @@
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/exports.hpp"
+#include "hydrocoef/integrate.hpp"
 #include "hydrocoef/plot.hpp"
 #include "hydrocoef/records.hpp"
 #include "hydrocoef/simulation.hpp"

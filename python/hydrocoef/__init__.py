@@ -35,6 +35,7 @@ from ._hydrocoef import (GazeboExportResult, SurfaceBuildReport, SurfaceList, Su
 from ._hydrocoef import (AddedMassMatrix, GciStudy, PmmAnalysis, PmmDeletion, PmmRunList, Suggestion,
                          added_mass_matrix, analyse_pmm, delete_pmm_runs, grid_convergence, pmm_runs, store_pmm,
                          suggest_runs)
+from ._hydrocoef import SurfaceIntegration, integrate_surface
 from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
                          MigrationSummary, Refits, ReportSummary, RunDetails)
 
@@ -44,6 +45,7 @@ __all__ += ["SurfaceReport", "SurfaceList", "SurfaceBuildReport", "SurfaceRebuil
             "TableExportResult", "GazeboExportResult"]
 __all__ += ["LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary", "MergeSummary",
             "CopySummary", "MigrationSummary", "ReportSummary"]
+__all__ += ["integrate_surface", "SurfaceIntegration"]
 __all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnalysis", "pmm_runs", "PmmRunList",
             "delete_pmm_runs", "PmmDeletion", "added_mass_matrix", "AddedMassMatrix", "suggest_runs", "Suggestion"]
 

@@ -717,3 +717,24 @@ def added_mass_matrix(database: Database, body: str, *, same: Mapping[str, str] 
 def suggest_runs(database: Database, surface: str, *, count: int = 5, bounds: _Texts = None,
                  output: str | None = None, candidates: int = 4096, round: _Texts = None, running: _Texts = None,
                  manifest: _Path | None = None) -> Suggestion: ...
+
+class SurfaceIntegration:
+    file: str
+    format: str
+    force: tuple[float, float, float]
+    force_pressure: tuple[float, float, float]
+    force_viscous: tuple[float, float, float]
+    moment: tuple[float, float, float]
+    moment_pressure: tuple[float, float, float]
+    moment_viscous: tuple[float, float, float]
+    reference_point: tuple[float, float, float]
+    area: float
+    signed_volume: float
+    faces: int
+    closed: bool
+    warnings: list[str]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def integrate_surface(path: _Path, *, body: str | None = None, format: str = "auto",
+                      settings: Mapping[str, Any] | None = None, sidecars: bool = True) -> SurfaceIntegration: ...

@@ -117,6 +117,48 @@ std::map<std::string, std::string> settings_texts(const py::object& settings) {
   return out;
 }
 
+/// integrate_surface and its result (include/hydrocoef/integrate.hpp).
+void bind_integration(py::module_& m) {
+  py::class_<hydrocoef::SurfaceIntegration>(m, "SurfaceIntegration", py::is_final(), made_by_the_module_only(),
+                                            "One surface export's forces and moments (integrate_surface).")
+      .def_readonly("file", &hydrocoef::SurfaceIntegration::file)
+      .def_readonly("format", &hydrocoef::SurfaceIntegration::format)
+      .def_readonly("force", &hydrocoef::SurfaceIntegration::force, "X, Y, Z on the body [N], body axes.")
+      .def_readonly("force_pressure", &hydrocoef::SurfaceIntegration::force_pressure)
+      .def_readonly("force_viscous", &hydrocoef::SurfaceIntegration::force_viscous)
+      .def_readonly("moment", &hydrocoef::SurfaceIntegration::moment, "K, M, N [N m] about reference_point.")
+      .def_readonly("moment_pressure", &hydrocoef::SurfaceIntegration::moment_pressure)
+      .def_readonly("moment_viscous", &hydrocoef::SurfaceIntegration::moment_viscous)
+      .def_readonly("reference_point", &hydrocoef::SurfaceIntegration::reference_point, "[m], body axes.")
+      .def_readonly("area", &hydrocoef::SurfaceIntegration::area, "[m^2]")
+      .def_readonly("signed_volume", &hydrocoef::SurfaceIntegration::signed_volume, "[m^3]")
+      .def_readonly("faces", &hydrocoef::SurfaceIntegration::faces)
+      .def_readonly("closed", &hydrocoef::SurfaceIntegration::closed)
+      .def_readonly("warnings", &hydrocoef::SurfaceIntegration::warnings)
+      .def("text", &hydrocoef::SurfaceIntegration::text)
+      .def("json", &hydrocoef::SurfaceIntegration::json);
+  m.def(
+      "integrate_surface",
+      [](const py::object& path, const py::object& body, const std::string& format, const py::object& settings,
+         bool sidecars) {
+        hydrocoef::ImportOptions options;
+        options.format = format;
+        options.body = body.is_none() ? "" : body.cast<std::string>();
+        options.settings = settings_texts(settings);
+        options.use_sidecars = sidecars;
+        const std::string file = fspath(path);
+        py::gil_scoped_release release;
+        return hydrocoef::integrate_surface(file, options);
+      },
+      "path"_a, py::kw_only(), "body"_a = py::none(), "format"_a = "auto", "settings"_a = py::none(),
+      "sidecars"_a = true,
+      R"doc(Integrates one surface export's pressure and wall shear into forces and moments, as `hydrocoef
+integrate` does, and stores nothing. settings: as Database.import_files takes them ({"rho": 998.2, "axes":
+"-x,y,-z", "ref_point": [0, 0, 0.1], "pressure": "p", ...}). Returns a SurfaceIntegration: force and moment on
+the body in body axes [N, N m], their pressure and viscous parts, area, closedness; text() and json() give
+what the CLI prints. Raises InputError as the CLI would.)doc");
+}
+
 /// The result classes of the records' operations: fields as attributes, text() and json().
 void bind_records(py::module_& m) {
   py::class_<hydrocoef::RunDetails>(m, "RunDetails", py::is_final(), made_by_the_module_only(),
@@ -278,6 +320,7 @@ void bind_database(py::module_& m, py::class_<Database>& database) {
       });
 
   bind_records(m);
+  bind_integration(m);
 
   database
       .def(py::init([](const py::object& path, const std::string& mode) {

@@ -27,11 +27,14 @@ PYBIND11_MODULE(_hydrocoef, m) {
   // (Database is: hydrocoef.Database is its Python subclass in __init__.py).
   for (const char* name : {"Surface", "Fit", "SurfaceInfo", "ImportedFile", "ImportSummary", "InputError"})
     m.attr(name).attr("__module__") = "hydrocoef";
-  for (const char* name : {"SurfaceReport", "SurfaceAxisReport", "SurfaceOutputReport", "SurfaceList",
-                           "SurfaceBuildReport", "SurfaceRebuildReport", "SurfaceQueryResult", "TableExportResult",
-                           "TableExportAxis", "GazeboExportResult", "GazeboFitExport", "GazeboElementExport",
-                           "LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary",
-                           "MergeSummary", "CopySummary", "MigrationSummary", "ReportSummary"})
+  for (const char* name : {"SurfaceReport",      "SurfaceAxisReport",  "SurfaceOutputReport",
+                           "SurfaceList",        "SurfaceBuildReport", "SurfaceRebuildReport",
+                           "SurfaceQueryResult", "TableExportResult",  "TableExportAxis",
+                           "GazeboExportResult", "GazeboFitExport",    "GazeboElementExport",
+                           "LevelFit",           "LevelFits",          "Refits",
+                           "FitEvaluation",      "RunDetails",         "DeleteSummary",
+                           "MergeSummary",       "CopySummary",        "MigrationSummary",
+                           "ReportSummary",      "SurfaceIntegration"})
     m.attr(name).attr("__module__") = "hydrocoef";
 
   hydrocoef_python::bind_simulation(m);

@@ -165,19 +165,8 @@ PmmRunResult run_result(const PmmRun& run) {
   return out;
 }
 
-std::size_t dof_of(const std::string& text, const std::string& option) {
-  const auto dof = dof_named(text);
-  if (!dof)
-    throw InputError(option + " '" + printable_text(text, 40) + "': expected surge, sway, heave, roll, pitch or yaw");
-  return *dof;
-}
-
 AddedMassOptions assembly_options(const AddedMassMatrixOptions& options) {
-  AddedMassOptions out;
-  for (const auto& [dof, from] : options.same) out.same[dof_of(dof, "--same")] = dof_of(from, "--same");
-  for (const auto& dof : options.zero) out.zero.push_back(dof_of(dof, "--zero"));
-  out.period = options.period;
-  return out;
+  return added_mass_options(options.same, options.zero, options.period);
 }
 
 Matrix6x6 matrix_of(const Matrix6& m) {

@@ -48,23 +48,14 @@ std::pair<std::string, std::string> assignment(const std::string& text, const st
   return {text.substr(0, equals), text.substr(equals + 1)};
 }
 
-std::size_t dof_of(const std::string& text, const std::string& option) {
-  const auto dof = dof_named(text);
-  if (!dof)
-    throw InputError(option + " '" + printable_text(text, 40) + "': expected surge, sway, heave, roll, pitch or yaw");
-  return *dof;
-}
-
 /// --same DOF=DOF and --zero DOF of the added mass from stored runs.
 AddedMassOptions assembly_options(const GazeboExportOptions& options) {
-  AddedMassOptions out;
+  std::map<std::string, std::string> same;
   for (const auto& text : options.same) {
     const auto [dof, from] = assignment(text, "--same");
-    out.same[dof_of(dof, "--same")] = dof_of(from, "--same");
+    same[dof] = from;
   }
-  for (const auto& text : options.zero) out.zero.push_back(dof_of(text, "--zero"));
-  out.period = options.added_mass_period;
-  return out;
+  return added_mass_options(same, options.zero, options.added_mass_period);
 }
 
 GazeboWriteOptions write_options(const GazeboExportOptions& options) {

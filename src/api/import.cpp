@@ -61,6 +61,8 @@ std::vector<double> triple(const std::string& text, const std::string& option) {
   return out;
 }
 
+}  // namespace
+
 /// The options of `hydrocoef import` as the command line's settings layer:
 /// each option given becomes the setting of the same meaning, remembered as
 /// coming from that option; then the `settings` map, read as a sidecar's keys are.
@@ -152,8 +154,6 @@ SettingsLayer command_line_layer(const ImportOptions& options) {
   }
   return layer;
 }
-
-}  // namespace
 
 void ImportOptions::validate() const { (void)command_line_layer(*this); }
 

@@ -198,6 +198,12 @@ ImportSummary import_summary(const ImportResult& result, const std::string& data
   return summary;
 }
 
+std::string surface_run_json_text(const SurfaceRun& run, const ImportedInput& input) {
+  nlohmann::json out = surface_run_json(run);
+  out["settings"] = nlohmann::json::parse(input.batch.source.settings.empty() ? "{}" : input.batch.source.settings);
+  return escape::json_text(out, 2) + '\n';
+}
+
 }  // namespace records
 
 inline namespace api {

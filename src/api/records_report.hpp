@@ -60,9 +60,16 @@ struct RunDetails::Access {
   }
 };
 
+/// The options of an import as the command line's settings layer
+/// (src/pipeline/run_settings.hpp); InputError naming a malformed option.
+SettingsLayer command_line_layer(const ImportOptions& options);
+
 }  // namespace api
 
 namespace records {
+
+/// An integrated surface export as `hydrocoef integrate --json` gives it (a JSON text).
+std::string surface_run_json_text(const SurfaceRun& run, const ImportedInput& input);
 
 /// What an import did, with `hydrocoef import`'s text and JSON.
 ImportSummary import_summary(const ImportResult& result, const std::string& database);

@@ -88,6 +88,22 @@ std::vector<double> pmm_frequencies(const std::string& body, const std::vector<P
   return out;
 }
 
+AddedMassOptions added_mass_options(const std::map<std::string, std::string>& same,
+                                    const std::vector<std::string>& zero, std::optional<double> period) {
+  const auto dof_of = [](const std::string& text, const char* option) {
+    const auto dof = dof_named(text);
+    if (!dof)
+      throw InputError(std::string(option) + " '" + printable_text(text, 40) +
+                       "': expected surge, sway, heave, roll, pitch or yaw");
+    return *dof;
+  };
+  AddedMassOptions out;
+  for (const auto& [dof, from] : same) out.same[dof_of(dof, "--same")] = dof_of(from, "--same");
+  for (const auto& dof : zero) out.zero.push_back(dof_of(dof, "--zero"));
+  out.period = period;
+  return out;
+}
+
 AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector<PmmRecord>& records,
                                       const AddedMassOptions& options) {
   AddedMassAssembly out;

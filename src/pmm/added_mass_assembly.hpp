@@ -112,6 +112,13 @@ std::vector<double> pmm_frequencies(const std::string& body, const std::vector<P
 /// frequencies and `options.period` chooses none, or a period no run has
 /// (the message lists the periods and their runs); or for a `same`/`zero`
 /// DOF that the runs measure themselves.
+/// The options as `added-mass` and `export-gazebo --added-mass-from-database`
+/// take them: --same DOF=DOF entries (DOF -> the DOF whose column it takes)
+/// and --zero DOFs, by name (surge ... yaw). InputError naming the option and
+/// the text for a name that is not a DOF.
+AddedMassOptions added_mass_options(const std::map<std::string, std::string>& same,
+                                    const std::vector<std::string>& zero, std::optional<double> period);
+
 AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector<PmmRecord>& records,
                                       const AddedMassOptions& options = {});
 
