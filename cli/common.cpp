@@ -59,13 +59,5 @@ void add_mirror_options(CLI::App& command, std::vector<std::string>& planes, std
                      "A disturbance parameter that changes sign in the mirror (e.g. a lateral current); repeatable");
 }
 
-nlohmann::json key_json(const RunKey& key) {
-  nlohmann::json out;
-  out["body"] = key.body;
-  for (std::size_t i = 0; i < 6; ++i) out[std::string(kVelocityNames[i])] = key.nu_b[i];
-  out["disturbances"] = nlohmann::json::object();
-  for (const auto& [name, value] : key.disturbances) out["disturbances"][name] = value;
-  return out;
-}
 
 }  // namespace hydrocoef::cli

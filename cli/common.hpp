@@ -1,24 +1,18 @@
-// Shared pieces of the hydrocoef command line: global options, argument
-// parsing helpers and number formatting. The CLI only parses, calls the
-// library and prints.
+// Shared pieces of the hydrocoef command line: global options and argument
+// parsing helpers. The CLI only parses, calls the public API
+// (include/hydrocoef/) and prints what it returns.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include <array>
+#include <cstdint>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "src/core/numbers.hpp"
-#include "src/core/run.hpp"
-#include "src/core/run_selection.hpp"
-#include "src/fit/coefficient_curve.hpp"
-#include "src/pipeline/fit_runs.hpp"
-#include "src/pipeline/fit_stored_runs.hpp"
-#include "src/store/database.hpp"
+#include "hydrocoef/hydrocoef.hpp"
 
 namespace hydrocoef::cli {
 
@@ -65,8 +59,5 @@ std::pair<std::string, double> parse_assignment(const std::string& text, const s
 std::pair<std::string, std::string> parse_text_assignment(const std::string& text, const std::string& option);
 /// Parses "x,y,z" into three finite numbers.
 std::array<double, 3> parse_triple(const std::string& text, const std::string& option);
-
-/// JSON of one run key: {"body", "u".."r", "disturbances"}.
-nlohmann::json key_json(const RunKey& key);
 
 }  // namespace hydrocoef::cli
