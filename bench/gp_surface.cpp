@@ -70,7 +70,7 @@ BENCHMARK(BM_GpFit)->Arg(50)->Arg(200)->Unit(benchmark::kMillisecond);
 void BM_GpSuggest(benchmark::State& state) {
   const auto& gp = surface();
   for (auto _ : state) {
-    auto suggested = hydrocoef::suggest_runs(gp, {-1.0, -1.0}, {1.0, 1.0}, 10);
+    auto suggested = hydrocoef::suggest_gp_runs(gp, {-1.0, -1.0}, {1.0, 1.0}, 10);
     benchmark::DoNotOptimize(suggested);
   }
 }

@@ -59,5 +59,4 @@ void add_mirror_options(CLI::App& command, std::vector<std::string>& planes, std
                      "A disturbance parameter that changes sign in the mirror (e.g. a lateral current); repeatable");
 }
 
-
 }  // namespace hydrocoef::cli

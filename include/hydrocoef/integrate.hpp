@@ -23,7 +23,7 @@ inline namespace api {
 
 struct SurfaceIntegration {
   std::string file;
-  std::string format;  ///< cfdpost or vtk
+  std::string format;                                                   ///< cfdpost or vtk
   std::array<double, 3> force{}, force_pressure{}, force_viscous{};     ///< X, Y, Z [N]
   std::array<double, 3> moment{}, moment_pressure{}, moment_viscous{};  ///< K, M, N [N m]
   std::array<double, 3> reference_point{};                              ///< [m], body axes

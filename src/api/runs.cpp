@@ -35,7 +35,7 @@ DeleteSummary delete_runs(Database& database, const DeleteRunsOptions& options) 
   auto& impl = Database::Access::impl(database);
   const std::lock_guard lock(impl.mutex);
   auto& store = impl.writable_store("runs delete");
-  const DeleteOutcome outcome = hydrocoef::delete_runs(
+  const DeleteOutcome outcome = delete_selected_runs(
       store, RunDeletion{options.ids, options.body.empty() ? std::nullopt : std::optional<std::string>(options.body),
                          options.where, options.exclude_runs,
                          options.source.empty() ? std::nullopt : std::optional<std::string>(options.source)});

@@ -116,7 +116,7 @@ SimulationOutcome simulate(const SimulateOptions& options) {
   if (!options.experiment.empty()) measured = read_measured_trajectory(options.experiment);
 
   const auto started = std::chrono::steady_clock::now();
-  const SimulationResult result = hydrocoef::simulate(model, scenario, SimulationProgress(options.progress));
+  const SimulationResult result = simulate_model(model, scenario, SimulationProgress(options.progress));
   const double wall_s = seconds_since(started);
   std::optional<TrajectoryBands> bands;
   double samples_wall_s = 0.0;

@@ -175,7 +175,7 @@ TrajectoryBands simulate_samples(const VehicleModel& model, const DampingDraws& 
   check_ensemble_options(options);
   // The nominal model's run fixes the output times (every draw has the same
   // ones) and checks the scenario before any draw starts.
-  const SimulationResult nominal = simulate(model, scenario);
+  const SimulationResult nominal = simulate_model(model, scenario);
   const std::size_t times = nominal.samples.size();
   const std::size_t n = options.samples;
   const double total = static_cast<double>(n) * static_cast<double>(times) * static_cast<double>(kQuantities);
@@ -189,7 +189,7 @@ TrajectoryBands simulate_samples(const VehicleModel& model, const DampingDraws& 
   std::vector<double> data(n * kQuantities * times);
   TrajectoryStore store(data, times);
   const auto one = [&](std::size_t i, const VehicleModel& drawn) {
-    const SimulationResult r = simulate(drawn, scenario);
+    const SimulationResult r = simulate_model(drawn, scenario);
     if (r.samples.size() != times) throw std::logic_error("simulate_samples: a draw with other output times");
     for (std::size_t k = 0; k < times; ++k)
       store.put(i, k, r.samples[k].p_n, r.samples[k].euler_rad, r.samples[k].nu_b);

@@ -187,7 +187,8 @@ std::pair<std::size_t, double> rk4_steps(double span, double step) {
 
 }  // namespace
 
-SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress) {
+SimulationResult simulate_model(const VehicleModel& model, const Scenario& scenario,
+                                const SimulationProgress& progress) {
   SimulationResult result;
   const Plan plan = plan_run(model, scenario, &result.notes);
   StateVector x = plan.initial;

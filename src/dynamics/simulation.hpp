@@ -51,7 +51,8 @@ using SimulationProgress = std::function<void(double t_s, double duration_s)>;
 /// Simulates the scenario. Throws InputError for inputs the vehicle cannot
 /// take (see segment_inputs), a surface queried outside its range under
 /// policy "error", or an adaptive step-size underflow.
-SimulationResult simulate(const VehicleModel& model, const Scenario& scenario, const SimulationProgress& progress = {});
+SimulationResult simulate_model(const VehicleModel& model, const Scenario& scenario,
+                                const SimulationProgress& progress = {});
 
 /// The states of motion::kLanes vehicles at a scenario's output times.
 struct LaneSimulation {
@@ -63,7 +64,7 @@ struct LaneSimulation {
 /// simulate() for motion::kLanes vehicles that are `model` with the damping
 /// models `damping` (the drawn models of an ensemble, reading the model's
 /// disturbances), integrated in lock-step: lane l's states are the states of
-/// simulate(model.with_damping(*damping[l]), scenario)'s samples, bit for bit.
+/// simulate_model(model.with_damping(*damping[l]), scenario)'s samples, bit for bit.
 /// RK4 scenarios only (std::invalid_argument otherwise: an adaptive step is
 /// each vehicle's own). InputError when any lane fails (a state that leaves
 /// the finite numbers, a lookup outside its surface), without saying which:

@@ -46,7 +46,7 @@ std::vector<std::int64_t> runs_to_delete(RunDatabase& database, const RunDeletio
   return ids;
 }
 
-DeleteOutcome delete_runs(RunDatabase& database, const RunDeletion& deletion) {
+DeleteOutcome delete_selected_runs(RunDatabase& database, const RunDeletion& deletion) {
   return database.delete_runs(runs_to_delete(database, deletion));
 }
 

@@ -27,6 +27,6 @@ struct RunDeletion {
 std::vector<std::int64_t> runs_to_delete(RunDatabase& database, const RunDeletion& deletion);
 
 /// runs_to_delete, then RunDatabase::delete_runs in one transaction.
-DeleteOutcome delete_runs(RunDatabase& database, const RunDeletion& deletion);
+DeleteOutcome delete_selected_runs(RunDatabase& database, const RunDeletion& deletion);
 
 }  // namespace hydrocoef

@@ -138,9 +138,9 @@ std::vector<SuggestedRun> suggest_among_candidates(const GpSurface& surface, std
   return out;
 }
 
-std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
-                                       const std::vector<double>& upper, std::size_t count, std::size_t candidates,
-                                       double* largest_sd_after) {
+std::vector<SuggestedRun> suggest_gp_runs(const GpSurface& surface, const std::vector<double>& lower,
+                                          const std::vector<double>& upper, std::size_t count, std::size_t candidates,
+                                          double* largest_sd_after) {
   check_box(surface, lower, upper);
   if (count == 0 || count > 1000) throw InputError("suggest: count must be 1 to 1000");
   if (candidates < count) throw InputError("suggest: fewer candidate points than runs asked for");

@@ -31,9 +31,9 @@ struct SuggestedRun {
 /// or order, count 0 or above 1000, or candidates below count. When
 /// largest_sd_after is given, it receives the largest standard deviation
 /// over the candidates once every suggested run is added.
-std::vector<SuggestedRun> suggest_runs(const GpSurface& surface, const std::vector<double>& lower,
-                                       const std::vector<double>& upper, std::size_t count,
-                                       std::size_t candidates = 4096, double* largest_sd_after = nullptr);
+std::vector<SuggestedRun> suggest_gp_runs(const GpSurface& surface, const std::vector<double>& lower,
+                                          const std::vector<double>& upper, std::size_t count,
+                                          std::size_t candidates = 4096, double* largest_sd_after = nullptr);
 
 /// What a design among given candidates takes into account besides the
 /// surface's own runs.
@@ -49,7 +49,7 @@ struct DesignContext {
 };
 
 /// Sequential maximum variance among the given candidate points
-/// (point-major, dims each; distinct), as suggest_runs: `count` of them, no
+/// (point-major, dims each; distinct), as suggest_gp_runs: `count` of them, no
 /// candidate twice. InputError for count 0 or above 1000, fewer candidates
 /// than count, or sizes that do not match the surface's dims.
 std::vector<SuggestedRun> suggest_among_candidates(const GpSurface& surface, std::span<const double> candidates,

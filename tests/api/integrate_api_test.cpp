@@ -38,9 +38,8 @@ TEST(IntegrateApi, GivesTheCliNumbers) {
   options.axes = "-x,-y,z";
   options.ref_point = "0,0,0.01";
   const hydrocoef::SurfaceIntegration result = hydrocoef::integrate_surface(kFile, options);
-  const auto json = run_cli({"integrate", kFile, "--rho", "998.2", "--axes", "-x,-y,z", "--ref-point", "0,0,0.01",
-                             "--json"},
-                            dir.path());
+  const auto json = run_cli(
+      {"integrate", kFile, "--rho", "998.2", "--axes", "-x,-y,z", "--ref-point", "0,0,0.01", "--json"}, dir.path());
   ASSERT_EQ(json.exit_code, 0) << json.err;
   EXPECT_EQ(result.json(), json.out);
   const auto text =

@@ -183,7 +183,7 @@ Vector6 simulated_steady_state(const VehicleModel& model, const Vector6& tau_b) 
   ScenarioSegment segment;
   segment.tau_b = tau_b;
   scenario.segments = {segment};
-  const SimulationResult result = simulate(model, scenario);
+  const SimulationResult result = simulate_model(model, scenario);
   const std::size_t n = result.samples.size();
   // Settled: the last two samples (10 s apart) agree.
   EXPECT_LT((velocity_b(result.final_state) - result.samples[n - 2].nu_b).cwiseAbs().maxCoeff(), 1e-9);

@@ -34,7 +34,7 @@ TEST_P(AsrVYaw, SettlesAtTheRootOfTheDampingLaw) {
   const VehicleModel model(test::asr_v_vehicle(law));
   const Scenario scenario = yaw_scenario(tau, method);
   ASSERT_EQ(scenario.segments[0].tau_b[5], tau);
-  const SimulationResult result = simulate(model, scenario);
+  const SimulationResult result = simulate_model(model, scenario);
   ASSERT_EQ(result.samples.size(), 601u);  // 60 s at 10 Hz, and t = 0
   const double root = test::positive_yaw_root(law, tau);
   EXPECT_NEAR(velocity_b(result.final_state)[5], root, 1e-6);
@@ -68,7 +68,7 @@ TEST(Simulation, OutputTimesAndPiecewiseInputs) {
   s.segments.resize(2);
   s.segments[0].tau_b[5] = 0.004;
   s.segments[1].start_s = 1.3;  // between two output times
-  const SimulationResult result = simulate(model, s);
+  const SimulationResult result = simulate_model(model, s);
   // 0, 0.25, ..., 2.0 and the end 2.05.
   ASSERT_EQ(result.samples.size(), 10u);
   for (std::size_t k = 0; k < 9; ++k) EXPECT_EQ(result.samples[k].t_s, 0.25 * static_cast<double>(k));
@@ -100,7 +100,7 @@ TEST(Simulation, DriftsWithTheCurrent) {
   s.initial_euler_rad = Vector3(0.0, 0.0, 0.5);
   s.segments.resize(1);
   s.segments[0].current_n = Vector3(0.1, 0.05, 0.0);
-  const SimulationResult result = simulate(model, s);
+  const SimulationResult result = simulate_model(model, s);
   const auto& last = result.samples.back();
   const Vector3 current_b = rotation_body_to_ned(last.q_nb).transpose() * Vector3(0.1, 0.05, 0.0);
   EXPECT_LT((last.nu_b.head<2>() - current_b.head<2>()).cwiseAbs().maxCoeff(), 1e-7);
@@ -143,7 +143,7 @@ TEST(Simulation, LanesAreEachVehiclesOwnRun) {
   s.segments[1].current_n = Vector3(0.1, 0.05, 0.0);
   const LaneSimulation lanes = simulate_lanes(model, models, s);
   for (std::size_t l = 0; l < models.size(); ++l) {
-    const SimulationResult own = simulate(model.with_damping(damping[l]), s);
+    const SimulationResult own = simulate_model(model.with_damping(damping[l]), s);
     ASSERT_EQ(lanes.states.size(), own.samples.size());
     for (std::size_t k = 0; k < own.samples.size(); ++k) {
       EXPECT_EQ(lanes.t_s[k], own.samples[k].t_s);
@@ -180,10 +180,10 @@ TEST(Simulation, LanesAreEachVehiclesOwnRun) {
     late.segments[0].disturbances = {{"current_y", 0.5}};
     late.segments[1].start_s = late.duration_s;
     late.segments[1].disturbances = {{"current_y", 2.0}};
-    expect_input_error([&] { simulate(swaying, late); }, {"current_y", "outside"});
+    expect_input_error([&] { simulate_model(swaying, late); }, {"current_y", "outside"});
     expect_input_error([&] { simulate_lanes(swaying, same, late); }, {"current_y", "outside"});
     late.segments[1].disturbances = {{"current_y", 1.0}};
-    EXPECT_EQ(simulate_lanes(swaying, same, late).states.size(), simulate(swaying, late).samples.size());
+    EXPECT_EQ(simulate_lanes(swaying, same, late).states.size(), simulate_model(swaying, late).samples.size());
   }
   // Surge damping that pushes instead of holding back: that lane runs away.
   d.damping[0].coefficients = {-5.0, 1e6};
@@ -213,13 +213,14 @@ TEST(Simulation, ThrusterCommands) {
   EXPECT_NEAR(second.tau_b[0], 0.02, 1e-15);
 
   s.segments[1].thrust_by_name_N = {{"bow", 0.02}};
-  expect_input_error([&] { simulate(model, s); }, {"thrust.json", "segments[1].thrusters.bow", "port, starboard"});
+  expect_input_error([&] { simulate_model(model, s); },
+                     {"thrust.json", "segments[1].thrusters.bow", "port, starboard"});
   s.segments[1].thrust_by_name_N = {};
   s.segments[1].thrust_N = {0.1};
-  expect_input_error([&] { simulate(model, s); }, {"thrust.json", "segments[1].thrusters", "found 1", "(2"});
+  expect_input_error([&] { simulate_model(model, s); }, {"thrust.json", "segments[1].thrusters", "found 1", "(2"});
   s.segments[1].thrust_N = {};
   s.segments[1].disturbances = {{"current_v", 0.1}};
-  expect_input_error([&] { simulate(model, s); }, {"thrust.json", "segments[1].disturbances.current_v", "none"});
+  expect_input_error([&] { simulate_model(model, s); }, {"thrust.json", "segments[1].disturbances.current_v", "none"});
 }
 
 }  // namespace
@@ -239,7 +240,7 @@ TEST(SimulationLimits, StepsSamplesAndTolerancesThatCannotBeHonouredAreRefused) 
   s.segments.resize(1);
   const auto refused = [&](const Scenario& scenario, const std::vector<std::string>& pieces) {
     try {
-      (void)simulate(model, scenario);
+      (void)simulate_model(model, scenario);
       ADD_FAILURE() << "accepted";
     } catch (const InputError& error) {
       for (const auto& piece : pieces)

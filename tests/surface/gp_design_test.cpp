@@ -25,7 +25,7 @@ GpSurface surface_on_the_left_half() {
 
 TEST(SuggestRuns, GoWhereTheSurfaceIsLeastSure) {
   const GpSurface gp = surface_on_the_left_half();
-  const auto runs = suggest_runs(gp, {0.0, -0.1}, {0.4, 0.1}, 5, 1024);
+  const auto runs = suggest_gp_runs(gp, {0.0, -0.1}, {0.4, 0.1}, 5, 1024);
   ASSERT_EQ(runs.size(), 5u);
   EXPECT_GT(runs[0].point[0], 0.3);  // far from every run
   for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -63,10 +63,10 @@ TEST(SuggestRuns, HaltonPointsFillTheUnitBox) {
 
 TEST(SuggestRuns, RefusesBadRequests) {
   const GpSurface gp = surface_on_the_left_half();
-  EXPECT_THROW(suggest_runs(gp, {0.0}, {0.4}, 3), InputError);
-  EXPECT_THROW(suggest_runs(gp, {0.4, -0.1}, {0.0, 0.1}, 3), InputError);
-  EXPECT_THROW(suggest_runs(gp, {0.0, -0.1}, {0.4, 0.1}, 0), InputError);
-  EXPECT_THROW(suggest_runs(gp, {0.0, -0.1}, {0.4, 0.1}, 10, 5), InputError);
+  EXPECT_THROW(suggest_gp_runs(gp, {0.0}, {0.4}, 3), InputError);
+  EXPECT_THROW(suggest_gp_runs(gp, {0.4, -0.1}, {0.0, 0.1}, 3), InputError);
+  EXPECT_THROW(suggest_gp_runs(gp, {0.0, -0.1}, {0.4, 0.1}, 0), InputError);
+  EXPECT_THROW(suggest_gp_runs(gp, {0.0, -0.1}, {0.4, 0.1}, 10, 5), InputError);
 }
 
 }  // namespace
