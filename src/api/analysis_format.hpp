@@ -11,16 +11,11 @@
 #include <optional>
 #include <string>
 
+#include "src/core/numbers.hpp"
+
 namespace hydrocoef::analysis_format {
 
-/// A number with `digits` significant digits (printf %g); "n/a" for NaN (an
-/// undefined statistic), as the CLI prints numbers.
-inline std::string significant(double value, int digits = 6) {
-  if (std::isnan(value)) return "n/a";
-  std::array<char, 48> buffer{};
-  std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
-  return buffer.data();
-}
+using hydrocoef::significant;  // src/core/numbers.hpp: numbers as the CLI prints them
 
 /// The number, or null.
 inline nlohmann::json optional_json(const std::optional<double>& value) {

@@ -9,18 +9,12 @@
 #include <cstdio>
 #include <string>
 
+#include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
 
 namespace hydrocoef::records {
 
-/// A number in engineering style with `digits` significant digits; "n/a" for
-/// NaN (an undefined statistic, such as R^2 of a constant force).
-inline std::string significant(double value, int digits = 6) {
-  if (std::isnan(value)) return "n/a";
-  std::array<char, 48> buffer{};
-  std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
-  return buffer.data();
-}
+using hydrocoef::significant;  // src/core/numbers.hpp: numbers as the CLI prints them
 
 /// A finite number, or null.
 inline nlohmann::json optional_number(double value) {

@@ -22,14 +22,6 @@ namespace hydrocoef {
 inline namespace api {
 namespace surface_text {
 
-std::string significant(double value, int digits) {
-  // An undefined statistic is stored as absent and read back as NaN.
-  if (std::isnan(value)) return "n/a";
-  std::array<char, 48> buffer{};
-  std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
-  return buffer.data();
-}
-
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

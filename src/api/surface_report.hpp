@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "src/api/internal.hpp"
+#include "src/core/numbers.hpp"
 #include "src/pipeline/surface_build.hpp"
 
 #include "hydrocoef/exports.hpp"
@@ -20,8 +21,7 @@ inline namespace api {
 
 namespace surface_text {
 
-/// A number with `digits` significant digits ("%.*g"), "n/a" for NaN: the CLI's.
-std::string significant(double value, int digits = 6);
+using hydrocoef::significant;  // src/core/numbers.hpp: numbers as the CLI prints them
 
 /// Per output, the `count` points of the surface's range where its standard
 /// deviation is largest (Surface::largest_standard_deviations); empty when it

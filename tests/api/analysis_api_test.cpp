@@ -20,11 +20,15 @@
 #include <nlohmann/json.hpp>
 
 #include "hydrocoef/hydrocoef.hpp"
+#include "tests/support/api_errors.hpp"
 #include "tests/support/file_bytes.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {
+
+using hydrocoef::test::cli_error;
+using hydrocoef::test::error_of;
 
 namespace fs = std::filesystem;
 using hydrocoef::Database;
@@ -37,26 +41,6 @@ const fs::path kSource = HYDROCOEF_SOURCE_DIR;
 const fs::path kConverged = kSource / "data/openfoam-sphere/converged";
 const fs::path kPmm = kSource / "examples/openfoam-sphere/pmm";
 constexpr double kSphereVolume = 4.0 / 3.0 * 3.14159265358979323846 * 0.15 * 0.15 * 0.15;
-
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const hydrocoef::InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "expected hydrocoef::InputError";
-  return {};
-}
-
-/// The message after "hydrocoef: error: " on the CLI's one line of stderr.
-std::string cli_error(const hydrocoef::test::CliResult& result) {
-  const std::string prefix = "hydrocoef: error: ";
-  EXPECT_EQ(result.exit_code, 2) << result.err;
-  EXPECT_EQ(result.err.rfind(prefix, 0), 0u) << result.err;
-  std::string message = result.err.size() >= prefix.size() ? result.err.substr(prefix.size()) : result.err;
-  while (!message.empty() && message.back() == '\n') message.pop_back();
-  return message;
-}
 
 std::string number_text(double value) {
   std::ostringstream text;

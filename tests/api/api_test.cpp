@@ -16,10 +16,14 @@
 #include <nlohmann/json.hpp>
 
 #include "hydrocoef/hydrocoef.hpp"
+#include "tests/support/api_errors.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {
+
+using hydrocoef::test::cli_error;
+using hydrocoef::test::error_of;
 
 using hydrocoef::Database;
 using hydrocoef::OpenMode;
@@ -28,26 +32,6 @@ using hydrocoef::test::TempDir;
 
 const std::string kAsrV = std::string(HYDROCOEF_SOURCE_DIR) + "/examples/asr-v/";
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-/// The message after "hydrocoef: error: " on the CLI's one line of stderr.
-std::string cli_error(const hydrocoef::test::CliResult& result) {
-  const std::string prefix = "hydrocoef: error: ";
-  EXPECT_EQ(result.exit_code, 2) << result.err;
-  EXPECT_EQ(result.err.rfind(prefix, 0), 0u) << result.err;
-  std::string message = result.err.substr(prefix.size());
-  while (!message.empty() && message.back() == '\n') message.pop_back();
-  return message;
-}
-
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const hydrocoef::InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "expected hydrocoef::InputError";
-  return {};
-}
 
 /// The ASR-V tables imported as examples/asr-v/run.sh imports them.
 void import_asr_v(Database& db) {

@@ -10,26 +10,20 @@
 #include <string>
 
 #include "hydrocoef/hydrocoef.hpp"
+#include "tests/support/api_errors.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {
+
+using hydrocoef::test::cli_error;
+using hydrocoef::test::error_of;
 
 using hydrocoef::test::run_cli;
 using hydrocoef::test::TempDir;
 
 const std::string kFile =
     std::string(HYDROCOEF_DATA_DIR) + "/openfoam-sphere/full/u0.10_v0.05/u0.10_v0.05_sphere_t1000.vtp";
-
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const hydrocoef::InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "expected hydrocoef::InputError";
-  return {};
-}
 
 TEST(IntegrateApi, GivesTheCliNumbers) {
   TempDir dir;

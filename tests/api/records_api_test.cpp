@@ -17,11 +17,15 @@
 #include <nlohmann/json.hpp>
 
 #include "hydrocoef/hydrocoef.hpp"
+#include "tests/support/api_errors.hpp"
 #include "tests/support/file_bytes.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {
+
+using hydrocoef::test::cli_error;
+using hydrocoef::test::error_of;
 
 using hydrocoef::Database;
 using hydrocoef::OpenMode;
@@ -30,26 +34,6 @@ using hydrocoef::test::TempDir;
 namespace fs = std::filesystem;
 
 const std::string kAsrV = std::string(HYDROCOEF_SOURCE_DIR) + "/examples/asr-v/";
-
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const hydrocoef::InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "expected hydrocoef::InputError";
-  return {};
-}
-
-/// The message after "hydrocoef: error: " on the CLI's one line of stderr.
-std::string cli_error(const hydrocoef::test::CliResult& result) {
-  const std::string prefix = "hydrocoef: error: ";
-  EXPECT_EQ(result.exit_code, 2) << result.err;
-  EXPECT_EQ(result.err.rfind(prefix, 0), 0u) << result.err;
-  std::string message = result.err.substr(std::min(prefix.size(), result.err.size()));
-  while (!message.empty() && message.back() == '\n') message.pop_back();
-  return message;
-}
 
 /// The ASR-V surge table (a stated uncertainty of 2 % on X) and the yaw table, and a 2-D grid table:
 /// X = -10 u|u| - 2 v at u = 0 ... 0.5, v = -0.2 ... 0.2.

@@ -18,10 +18,14 @@
 #include <vector>
 
 #include "hydrocoef/hydrocoef.hpp"
+#include "tests/support/api_errors.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {
+
+using hydrocoef::test::cli_error;
+using hydrocoef::test::error_of;
 
 using hydrocoef::test::run_cli;
 using hydrocoef::test::TempDir;
@@ -30,26 +34,6 @@ const std::string kAsrV = std::string(HYDROCOEF_SOURCE_DIR) + "/examples/asr-v/"
 const std::string kFit = "asr-v:N(1,r,r|r|)";
 const char* const kVelocity[] = {"u", "v", "w", "p", "q", "r"};
 const char* const kForce[] = {"X", "Y", "Z", "K", "M", "N"};
-
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const hydrocoef::InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "expected hydrocoef::InputError";
-  return {};
-}
-
-/// The message after "hydrocoef: error: " on the CLI's one line of stderr.
-std::string cli_error(const hydrocoef::test::CliResult& result) {
-  const std::string prefix = "hydrocoef: error: ";
-  EXPECT_EQ(result.exit_code, 2) << result.err;
-  EXPECT_EQ(result.err.rfind(prefix, 0), 0u) << result.err;
-  std::string message = result.err.substr(std::min(prefix.size(), result.err.size()));
-  while (!message.empty() && message.back() == '\n') message.pop_back();
-  return message;
-}
 
 /// The document without its wall-clock times (the one thing two runs differ in).
 nlohmann::json without_wall_times(nlohmann::json doc) {
