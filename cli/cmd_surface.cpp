@@ -8,6 +8,7 @@
 #include "cli/common.hpp"
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/surface.hpp"
+#include "src/surface/surface_build_spec.hpp"
 
 namespace hydrocoef::cli {
 namespace {
