@@ -36,6 +36,8 @@ from ._hydrocoef import (AddedMassMatrix, GciStudy, PmmAnalysis, PmmDeletion, Pm
                          added_mass_matrix, analyse_pmm, delete_pmm_runs, grid_convergence, pmm_runs, store_pmm,
                          suggest_runs)
 from ._hydrocoef import SurfaceIntegration, integrate_surface
+from ._hydrocoef import (PlotFiles, plot_curves, plot_fit, plot_history, plot_simulation, plot_steady,
+                         plot_surface)
 from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
                          MigrationSummary, Refits, ReportSummary, RunDetails)
 
@@ -46,6 +48,7 @@ __all__ += ["SurfaceReport", "SurfaceList", "SurfaceBuildReport", "SurfaceRebuil
 __all__ += ["LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary", "MergeSummary",
             "CopySummary", "MigrationSummary", "ReportSummary"]
 __all__ += ["integrate_surface", "SurfaceIntegration"]
+__all__ += ["plot_fit", "plot_curves", "plot_surface", "plot_history", "plot_simulation", "plot_steady", "PlotFiles"]
 __all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnalysis", "pmm_runs", "PmmRunList",
             "delete_pmm_runs", "PmmDeletion", "added_mass_matrix", "AddedMassMatrix", "suggest_runs", "Suggestion"]
 

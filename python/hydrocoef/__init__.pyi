@@ -738,3 +738,29 @@ class SurfaceIntegration:
 
 def integrate_surface(path: _Path, *, body: str | None = None, format: str = "auto",
                       settings: Mapping[str, Any] | None = None, sidecars: bool = True) -> SurfaceIntegration: ...
+
+class PlotFiles:
+    title: str
+    image: str
+    data: str
+    script: str
+    format: str
+    width: int
+    height: int
+    series: list[dict[str, Any]]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def plot_fit(database: Database, name: str, *, image: _Path | None = None, size: str | None = None) -> PlotFiles: ...
+def plot_curves(database: Database, name: str | None = None, *, body: str | None = None, dof: str | None = None,
+                terms: str | None = None, by: str | None = None, curve: str = "polynomial:2",
+                image: _Path | None = None, size: str | None = None) -> PlotFiles: ...
+def plot_surface(database: Database, name: str, *, output: str | None = None, image: _Path | None = None,
+                 size: str | None = None) -> PlotFiles: ...
+def plot_history(database: Database, run: int, *, image: _Path | None = None, size: str | None = None) -> PlotFiles: ...
+def plot_simulation(trajectory: _Path, *, experiment: _Path | None = None, component: str = "r",
+                    image: _Path | None = None, size: str | None = None) -> PlotFiles: ...
+def plot_steady(vehicle: str, database: _Path | None = None, *, dof: str = "N", taus: Sequence[float] = (),
+                tau_from: float | None = None, tau_to: float | None = None, count: int = 6,
+                experiment_points: _Path | None = None, samples: int = 0, seed: int = 1,
+                percentiles: Sequence[float] = (), image: _Path | None = None, size: str | None = None) -> PlotFiles: ...

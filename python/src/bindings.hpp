@@ -7,7 +7,8 @@
 //   surfaces.cpp    Surface (its call on numpy arrays), SurfaceInfo, Database's surface methods
 //   fits.cpp        Fit, Database.fit and Database.fits
 //   exports.cpp     Database.export_surface and export_gazebo, their results
-//   simulation.cpp  simulate's compiled part
+//   simulation.cpp  simulate's and equilibrium's compiled part
+//   plots.cpp       plot_fit, plot_curves, plot_surface, plot_history, plot_simulation, plot_steady
 //   analysis.cpp    grid_convergence, analyse_pmm, store_pmm, pmm_runs, delete_pmm_runs,
 //                   added_mass_matrix, suggest_runs and their results
 //   common.cpp      the helpers below that are not one topic's
@@ -36,6 +37,7 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database);
 void bind_exports(py::module_& m, py::class_<hydrocoef::Database>& database);
 void bind_database(py::module_& m, py::class_<hydrocoef::Database>& database);
 void bind_simulation(py::module_& m);
+void bind_plots(py::module_& m);
 void register_analysis(py::module_& m);
 
 /// The Database of a method's self. pybind11 would run a method on an

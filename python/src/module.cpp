@@ -38,5 +38,7 @@ PYBIND11_MODULE(_hydrocoef, m) {
     m.attr(name).attr("__module__") = "hydrocoef";
 
   hydrocoef_python::bind_simulation(m);
+  hydrocoef_python::bind_plots(m);
+  m.attr("PlotFiles").attr("__module__") = "hydrocoef";
   hydrocoef_python::register_analysis(m);
 }

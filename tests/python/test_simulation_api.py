@@ -98,3 +98,22 @@ def test_monte_carlo_example_runs(fitted, tmp_path):
     assert r == pytest.approx(json.loads(out)["velocity"]["r"], abs=5e-7)  # printed to 6 decimals
     band = [float(lines[1].split(f"{name} ")[1].split()[0].rstrip(",")) for name in ("p5", "p50", "p95")]
     assert band[0] < band[1] < band[2]
+
+
+def test_plots_write_what_the_cli_writes(fitted, tmp_path):
+    db, vehicle, _ = fitted
+    with hydrocoef.Database(db, mode="r") as database:
+        files = hydrocoef.plot_fit(database, FIT, image=tmp_path / "py-fit.svg")
+    _, out, _ = run_cli(db, "plot", "fit", FIT, "-o", str(tmp_path / "cli-fit.svg"), "--json")
+    cli = json.loads(out)
+    assert files.format == "svg" and files.title == cli["title"]
+    assert [s["points"] for s in files.series] == [s["points"] for s in cli["series"]]
+    assert pathlib.Path(files.data).read_text() == pathlib.Path(cli["data"]).read_text()
+    steady = hydrocoef.plot_steady(str(vehicle), db, tau_from=0.001, tau_to=0.004, count=4,
+                                   image=tmp_path / "py-steady.svg")
+    run_cli(db, "plot", "steady", "--vehicle", str(vehicle), "--tau-from", "0.001", "--tau-to", "0.004", "--count",
+            "4", "-o", str(tmp_path / "cli-steady.svg"))
+    assert pathlib.Path(steady.data).read_text() == (tmp_path / "cli-steady.dat").read_text()
+    with pytest.raises(hydrocoef.InputError) as error:
+        hydrocoef.plot_history(hydrocoef.Database(db, mode="r"), 999)
+    assert str(error.value) == cli_error(db, "plot", "history", "999")
