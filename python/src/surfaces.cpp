@@ -321,6 +321,25 @@ hydrocoef::SurfaceBuildOptions build_options(
   return options;
 }
 
+/// Database.build_surface and surface_build: the same keywords made into the
+/// build's options, then `build(database, options)` without the GIL.
+template <class Build>
+auto build_method(Build build) {
+  return [build](py::handle self, const std::string& name, const std::string& body, const py::object& axes,
+                 const py::object& outputs, const std::string& method, const py::object& extrapolate,
+                 const py::object& where, const py::object& exclude_runs, const py::object& mirror,
+                 const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
+                 const py::object& resample, const std::string& resample_method, double far_threshold, bool replace,
+                 const std::string& gp_kernel, int gp_degree, int gp_starts, unsigned gp_seed) {
+    const auto options = build_options(name, body, axes, outputs, method, extrapolate, where, exclude_runs, mirror,
+                                       mirror_odd, rbf_kernel, rbf_degree, rbf_smoothing, resample, resample_method,
+                                       far_threshold, replace, gp_kernel, gp_degree, gp_starts, gp_seed);
+    Database& d = database_of(self);
+    py::gil_scoped_release release;
+    return build(d, options);
+  };
+}
+
 }  // namespace
 
 void bind_surfaces(py::module_& m, py::class_<Database>& database) {
@@ -480,28 +499,14 @@ non-finite breakpoints, or a node outside an axis whose policy is 'error'.)doc")
             return database_of(self).surfaces(body.is_none() ? "" : body.cast<std::string>());
           },
           "body"_a = py::none(), "The stored surfaces (of one body), by name: a list of SurfaceInfo.")
-      .def(
-          "build_surface",
-          [](py::handle self, const std::string& name, const std::string& body, const py::object& axes,
-             const py::object& outputs, const std::string& method, const py::object& extrapolate,
-             const py::object& where, const py::object& exclude_runs, const py::object& mirror,
-             const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
-             const py::object& resample, const std::string& resample_method, double far_threshold, bool replace,
-             const std::string& gp_kernel, int gp_degree, int gp_starts, unsigned gp_seed) {
-            const auto options =
-                build_options(name, body, axes, outputs, method, extrapolate, where, exclude_runs, mirror, mirror_odd,
-                              rbf_kernel, rbf_degree, rbf_smoothing, resample, resample_method, far_threshold, replace,
-                              gp_kernel, gp_degree, gp_starts, gp_seed);
-            Database& d = database_of(self);
-            py::gil_scoped_release release;
-            return d.build_surface(options);
-          },
-          "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear", "extrapolate"_a = py::none(),
-          "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(), "mirror_odd"_a = py::none(),
-          "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0, "resample"_a = py::none(),
-          "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false, "gp_kernel"_a = "matern52",
-          "gp_degree"_a = 1, "gp_starts"_a = 5, "gp_seed"_a = 1u,
-          R"doc(Builds a surface from the selected runs and stores it, as `hydrocoef surface build`.
+      .def("build_surface",
+           build_method([](Database& d, const hydrocoef::SurfaceBuildOptions& o) { return d.build_surface(o); }),
+           "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear",
+           "extrapolate"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(),
+           "mirror_odd"_a = py::none(), "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0,
+           "resample"_a = py::none(), "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false,
+           "gp_kernel"_a = "matern52", "gp_degree"_a = 1, "gp_starts"_a = 5, "gp_seed"_a = 1u,
+           R"doc(Builds a surface from the selected runs and stores it, as `hydrocoef surface build`.
 
 axes: velocity components (u..r) or disturbance names; outputs: X..N (forces on the body).
 method: nearest, linear, pchip, makima, natural-spline (runs on a grid), rbf or gp (scattered runs;
@@ -607,28 +612,15 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
       .def("note", &hydrocoef::SurfaceQueryResult::note);
 
   database
-      .def(
-          "surface_build",
-          [](py::handle self, const std::string& name, const std::string& body, const py::object& axes,
-             const py::object& outputs, const std::string& method, const py::object& extrapolate,
-             const py::object& where, const py::object& exclude_runs, const py::object& mirror,
-             const py::object& mirror_odd, const std::string& rbf_kernel, int rbf_degree, double rbf_smoothing,
-             const py::object& resample, const std::string& resample_method, double far_threshold, bool replace,
-             const std::string& gp_kernel, int gp_degree, int gp_starts, unsigned gp_seed) {
-            const auto options =
-                build_options(name, body, axes, outputs, method, extrapolate, where, exclude_runs, mirror, mirror_odd,
-                              rbf_kernel, rbf_degree, rbf_smoothing, resample, resample_method, far_threshold, replace,
-                              gp_kernel, gp_degree, gp_starts, gp_seed);
-            Database& d = database_of(self);
-            py::gil_scoped_release release;
-            return hydrocoef::surface_build(d, options);
-          },
-          "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear", "extrapolate"_a = py::none(),
-          "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(), "mirror_odd"_a = py::none(),
-          "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0, "resample"_a = py::none(),
-          "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false, "gp_kernel"_a = "matern52",
-          "gp_degree"_a = 1, "gp_starts"_a = 5, "gp_seed"_a = 1u,
-          "As build_surface (the same keywords), returning the SurfaceBuildReport `hydrocoef surface build` prints.")
+      .def("surface_build", build_method([](Database& d, const hydrocoef::SurfaceBuildOptions& o) {
+             return hydrocoef::surface_build(d, o);
+           }),
+           "name"_a, py::kw_only(), "body"_a, "axes"_a, "outputs"_a, "method"_a = "linear",
+           "extrapolate"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(), "mirror"_a = py::none(),
+           "mirror_odd"_a = py::none(), "rbf_kernel"_a = "cubic", "rbf_degree"_a = 1, "rbf_smoothing"_a = 0.0,
+           "resample"_a = py::none(), "resample_method"_a = "linear", "far_threshold"_a = 0.25, "replace"_a = false,
+           "gp_kernel"_a = "matern52", "gp_degree"_a = 1, "gp_starts"_a = 5, "gp_seed"_a = 1u,
+           "As build_surface (the same keywords), returning the SurfaceBuildReport `hydrocoef surface build` prints.")
       .def(
           "surface_rebuild",
           [](py::handle self, const py::object& name, const py::object& body, bool stale_only) {
