@@ -147,19 +147,42 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
   }
 }
 
+void DampingModel::look_up(const Lookup& l, const double* nu_r_b, std::span<const double> disturbances, double* out) {
+  std::array<double, kMaxAxes> point;  // written before it is read (hot path)
+  for (std::size_t a = 0; a < l.axis_count; ++a)
+    point[a] = l.source[a] < 6 ? nu_r_b[l.source[a]] : disturbances[l.source[a] - 6];
+  // A table without symmetry projection is evaluated without the span checks
+  // (the axis count was checked when the model was built): a table of one
+  // axis (a draw of a GP surface, a 1-D CFD table) by its one-axis path, any
+  // other by the kernel compiled for its axis count.
+  const GridTable* grid = l.surface.grid();
+  if (grid && l.surface.symmetry().empty()) {
+    if (l.axis_count == 1)
+      grid->evaluate_one_axis(point[0], out);
+    else
+      grid->evaluate_unchecked(point.data(), out);
+  } else
+    l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),
+                       std::span<double>(out, l.surface.output_count()));
+}
+
 Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> disturbances) const {
   Vector6 tau = Vector6::Zero();
+  add(nu_r_b.data(), disturbances, tau.data());
+  return tau;
+}
+
+void DampingModel::add(const double* nu_r_b, std::span<const double> disturbances, double* tau) const {
   for (const Law& law : laws_) {
-    const double x = nu_r_b[static_cast<Eigen::Index>(law.variable)];
-    tau[static_cast<Eigen::Index>(law.dof)] +=
+    const double x = nu_r_b[law.variable];
+    tau[law.dof] +=
         damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
   }
   std::array<double, kMaxOutputs> out;  // written before it is read (hot path)
   for (const Lookup& l : lookups_) {
-    look_up(l, nu_r_b.data(), disturbances, out.data());
-    for (std::size_t k = 0; k < l.used; ++k) tau[static_cast<Eigen::Index>(l.dof[k])] += l.sign[k] * out[l.output[k]];
+    look_up(l, nu_r_b, disturbances, out.data());
+    for (std::size_t k = 0; k < l.used; ++k) tau[l.dof[k]] += l.sign[k] * out[l.output[k]];
   }
-  return tau;
 }
 
 Vector6 DampingModel::evaluate_with_jacobian(const Vector6& nu_r_b, std::span<const double> disturbances,
@@ -198,19 +221,6 @@ Vector6 DampingModel::evaluate_with_jacobian(const Vector6& nu_r_b, std::span<co
     }
   }
   return tau;
-}
-
-void DampingModel::look_up(const Lookup& l, const double* nu_r_b, std::span<const double> disturbances, double* out) {
-  std::array<double, kMaxAxes> point;  // written before it is read (hot path)
-  for (std::size_t a = 0; a < l.axis_count; ++a)
-    point[a] = l.source[a] < 6 ? nu_r_b[l.source[a]] : disturbances[l.source[a] - 6];
-  // A table of one axis (a draw of a GP surface, a 1-D CFD table) skips the span checks.
-  const GridTable* grid = l.surface.grid();
-  if (grid && l.axis_count == 1 && l.surface.symmetry().empty())
-    grid->evaluate_one_axis(point[0], out);
-  else
-    l.surface.evaluate(std::span<const double>(point.data(), l.axis_count),
-                       std::span<double>(out, l.surface.output_count()));
 }
 
 }  // namespace hydrocoef

@@ -105,6 +105,10 @@ class DampingModel {
   /// disturbance values (SI, disturbance_names() order). Throws as the
   /// surfaces do (InputError outside a surface's range under policy "error").
   Vector6 evaluate(const Vector6& nu_r_b, std::span<const double> disturbances) const;
+  /// tau (6) += evaluate(nu_r_b (6), disturbances), term by term in
+  /// evaluate's order (so tau = 0 gives evaluate's numbers bit for bit).
+  /// Throws as evaluate; allocates nothing.
+  void add(const double* nu_r_b, std::span<const double> disturbances, double* tau) const;
   /// As evaluate, and jacobian(i, j) = d tau_i / d nu_r_j: the laws'
   /// derivatives and the surfaces' own gradients along the axes bound to
   /// velocity components (the disturbances are held) [N or N m per m/s or

@@ -85,6 +85,14 @@ inline void multiply(const Eigen::Matrix<double, 6, 6>& a, const T* v, T* out) {
   }
 }
 
+/// out (6) = A (v, 0, 0, 0) for v (3): multiply() of a vector whose angular
+/// part is zero, without the three columns that multiply zeros (the same
+/// numbers, but for the sign of a zero sum).
+template <class T>
+inline void multiply_linear(const Eigen::Matrix<double, 6, 6>& a, const T* v, T* out) {
+  for (int i = 0; i < 6; ++i) out[i] = (a(i, 0) * v[0] + a(i, 1) * v[1]) + a(i, 2) * v[2];
+}
+
 /// tau (6) += -g(eta): weight W [N] down at the CG r_g, buoyancy B [N] up at
 /// the CB r_b (body axes [m]), with the NED down direction in body axes read
 /// from the third row of R: (W + B, r_g x W + r_b x B).

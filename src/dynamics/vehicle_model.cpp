@@ -107,14 +107,12 @@ void VehicleModel::motion_terms(const T* x, const ModelInputs& inputs, AddDampin
   motion::rotate_back(terms.rotation, current_n, current_b);
   for (int i = 0; i < 3; ++i) terms.nu_r[i] -= current_b[i];
   add_damping(terms.nu_r, terms.damping);
-  const T current_rate_b[6] = {-(nu[4] * current_b[2] - nu[5] * current_b[1]),
+  // The current's rate has no angular part.
+  const T current_rate_b[3] = {-(nu[4] * current_b[2] - nu[5] * current_b[1]),
                                -(nu[5] * current_b[0] - nu[3] * current_b[2]),
-                               -(nu[3] * current_b[1] - nu[4] * current_b[0]),
-                               motion::splat<T>(0.0),
-                               motion::splat<T>(0.0),
-                               motion::splat<T>(0.0)};
+                               -(nu[3] * current_b[1] - nu[4] * current_b[0])};
   T added[6];
-  motion::multiply(m_a_, current_rate_b, added);
+  motion::multiply_linear(m_a_, current_rate_b, added);
   motion::subtract_coriolis(m_rb_, nu, terms.coriolis);
   motion::subtract_coriolis(m_a_, terms.nu_r, terms.coriolis);
   for (int i = 0; i < 6; ++i) terms.coriolis[i] += added[i];
@@ -156,8 +154,7 @@ ForceBreakdown VehicleModel::undamped_forces(const StateVector& x, const ModelIn
 }
 
 void VehicleModel::add_damping(const double* nu_r, const ModelInputs& inputs, double* out) const {
-  const Vector6 d = damping_.evaluate(Eigen::Map<const Vector6>(nu_r), inputs.disturbances);
-  for (int i = 0; i < 6; ++i) out[i] += d[i];
+  damping_.add(nu_r, inputs.disturbances, out);
 }
 
 void VehicleModel::derivative(const StateVector& x, const ModelInputs& inputs, StateVector& x_dot) const {

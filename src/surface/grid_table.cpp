@@ -178,6 +178,11 @@ struct GridTable::Location {
   std::array<double, 4 * kMaxGridAxes> derivative_weights;
 };
 
+template <std::size_t K, std::size_t... N>
+constexpr std::array<GridTable::PointKernel, sizeof...(N)> GridTable::point_kernels(std::index_sequence<N...>) {
+  return {&GridTable::evaluate_point<N + 1, K>...};
+}
+
 GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> outputs, std::vector<double> values,
                      Interpolation method)
     : axes_(std::move(axes)), outputs_(std::move(outputs)), values_(std::move(values)), method_(method) {
@@ -344,6 +349,10 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
   static constexpr auto kLinear = kernels_for<2>(std::make_index_sequence<kMaxGridAxes>());
   static constexpr auto kCubic = kernels_for<4>(std::make_index_sequence<kMaxGridAxes>());
   sum_ = (terms_per_axis_ == 1 ? kNearest : (terms_per_axis_ == 2 ? kLinear : kCubic))[n - 1];
+  static constexpr auto kNearestPoint = point_kernels<1>(std::make_index_sequence<kMaxGridAxes>());
+  static constexpr auto kLinearPoint = point_kernels<2>(std::make_index_sequence<kMaxGridAxes>());
+  static constexpr auto kCubicPoint = point_kernels<4>(std::make_index_sequence<kMaxGridAxes>());
+  point_kernel_ = (terms_per_axis_ == 1 ? kNearestPoint : (terms_per_axis_ == 2 ? kLinearPoint : kCubicPoint))[n - 1];
 }
 
 bool GridTable::evenly_spaced(std::size_t axis) const {
@@ -385,7 +394,10 @@ void GridTable::throw_outside(std::size_t axis, double value) const {
 inline std::size_t GridTable::cell_inside(const AxisLookup& axis, const double* x, double value) {
   const std::size_t last_cell = axis.count - 2;
   if (axis.even) {
-    std::size_t cell = std::min(static_cast<std::size_t>((value - axis.lo) * axis.inv_step), last_cell);
+    // value >= lo here, so the signed conversion (one instruction, where the
+    // unsigned one is several) gives the same index.
+    std::size_t cell =
+        std::min(static_cast<std::size_t>(static_cast<std::int64_t>((value - axis.lo) * axis.inv_step)), last_cell);
     // Rounding in the breakpoints or the product can put the index one cell off.
     if (value < x[cell]) {
       --cell;
@@ -406,41 +418,52 @@ inline std::size_t GridTable::cell_inside(const AxisLookup& axis, const double* 
 }
 
 template <std::size_t K, bool WithGradient>
+std::size_t GridTable::axis_cell_outside(std::size_t a, double value, double* w, double* dw, bool& done) const {
+  // NaN, infinite or outside the breakpoints.
+  const AxisLookup& axis = lookup_[a];
+  if (!std::isfinite(value) || axis.extrapolation == Extrapolation::Error) throw_outside(a, value);
+  const bool below = value < axis.lo;
+  const std::size_t cell = below ? 0 : axis.count - 2;
+  Extrapolation policy = axis.extrapolation;
+  if (K == 1) policy = Extrapolation::Clamp;  // a constant's own continuation and its slope are both flat
+  if (K == 2 && policy == Extrapolation::Linear) policy = Extrapolation::Method;  // the same line
+  done = true;
+  if (policy == Extrapolation::Clamp) {
+    // The end node's value alone; flat along this axis.
+    const std::size_t end = below || K == 1 ? 0 : (K == 4 ? 2 : 1);
+    for (std::size_t e = 0; e < K; ++e) {
+      w[e] = e == end ? 1.0 : 0.0;
+      if constexpr (WithGradient) dw[e] = 0.0;
+    }
+    return K == 1 && !below ? cell + 1 : cell;
+  }
+  if (K == 4 && policy == Extrapolation::Linear) {
+    // End value plus end slope times the distance beyond the end.
+    const double distance = value - (below ? axis.lo : axis.hi);
+    const std::size_t end = below ? 0 : 2;
+    for (std::size_t e = 0; e < K; ++e) {
+      w[e] = e == end ? 1.0 : (e == end + 1 ? distance : 0.0);
+      if constexpr (WithGradient) dw[e] = e == end + 1 ? 1.0 : 0.0;
+    }
+    return cell;
+  }
+  // Extrapolation::Method: the end cell's polynomial at t outside [0, 1].
+  done = false;
+  return cell;
+}
+
+template <std::size_t K, bool WithGradient>
 inline std::size_t GridTable::axis_cell(std::size_t a, double value, double* w, double* dw) const {
   const AxisLookup& axis = lookup_[a];
   const double* x = breakpoints_.data() + axis.offset;
-  const std::size_t last_cell = axis.count - 2;
   std::size_t cell = 0;
   if (value >= axis.lo && value <= axis.hi) [[likely]] {
     cell = cell_inside(axis, x, value);
   } else {
-    // NaN, infinite or outside the breakpoints.
-    if (!std::isfinite(value) || axis.extrapolation == Extrapolation::Error) throw_outside(a, value);
-    const bool below = value < axis.lo;
-    cell = below ? 0 : last_cell;
-    Extrapolation policy = axis.extrapolation;
-    if (K == 1) policy = Extrapolation::Clamp;  // a constant's own continuation and its slope are both flat
-    if (K == 2 && policy == Extrapolation::Linear) policy = Extrapolation::Method;  // the same line
-    if (policy == Extrapolation::Clamp) {
-      // The end node's value alone; flat along this axis.
-      const std::size_t end = below || K == 1 ? 0 : (K == 4 ? 2 : 1);
-      for (std::size_t e = 0; e < K; ++e) {
-        w[e] = e == end ? 1.0 : 0.0;
-        if constexpr (WithGradient) dw[e] = 0.0;
-      }
-      return K == 1 && !below ? cell + 1 : cell;
-    }
-    if (K == 4 && policy == Extrapolation::Linear) {
-      // End value plus end slope times the distance beyond the end.
-      const double distance = value - (below ? axis.lo : axis.hi);
-      const std::size_t end = below ? 0 : 2;
-      for (std::size_t e = 0; e < K; ++e) {
-        w[e] = e == end ? 1.0 : (e == end + 1 ? distance : 0.0);
-        if constexpr (WithGradient) dw[e] = e == end + 1 ? 1.0 : 0.0;
-      }
-      return cell;
-    }
-    // Extrapolation::Method: the end cell's polynomial at t outside [0, 1].
+    // Out of line, so that the hot path above stays small.
+    bool done = false;
+    cell = axis_cell_outside<K, WithGradient>(a, value, w, dw, done);
+    if (done) return cell;
   }
   const double h = x[cell + 1] - x[cell];
   const double t = (value - x[cell]) / h;
@@ -480,6 +503,18 @@ void GridTable::locate_any(std::span<const double> point, Location& location) co
     case 2: locate<2, WithGradient>(point, location); break;
     default: locate<4, WithGradient>(point, location); break;
   }
+}
+
+template <std::size_t N, std::size_t K>
+void GridTable::evaluate_point(const GridTable& table, const double* point, double* out) {
+  // locate<K, false> and sum_terms<N, K> as evaluate() calls them, so the
+  // same arithmetic in the same order, with the axis count known here.
+  std::array<double, 4 * kMaxGridAxes> weights;  // written before it is read (hot path)
+  std::size_t base_node = 0;
+  for (std::size_t a = 0; a < N; ++a)
+    base_node += table.axis_cell<K, false>(a, point[a], weights.data() + 4 * a, nullptr) * table.lookup_[a].node_stride;
+  const double* data = (table.hermite_.empty() ? table.values_.data() : table.hermite_.data()) + base_node * table.node_block_;
+  sum_terms<N, K>(weights.data(), kMaxGridAxes, nullptr, table.term_offsets_.data(), data, table.outputs_.size(), out, 1);
 }
 
 void GridTable::evaluate(std::span<const double> point, std::span<double> out) const {

@@ -175,6 +175,13 @@ class GridTable {
   /// evaluate, and InputError for a table of more than one axis.
   void evaluate_one_axis(double value, double* out) const;
 
+  /// evaluate() without the span checks, for any axis count: `point` holds
+  /// axis_count() coordinates and `out` receives output_count() values, the
+  /// same numbers evaluate gives (the same weights and the same sum, compiled
+  /// for this table's axis count and method). The dynamics model's hot path
+  /// (src/dynamics/damping.cpp). Throws as evaluate for a coordinate.
+  void evaluate_unchecked(const double* point, double* out) const { point_kernel_(*this, point, out); }
+
   /// True when `other` has this table's one axis (name, breakpoints and
   /// extrapolation), method and output count, as the draws of one surface on
   /// its nodes have: evaluate_one_axis_lanes may serve both.
@@ -218,12 +225,25 @@ class GridTable {
   // `value`, and the node along the axis the weights start at.
   template <std::size_t K, bool WithGradient>
   std::size_t axis_cell(std::size_t a, double value, double* w, double* dw) const;
+  // axis_cell for a value outside the axis's range (or not finite): throws
+  // under Extrapolation::Error; `done` when the weights are written (clamped,
+  // or linear beyond a cubic's end), else the end cell whose polynomial
+  // continues.
+  template <std::size_t K, bool WithGradient>
+  [[gnu::noinline, gnu::cold]] std::size_t axis_cell_outside(std::size_t a, double value, double* w, double* dw,
+                                                             bool& done) const;
   template <std::size_t K, bool WithGradient>
   void locate(std::span<const double> point, Location& location) const;
   // evaluate_one_axis_lanes' sum from each lane's node and weights w[e][lane].
   template <std::size_t N>
   static void sum_lanes(const std::array<const GridTable*, N>& tables, const std::array<std::size_t, N>& node,
                         const std::array<std::array<double, N>, 4>& w, double* out);
+  // evaluate_unchecked for N axes and K terms per axis: locate and sum in one.
+  using PointKernel = void (*)(const GridTable& table, const double* point, double* out);
+  template <std::size_t N, std::size_t K>
+  static void evaluate_point(const GridTable& table, const double* point, double* out);
+  template <std::size_t K, std::size_t... N>
+  static constexpr std::array<PointKernel, sizeof...(N)> point_kernels(std::index_sequence<N...>);
   template <bool WithGradient>
   void locate_any(std::span<const double> point, Location& location) const;
   static std::size_t cell_inside(const AxisLookup& axis, const double* x, double value);
@@ -252,6 +272,7 @@ class GridTable {
   std::size_t terms_per_axis_ = 0;
   std::vector<std::size_t> term_offsets_;
   SumKernel sum_ = nullptr;
+  PointKernel point_kernel_ = nullptr;
 };
 
 }  // namespace hydrocoef

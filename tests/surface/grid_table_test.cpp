@@ -1146,6 +1146,59 @@ TEST(GridTable, OneAxisPathGivesEvaluatesNumbers) {
   EXPECT_THROW(two_axes.evaluate_one_axis(0.5, &out), InputError);
 }
 
+// evaluate_unchecked (the dynamics model's path, a kernel compiled for each
+// axis count and method) gives evaluate()'s numbers bit for bit for every
+// axis count, method and policy, at the breakpoints, inside and beyond the
+// axes, and throws where evaluate throws.
+TEST(GridTable, UncheckedPathGivesEvaluatesNumbersForEveryAxisCount) {
+  std::mt19937_64 rng(23);
+  for (std::size_t n = 1; n <= kMaxGridAxes; ++n) {
+    std::vector<std::vector<double>> breakpoints;
+    for (std::size_t a = 0; a < n; ++a)
+      breakpoints.push_back(a % 2 == 0 ? evenly_spaced(-1.0, 2.0, n <= 3 ? 6 : 3)
+                                       : unevenly_spaced(-1.0, 2.0, n <= 3 ? 6 : 3, rng));
+    const auto f = [](const Point& p) {
+      double product = 1.0, sum = 0.0;
+      for (const double x : p) {
+        product *= 1.0 + 0.3 * x;
+        sum += std::sin(2.0 * x);
+      }
+      return std::vector<double>{product, sum, -0.0 * sum};
+    };
+    for (Interpolation method : kAllMethods) {
+      for (Extrapolation policy :
+           {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
+        SCOPED_TRACE(std::to_string(n) + " axes, " + method_label(method));
+        const GridTable table = make_table(breakpoints, 3, f, method, policy);
+        for (int i = 0; i < 100; ++i) {
+          Point p(n);
+          bool outside = false;
+          for (std::size_t a = 0; a < n; ++a) {
+            // A breakpoint now and then, otherwise a random point in or beyond the axis.
+            p[a] = i % 5 == 0 ? breakpoints[a][static_cast<std::size_t>(i) % breakpoints[a].size()]
+                              : std::uniform_real_distribution<double>(-1.5, 2.5)(rng);
+            outside = outside || p[a] < -1.0 || p[a] > 2.0;
+          }
+          std::array<double, 3> fast{};
+          if (policy == Extrapolation::Error && outside) {
+            EXPECT_THROW(table.evaluate_unchecked(p.data(), fast.data()), InputError);
+            continue;
+          }
+          table.evaluate_unchecked(p.data(), fast.data());
+          const std::vector<double> general = evaluate(table, p);
+          for (std::size_t k = 0; k < 3; ++k)
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(fast[k]), std::bit_cast<std::uint64_t>(general[k]))
+                << "point " << i << ", output " << k << ": " << fast[k] << " vs " << general[k];
+        }
+        Point nan(n, 0.5);
+        nan[n - 1] = std::numeric_limits<double>::quiet_NaN();
+        std::array<double, 3> out{};
+        EXPECT_THROW(table.evaluate_unchecked(nan.data(), out.data()), InputError);
+      }
+    }
+  }
+}
+
 // Tables on one axis with other numbers (the draws of one surface) looked up
 // together: every lane's numbers are its own table's evaluate(), bit for bit,
 // inside the axis, beyond it under every policy, at the breakpoints.
