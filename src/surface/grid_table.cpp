@@ -513,8 +513,10 @@ void GridTable::evaluate_point(const GridTable& table, const double* point, doub
   std::size_t base_node = 0;
   for (std::size_t a = 0; a < N; ++a)
     base_node += table.axis_cell<K, false>(a, point[a], weights.data() + 4 * a, nullptr) * table.lookup_[a].node_stride;
-  const double* data = (table.hermite_.empty() ? table.values_.data() : table.hermite_.data()) + base_node * table.node_block_;
-  sum_terms<N, K>(weights.data(), kMaxGridAxes, nullptr, table.term_offsets_.data(), data, table.outputs_.size(), out, 1);
+  const double* data =
+      (table.hermite_.empty() ? table.values_.data() : table.hermite_.data()) + base_node * table.node_block_;
+  sum_terms<N, K>(weights.data(), kMaxGridAxes, nullptr, table.term_offsets_.data(), data, table.outputs_.size(), out,
+                  1);
 }
 
 void GridTable::evaluate(std::span<const double> point, std::span<double> out) const {
