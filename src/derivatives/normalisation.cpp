@@ -1,5 +1,6 @@
 #include "src/derivatives/normalisation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -94,9 +95,7 @@ std::string product_text(const std::array<int, kReferenceSymbolCount>& exponents
 }
 
 std::size_t factor_count(const std::array<int, kReferenceSymbolCount>& exponents) {
-  std::size_t count = 0;
-  for (const int e : exponents) count += e != 0 ? 1 : 0;
-  return count;
+  return static_cast<std::size_t>(std::count_if(exponents.begin(), exponents.end(), [](int e) { return e != 0; }));
 }
 
 std::string coefficient_text(int one_half_power) {
@@ -208,9 +207,9 @@ std::string_view normalisation_system_needs(NormalisationSystem system) {
 
 NormalisationSystem parse_normalisation_system(std::string_view text) {
   const std::string name = lower(text);
-  for (const NormalisationSystem system : kAllNormalisationSystems) {
-    if (name == to_string(system)) return system;
-  }
+  const auto* found = std::find_if(kAllNormalisationSystems.begin(), kAllNormalisationSystems.end(),
+                                   [&name](NormalisationSystem system) { return name == to_string(system); });
+  if (found != kAllNormalisationSystems.end()) return *found;
   throw InputError("unknown normalisation system '" + printable_text(text, 40) + "': expected prime, bis or mmg");
 }
 
@@ -296,15 +295,15 @@ std::string scale_text(const NormalisationScale& scale) {
   }
   const bool root_is_below = roots_above == 0 && roots_below > 0;
 
-  const auto join = [](std::string text, const std::string& part) {
+  const auto joined = [](std::string text, const std::string& part) {
     if (part.empty()) return text;
     return text.empty() ? part : text + " " + part;
   };
-  std::string numerator = join(coefficient_text(scale.one_half_power), product_text(above));
-  if (!root_is_below) numerator = join(numerator, root);
+  std::string numerator = joined(coefficient_text(scale.one_half_power), product_text(above));
+  if (!root_is_below) numerator = joined(numerator, root);
   if (numerator.empty()) numerator = "1";
   std::string denominator = product_text(below);
-  if (root_is_below) denominator = join(denominator, root);
+  if (root_is_below) denominator = joined(denominator, root);
   if (denominator.empty()) return numerator;
   const bool one_factor = factor_count(below) + (root_is_below ? 1 : 0) == 1;
   return numerator + " / " + (one_factor ? denominator : "(" + denominator + ")");
