@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "src/core/error.hpp"
@@ -155,7 +156,7 @@ void refuse_dependent_terms(std::string_view output, const std::vector<Term>& te
   }
   if (involved.empty()) return;
   std::vector<std::string> texts;
-  for (const auto& t : involved) texts.push_back(t.text());
+  std::transform(involved.begin(), involved.end(), std::back_inserter(texts), [](const Term& t) { return t.text(); });
   const std::string note = constant_names_note(term_variables(involved), runs);
   throw InputError("the terms " + and_list(texts) + " of the law for " + printable_text(output, 40) +
                    " are linearly dependent over these " + std::to_string(runs.size()) + " runs" +

@@ -1,8 +1,11 @@
 #include "src/derivatives/term_selection.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <string>
@@ -25,12 +28,10 @@ struct CvScore {
 
 // Mean and standard error of the mean of `values`.
 CvScore mean_and_error(const std::vector<double>& values) {
-  double mean = 0.0;
-  for (double v : values) mean += v;
-  mean /= static_cast<double>(values.size());
-  double squares = 0.0;
-  for (double v : values) squares += (v - mean) * (v - mean);
   const double count = static_cast<double>(values.size());
+  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / count;
+  const double squares = std::accumulate(values.begin(), values.end(), 0.0,
+                                         [mean](double sum, double v) { return sum + (v - mean) * (v - mean); });
   return {mean, values.size() > 1 ? std::sqrt(squares / (count - 1.0) / count) : kInfinity};
 }
 
@@ -80,13 +81,19 @@ CvScore k_fold(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::ve
   std::vector<double> fold_errors;
   for (std::size_t f = 0; f < folds; ++f) {
     std::vector<Eigen::Index> train, test;
-    for (std::size_t i = 0; i < fold_of.size(); ++i)
-      (fold_of[i] == f ? test : train).push_back(static_cast<Eigen::Index>(i));
+    for (std::size_t i = 0; i < fold_of.size(); ++i) {
+      if (fold_of[i] == f) {
+        test.push_back(static_cast<Eigen::Index>(i));
+      } else {
+        train.push_back(static_cast<Eigen::Index>(i));
+      }
+    }
     Eigen::MatrixXd A_train(static_cast<Eigen::Index>(train.size()), A.cols());
     Eigen::VectorXd b_train(static_cast<Eigen::Index>(train.size()));
-    for (std::size_t r = 0; r < train.size(); ++r) {
-      A_train.row(static_cast<Eigen::Index>(r)) = A.row(train[r]);
-      b_train(static_cast<Eigen::Index>(r)) = b(train[r]);
+    Eigen::Index row = 0;
+    for (const Eigen::Index i : train) {
+      A_train.row(row) = A.row(i);
+      b_train(row++) = b(i);
     }
     const auto x = solve(A_train, b_train);
     if (!x) return {};
@@ -147,7 +154,7 @@ TermSelection select_terms(std::string_view output, const std::vector<Term>& can
   };
   const auto terms_of = [&](const std::vector<std::size_t>& which) {
     std::vector<Term> out;
-    for (std::size_t k : which) out.push_back(candidates[k]);
+    std::transform(which.begin(), which.end(), std::back_inserter(out), [&](std::size_t k) { return candidates[k]; });
     return out;
   };
 

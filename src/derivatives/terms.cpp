@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -201,7 +202,8 @@ std::map<std::string, int> Term::powers() const {
 
 std::vector<std::string> Term::variables() const {
   std::vector<std::string> out;
-  for (const auto& f : factors_) out.push_back(f.variable);
+  std::transform(factors_.begin(), factors_.end(), std::back_inserter(out),
+                 [](const TermFactor& f) { return f.variable; });
   return out;
 }
 
@@ -257,7 +259,7 @@ std::vector<std::string> term_variables(const std::vector<Term>& terms) {
         names.push_back({f.variable, 1, true});
   std::sort(names.begin(), names.end(), canonical_before);
   std::vector<std::string> out;
-  for (const auto& n : names) out.push_back(n.variable);
+  std::transform(names.begin(), names.end(), std::back_inserter(out), [](const TermFactor& n) { return n.variable; });
   return out;
 }
 
