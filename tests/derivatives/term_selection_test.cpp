@@ -2,13 +2,16 @@
 // from the thirteen candidate terms of the sway model, runs of a sparse model
 // (four of them) with small noise lead backward elimination and the
 // one-standard-error rule to exactly the true terms, by leave-one-out and by
-// seeded 5-fold cross-validation; the path and its errors are reported;
-// the same seed gives the same selection; too few runs are refused.
+// seeded 5-fold cross-validation, weighted or not; the path and its errors
+// are reported; the leave-one-out errors are those of fits made without
+// each run (and k-fold with one run per fold gives them too); the same seed
+// gives the same selection; too few runs are refused.
 #include "src/derivatives/term_selection.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <random>
 #include <set>
@@ -16,6 +19,7 @@
 #include <vector>
 
 #include "src/core/error.hpp"
+#include "src/derivatives/derivative_fit.hpp"
 #include "tests/derivatives/synthetic_model.hpp"
 #include "tests/support/expect_input_error.hpp"
 
@@ -96,6 +100,44 @@ TEST(TermSelection, SeededFiveFoldCrossValidationRecoversThemToo) {
     EXPECT_EQ(again.steps[k].removed, selection.steps[k].removed);
     EXPECT_EQ(again.steps[k].cv_error, selection.steps[k].cv_error);
   }
+}
+
+TEST(TermSelection, LeaveOneOutErrorsAreThoseOfFitsWithoutEachRun) {
+  const auto candidates = parse_terms(test::kSwayTerms);
+  const auto runs = sparse_runs(40, 8);
+  const TermSelection selection = select_terms("Y", candidates, runs);
+  // Step 0 (every candidate) and the chosen step, refitted here run by run.
+  for (const std::size_t step : {std::size_t{0}, selection.chosen_step}) {
+    const auto& terms = selection.steps[step].terms;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      std::vector<DerivativeRun> others = runs;
+      others.erase(others.begin() + static_cast<std::ptrdiff_t>(i));
+      const double e = fit_derivatives("Y", terms, others).evaluate(runs[i].values) - runs[i].output;
+      sum += e * e;
+    }
+    const double expected = sum / static_cast<double>(runs.size());
+    EXPECT_NEAR(selection.steps[step].cv_error, expected, 1e-8 * expected) << "step " << step;
+  }
+  // k-fold with one run per fold is leave-one-out, whatever the shuffle.
+  TermSelectionOptions options;
+  options.folds = runs.size();
+  const TermSelection folds = select_terms("Y", candidates, runs, options);
+  EXPECT_NEAR(folds.steps[0].cv_error, selection.steps[0].cv_error, 1e-8 * selection.steps[0].cv_error);
+}
+
+TEST(TermSelection, WeightedErrorsAreInUnitsOfTheRunsUncertainties) {
+  const auto truth = parse_terms("v, r, v*|v|, u^2*delta");
+  std::mt19937_64 random(77);
+  // sigma from 0.2 to 2.2 N, each run stating its own.
+  const auto runs = test::make_runs(
+      truth, {-310.0, 95.0, -520.0, 38.0}, test::latin_hypercube(test::sway_ranges(), 80, 19),
+      [](const std::map<std::string, double>& p) { return 0.2 + 4.0 * std::abs(p.at("v")); }, random, true);
+  const TermSelection selection = select_terms("Y", parse_terms(test::kSwayTerms), runs);
+  EXPECT_TRUE(selection.weighted);
+  EXPECT_EQ(texts(selection.chosen), kTrueTerms);
+  // Residuals over sigma: about 1 in mean square for the true terms.
+  EXPECT_NEAR(selection.steps[selection.chosen_step].cv_error, 1.0, 0.4);
 }
 
 TEST(TermSelection, WithoutTheRuleTheLeastErrorSetKeepsTheTrueTerms) {
