@@ -331,6 +331,13 @@ ScalingResult scale_resistance(std::span<const ResistanceRun> runs, const Scalin
     a.push_back(
         "what (1+k) C_F + C_W leaves of each run's C_T at scale 1 (its residual) is carried unchanged to "
         "scale 2, as ITTC 1978 carries C_R");
+  // A negative C_W is kept (low-speed runs scatter about zero) but said.
+  std::string negative_wave;
+  for (std::size_t i = 0; froude && i < result.points.size(); ++i)
+    if (result.points[i].wave < 0.0) negative_wave += (negative_wave.empty() ? "" : ", ") + std::to_string(i + 1);
+  if (!negative_wave.empty())
+    a.push_back("C_W < 0 at run(s) " + negative_wave +
+                ": (1+k) C_F exceeds their C_T (a form factor too large for them, or scatter at low speed)");
   a.push_back(allowance_text(from, "scale 1"));
   a.push_back(allowance_text(to, "scale 2"));
   a.push_back("resistance R = " + std::string(options.convention == SignConvention::OnBody ? "-X" : "X") + " (forces " +

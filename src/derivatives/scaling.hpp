@@ -13,30 +13,37 @@
 //
 // (1 + k) the form factor, C_W the wave-resistance coefficient, dC_F a
 // roughness allowance and C_AA an air-resistance coefficient (the last two
-// for a ship at full scale; none unless given). Sources:
-// - (2): 8th ITTC, Madrid 1957; as used in ITTC Recommended Procedure
-//   7.5-02-02-01 "Resistance Test" (data reduction, C_F of the model) and
-//   7.5-02-03-01.4 "1978 ITTC Performance Prediction Method" (rev. 00, 1999),
-//   section 2.4.1; tabulated in Tupper, "Introduction to Naval Architecture"
-//   (4th ed.), Table 8.3, and by Morrall (1970), NPL Ship Report 142.
-// - (1): 7.5-02-03-01.4, section 2.4.1, total resistance of the ship
+// for a ship at full scale; none unless given). Sources (read as excerpts of
+// scanned or summarised copies; the addresses are those the excerpts came
+// from):
+// - (2): 8th ITTC, Madrid 1957; the friction line of ITTC Recommended
+//   Procedures 7.5-02-02-01 "Resistance Test" (rev. 02 2008, rev. 03 2011,
+//   section 2.1 "Data Reduction Equations") and 7.5-02-03-01.4 "1978 ITTC
+//   Performance Prediction Method" (rev. 00, 1999; scribd.com/document/427530416,
+//   pdfcoffee.com/ittc1978-speed-prediction-pdf-free.html). Tabulated in
+//   Tupper, "Introduction to Naval Architecture" (4th ed.), Table 8.3, and
+//   by Morrall (1970), NPL Ship Report 142 (scribd.com/document/379886867).
+// - (1): 7.5-02-03-01.4, section 2.4.1 "Total Resistance of Ship",
 //   C_TS = (1 + k) C_FS + dC_F + C_A + C_R + C_AAS, with the residual
 //   C_R = C_TM - (1 + k) C_FM of the model at the same Froude number
-//   (section 2.3); the form factor "independent of scale and speed"
-//   (section 2.1.1). Here C_R
-//   is named C_W and the correlation allowance C_A, an empirical ship-trial
-//   correction, is left to the roughness term dC_F if a user wants it.
-// - The form factor from low-speed runs, Prohaska's plot (Prohaska 1966, as
-//   7.5-02-02-01 section 3.6.2 "Form Factor" describes it):
+//   (section 2.3), "assuming the form factor to be independent of scale and
+//   speed" (section 2.1.1). C_R is named C_W here; the correlation
+//   allowance C_A, an empirical ship-trial correction, is not modelled (a
+//   user who wants it adds it to dC_F). Tupper (4th ed., p. 190, "ITTC
+//   method") states the same split.
+// - The form factor from low-speed runs, Prohaska's plot (Prohaska 1966; the
+//   form-factor determination of 7.5-02-02-01 section 3.6.2 "Form Factor"):
 //     C_T / C_F = (1 + k) + c Fn^4 / C_F,   Fn = U / sqrt(g L)      (3)
-//   fitted by least squares over the runs given (ITTC: low speeds, where
-//   wave resistance grows as Fn^4).
+//   a straight line in x = Fn^4 / C_F of intercept 1 + k, fitted by least
+//   squares over the runs given (low speeds, where wave resistance grows as
+//   Fn^4); nauticalsolver.com/calculators/resistance/scaling/scaling.html
+//   states the same fit.
 // - dC_F = (105 (k_s / L)^(1/3) - 0.64) 10^-3 with k_s the hull roughness
-//   (150e-6 m standard) and C_AA = 0.001 A_T / S with A_T the transverse
-//   projected area above water: 7.5-02-03-01.4 section 2.4.1; Tupper (4th
-//   ed., p. 190) gives k_s = 150e-6 m and C_AA = 0.001 A_T / S, and
-//   shipcalculators.com/docs/formulas/tech-appendage-roughness the dC_F
-//   formula as 7.5-02-03-01.4 writes it.
+//   and C_AA = 0.001 A_T / S with A_T the transverse projected area above
+//   water: 7.5-02-03-01.4 section 2.4.1. Tupper (4th ed., p. 190) gives
+//   k_s = 150e-6 m and C_AA = 0.001 A_T / S; the dC_F formula as
+//   shipcalculators.com/docs/formulas/tech-appendage-roughness restates it
+//   from 7.5-02-03-01.4.
 //
 // Which speeds correspond. A surface ship: equal Froude number, U_2 = U_1
 // sqrt(L_2 / L_1), and C_W of each run is what (1) leaves of the model's

@@ -164,6 +164,14 @@ TEST(Scaling, WorkedModelToShip) {
   EXPECT_NE(all.find("scale 2: roughness allowance dC_F = 0.000475791"), std::string::npos) << all;
   EXPECT_NE(all.find("resistance R = -X (forces on-body"), std::string::npos) << all;
 
+  // A form factor larger than C_T/C_F gives a negative C_W, which is said.
+  EXPECT_EQ(all.find("C_W < 0"), std::string::npos) << all;
+  ScalingOptions too_large = options;
+  too_large.form_factor = given_form_factor(2.5);  // 2.5 C_Fm = 8.08e-3 > C_Tm = 6.67e-3
+  std::string said;
+  for (const std::string& text : scale_resistance(runs, too_large).assumptions) said += text + "\n";
+  EXPECT_NE(said.find("C_W < 0 at run(s) 1: (1+k) C_F exceeds their C_T"), std::string::npos) << said;
+
   // The same run given as a resistance magnitude: the same coefficients, a positive force out.
   options.convention = SignConvention::OpposingMotion;
   const std::vector<ResistanceRun> magnitudes{{1.5, 30.0}};
