@@ -34,7 +34,7 @@ bool equal_names(std::string_view a, std::string_view b) {
   return equal_ignoring_case(collapse_blanks(a), collapse_blanks(b));
 }
 
-std::string quoted(std::string_view text, std::size_t max_characters = 80) {
+std::string ccl_quoted(std::string_view text, std::size_t max_characters = 80) {
   return "'" + printable_text(text, max_characters) + "'";
 }
 
@@ -113,7 +113,7 @@ class CclParser {
       fail(pending_line, "the text ends in a continuation ('\\' at the end of the last line); expected its next line");
     if (stack_.size() > 1) {
       const CclObject& open = *stack_.back();
-      fail(open.line, "object " + quoted(open.title()) + " has no END; expected END before the end of the file");
+      fail(open.line, "object " + ccl_quoted(open.title()) + " has no END; expected END before the end of the file");
     }
     return std::move(document_);
   }
@@ -127,9 +127,9 @@ class CclParser {
     const auto t = trim(text);
     if (t.empty()) return;
     if (t.front() == '!')
-      fail(line, "a Perl (Power Syntax) line " + quoted(t, 60) + "; expected CCL objects and parameters only");
+      fail(line, "a Perl (Power Syntax) line " + ccl_quoted(t, 60) + "; expected CCL objects and parameters only");
     if (t.front() == '>')
-      fail(line, "a CCL action line " + quoted(t, 60) + "; expected CCL objects and parameters only");
+      fail(line, "a CCL action line " + ccl_quoted(t, 60) + "; expected CCL objects and parameters only");
     if (equal_ignoring_case(t, "END")) {
       if (stack_.size() == 1) fail(line, "END without an object to close; expected 'NAME:' before it");
       stack_.pop_back();
@@ -144,15 +144,15 @@ class CclParser {
       read_object(t, colon, line);
     } else {
       fail(line,
-           quoted(t, 60) + " is neither an object ('NAME:' or 'NAME: Label'), a parameter ('Key = Value') nor END");
+           ccl_quoted(t, 60) + " is neither an object ('NAME:' or 'NAME: Label'), a parameter ('Key = Value') nor END");
     }
   }
 
   void read_parameter(std::string_view t, std::size_t equals, std::size_t line) {
     std::string name = collapse_blanks(t.substr(0, equals));
-    if (name.empty()) fail(line, quoted(t, 60) + " has no name before '='; expected 'Key = Value'");
+    if (name.empty()) fail(line, ccl_quoted(t, 60) + " has no name before '='; expected 'Key = Value'");
     if (stack_.size() == 1)
-      fail(line, "parameter " + quoted(name) + " outside every object; expected it between 'NAME:' and END");
+      fail(line, "parameter " + ccl_quoted(name) + " outside every object; expected it between 'NAME:' and END");
     CclObject& current = *stack_.back();
     Index& index = *indexes_.back();
     std::string value(trim(t.substr(equals + 1)));
@@ -170,7 +170,7 @@ class CclParser {
   void read_object(std::string_view t, std::size_t colon, std::size_t line) {
     std::string type = collapse_blanks(t.substr(0, colon));
     std::string label = collapse_blanks(t.substr(colon + 1));
-    if (type.empty()) fail(line, quoted(t, 60) + " has no object type before ':'; expected 'NAME:' or 'NAME: Label'");
+    if (type.empty()) fail(line, ccl_quoted(t, 60) + " has no object type before ':'; expected 'NAME:' or 'NAME: Label'");
     if (stack_.size() > kMaxObjectDepth)
       fail(line, "objects nested more than " + std::to_string(kMaxObjectDepth) + " deep; expected a CFX case");
     CclObject& parent = *stack_.back();
@@ -266,8 +266,8 @@ Unit cel_unit(std::string_view text, const SourceLocation& where, std::string_vi
       const auto [end, ec] =
           std::from_chars(exponent_text.data(), exponent_text.data() + exponent_text.size(), exponent);
       if (ec != std::errc{} || end != exponent_text.data() + exponent_text.size() || exponent < -12 || exponent > 12)
-        throw InputError(where, "unit " + quoted(text) + " in " + quoted(whole) + ": bad exponent in " +
-                                    quoted(factor) + "; expected an integer from -12 to 12");
+        throw InputError(where, "unit " + ccl_quoted(text) + " in " + ccl_quoted(whole) + ": bad exponent in " +
+                                    ccl_quoted(factor) + "; expected an integer from -12 to 12");
     }
     extra *= std::pow(extra_unit->pascals, sign * exponent);
     rebuilt += " Pa^" + std::to_string(exponent);
@@ -276,7 +276,7 @@ Unit cel_unit(std::string_view text, const SourceLocation& where, std::string_vi
   try {
     unit = parse_unit(rebuilt);
   } catch (const InputError& error) {
-    throw InputError(where, std::string(error.what()) + " (in " + quoted(whole) + ")");
+    throw InputError(where, std::string(error.what()) + " (in " + ccl_quoted(whole) + ")");
   }
   unit.scale *= extra;
   unit.text = std::string(trim(text));
@@ -396,13 +396,13 @@ class CelParser {
   SourceLocation where() const { return evaluator_.document_.location(line_); }
 
   [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(where(), message + " (in " + quoted(text_) + ")");
+    throw InputError(where(), message + " (in " + ccl_quoted(text_) + ")");
   }
   [[noreturn]] void not_constant(const std::string& message) const {
-    throw CelNotConstant(where(), message + " (in " + quoted(text_) + ")");
+    throw CelNotConstant(where(), message + " (in " + ccl_quoted(text_) + ")");
   }
   [[noreturn]] void unexpected(const std::string& context) const {
-    fail(quoted(text_.substr(at_, 1)) + " " + context +
+    fail(ccl_quoted(text_.substr(at_, 1)) + " " + context +
          "; expected numbers, units in brackets, + - * / ^, parentheses and names of LIBRARY: CEL: EXPRESSIONS:");
   }
 
@@ -544,7 +544,7 @@ class CelParser {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (ec != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(value))
-      fail("the number " + quoted(digits) + " cannot be read; expected a finite number such as 8.899E-4");
+      fail("the number " + ccl_quoted(digits) + " cannot be read; expected a finite number such as 8.899E-4");
     CelValue result{value, kDimensionless};
     skip_blanks();
     if (at_ < text_.size() && text_[at_] == '[') {
@@ -571,11 +571,11 @@ class CelParser {
     const std::string name = collapse_blanks(text_.substr(start, at_ - start));
     skip_blanks();
     if (at_ < text_.size() && text_[at_] == '(')
-      not_constant("a function call " + quoted(name + "(") + "; expected a constant expression (no functions)");
+      not_constant("a function call " + ccl_quoted(name + "(") + "; expected a constant expression (no functions)");
     if (at_ < text_.size() && text_[at_] == '@')
-      not_constant("a locator " + quoted(name + "@") + "; expected a constant expression");
+      not_constant("a locator " + ccl_quoted(name + "@") + "; expected a constant expression");
     if (!evaluator_.has_expression(name))
-      not_constant("the name " + quoted(name) +
+      not_constant("the name " + ccl_quoted(name) +
                    " is no expression of LIBRARY: CEL: EXPRESSIONS: (a variable such as x, t or Temperature, or a "
                    "constant); expected a constant expression");
     return evaluator_.expression(name, line_);
@@ -604,7 +604,7 @@ CelValue CelEvaluator::expression(const std::string& name, std::size_t used_on_l
   const auto it = expressions_.find(name);
   if (it == expressions_.end())
     throw CelNotConstant(document_.location(used_on_line),
-                         "the name " + quoted(name) + " is no expression of LIBRARY: CEL: EXPRESSIONS:");
+                         "the name " + ccl_quoted(name) + " is no expression of LIBRARY: CEL: EXPRESSIONS:");
   if (std::find(evaluating_.begin(), evaluating_.end(), name) != evaluating_.end()) {
     std::string chain;
     for (auto i = std::find(evaluating_.begin(), evaluating_.end(), name); i != evaluating_.end(); ++i)
@@ -632,7 +632,7 @@ double CelEvaluator::evaluate_as(const CclParameter& parameter, const Dimension&
   const CelValue v = evaluate(parameter);
   if (v.dimension == expected || (v.value == 0.0 && v.dimension == kDimensionless)) return v.value;
   throw InputError(document_.location(parameter.line),
-                   quoted(parameter.name + " = " + parameter.value) + " has the unit " + si_unit_name(v.dimension) +
+                   ccl_quoted(parameter.name + " = " + parameter.value) + " has the unit " + si_unit_name(v.dimension) +
                        "; expected " + std::string(what) + " (" + si_unit_name(expected) + ")");
 }
 

@@ -17,7 +17,7 @@
 namespace hydrocoef {
 namespace {
 
-std::string shown(std::string_view text) { return history_text::quoted(text); }
+std::string shown(std::string_view text) { return history_text::quoted_text(text); }
 
 constexpr Dimension kTime{{0, 0, 1, 0}};
 // A cell or header of a CSV line: a \r left by CRLF line ends is a blank too.

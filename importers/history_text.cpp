@@ -343,7 +343,7 @@ void parse_chunk(Chunk& chunk, const RowSyntax& syntax, std::size_t numbers, dou
 std::string column_label(const RowSyntax& syntax, std::size_t column) {
   std::string label = "column " + std::to_string(column + 1);
   if (column < syntax.names.size() && !syntax.names[column].empty())
-    label += " " + history_text::quoted(syntax.names[column]);
+    label += " " + history_text::quoted_text(syntax.names[column]);
   return label;
 }
 
@@ -400,15 +400,15 @@ std::string column_label(const RowSyntax& syntax, std::size_t column) {
         double any;
         const auto [q, ec] = std::from_chars(number, end, any);
         if (q != number && (ec == std::errc{} || ec == std::errc::result_out_of_range))
-          throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted(token) +
+          throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted_text(token) +
                                       ", expected a finite number" + cut_note);
         throw InputError(at(p), column_label(syntax, column) + ": found " +
-                                    (token.empty() ? std::string("an empty field") : history_text::quoted(token)) +
+                                    (token.empty() ? std::string("an empty field") : history_text::quoted_text(token)) +
                                     ", expected a number" + cut_note);
       }
       if (quote) {
         if (stop == end || *stop != '"')
-          throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted(token) +
+          throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted_text(token) +
                                       ", expected a number in closed quotes" + cut_note);
         ++stop;
       }
@@ -416,7 +416,7 @@ std::string column_label(const RowSyntax& syntax, std::size_t column) {
           stop == end || is_blank(*stop) || *stop == '\n' ||
           (syntax.delimiter != 0 ? *stop == syntax.delimiter : parens && (*stop == '(' || *stop == ')'));
       if (!separated)
-        throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted(token) +
+        throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted_text(token) +
                                     ", expected a number" + cut_note);
       p = stop;
     }
@@ -428,7 +428,7 @@ std::string column_label(const RowSyntax& syntax, std::size_t column) {
           throw InputError(at(p), "found " + std::to_string(found) + " fields, expected " +
                                       std::to_string(syntax.columns) + cut_note);
         if (*p != syntax.delimiter)
-          throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted(token_at(p)) +
+          throw InputError(at(p), column_label(syntax, column) + ": found " + history_text::quoted_text(token_at(p)) +
                                       " after the number, expected " +
                                       (syntax.delimiter == '\t' ? std::string("a tab")
                                                                 : "'" + std::string(1, syntax.delimiter) + "'"));
@@ -465,7 +465,7 @@ const char* read_finite_number(const char* begin, const char* end, double& value
   return read_number(begin, end, value);
 }
 
-std::string quoted(std::string_view text) { return "'" + printable_text(text, 40) + "'"; }
+std::string quoted_text(std::string_view text) { return "'" + printable_text(text, 40) + "'"; }
 
 namespace {
 

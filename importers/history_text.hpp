@@ -117,6 +117,6 @@ StreamedRows parse_file_rows(const std::filesystem::path& path,
 const char* read_finite_number(const char* begin, const char* end, double& value);
 
 /// Text as quoted in messages: printable, cut after 40 characters.
-std::string quoted(std::string_view text);
+std::string quoted_text(std::string_view text);
 
 }  // namespace hydrocoef::history_text

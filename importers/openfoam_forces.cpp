@@ -28,7 +28,7 @@ constexpr std::string_view kLineBlanks = " \t\r";
 namespace fs = std::filesystem;
 using Vector3 = std::array<double, 3>;
 
-std::string shown(std::string_view text) { return history_text::quoted(text); }
+std::string shown(std::string_view text) { return history_text::quoted_text(text); }
 
 // ---------------------------------------------------------------------------
 // Header

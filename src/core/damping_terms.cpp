@@ -22,7 +22,7 @@ constexpr std::string_view kAcceptedTerms =
 constexpr std::string_view kTermBlanks = " \t\r\n";
 
 // Built by appending: GCC 12 raises a false -Wrestrict on "'" + std::string(...) in release builds.
-std::string quoted(std::string_view text) {
+std::string in_quotes(std::string_view text) {
   std::string out = "'";
   out += text;
   out += '\'';
@@ -61,7 +61,7 @@ std::optional<std::pair<DampingTerm, std::string>> split_term(std::string_view t
 }  // namespace
 
 DampingLawSpec parse_damping_terms(std::string_view text) {
-  const std::string quoted_text = quoted(text);
+  const std::string quoted_text = in_quotes(text);
   if (trim(text, kTermBlanks).empty())
     throw InputError("empty damping term list " + quoted_text + "; " + std::string(kAcceptedTerms));
 

@@ -49,7 +49,7 @@ std::string factor_text(const TermFactor& f) {
   }
 }
 
-std::string quoted(std::string_view text) { return "\"" + printable_text(text, kQuoteLimit) + "\""; }
+std::string in_quotes(std::string_view text) { return "\"" + printable_text(text, kQuoteLimit) + "\""; }
 
 // Where a term sits, for messages: its text, its place in a list (0 when
 // parsed alone), the list, and the term's offset in the list.
@@ -60,8 +60,8 @@ struct TermPlace {
   std::size_t offset = 0;
 
   [[noreturn]] void fail(std::size_t at, const std::string& what) const {
-    std::string where = "term " + quoted(trim(term, kBlanks));
-    if (index > 0) where += " (term " + std::to_string(index) + " of the list " + quoted(list);
+    std::string where = "term " + in_quotes(trim(term, kBlanks));
+    if (index > 0) where += " (term " + std::to_string(index) + " of the list " + in_quotes(list);
     where += (index > 0 ? ", column " : " (column ") + std::to_string(offset + at + 1) + ")";
     throw InputError(where + ": " + what);
   }
@@ -212,7 +212,7 @@ double Term::evaluate(const std::map<std::string, double>& point) const {
   for (const auto& f : factors_) {
     const auto it = point.find(f.variable);
     if (it == point.end())
-      throw InputError("term " + quoted(text_) + " needs a value of " + f.variable + "; the point has none");
+      throw InputError("term " + in_quotes(text_) + " needs a value of " + f.variable + "; the point has none");
     out *= f.value(it->second);
   }
   return out;
@@ -232,7 +232,7 @@ std::vector<Term> parse_terms(std::string_view list) {
     Term term = parse_placed(place);
     for (std::size_t k = 0; k < terms.size(); ++k)
       if (terms[k] == term)
-        place.fail(skip_blanks(place.term, 0), "the same term as " + quoted(trim(spelled[k], kBlanks)) + " (term " +
+        place.fail(skip_blanks(place.term, 0), "the same term as " + in_quotes(trim(spelled[k], kBlanks)) + " (term " +
                                                    std::to_string(k + 1) + ", column " +
                                                    std::to_string(offsets[k] + skip_blanks(spelled[k], 0) + 1) +
                                                    "), both " + term.text() + "; expected each term once");

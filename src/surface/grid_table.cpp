@@ -21,7 +21,7 @@ bool is_cubic(Interpolation method) {
   return method == Interpolation::Pchip || method == Interpolation::Akima || method == Interpolation::NaturalSpline;
 }
 
-std::string quoted(std::string_view name) { return "'" + std::string(name) + "'"; }
+std::string in_quotes(std::string_view name) { return "'" + std::string(name) + "'"; }
 
 // ---- 1-D slope rules: y at breakpoints x (n >= 3) -> slope d at every breakpoint.
 
@@ -147,7 +147,7 @@ Interpolation parse_interpolation(std::string_view text) {
                                Interpolation::Akima, Interpolation::NaturalSpline}) {
     if (text == interpolation_name(method)) return method;
   }
-  throw InputError("unknown interpolation method " + quoted(text) +
+  throw InputError("unknown interpolation method " + in_quotes(text) +
                    "; expected nearest, linear, pchip, makima or natural-spline");
 }
 
@@ -166,7 +166,7 @@ Extrapolation parse_extrapolation(std::string_view text) {
        {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear, Extrapolation::Method}) {
     if (text == extrapolation_name(policy)) return policy;
   }
-  throw InputError("unknown extrapolation policy " + quoted(text) + "; expected error, clamp, linear or method");
+  throw InputError("unknown extrapolation policy " + in_quotes(text) + "; expected error, clamp, linear or method");
 }
 
 // Where a query falls: the base offset of its cell (or node, for Nearest) in
@@ -198,24 +198,24 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
     if (axis.name.empty()) throw InputError("axis " + std::to_string(a) + " has an empty name; expected a name");
     for (std::size_t b = 0; b < a; ++b) {
       if (axes_[b].name == axis.name) {
-        throw InputError("axis name " + quoted(axis.name) + " is used by axes " + std::to_string(b) + " and " +
+        throw InputError("axis name " + in_quotes(axis.name) + " is used by axes " + std::to_string(b) + " and " +
                          std::to_string(a) + "; expected unique axis names");
       }
     }
     const std::vector<double>& x = axis.breakpoints;
     if (x.size() < min_points) {
-      throw InputError("axis " + quoted(axis.name) + " has " + std::to_string(x.size()) +
+      throw InputError("axis " + in_quotes(axis.name) + " has " + std::to_string(x.size()) +
                        " breakpoints; expected at least " + std::to_string(min_points) + " for " +
                        std::string(interpolation_name(method_)) + " interpolation" +
                        (cubic ? " (cubic methods need 3)" : ""));
     }
     for (std::size_t i = 0; i < x.size(); ++i) {
       if (!std::isfinite(x[i])) {
-        throw InputError("axis " + quoted(axis.name) + " breakpoint " + std::to_string(i) + " is " +
+        throw InputError("axis " + in_quotes(axis.name) + " breakpoint " + std::to_string(i) + " is " +
                          shortest_number(x[i]) + "; expected a finite number");
       }
       if (i > 0 && !(x[i] > x[i - 1])) {
-        throw InputError("axis " + quoted(axis.name) + " breakpoint " + std::to_string(i) + " (" +
+        throw InputError("axis " + in_quotes(axis.name) + " breakpoint " + std::to_string(i) + " (" +
                          shortest_number(x[i]) + ") is not greater than breakpoint " + std::to_string(i - 1) + " (" +
                          shortest_number(x[i - 1]) + "); expected strictly increasing breakpoints");
       }
@@ -251,7 +251,7 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
     }
     for (std::size_t j = 0; j < k; ++j) {
       if (outputs_[j] == outputs_[k]) {
-        throw InputError("output name " + quoted(outputs_[k]) + " is used by outputs " + std::to_string(j) + " and " +
+        throw InputError("output name " + in_quotes(outputs_[k]) + " is used by outputs " + std::to_string(j) + " and " +
                          std::to_string(k) + "; expected unique output names");
       }
     }
@@ -272,7 +272,7 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
       at += (a > 0 ? ", " : "") + axes_[a].name + "[" + std::to_string(node % lookup_[a].count) + "]";
       node /= lookup_[a].count;
     }
-    throw InputError("value of output " + quoted(outputs_[index % n_out]) + " at node (" + at + ") (values index " +
+    throw InputError("value of output " + in_quotes(outputs_[index % n_out]) + " at node (" + at + ") (values index " +
                      std::to_string(index) + ") is " + shortest_number(values_[index]) + "; expected a finite number");
   }
 
@@ -369,7 +369,7 @@ std::size_t GridTable::output_index(std::string_view name) const {
   }
   std::string names;
   for (std::size_t k = 0; k < outputs_.size(); ++k) names += (k > 0 ? ", " : "") + outputs_[k];
-  throw InputError("no output named " + quoted(name) + "; expected one of " + names);
+  throw InputError("no output named " + in_quotes(name) + "; expected one of " + names);
 }
 
 void GridTable::check_point(std::span<const double> point) const {
@@ -381,10 +381,10 @@ void GridTable::check_point(std::span<const double> point) const {
 
 void GridTable::throw_outside(std::size_t axis, double value) const {
   if (!std::isfinite(value)) {
-    throw InputError("axis " + quoted(axes_[axis].name) + " = " + shortest_number(value) +
+    throw InputError("axis " + in_quotes(axes_[axis].name) + " = " + shortest_number(value) +
                      " is not a number; expected a finite value");
   }
-  throw InputError("axis " + quoted(axes_[axis].name) + " = " + shortest_number(value) + " is outside [" +
+  throw InputError("axis " + in_quotes(axes_[axis].name) + " = " + shortest_number(value) + " is outside [" +
                    shortest_number(lookup_[axis].lo) + ", " + shortest_number(lookup_[axis].hi) +
                    "]; expected a value in range (or an extrapolation policy)");
 }
