@@ -170,7 +170,8 @@ class CclParser {
   void read_object(std::string_view t, std::size_t colon, std::size_t line) {
     std::string type = collapse_blanks(t.substr(0, colon));
     std::string label = collapse_blanks(t.substr(colon + 1));
-    if (type.empty()) fail(line, ccl_quoted(t, 60) + " has no object type before ':'; expected 'NAME:' or 'NAME: Label'");
+    if (type.empty())
+      fail(line, ccl_quoted(t, 60) + " has no object type before ':'; expected 'NAME:' or 'NAME: Label'");
     if (stack_.size() > kMaxObjectDepth)
       fail(line, "objects nested more than " + std::to_string(kMaxObjectDepth) + " deep; expected a CFX case");
     CclObject& parent = *stack_.back();

@@ -251,8 +251,8 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
     }
     for (std::size_t j = 0; j < k; ++j) {
       if (outputs_[j] == outputs_[k]) {
-        throw InputError("output name " + in_quotes(outputs_[k]) + " is used by outputs " + std::to_string(j) + " and " +
-                         std::to_string(k) + "; expected unique output names");
+        throw InputError("output name " + in_quotes(outputs_[k]) + " is used by outputs " + std::to_string(j) +
+                         " and " + std::to_string(k) + "; expected unique output names");
       }
     }
   }
