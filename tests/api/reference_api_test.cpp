@@ -77,9 +77,9 @@ TEST_F(ReferenceApiTest, SetAndShowGiveWhatTheCliGives) {
   // The CLI's show prints what the API stored; its own set (the same values) the same record.
   const json shown = json::parse(cli_out({"body", "show", "sphere", "--json"}));
   EXPECT_EQ(shown["bodies"][0], ours);
-  json theirs = json::parse(cli_out(
-      {"body", "set", "sphere", "--length", "0.3", "--area", "frontal=0.070685834705770348", "--area", "L*d=0.09",
-       "--default-area", "frontal", "--volume", "0.014137166941154069", "--moment-point", "0.1,0,0", "--json"}));
+  json theirs = json::parse(cli_out({"body", "set", "sphere", "--length", "0.3", "--area",
+                                     "frontal=0.070685834705770348", "--area", "L*d=0.09", "--default-area", "frontal",
+                                     "--volume", "0.014137166941154069", "--moment-point", "0.1,0,0", "--json"}));
   for (auto* document : {&ours, &theirs}) document->erase("updated_at");
   EXPECT_EQ(ours, theirs);
   const auto db = Database::open(path_, OpenMode::ReadOnly);
