@@ -1,6 +1,7 @@
-// hydrocoef plot fit|curves|surface|history|simulation|steady: PNG or SVG
-// pictures of stored fits, coefficient curves, surfaces, a run's force history
-// (its stored window and statistics) and simulations, drawn by gnuplot, with
+// hydrocoef plot fit|curves|surface|history|simulation|steady|coefficient: PNG
+// or SVG pictures of stored fits, coefficient curves, surfaces, a run's force
+// history (its stored window and statistics), simulations and the runs'
+// non-dimensional coefficients (cmd_plot_coefficient.cpp), drawn by gnuplot, with
 // the plotted values beside the image (NAME.dat) and the script (NAME.gp).
 // The work is include/hydrocoef/plot.hpp; this file parses and prints.
 #include <memory>
@@ -134,11 +135,12 @@ void add_dynamics_plots(CLI::App* plot_cmd, const GlobalOptions& global) {
 
 void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   auto* plot_cmd = app.add_subcommand("plot",
-                                      "Draw fits, coefficient curves, surfaces, run histories and simulations "
-                                      "(PNG or SVG, through gnuplot)");
+                                      "Draw fits, coefficient curves, surfaces, run histories, simulations and "
+                                      "the runs' non-dimensional coefficients (PNG or SVG, through gnuplot)");
   plot_cmd->require_subcommand(1);
   add_database_plots(plot_cmd, global);
   add_dynamics_plots(plot_cmd, global);
+  add_coefficient_plot(plot_cmd, global);
 }
 
 }  // namespace hydrocoef::cli

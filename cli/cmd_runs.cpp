@@ -1,12 +1,15 @@
 // hydrocoef runs: list stored runs with their key and force components;
 // runs show ID: one run with its full provenance; runs delete: remove runs
-// (by id, --where selection or --source file) in one transaction. The library
-// reads, deletes and renders (hydrocoef/database.hpp, records.hpp).
+// (by id, --where selection or --source file) in one transaction; runs
+// --coefficients: the runs' non-dimensional coefficients, Re and Fn. The
+// library reads, deletes and renders (hydrocoef/database.hpp, records.hpp,
+// reference.hpp).
 #include <iostream>
 #include <memory>
 
 #include "cli/common.hpp"
 #include "hydrocoef/records.hpp"
+#include "hydrocoef/reference.hpp"
 
 namespace hydrocoef::cli {
 namespace {
@@ -16,10 +19,18 @@ struct RunsArgs {
   SelectionArgs selection;
   bool json = false;
   bool csv = false;
+  bool coefficients = false;
+  std::string area;
 };
 
 void run_runs(const RunsArgs& args, const GlobalOptions& global) {
   const auto database = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly);
+  if (args.coefficients) {
+    const auto table = hydrocoef::run_coefficients(
+        database, {args.body.value_or(""), args.selection.where, args.selection.exclude_runs, args.area});
+    std::cout << (args.csv ? table.csv() : args.json ? table.json() : table.text());
+    return;
+  }
   const auto runs = database.runs(args.selection.where, args.body.value_or(""), args.selection.exclude_runs);
   std::cout << (args.csv ? runs.csv() : args.json ? runs.json() : runs.text());
 }
@@ -60,6 +71,15 @@ void add_runs_command(CLI::App& app, const GlobalOptions& global) {
   command->add_flag("--json", args->json, "Print JSON");
   command->add_flag("--csv", args->csv,
                     "Print CSV: id, body, u..r, disturbances, X..N (forces on the body, SI) and the source files");
+  auto* coefficients = command->add_flag(
+      "--coefficients", args->coefficients,
+      "Print the non-dimensional coefficients instead: C_X..C_N = F/(1/2 rho U^2 A), M/(1/2 rho U^2 A L), "
+      "Re = U L/nu, Fn = U/sqrt(g L), with the body's reference data (hydrocoef body set)");
+  command
+      ->add_option("--area", args->area,
+                   "With --coefficients: the reference area of this name (default: the "
+                   "body's default area)")
+      ->needs(coefficients);
   command->callback([args, command, &global] {
     // "runs" lists only when no subcommand (show, delete) was given.
     if (!command->get_subcommands().empty()) return;

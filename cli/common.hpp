@@ -23,6 +23,7 @@ struct GlobalOptions {
 /// Registers each subcommand; the callbacks run after parsing.
 void add_import_command(CLI::App& app, const GlobalOptions& global);
 void add_runs_command(CLI::App& app, const GlobalOptions& global);
+void add_body_command(CLI::App& app, const GlobalOptions& global);
 void add_fit_command(CLI::App& app, const GlobalOptions& global);
 void add_integrate_command(CLI::App& app);
 void add_simulate_command(CLI::App& app, const GlobalOptions& global);

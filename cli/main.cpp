@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   cli::add_import_command(app, global);
   cli::add_runs_command(app, global);
+  cli::add_body_command(app, global);
   cli::add_fit_command(app, global);
   cli::add_integrate_command(app);
   cli::add_simulate_command(app, global);

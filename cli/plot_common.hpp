@@ -26,4 +26,8 @@ void add_common(CLI::App* command, CommonPlotArgs& args, bool surface_style = fa
 /// Prints what a plot wrote (text or JSON).
 void print_plot(const PlotFiles& files, const CommonPlotArgs& args);
 
+struct GlobalOptions;  // cli/common.hpp
+/// `plot coefficient` (cli/cmd_plot_coefficient.cpp).
+void add_coefficient_plot(CLI::App* plot_cmd, const GlobalOptions& global);
+
 }  // namespace hydrocoef::cli

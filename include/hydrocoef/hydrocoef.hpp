@@ -14,6 +14,8 @@
 //   hydrocoef/records.hpp      import in two steps, runs show and delete,
 //                              per-level fits, refits, fits listed and
 //                              evaluated, merge, copy, migrate, report
+//   hydrocoef/reference.hpp    a body's reference data (body set, body show) and
+//                              the runs' non-dimensional coefficients, Re and Fn
 //   hydrocoef/surface.hpp      Surface: a coefficient surface evaluated at a
 //                              point, with its gradient, or at many points at
 //                              once on every core; tabulated for a controller;
@@ -49,6 +51,7 @@
 #include "hydrocoef/integrate.hpp"
 #include "hydrocoef/plot.hpp"
 #include "hydrocoef/records.hpp"
+#include "hydrocoef/reference.hpp"
 #include "hydrocoef/simulation.hpp"
 #include "hydrocoef/surface.hpp"
 #include "hydrocoef/version.hpp"

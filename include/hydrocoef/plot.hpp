@@ -19,6 +19,7 @@
 #include "hydrocoef/database.hpp"
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/export.hpp"
+#include "hydrocoef/reference.hpp"
 #include "hydrocoef/simulation.hpp"
 
 namespace hydrocoef {
@@ -86,6 +87,19 @@ HYDROCOEF_EXPORT PlotFiles plot_history(const Database& database, std::int64_t r
 /// simulate --out`), a measured record ("" : none) overlaid.
 HYDROCOEF_EXPORT PlotFiles plot_simulation(const std::string& trajectory_csv, const std::string& experiment = "",
                                            const std::string& component = "r", const ImageOptions& image = {});
+
+/// A non-dimensional coefficient of the runs against Re, Fn or U (`hydrocoef
+/// plot coefficient`): one set of points per body, with the reference each
+/// uses named in its legend; runs where either value is not defined (no rho,
+/// no nu, U = 0) are left out.
+struct CoefficientPlotOptions {
+  std::string coefficient = "C_X";  ///< C_X, C_Y, C_Z, C_K, C_M or C_N
+  std::string against = "Re";       ///< Re, Fn or U
+  CoefficientOptions runs;          ///< which runs, which area (as run_coefficients)
+  HYDROCOEF_EXPORT void validate() const;
+};
+HYDROCOEF_EXPORT PlotFiles plot_coefficient(const Database& database, const CoefficientPlotOptions& options,
+                                            const ImageOptions& image = {});
 
 /// Steady velocity against a constant force in one DOF (the equilibrium solver, attitude held).
 struct SteadyPlotOptions {

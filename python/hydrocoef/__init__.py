@@ -22,6 +22,8 @@ Contents: Database, Surface, Fit, SurfaceInfo, ImportSummary, ImportedFile,
 Table, simulate (Simulation), equilibrium (Equilibrium), InputError, __version__.
 Analyses: grid_convergence (gci), analyse_pmm and store_pmm (pmm), pmm_runs, delete_pmm_runs,
 added_mass_matrix (added-mass), suggest_runs (suggest).
+Reference data and coefficients: set_body_reference (body set), body_references (body show),
+run_coefficients (runs --coefficients).
 """
 
 import json as _json
@@ -36,8 +38,10 @@ from ._hydrocoef import (AddedMassMatrix, GciStudy, PmmAnalysis, PmmDeletion, Pm
                          added_mass_matrix, analyse_pmm, delete_pmm_runs, grid_convergence, pmm_runs, store_pmm,
                          suggest_runs)
 from ._hydrocoef import SurfaceIntegration, integrate_surface
-from ._hydrocoef import (PlotFiles, plot_curves, plot_fit, plot_history, plot_simulation, plot_steady,
-                         plot_surface)
+from ._hydrocoef import (PlotFiles, plot_coefficient, plot_curves, plot_fit, plot_history, plot_simulation,
+                         plot_steady, plot_surface)
+from ._hydrocoef import (BodyReference, BodyReferences, RunCoefficients, body_references, run_coefficients,
+                         set_body_reference)
 from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
                          MigrationSummary, Refits, ReportSummary, RunDetails)
 
@@ -48,9 +52,12 @@ __all__ += ["SurfaceReport", "SurfaceList", "SurfaceBuildReport", "SurfaceRebuil
 __all__ += ["LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "DeleteSummary", "MergeSummary",
             "CopySummary", "MigrationSummary", "ReportSummary"]
 __all__ += ["integrate_surface", "SurfaceIntegration"]
-__all__ += ["plot_fit", "plot_curves", "plot_surface", "plot_history", "plot_simulation", "plot_steady", "PlotFiles"]
+__all__ += ["plot_fit", "plot_curves", "plot_surface", "plot_history", "plot_simulation", "plot_steady", "PlotFiles",
+            "plot_coefficient"]
 __all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnalysis", "pmm_runs", "PmmRunList",
             "delete_pmm_runs", "PmmDeletion", "added_mass_matrix", "AddedMassMatrix", "suggest_runs", "Suggestion"]
+__all__ += ["set_body_reference", "body_references", "BodyReference", "BodyReferences", "run_coefficients",
+            "RunCoefficients"]
 
 
 class Table(dict):

@@ -718,6 +718,54 @@ def suggest_runs(database: Database, surface: str, *, count: int = 5, bounds: _T
                  output: str | None = None, candidates: int = 4096, round: _Texts = None, running: _Texts = None,
                  manifest: _Path | None = None) -> Suggestion: ...
 
+class BodyReference:
+    body: str
+    length: float
+    areas: dict[str, float]
+    default_area: str
+    draft: float
+    displaced_volume: float
+    moment_reference_point: tuple[float, float, float]
+    updated_at: str
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class BodyReferences:
+    database: str
+    bodies: list[BodyReference]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class RunCoefficients:
+    database: str
+    gravity: float
+    references: list[dict[str, Any]]
+    id: npt.NDArray[np.int64]
+    body: list[str]
+    velocity: dict[str, npt.NDArray[np.float64]]
+    disturbances: dict[str, npt.NDArray[np.float64]]
+    speed: npt.NDArray[np.float64]
+    density: npt.NDArray[np.float64]
+    kinematic_viscosity: npt.NDArray[np.float64]
+    reynolds: npt.NDArray[np.float64]
+    froude: npt.NDArray[np.float64]
+    coefficients: dict[str, npt.NDArray[np.float64]]
+    note: list[str]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+    def csv(self) -> str: ...
+
+def set_body_reference(database: Database, body: str, *, length: float | None = None,
+                       areas: Mapping[str, float] | None = None, default_area: str | None = None,
+                       remove_areas: _Texts = None, draft: float | None = None, volume: float | None = None,
+                       moment_point: Sequence[float] | None = None, unset: _Texts = None) -> BodyReference: ...
+def body_references(database: Database, body: str | None = None) -> BodyReferences: ...
+def run_coefficients(database: Database, *, body: str | None = None, where: _Texts = None,
+                     exclude_runs: Iterable[int] | None = None, area: str | None = None) -> RunCoefficients: ...
+def plot_coefficient(database: Database, *, coefficient: str = "C_X", against: str = "Re", area: str | None = None,
+                     body: str | None = None, where: _Texts = None, exclude_runs: Iterable[int] | None = None,
+                     image: _Path | None = None, size: str | None = None) -> PlotFiles: ...
+
 class SurfaceIntegration:
     file: str
     format: str

@@ -1,6 +1,7 @@
 // The plots of include/hydrocoef/plot.hpp as module functions: each draws its
 // figure through gnuplot (image, values beside it, script) and returns a
-// PlotFiles with the files written and the series drawn.
+// PlotFiles with the files written and the series drawn (plot_coefficient: the
+// runs' non-dimensional coefficients).
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -165,6 +166,30 @@ void bind_plots(py::module_& m) {
                    "[N or N m] and `count` forces from tau_from to tau_to; samples > 0 shades the band over the "
                    "damping's uncertainty. vehicle: a JSON file or its text; database: where its stored fits and "
                    "surfaces are read. ") +
+       kImageDoc)
+          .c_str());
+  m.def(
+      "plot_coefficient",
+      [](py::handle database, const std::string& coefficient, const std::string& against, const py::object& area,
+         const py::object& body, const py::object& where, const py::object& exclude_runs, const py::object& image,
+         const py::object& size) {
+        const auto& db = database_of(database);
+        hydrocoef::CoefficientPlotOptions options;
+        options.coefficient = coefficient;
+        options.against = against;
+        options.runs.area = text_of(area);
+        options.runs.body = text_of(body);
+        options.runs.where = texts(where, "where");
+        options.runs.exclude_runs = run_ids(exclude_runs, "exclude_runs");
+        const auto files = image_options(image, size);
+        py::gil_scoped_release release;
+        return hydrocoef::plot_coefficient(db, options, files);
+      },
+      "database"_a, py::kw_only(), "coefficient"_a = "C_X", "against"_a = "Re", "area"_a = py::none(),
+      "body"_a = py::none(), "where"_a = py::none(), "exclude_runs"_a = py::none(), "image"_a = py::none(),
+      "size"_a = py::none(),
+      (std::string("A non-dimensional coefficient of the runs (C_X..C_N, as run_coefficients gives them) against "
+                   "Re, Fn or U, one set of points per body (`hydrocoef plot coefficient`). ") +
        kImageDoc)
           .c_str());
 }

@@ -4,15 +4,18 @@
 #include "src/api/internal.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "src/api/vehicle_inputs.hpp"
 #include "src/core/damping_terms.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/plot/history_plot.hpp"
 #include "src/plot/plots.hpp"
 
@@ -190,6 +193,61 @@ PlotFiles plot_steady(const SteadyPlotOptions& options, const ImageOptions& imag
   const plot::SteadyBandOptions band{draws, ensemble_options(options.sampling, {2.5, 97.5})};
   return render(plot::steady_figure(model, dof, taus, measured, name, &band), default_image("steady", options.dof),
                 image);
+}
+
+namespace {
+
+constexpr std::array<std::string_view, 6> kCoefficientNames = {"C_X", "C_Y", "C_Z", "C_K", "C_M", "C_N"};
+
+}  // namespace
+
+void CoefficientPlotOptions::validate() const {
+  if (std::find(kCoefficientNames.begin(), kCoefficientNames.end(), coefficient) == kCoefficientNames.end())
+    throw InputError("--coefficient '" + coefficient + "': expected C_X, C_Y, C_Z, C_K, C_M or C_N");
+  if (against != "Re" && against != "Fn" && against != "U")
+    throw InputError("--against '" + against + "': expected Re, Fn or U");
+  runs.validate();
+}
+
+PlotFiles plot_coefficient(const Database& database, const CoefficientPlotOptions& options, const ImageOptions& image) {
+  options.validate();
+  image.validate();
+  const RunCoefficients table = run_coefficients(database, options.runs);
+  const auto c = static_cast<std::size_t>(
+      std::find(kCoefficientNames.begin(), kCoefficientNames.end(), options.coefficient) - kCoefficientNames.begin());
+  const std::vector<double>& x = options.against == "Re"   ? table.reynolds
+                                 : options.against == "Fn" ? table.froude
+                                                           : table.speed;
+  const std::vector<double>& y = table.coefficient[c];
+  plot::Panel panel;
+  panel.title = options.coefficient + " against " + options.against;
+  panel.x_label = options.against == "Re"   ? "Re = U L / nu"
+                  : options.against == "Fn" ? "Fn = U / sqrt(g L), g = 9.80665 m/s^2"
+                                            : "U = |(u, v, w)| [m/s]";
+  panel.y_label = options.coefficient + (c < 3 ? " = F / (1/2 rho U^2 A)" : " = M / (1/2 rho U^2 A L)") +
+                  " (body axes, on the body)";
+  std::size_t colour = 0;
+  for (const auto& reference : table.references) {
+    plot::Series series;
+    series.title = "body '" + reference.body + "': area '" + reference.area_name + "' " +
+                   significant(reference.area, 6) + " m^2, L " + significant(reference.length, 6) + " m";
+    series.style = plot::Series::Style::Points;
+    series.colour = colour++;
+    for (std::size_t i = 0; i < table.size(); ++i)
+      if (table.body[i] == reference.body && std::isfinite(x[i]) && std::isfinite(y[i])) {
+        series.x.push_back(x[i]);
+        series.y.push_back(y[i]);
+      }
+    if (!series.x.empty()) panel.series.push_back(std::move(series));
+  }
+  if (panel.series.empty())
+    throw InputError(SourceLocation{database.path()}, "no selected run has both " + options.coefficient + " and " +
+                                                          options.against +
+                                                          "; 'hydrocoef runs --coefficients' says why for each run");
+  plot::Figure figure;
+  figure.title = options.coefficient + " against " + options.against;
+  figure.panels.push_back(std::move(panel));
+  return render(figure, default_image("coefficient", options.coefficient + "-" + options.against), image);
 }
 
 }  // namespace api

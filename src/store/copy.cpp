@@ -8,6 +8,7 @@
 
 #include "src/core/error.hpp"
 #include "src/store/backend.hpp"
+#include "src/store/body_reference.hpp"
 #include "src/store/database.hpp"
 #include "src/store/migrations.hpp"
 #include "src/store/pmm_record.hpp"
@@ -88,6 +89,7 @@ std::vector<std::pair<std::string, std::size_t>> RunDatabase::copy_from(RunDatab
   (void)source.surfaces();
   (void)source.numerical_uncertainties();
   (void)source.pmm_records();
+  (void)source.body_references();
   {
     std::vector<std::int64_t> imports;
     auto list = source.connection_.prepare("SELECT id FROM import");

@@ -237,6 +237,7 @@ struct SurfaceRecord {
 struct PmmRecord;
 struct PmmSaved;
 struct PmmDeleted;
+struct BodyReferenceRecord;  // src/store/body_reference.hpp
 
 /// What merging one shard did (RunDatabase::merge).
 struct MergeOutcome {
@@ -250,6 +251,7 @@ struct MergeOutcome {
   std::size_t surfaces_added = 0, surfaces_already = 0;
   std::size_t mesh_studies_added = 0, mesh_studies_already = 0;  ///< rows of numerical uncertainty
   std::size_t pmm_added = 0, pmm_already = 0;                    ///< forced-oscillation analyses
+  std::size_t body_references_added = 0, body_references_already = 0;
 };
 
 class RunDatabase {
@@ -361,6 +363,16 @@ class RunDatabase {
   /// still be removed. Returns what was deleted, in the order given.
   std::vector<PmmDeleted> delete_pmm_runs(const std::vector<std::int64_t>& ids);
 
+  /// Stores a body's reference data (schema/0017_body_reference.sql),
+  /// replacing what it had, in one transaction. InputError naming the body
+  /// when there is no body of that name (the bodies there are listed) or the
+  /// record has a problem (BodyReferenceRecord::problem).
+  void save_body_reference(const BodyReferenceRecord& record);
+  /// The reference data of one body, or of every body that has some (by
+  /// name); a body without any is absent. Every value is checked: a damaged
+  /// row is refused naming its table and row.
+  std::vector<BodyReferenceRecord> body_references(const std::optional<std::string>& body = std::nullopt);
+
   /// Merges shard databases (any locations: SQLite files made by cluster
   /// jobs, or PostgreSQL databases) into this one, in one transaction: their
   /// files, imports (with their provenance as recorded: paths, settings,
@@ -421,6 +433,8 @@ class RunDatabase {
   /// table (fit_run, surface_run) whose owner column is `owner`.
   void link_runs(const char* table, const char* owner, std::int64_t id, const std::vector<std::int64_t>& run_ids);
   std::vector<std::int64_t> linked_runs(const char* table, const char* owner, std::int64_t id);
+  /// Merges the shard's body reference data (merge_one).
+  void merge_body_references(RunDatabase& shard, MergeOutcome& outcome);
   /// Surfaces of one body and/or one name (both optional), by name.
   std::vector<SurfaceRecord> load_surfaces(const std::optional<std::string>& body,
                                            const std::optional<std::string>& name);

@@ -268,6 +268,8 @@ MergeOutcome RunDatabase::merge_one(RunDatabase& shard) {
     outcome.pmm_added = added.size();
     if (!added.empty()) save_pmm(added);
   }
+  // The bodies' reference data: one a body has here must be the same.
+  merge_body_references(shard, outcome);
   // Fits and surfaces by name: one of the same name here must be the same.
   auto keep_record = [&](const char* table, std::int64_t id, const std::string& created_at, bool stale) {
     connection_.prepare(std::string("UPDATE ") + table + " SET created_at = ?, stale = ? WHERE id = ?")

@@ -1,8 +1,8 @@
 // Test support: every write path of the store (import, import --replace,
-// runs delete, fit, surface, gci and pmm store, merge of a shard, copy into
-// an empty database) run against a database with content while a fault
-// injector makes the N-th I/O call or allocation fail, for N = 1, 2, 3, ...
-// until the operation runs through without meeting the fault: SQLite's own
+// runs delete, fit, surface, gci and pmm store, body reference data, merge of
+// a shard, copy into an empty database) run against a database with content
+// while a fault injector makes the N-th I/O call or allocation fail, for N =
+// 1, 2, 3, ... until the operation runs through without meeting the fault: SQLite's own
 // habit (its ioerr and malloc tests). After each failure the database must
 // pass PRAGMA integrity_check and hold exactly what it held before; after a
 // reported success, exactly what the operation writes without a fault. A
@@ -26,6 +26,7 @@
 
 #include "src/core/error.hpp"
 #include "src/pipeline/grid_convergence_runs.hpp"
+#include "src/store/body_reference.hpp"
 #include "src/store/database.hpp"
 #include "src/store/pmm_record.hpp"
 #include "tests/support/import_batch.hpp"
@@ -208,6 +209,16 @@ inline std::vector<WritePath> store_write_paths() {
       {"pmm_store",
        [](RunDatabase& db, const std::filesystem::path&) {
          db.save_pmm({pmm_record(0.2, 0.75), pmm_record(0.4, 0.5)});
+       }},
+      {"body_reference_set",
+       [](RunDatabase& db, const std::filesystem::path&) {
+         BodyReferenceRecord reference;
+         reference.body = "sphere";
+         reference.length = 0.3;
+         reference.areas = {{"frontal", 0.0706858}, {"L^2", 0.09}};
+         reference.default_area = "frontal";
+         reference.moment_point_b = std::array<double, 3>{0.0, 0.0, 0.01};
+         db.save_body_reference(reference);
        }},
       {"merge", [](RunDatabase& db, const std::filesystem::path& dir) { db.merge({(dir / "shard.db").string()}); },
        false, "shard.db"},
