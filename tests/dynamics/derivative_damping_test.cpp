@@ -18,6 +18,7 @@
 #include "src/dynamics/damping.hpp"
 #include "src/dynamics/damping_draws.hpp"
 #include "src/dynamics/damping_lanes.hpp"
+#include "src/dynamics/equilibrium.hpp"
 #include "src/dynamics/simulation.hpp"
 #include "src/dynamics/vehicle.hpp"
 #include "src/dynamics/vehicle_model.hpp"
@@ -249,6 +250,43 @@ TEST(DerivativeDamping, AVehicleWithCrossCoupledSwaySimulates) {
   }
   // The sway is damped: it ends well below where it started.
   EXPECT_LT(std::abs(result.samples.back().nu_b[1]), 0.5 * 0.2);
+}
+
+// The equilibrium solver uses the model's exact jacobian: under a constant
+// surge and sway force it finds the state a simulation settles at, where the
+// cross-coupled sway damping balances the applied force.
+TEST(DerivativeDamping, EquilibriumIsWhereTheSimulationSettles) {
+  VehicleDescription d = test::asr_v_vehicle(test::fit_asr_v_yaw_law());
+  for (const std::size_t dof : {0, 2, 3, 4, 5}) {
+    d.damping[dof] = {};
+    d.damping[dof].kind = DofDamping::Kind::Law;
+    const std::string x(1, "uvwpqr"[dof]);
+    d.damping[dof].law = parse_damping_terms(x + "," + x + "|" + x + "|");
+    d.damping[dof].coefficients = dof < 3 ? std::vector<double>{-1.0, -11.0365} : std::vector<double>{-0.06, -0.08};
+  }
+  d.damping[1] = {};
+  d.damping[1].kind = DofDamping::Kind::Derivatives;
+  d.damping[1].terms = parse_terms("v, v*|v|, u*v, |u|*v");
+  d.damping[1].coefficients = {-1.0, -11.0, -0.8, -0.4};
+  const VehicleModel model(d);
+  EquilibriumInputs inputs;
+  inputs.tau_b << 0.5, 0.2, 0.0, 0.0, 0.0, 0.0;
+  const EquilibriumResult steady = solve_equilibrium(model, inputs);
+  ASSERT_TRUE(steady.converged);
+  const double u = steady.nu_b[0], v = steady.nu_b[1];
+  EXPECT_GT(u, 0.0);
+  EXPECT_GT(v, 0.0);
+  EXPECT_NEAR(steady.forces.damping_b[1], -1.0 * v - 11.0 * v * std::abs(v) - 0.8 * u * v - 0.4 * std::abs(u) * v,
+              1e-14);
+  Scenario scenario;
+  scenario.duration_s = 400.0;
+  scenario.output_rate_Hz = 0.1;
+  scenario.integrator.method = IntegratorSettings::Method::DormandPrince45;
+  scenario.integrator.max_step_s = 1.0;
+  scenario.segments.resize(1);
+  scenario.segments[0].tau_b = inputs.tau_b;
+  const SimulationResult run = simulate_model(model, scenario);
+  EXPECT_LT((velocity_b(run.final_state) - steady.nu_b).cwiseAbs().maxCoeff(), 1e-7);
 }
 
 const std::string kVehicle = R"({
