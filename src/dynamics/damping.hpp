@@ -17,9 +17,10 @@
 //
 // Units and signs: nu_r_b = nu_b - nu_c_b, the body velocity relative to the
 // water (u, v, w [m/s], p, q, r [rad/s]); the result is the damping force ON
-// THE BODY (X, Y, Z [N], K, M, N [N m]; SNAME, damping is negative). A law or
-// surface given as "opposing" (a damping magnitude, positive opposes motion)
-// is negated on evaluation.
+// THE BODY (X, Y, Z [N], K, M, N [N m]; SNAME, damping is negative). A law,
+// derivative model or surface given as "opposing" (a damping magnitude,
+// positive opposes motion) is negated on evaluation; a derivative model's
+// coefficients are SNAME derivatives when given "on-body" (Y_v, Y_uv, ...).
 #pragma once
 
 #include <array>
