@@ -35,7 +35,61 @@ std::vector<std::string> axis_bindings(const CoefficientSurface& surface, const 
   return out;
 }
 
+// Checks a derivative model of `dof` (terms, coefficients, covariance, the
+// names it reads); throws InputError naming the DOF.
+void check_derivatives(const DofDamping& d, std::size_t dof) {
+  if (d.terms.empty() || d.terms.size() > DampingModel::kMaxDerivativeTerms)
+    throw InputError(dof_context(dof) + ": found " + std::to_string(d.terms.size()) +
+                     " derivative terms, expected 1 to " + std::to_string(DampingModel::kMaxDerivativeTerms));
+  if (d.coefficients.size() != d.terms.size())
+    throw InputError(dof_context(dof) + ": found " + std::to_string(d.coefficients.size()) + " coefficients for " +
+                     std::to_string(d.terms.size()) + " terms, expected one per term");
+  for (std::size_t k = 0; k < d.terms.size(); ++k) {
+    if (!std::isfinite(d.coefficients[k]))
+      throw InputError(dof_context(dof) + ": the coefficient of '" + d.terms[k].text() +
+                       "' is not finite, expected a finite number");
+    for (const auto& f : d.terms[k].factors())
+      if (f.variable == "alpha" || f.variable == "beta" || f.variable == "du")
+        throw InputError(dof_context(dof) + ": term '" + d.terms[k].text() + "' reads '" + f.variable +
+                         "', which the dynamics model does not supply; expected terms in u, v, w, p, q, r and "
+                         "disturbance parameters");
+  }
+  if (!d.covariance.empty())
+    if (const auto problem = covariance_problem(d.covariance, d.coefficients.size()))
+      throw InputError(dof_context(dof) + ": covariance: " + *problem);
+}
+
+// The value of a factor |x|^power (negated when odd and x < 0) and its
+// derivative power |x|^(power - 1) (times sign(x) when even; 0 for |x| at
+// x = 0, its mean slope there).
+double factor_value(int power, bool odd, double x) {
+  const double magnitude = std::abs(x);
+  double out = magnitude;
+  for (int k = 1; k < power; ++k) out *= magnitude;
+  return odd && x < 0.0 ? -out : out;
+}
+double factor_slope(int power, bool odd, double x) {
+  const double magnitude = std::abs(x);
+  double out = static_cast<double>(power);
+  for (int k = 1; k < power; ++k) out *= magnitude;
+  if (odd) return out;
+  return x > 0.0 ? out : x < 0.0 ? -out : 0.0;
+}
+
 }  // namespace
+
+double DampingModel::Derivatives::value(const double* nu_r_b, std::span<const double> disturbances) const {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < coefficients.size(); ++k) {
+    double term = 1.0;
+    for (std::size_t i = begin[k]; i < begin[k + 1]; ++i) {
+      const Factor& f = factors[i];
+      term *= factor_value(f.power, f.odd, f.source < 6 ? nu_r_b[f.source] : disturbances[f.source - 6]);
+    }
+    sum += coefficients[k] * term;
+  }
+  return sum;
+}
 
 DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resolver) {
   // Pass 1: laws, and the surfaces with their bindings.
@@ -73,6 +127,13 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
           law.coefficients[k] = to_on_body(d.coefficients[k], d.sign);
         }
         laws_.push_back(law);
+        damped_[dof] = true;
+        break;
+      }
+      case DofDamping::Kind::Derivatives: {
+        check_derivatives(d, dof);
+        for (const auto& name : term_variables(d.terms))
+          if (!velocity_index(name)) disturbances.insert(name);
         damped_[dof] = true;
         break;
       }
@@ -119,6 +180,27 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
     }
   }
   disturbance_names_.assign(disturbances.begin(), disturbances.end());
+  const auto source_of = [&](const std::string& name) -> std::size_t {
+    if (const auto v = velocity_index(name)) return *v;
+    const auto pos = std::lower_bound(disturbance_names_.begin(), disturbance_names_.end(), name);
+    return 6 + static_cast<std::size_t>(pos - disturbance_names_.begin());
+  };
+
+  // The derivative models, their names resolved once.
+  for (std::size_t dof = 0; dof < 6; ++dof) {
+    const DofDamping& d = spec[dof];
+    if (d.kind != DofDamping::Kind::Derivatives) continue;
+    Derivatives m;
+    m.dof = dof;
+    m.text = format_terms(d.terms);
+    m.begin.push_back(0);
+    for (std::size_t k = 0; k < d.terms.size(); ++k) {
+      m.coefficients.push_back(to_on_body(d.coefficients[k], d.sign));
+      for (const auto& f : d.terms[k].factors()) m.factors.push_back({source_of(f.variable), f.power, f.odd});
+      m.begin.push_back(m.factors.size());
+    }
+    derivatives_.push_back(std::move(m));
+  }
 
   // Pass 2: one lookup per (surface, bindings); each DOF adds its output.
   for (const auto& p : pending) {
@@ -129,14 +211,7 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
     if (lookup == lookups_.end()) {
       Lookup l{p.surface, key};
       l.axis_count = p.bindings.size();
-      for (std::size_t a = 0; a < p.bindings.size(); ++a) {
-        if (const auto v = velocity_index(p.bindings[a])) {
-          l.source[a] = *v;
-        } else {
-          const auto pos = std::lower_bound(disturbance_names_.begin(), disturbance_names_.end(), p.bindings[a]);
-          l.source[a] = 6 + static_cast<std::size_t>(pos - disturbance_names_.begin());
-        }
-      }
+      for (std::size_t a = 0; a < p.bindings.size(); ++a) l.source[a] = source_of(p.bindings[a]);
       lookups_.push_back(std::move(l));
       lookup = std::prev(lookups_.end());
     }
@@ -178,6 +253,7 @@ void DampingModel::add(const double* nu_r_b, std::span<const double> disturbance
     tau[law.dof] +=
         damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
   }
+  for (const Derivatives& m : derivatives_) tau[m.dof] += m.value(nu_r_b, disturbances);
   std::array<double, kMaxOutputs> out;  // written before it is read (hot path)
   for (const Lookup& l : lookups_) {
     look_up(l, nu_r_b, disturbances, out.data());
@@ -201,6 +277,23 @@ Vector6 DampingModel::evaluate_with_jacobian(const Vector6& nu_r_b, std::span<co
                                          2.0 * x, 3.0 * x * x, x > 0.0 ? 1.0 : x < 0.0 ? -1.0 : 0.0};
     for (std::size_t k = 0; k < law.count; ++k)
       jacobian(dof, variable) += law.coefficients[k] * slope[static_cast<std::size_t>(law.terms[k])];
+  }
+  for (const Derivatives& m : derivatives_) {
+    const auto dof = static_cast<Eigen::Index>(m.dof);
+    tau[dof] += m.value(nu_r_b.data(), disturbances);
+    const auto x = [&](const Factor& f) {
+      return f.source < 6 ? nu_r_b[static_cast<Eigen::Index>(f.source)] : disturbances[f.source - 6];
+    };
+    // d term / d x_i: the factor's slope times the other factors' values
+    // (each name appears once in a term).
+    for (std::size_t k = 0; k < m.coefficients.size(); ++k)
+      for (std::size_t i = m.begin[k]; i < m.begin[k + 1]; ++i) {
+        if (m.factors[i].source >= 6) continue;
+        double slope = factor_slope(m.factors[i].power, m.factors[i].odd, x(m.factors[i]));
+        for (std::size_t j = m.begin[k]; j < m.begin[k + 1]; ++j)
+          if (j != i) slope *= factor_value(m.factors[j].power, m.factors[j].odd, x(m.factors[j]));
+        jacobian(dof, static_cast<Eigen::Index>(m.factors[i].source)) += m.coefficients[k] * slope;
+      }
   }
   std::array<double, kMaxOutputs> out{};
   std::array<double, kMaxOutputs * kMaxAxes> gradient{};

@@ -1,7 +1,10 @@
 // Hydrodynamic damping of each degree of freedom, D(nu_r) nu_r of Fossen's
 // model, as the dynamics model evaluates it: per generalized-force component
 // either a constant damping law (terms of one relative velocity component,
-// src/core/damping_terms.hpp) or one output of a coefficient surface
+// src/core/damping_terms.hpp), a derivative model of several variables
+// (terms such as v, u*v, v*|v|, v^2*r over the relative velocity components
+// and disturbance parameters, src/derivatives/terms.hpp) or one output of a
+// coefficient surface
 // whose axes are relative velocity components or named disturbance
 // parameters supplied by the scenario (e.g. "current_v").
 //
@@ -14,9 +17,10 @@
 //
 // Units and signs: nu_r_b = nu_b - nu_c_b, the body velocity relative to the
 // water (u, v, w [m/s], p, q, r [rad/s]); the result is the damping force ON
-// THE BODY (X, Y, Z [N], K, M, N [N m]; SNAME, damping is negative). A law or
-// surface given as "opposing" (a damping magnitude, positive opposes motion)
-// is negated on evaluation.
+// THE BODY (X, Y, Z [N], K, M, N [N m]; SNAME, damping is negative). A law,
+// derivative model or surface given as "opposing" (a damping magnitude,
+// positive opposes motion) is negated on evaluation; a derivative model's
+// coefficients are SNAME derivatives when given "on-body" (Y_v, Y_uv, ...).
 #pragma once
 
 #include <array>
@@ -32,6 +36,7 @@
 #include "src/core/damping_terms.hpp"
 #include "src/core/matrix6.hpp"
 #include "src/core/run.hpp"
+#include "src/derivatives/terms.hpp"
 #include "src/dynamics/rigid_body.hpp"
 #include "src/surface/coefficient_surface.hpp"
 
@@ -40,9 +45,10 @@ namespace hydrocoef {
 /// Where the damping of one generalized-force component comes from.
 struct DofDamping {
   enum class Kind {
-    None,    ///< no damping in this DOF
-    Law,     ///< F = sum_k c_k term_k(x), x one relative velocity component
-    Surface  ///< one output of a coefficient surface
+    None,         ///< no damping in this DOF
+    Law,          ///< F = sum_k c_k term_k(x), x one relative velocity component
+    Surface,      ///< one output of a coefficient surface
+    Derivatives,  ///< F = sum_k c_k term_k(nu_r, disturbances), terms of several variables
   };
   Kind kind = Kind::None;
   // Law: the terms (their variable is the relative velocity component) and
@@ -71,6 +77,14 @@ struct DofDamping {
   /// somewhere in its range (src/surface/surface_checks.hpp); refused
   /// otherwise.
   bool allow_unphysical = false;
+  /// Derivatives: the terms, one coefficient each in `coefficients` [force
+  /// unit / term unit], `covariance` (m x m row by row, optional) and `sign`
+  /// as for a law. The names u, v, w, p, q, r read the relative velocity;
+  /// any other name reads the disturbance parameter of that name. The flow
+  /// angles alpha, beta and the surge perturbation du are refused (the
+  /// dynamics model does not derive them): a model fitted in them is given
+  /// in u, v, w instead.
+  std::vector<Term> terms;
 };
 
 /// The damping of X, Y, Z, K, M, N in that order.
@@ -89,8 +103,14 @@ class DampingModel {
   static constexpr std::size_t kMaxOutputs = 32;
 
   DampingModel() = default;
+  /// The most terms of a derivative model.
+  static constexpr std::size_t kMaxDerivativeTerms = 64;
+
   /// Resolves every surface of `spec` once. Throws InputError naming the DOF
   /// ("damping of N") when a law has no terms or a coefficient count differs,
+  /// a derivative model has no terms or more than kMaxDerivativeTerms, a
+  /// coefficient that is not finite, a covariance that is not one, or a name
+  /// the dynamics model cannot supply (alpha, beta, du),
   /// a surface is needed but `resolver` is empty or fails, an output or an
   /// axis binding names nothing the surface has, or a surface is too large.
   DampingModel(const DampingSpec& spec, const SurfaceResolver& resolver);
@@ -109,8 +129,9 @@ class DampingModel {
   /// evaluate's order (so tau = 0 gives evaluate's numbers bit for bit).
   /// Throws as evaluate; allocates nothing.
   void add(const double* nu_r_b, std::span<const double> disturbances, double* tau) const;
-  /// As evaluate, and jacobian(i, j) = d tau_i / d nu_r_j: the laws'
-  /// derivatives and the surfaces' own gradients along the axes bound to
+  /// As evaluate, and jacobian(i, j) = d tau_i / d nu_r_j: the laws' and
+  /// derivative models' exact derivatives (d|x|/dx taken as 0 at x = 0) and
+  /// the surfaces' own gradients along the axes bound to
   /// velocity components (the disturbances are held) [N or N m per m/s or
   /// rad/s]. For equilibrium solving, not the hot path.
   Vector6 evaluate_with_jacobian(const Vector6& nu_r_b, std::span<const double> disturbances, Matrix6& jacobian) const;
@@ -122,6 +143,22 @@ class DampingModel {
     std::size_t count = 0;
     std::array<DampingTerm, 6> terms{};
     std::array<double, 6> coefficients{};  // sign folded in: force on the body
+  };
+  /// One name's factor of a derivative term: |x|^power, negated when odd
+  /// and x < 0 (TermFactor with its name resolved).
+  struct Factor {
+    std::size_t source = 0;  // 0..5: nu_r component; 6 + k: disturbance k
+    int power = 1;
+    bool odd = true;
+  };
+  struct Derivatives {
+    std::size_t dof = 0;
+    std::string text;                  // the terms' canonical list, for messages
+    std::vector<double> coefficients;  // sign folded in: force on the body
+    std::vector<std::size_t> begin;    // term k's factors: factors[begin[k] .. begin[k + 1])
+    std::vector<Factor> factors;
+    /// sum_k coefficients[k] * term_k at nu_r_b (6) and the disturbances.
+    double value(const double* nu_r_b, std::span<const double> disturbances) const;
   };
   struct Lookup {
     CoefficientSurface surface;
@@ -142,6 +179,7 @@ class DampingModel {
 
   std::array<bool, 6> damped_{};
   std::vector<Law> laws_;
+  std::vector<Derivatives> derivatives_;
   std::vector<Lookup> lookups_;
   std::vector<std::string> disturbance_names_;
 };

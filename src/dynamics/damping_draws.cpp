@@ -79,6 +79,26 @@ DampingDraws::DampingDraws(const DampingModel& nominal, const DampingSpec& spec)
     drawn_.push_back(name + " drawn from its covariance");
   }
 
+  for (std::size_t i = 0; i < nominal_.derivatives_.size(); ++i) {
+    const auto& model = nominal_.derivatives_[i];
+    const DofDamping& d = spec[model.dof];
+    const std::string name = std::string(kForceNames[model.dof]) + ": derivatives " + model.text;
+    if (d.covariance.empty()) {
+      held_.push_back(name + " held at its coefficients (no covariance; give \"covariance\" to draw them)");
+      continue;
+    }
+    const std::size_t m = model.coefficients.size();
+    if (const auto problem = covariance_problem(d.covariance, m))
+      throw InputError("damping of " + std::string(kForceNames[model.dof]) + ": covariance: " + *problem);
+    const auto k = static_cast<Eigen::Index>(m);
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> sigma(
+        d.covariance.data(), k, k);
+    Eigen::VectorXd mean = Eigen::Map<const Eigen::VectorXd>(model.coefficients.data(), k);
+    // The sign convention multiplies every coefficient by +-1: the covariance is unchanged.
+    derivatives_.push_back({i, gaussian(std::move(mean), sigma)});
+    drawn_.push_back(name + " drawn from its covariance");
+  }
+
   for (std::size_t l = 0; l < nominal_.lookups_.size(); ++l) {
     const auto& lookup = nominal_.lookups_[l];
     const CoefficientSurface& surface = lookup.surface;
@@ -167,6 +187,11 @@ DampingModel DampingDraws::draw(std::uint64_t seed, std::uint64_t index) const {
     const Eigen::VectorXd c = sample(law.coefficients);
     auto& target = model.laws_[law.law];
     for (std::size_t j = 0; j < target.count; ++j) target.coefficients[j] = c[static_cast<Eigen::Index>(j)];
+  }
+  for (const LawDraw& draw : derivatives_) {
+    const Eigen::VectorXd c = sample(draw.coefficients);
+    auto& target = model.derivatives_[draw.law].coefficients;
+    for (std::size_t j = 0; j < target.size(); ++j) target[j] = c[static_cast<Eigen::Index>(j)];
   }
   for (const SurfaceDraw& s : surfaces_) {
     const std::size_t outputs = s.outputs.size();

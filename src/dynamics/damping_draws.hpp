@@ -8,6 +8,8 @@
 //     the vehicle file): c = c_hat + F z, z ~ N(0, I), F F^T = Sigma
 //     (F = P^T L D^1/2 from the pivoted LDL^T of Sigma, so a semi-definite
 //     Sigma, e.g. of a coefficient that is known exactly, works too).
+//   - A derivative model of several variables with a covariance (given in
+//     the vehicle file): the same, over all its coefficients at once.
 //   - A Gaussian-process surface: one function drawn from its posterior.
 //     The posterior is drawn jointly at the nodes of a grid over the
 //     surface's range (mean m and covariance K from GpSurface::posterior;
@@ -21,9 +23,10 @@
 //     independently; outputs the vehicle does not read are held at the mean.
 //     Outside the range the draw follows the surface's policy: error, clamp,
 //     or (extrapolate) linear continuation of the drawn spline.
-//   - Laws without a covariance and surfaces without a posterior (grid and
-//     RBF surfaces: their standard deviation is pointwise, with no joint
-//     distribution of functions to draw from) are held at their values;
+//   - Laws and derivative models without a covariance and surfaces without
+//     a posterior (grid and RBF surfaces: their standard deviation is
+//     pointwise, with no joint distribution of functions to draw from) are
+//     held at their values;
 //     held() lists them, so that a band never looks narrower than it is
 //     without saying so.
 //
@@ -90,6 +93,7 @@ class DampingDraws {
 
   DampingModel nominal_;
   std::vector<LawDraw> laws_;
+  std::vector<LawDraw> derivatives_;  // law: index into DampingModel::derivatives_
   std::vector<SurfaceDraw> surfaces_;
   std::vector<std::string> drawn_, held_, notes_;
 };

@@ -15,7 +15,13 @@ DampingLanes::DampingLanes(const std::array<const DampingModel*, kLanes>& models
   const DampingModel& first = *models_[0];
   shared_ = true;
   for (const DampingModel* m : models_) {
-    if (m->laws_.size() != first.laws_.size() || m->lookups_.size() != first.lookups_.size()) shared_ = false;
+    if (m->laws_.size() != first.laws_.size() || m->lookups_.size() != first.lookups_.size() ||
+        m->derivatives_.size() != first.derivatives_.size())
+      shared_ = false;
+    // Derivative models: the same DOF and terms (they are evaluated lane by lane).
+    for (std::size_t i = 0; shared_ && i < first.derivatives_.size(); ++i)
+      shared_ =
+          first.derivatives_[i].dof == m->derivatives_[i].dof && first.derivatives_[i].text == m->derivatives_[i].text;
     for (std::size_t i = 0; shared_ && i < first.laws_.size(); ++i) {
       const auto &a = first.laws_[i], &b = m->laws_[i];
       shared_ = a.dof == b.dof && a.variable == b.variable && a.count == b.count && a.terms == b.terms;
@@ -70,6 +76,14 @@ void DampingLanes::add(const Lanes* nu_r, std::span<const double> disturbances, 
       value += law_coefficients_[i][k] * basis[static_cast<std::size_t>(law.terms[k])];
     tau[law.dof] += value;
   }
+  // Derivative models, lane by lane: DampingModel::add's numbers.
+  for (std::size_t i = 0; i < first.derivatives_.size(); ++i)
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      double lane_nu[6];
+      for (std::size_t c = 0; c < 6; ++c) lane_nu[c] = nu_r[c][static_cast<Eigen::Index>(l)];
+      tau[first.derivatives_[i].dof][static_cast<Eigen::Index>(l)] +=
+          models_[l]->derivatives_[i].value(lane_nu, disturbances);
+    }
   std::array<double, DampingModel::kMaxOutputs * kLanes> values;  // [output][lane]; written before read
   for (std::size_t i = 0; i < first.lookups_.size(); ++i) {
     const auto& lookup = first.lookups_[i];

@@ -2,7 +2,8 @@
 // models of an ensemble, simulate_lanes). When the models share their shape,
 // as the draws of one model do (the same laws with other coefficients, the
 // same lookups with other numbers on the same axes), the laws are evaluated
-// for every lane at once and one-axis tables on a shared axis are looked up
+// for every lane at once (derivative models of several variables lane by
+// lane within that path) and one-axis tables on a shared axis are looked up
 // together; otherwise lane by lane. Either way lane l's numbers are
 // models[l]->evaluate()'s, bit for bit.
 #pragma once

@@ -115,15 +115,60 @@ SignConvention read_sign(const Json& object, const std::string& file, const std:
   ji::fail(file, ji::join(path, "sign"), "found \"" + text + "\", expected \"on-body\" or \"opposing\"");
 }
 
+// "derivatives": {"terms": "v, r, v*|v|", "coefficients": [...], "covariance": [[...], ...]}
+// into d (terms, coefficients, covariance), every size and value checked.
+void read_derivatives(const Json& value, const std::string& file, const std::string& path, DofDamping& d) {
+  ji::expect_object(value, file, path, {"terms", "coefficients", "covariance"});
+  const std::string terms_path = ji::join(path, "terms");
+  const Json& terms = ji::require(value, file, path, "terms");
+  std::string list;
+  if (terms.is_array()) {
+    for (std::size_t k = 0; k < terms.size(); ++k)
+      list += (k ? ", " : "") + ji::string(terms[k], file, terms_path + "[" + std::to_string(k) + "]");
+  } else if (terms.is_string()) {
+    list = terms.get<std::string>();
+  } else {
+    ji::fail(file, terms_path,
+             "found " + ji::describe(terms) + ", expected a list of terms such as \"v, r, v*|v|, u*v\"");
+  }
+  try {
+    d.terms = parse_terms(list);
+  } catch (const InputError& e) {
+    ji::fail(file, terms_path, e.what());
+  }
+  if (d.terms.size() > DampingModel::kMaxDerivativeTerms)
+    ji::fail(file, terms_path,
+             "found " + std::to_string(d.terms.size()) + " terms, expected at most " +
+                 std::to_string(DampingModel::kMaxDerivativeTerms));
+  for (const auto& term : d.terms)
+    for (const auto& f : term.factors())
+      if (f.variable == "alpha" || f.variable == "beta" || f.variable == "du")
+        ji::fail(file, terms_path,
+                 "term '" + term.text() + "' reads '" + f.variable +
+                     "', which the dynamics model does not supply; expected terms in u, v, w, p, q, r and "
+                     "disturbance parameters");
+  const Json& coefficients = ji::require(value, file, path, "coefficients");
+  d.coefficients = ji::numbers(coefficients, file, ji::join(path, "coefficients"), d.terms.size());
+  if (const Json* covariance = ji::find(value, "covariance")) {
+    const auto k = static_cast<Eigen::Index>(d.terms.size());
+    const Eigen::MatrixXd c = ji::matrix(*covariance, file, ji::join(path, "covariance"), k);
+    d.covariance.assign(c.data(), c.data() + c.size());  // symmetric: column-major = row-major
+    if (const auto problem = covariance_problem(d.covariance, d.coefficients.size()))
+      ji::fail(file, ji::join(path, "covariance"), *problem);
+  }
+}
+
 DofDamping read_dof_damping(const Json& value, const std::string& file, const std::string& path) {
-  ji::expect_object(value, file, path,
-                    {"law", "covariance", "fit", "surface", "output", "axes", "sign", "allow_unphysical"});
+  ji::expect_object(
+      value, file, path,
+      {"law", "covariance", "fit", "surface", "derivatives", "output", "axes", "sign", "allow_unphysical"});
   DofDamping d;
   const Json* law = ji::find(value, "law");
   const Json* fit = ji::find(value, "fit");
   const Json* surface = ji::find(value, "surface");
-  if ((law != nullptr) + (fit != nullptr) + (surface != nullptr) != 1)
-    ji::fail(file, path, "expected exactly one of \"law\", \"fit\" and \"surface\"");
+  const Json* derivatives = ji::find(value, "derivatives");
+  if ((law != nullptr) + (fit != nullptr) + (surface != nullptr) + (derivatives != nullptr) != 1)
+    ji::fail(file, path, "expected exactly one of \"law\", \"fit\", \"derivatives\" and \"surface\"");
   if (!surface && ji::find(value, "allow_unphysical"))
     ji::fail(file, ji::join(path, "allow_unphysical"),
              "belongs to a surface; a law is checked when it is fitted and by export-gazebo");
@@ -139,6 +184,15 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
     return d;
   }
   d.sign = read_sign(value, file, path);
+  if (derivatives) {
+    for (const char* key : {"covariance", "output", "axes"})
+      if (ji::find(value, key))
+        ji::fail(file, ji::join(path, key),
+                 "does not belong beside \"derivatives\" (its covariance goes inside: derivatives.covariance)");
+    read_derivatives(*derivatives, file, ji::join(path, "derivatives"), d);
+    d.kind = DofDamping::Kind::Derivatives;
+    return d;
+  }
   if (law) {
     if (ji::find(value, "output") || ji::find(value, "axes"))
       ji::fail(file, path, "\"output\" and \"axes\" belong to a surface, not to a law");

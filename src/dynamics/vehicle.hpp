@@ -29,12 +29,22 @@
 //                    "min_thrust": -1.0, "max_thrust": 1.0}, ...],   optional; N
 //     "damping": {"X": {"law": {"u": -0.0155, "u|u|": -11.0365}, "sign": "on-body"},
 //                 "N": {"surface": "asr-v-yaw", "output": "N",
-//                       "axes": {"r": "r", "current_u": "current_u"}, "sign": "on-body"}, ...}
+//                       "axes": {"r": "r", "current_u": "current_u"}, "sign": "on-body"},
+//                 "Y": {"derivatives": {"terms": "v, r, v*|v|, u*v, u*r",
+//                                       "coefficients": [...], "covariance": [[...], ...]},
+//                       "sign": "on-body"}, ...}
 //   }
 // A law's keys are its terms (1, x, x|x|, x^2, x^3, |x| of one velocity
 // component; see src/core/damping_terms.hpp), its values the coefficients. DOFs not in
 // "damping" have none. "sign" is "on-body" (force on the body, damping
 // negative) or "opposing" (damping magnitude, positive opposes motion).
+// "derivatives" is a derivative model of several variables (terms as in
+// src/derivatives/terms.hpp, a string "v, r, v*|v|" or an array of term
+// strings; at most DampingModel::kMaxDerivativeTerms): u, v, w, p, q, r
+// read the velocity relative to the water, other names the scenario's
+// disturbance parameters; "coefficients" one per term [N or N m over the
+// term's unit], "covariance" (optional, m x m, symmetric positive
+// semi-definite) what Monte Carlo draws use; "sign" as for a law.
 #pragma once
 
 #include <filesystem>
