@@ -40,6 +40,9 @@ from ._hydrocoef import (PlotFiles, plot_curves, plot_fit, plot_history, plot_si
                          plot_surface)
 from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
                          MigrationSummary, Refits, ReportSummary, RunDetails)
+from ._hydrocoef import (DerivativeCoefficient, DerivativeDeletion, DerivativeEvaluation, DerivativeModel,
+                         DerivativeModelList, delete_derivative_model, evaluate_derivative_model,
+                         fit_derivative_model, list_derivative_models, show_derivative_model)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
@@ -51,6 +54,9 @@ __all__ += ["integrate_surface", "SurfaceIntegration"]
 __all__ += ["plot_fit", "plot_curves", "plot_surface", "plot_history", "plot_simulation", "plot_steady", "PlotFiles"]
 __all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnalysis", "pmm_runs", "PmmRunList",
             "delete_pmm_runs", "PmmDeletion", "added_mass_matrix", "AddedMassMatrix", "suggest_runs", "Suggestion"]
+__all__ += ["fit_derivative_model", "list_derivative_models", "show_derivative_model", "delete_derivative_model",
+            "evaluate_derivative_model", "DerivativeModel", "DerivativeCoefficient", "DerivativeModelList",
+            "DerivativeDeletion", "DerivativeEvaluation"]
 
 
 class Table(dict):

@@ -41,4 +41,5 @@ PYBIND11_MODULE(_hydrocoef, m) {
   hydrocoef_python::bind_plots(m);
   m.attr("PlotFiles").attr("__module__") = "hydrocoef";
   hydrocoef_python::register_analysis(m);
+  hydrocoef_python::register_derivatives(m);
 }
