@@ -12,8 +12,10 @@
 #include <cmath>
 #include <limits>
 
+#include "hydrocoef/derivatives.hpp"
 #include "src/api/derivatives_report.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/derivatives/derivative_fit.hpp"
 #include "src/derivatives/model_templates.hpp"

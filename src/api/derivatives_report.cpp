@@ -150,7 +150,7 @@ std::string DerivativeDeletion::json() const {
 
 std::string DerivativeEvaluation::text() const {
   std::string point;
-  for (const auto& [variable, value] : at) point += (point.empty() ? "" : ", ") + variable + "=" + number(value);
+  for (const auto& [variable, x] : at) point += (point.empty() ? "" : ", ") + variable + "=" + number(x);
   return escape::one_line(name) + " at " + escape::one_line(point) + ": " + output + " = " + number(value) + " +/- " +
          number(std_error) + " " + unit + " (one sigma)" + (stale ? " (stale)" : "") + "\n";
 }
