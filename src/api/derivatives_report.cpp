@@ -6,6 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include "hydrocoef/derivatives.hpp"
 #include "src/api/derivatives_report.hpp"
 #include "src/api/records_format.hpp"
@@ -82,14 +86,24 @@ std::string derivative_coefficient_unit(const std::string& output, const Term& t
   const std::string unit = derivative_output_unit(output);
   const auto powers = term.powers();
   if (powers.empty()) return unit;
-  std::string below;
-  for (const auto& [name, power] : powers) {
+  // One factor per unit, its powers added: u*v is per (m/s)^2, v^2*r per ((m/s)^2 (rad/s)).
+  std::vector<std::pair<std::string, int>> units;
+  for (const auto& name : term.variables()) {  // canonical order: velocities, rates, then the rest
+    const int power = powers.at(name);
     const std::string one = variable_unit(name);
+    const auto same = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.first == one; });
+    if (same == units.end())
+      units.emplace_back(one, power);
+    else
+      same->second += power;
+  }
+  std::string below;
+  for (const auto& [one, power] : units) {
     const bool bracket = one.find('/') != std::string::npos;
     below += (below.empty() ? "" : " ") + (bracket ? "(" + one + ")" : one) +
              (power > 1 ? "^" + std::to_string(power) : "");
   }
-  return unit + "/" + (powers.size() > 1 ? "(" + below + ")" : below);
+  return unit + "/" + (units.size() > 1 ? "(" + below + ")" : below);
 }
 
 std::string DerivativeModel::text() const {

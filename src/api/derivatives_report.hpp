@@ -13,7 +13,7 @@ inline namespace api {
 std::string derivative_output_unit(const std::string& output);
 
 /// The output's unit over the term's, SI: "N/(m/s)^2" for Y and v*|v|,
-/// "N m/((m/s) (rad/s))" for N and v*r, "N/rad" for Y and delta; a
+/// "N m/((m/s) (rad/s))" for N and v*r, "N/(m/s)^2" for Y and u*v, "N/rad" for Y and delta; a
 /// disturbance with no known unit is written in brackets, "N/[vc]".
 std::string derivative_coefficient_unit(const std::string& output, const Term& term);
 
