@@ -47,7 +47,8 @@ void add_fit(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, con
   command->add_option("--vif-threshold", args->fit.vif_threshold, "Warn of variance inflation factors above this")
       ->capture_default_str();
   command->add_flag("--no-store", args->no_store, "Do not store the model");
-  command->add_flag("--unweighted", args->unweighted, "Ordinary least squares even when every run states an uncertainty");
+  command->add_flag("--unweighted", args->unweighted,
+                    "Ordinary least squares even when every run states an uncertainty");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] {
     auto options = args->fit;
@@ -64,8 +65,9 @@ void add_fit(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, con
 
 void add_show(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, const GlobalOptions& global) {
   auto* command = parent.add_subcommand(
-      "show", "Show a stored model: its coefficients with standard errors and intervals in the form asked for, "
-              "the normalisation of each named, its statistics, warnings and runs");
+      "show",
+      "Show a stored model: its coefficients with standard errors and intervals in the form asked for, "
+      "the normalisation of each named, its statistics, warnings and runs");
   command->add_option("name", args->show.name, "The stored model (hydrocoef derivatives list)")->required();
   command->add_option("--form", args->show.form, "dimensional (SI), prime (SNAME), bis (Norrbin) or mmg")
       ->capture_default_str();
@@ -115,8 +117,7 @@ void add_derivatives_command(CLI::App& app, const GlobalOptions& global) {
   auto* evaluate = derivatives->add_subcommand(
       "evaluate", "A stored model at one point, with the standard error sqrt(b^T C b) of its value");
   evaluate->add_option("name", args->name, "The stored model")->required();
-  evaluate->add_option("--at", args->at, "A variable's value (SI), NAME=VALUE; repeatable, one for each")
-      ->required();
+  evaluate->add_option("--at", args->at, "A variable's value (SI), NAME=VALUE; repeatable, one for each")->required();
   evaluate->add_flag("--json", args->json, "Print JSON");
   evaluate->callback([args, &global] {
     hydrocoef::DerivativeEvaluationOptions options;

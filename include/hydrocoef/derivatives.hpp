@@ -52,9 +52,9 @@ struct HYDROCOEF_EXPORT DerivativeModelOptions {
   std::vector<std::int64_t> exclude_runs;  ///< run ids left out (--exclude-run)
   /// The name to store it under (--name); default BODY:OUTPUT(TERMS), then @SELECTION.
   std::string name;
-  bool replace = false;   ///< replace a stored model of the same name (--replace)
-  bool store = true;      ///< false: --no-store
-  bool weighted = true;   ///< false: --unweighted
+  bool replace = false;         ///< replace a stored model of the same name (--replace)
+  bool store = true;            ///< false: --no-store
+  bool weighted = true;         ///< false: --unweighted
   double vif_threshold = 10.0;  ///< VIFs above it are warned of (--vif-threshold)
 
   /// InputError for a missing body or output, an output not X..N, both or
@@ -69,10 +69,10 @@ struct DerivativeCoefficient {
   std::string term;  ///< canonical, e.g. "v*|v|"
   std::string unit;  ///< e.g. "N/(m/s)^2"; "1" in a non-dimensional form
   double value = 0.0;
-  double std_error = std::numeric_limits<double>::quiet_NaN();  ///< one sigma; NaN when undefined
+  double std_error = std::numeric_limits<double>::quiet_NaN();      ///< one sigma; NaN when undefined
   double interval_low = std::numeric_limits<double>::quiet_NaN();   ///< 95 %
   double interval_high = std::numeric_limits<double>::quiet_NaN();  ///< 95 %
-  double vif = std::numeric_limits<double>::quiet_NaN();  ///< variance inflation factor; NaN for the constant
+  double vif = std::numeric_limits<double>::quiet_NaN();            ///< variance inflation factor; NaN for the constant
   /// show --form prime|bis|mmg: the normalisation, e.g. "prime (SNAME 1950):
   /// Y_v' = Y_v / (1/2 rho U L^2), L = 3 m, U = 1.5 m/s, rho = 1025 kg/m^3";
   /// "" when dimensional.
@@ -99,16 +99,16 @@ struct HYDROCOEF_EXPORT DerivativeModel {
   double condition_number = 0.0;   ///< of the (weighted) design with unit-norm columns
   double rmse = 0.0;               ///< [output unit, SI]
   double r2 = std::numeric_limits<double>::quiet_NaN();
-  std::size_t n = 0;                ///< runs fitted
-  std::string weighting = "none";   ///< "uncertainty" or "none"
+  std::size_t n = 0;               ///< runs fitted
+  std::string weighting = "none";  ///< "uncertainty" or "none"
   double chi2_reduced = std::numeric_limits<double>::quiet_NaN();
   double covariance_scale = 1.0;
   double interval_factor = std::numeric_limits<double>::quiet_NaN();  ///< t or 1.96 of the intervals
-  std::vector<std::int64_t> runs;     ///< the runs it was fitted to
-  std::vector<std::string> warnings;  ///< "kind: message"
-  std::int64_t id = 0;                ///< 0 when not stored
-  bool stale = false;                 ///< a force of its runs changed since
-  std::string created_at;             ///< UTC ISO 8601 (stored models)
+  std::vector<std::int64_t> runs;                                     ///< the runs it was fitted to
+  std::vector<std::string> warnings;                                  ///< "kind: message"
+  std::int64_t id = 0;                                                ///< 0 when not stored
+  bool stale = false;                                                 ///< a force of its runs changed since
+  std::string created_at;                                             ///< UTC ISO 8601 (stored models)
 
   std::string text() const;
   std::string json() const;

@@ -71,8 +71,7 @@ void register_derivatives(py::module_& m) {
       .def_readonly("stale", &DerivativeModel::stale)
       .def_readonly("created_at", &DerivativeModel::created_at);
   add_documents(model);
-  py::class_<hydrocoef::DerivativeModelList> list(m, "DerivativeModelList", py::is_final(),
-                                                  made_by_the_module_only());
+  py::class_<hydrocoef::DerivativeModelList> list(m, "DerivativeModelList", py::is_final(), made_by_the_module_only());
   list.def_readonly("models", &hydrocoef::DerivativeModelList::models);
   add_documents(list);
   py::class_<hydrocoef::DerivativeDeletion> deletion(m, "DerivativeDeletion", py::is_final(),
@@ -147,10 +146,9 @@ void register_derivatives(py::module_& m) {
         const py::gil_scoped_release release;
         return hydrocoef::show_derivative_model(database, options);
       },
-      "database"_a, "name"_a, py::kw_only(), "form"_a = "dimensional", "length"_a = py::none(),
-      "speed"_a = py::none(), "density"_a = py::none(), "draft"_a = py::none(), "mass"_a = py::none(),
-      "volume"_a = py::none(), "gravity"_a = 9.80665,
-      "A stored derivative model in the form asked for, as `hydrocoef derivatives show`.");
+      "database"_a, "name"_a, py::kw_only(), "form"_a = "dimensional", "length"_a = py::none(), "speed"_a = py::none(),
+      "density"_a = py::none(), "draft"_a = py::none(), "mass"_a = py::none(), "volume"_a = py::none(),
+      "gravity"_a = 9.80665, "A stored derivative model in the form asked for, as `hydrocoef derivatives show`.");
   m.def(
       "delete_derivative_model",
       [](py::handle db, const std::string& name) {

@@ -130,18 +130,18 @@ const DerivativeModelRecord& find_model(const std::vector<DerivativeModelRecord>
   if (found != models.end()) return *found;
   std::string names;
   for (const auto& m : models) names += (names.empty() ? "'" : ", '") + escape::one_line(m.name) + "'";
-  throw InputError(SourceLocation{database}, "no derivative model '" + escape::one_line(name) + "'; expected one of: " +
-                                                 (names.empty() ? std::string("(no derivative models stored)") : names));
+  throw InputError(SourceLocation{database},
+                   "no derivative model '" + escape::one_line(name) +
+                       "'; expected one of: " + (names.empty() ? std::string("(no derivative models stored)") : names));
 }
 
 /// What a variable of a term is, for a normalisation; InputError when unknown.
 QuantityKind variable_kind(const std::string& name, const std::string& term, const std::string& form) {
   if (name == "u" || name == "v" || name == "w" || name == "du") return QuantityKind::LinearVelocity;
   if (name == "p" || name == "q" || name == "r") return QuantityKind::AngularVelocity;
-  if (name == "alpha" || name == "beta" || name == "delta" || name.rfind("delta_", 0) == 0)
-    return QuantityKind::Angle;
-  throw InputError("derivatives show --form " + form + ": term '" + term + "': no normalisation is known for '" +
-                   name + "'; expected velocities u, v, w, du, rates p, q, r or angles alpha, beta, delta, delta_*");
+  if (name == "alpha" || name == "beta" || name == "delta" || name.rfind("delta_", 0) == 0) return QuantityKind::Angle;
+  throw InputError("derivatives show --form " + form + ": term '" + term + "': no normalisation is known for '" + name +
+                   "'; expected velocities u, v, w, du, rates p, q, r or angles alpha, beta, delta, delta_*");
 }
 
 /// Refuses a form whose reference values are not all given, naming the options to give.
@@ -253,10 +253,9 @@ DerivativeModel fit_derivative_model(Database& database, const DerivativeModelOp
 
   DerivativeModelRecord record;
   const std::string listed = options.model_template.empty() ? format_terms(candidates) : options.model_template;
-  record.name = options.name.empty()
-                    ? default_fit_name(options.body, options.output, listed, selection.text()) +
-                          (options.select.empty() ? "" : "[" + options.select + "]")
-                    : options.name;
+  record.name = options.name.empty() ? default_fit_name(options.body, options.output, listed, selection.text()) +
+                                           (options.select.empty() ? "" : "[" + options.select + "]")
+                                     : options.name;
   record.body = options.body;
   record.output = options.output;
   record.terms = format_terms(terms);
@@ -328,7 +327,8 @@ DerivativeModel show_derivative_model(const Database& database, const Derivative
 
 DerivativeDeletion delete_derivative_model(Database& database, const std::string& name) {
   if (name.empty())
-    throw InputError("derivatives delete: expected the name of a stored model ('hydrocoef derivatives list' lists them)");
+    throw InputError(
+        "derivatives delete: expected the name of a stored model ('hydrocoef derivatives list' lists them)");
   auto& impl = Database::Access::impl(database);
   const std::lock_guard lock(impl.mutex);
   auto& store = impl.writable_store("derivatives delete");

@@ -100,15 +100,15 @@ std::string derivative_coefficient_unit(const std::string& output, const Term& t
   std::string below;
   for (const auto& [one, power] : units) {
     const bool bracket = one.find('/') != std::string::npos;
-    below += (below.empty() ? "" : " ") + (bracket ? "(" + one + ")" : one) +
-             (power > 1 ? "^" + std::to_string(power) : "");
+    below +=
+        (below.empty() ? "" : " ") + (bracket ? "(" + one + ")" : one) + (power > 1 ? "^" + std::to_string(power) : "");
   }
   return unit + "/" + (units.size() > 1 ? "(" + below + ")" : below);
 }
 
 std::string DerivativeModel::text() const {
-  std::string out = "derivative model '" + escape::one_line(name) + "' of body '" + escape::one_line(body) + "': " +
-                    output + " [" + unit + "] = sum of " + std::to_string(coefficients.size()) + " terms, " +
+  std::string out = "derivative model '" + escape::one_line(name) + "' of body '" + escape::one_line(body) +
+                    "': " + output + " [" + unit + "] = sum of " + std::to_string(coefficients.size()) + " terms, " +
                     std::to_string(n) + " runs" + (weighting == "uncertainty" ? " (weighted by 1/s^2)" : "") +
                     (where.empty() ? "" : " where " + escape::one_line(where)) + "\n";
   if (!model_template.empty()) out += "  template: " + model_template + "\n";
@@ -127,8 +127,9 @@ std::string DerivativeModel::text() const {
          ", condition number = " + number(condition_number);
   if (std::isfinite(chi2_reduced)) out += ", reduced chi^2 = " + number(chi2_reduced);
   out += "\n";
-  for (const auto& w : warnings) out += "  warning (" + escape::one_line(w.substr(0, w.find(':'))) + ")" +
-                                        escape::one_line(w.substr(w.find(':'))) + "\n";
+  for (const auto& w : warnings)
+    out += "  warning (" + escape::one_line(w.substr(0, w.find(':'))) + ")" + escape::one_line(w.substr(w.find(':'))) +
+           "\n";
   if (stale) out += "  stale: a force of its runs changed since it was fitted\n";
   out += id ? "  stored as model " + std::to_string(id) + "\n" : "  not stored\n";
   return out;
@@ -170,9 +171,9 @@ std::string DerivativeEvaluation::text() const {
 }
 
 std::string DerivativeEvaluation::json() const {
-  nlohmann::json out = {{"name", name},         {"output", output}, {"unit", unit},  {"at", at},
-                        {"value", value},       {"std_error", optional_number(std_error)},
-                        {"basis", basis},       {"stale", stale}};
+  nlohmann::json out = {{"name", name},   {"output", output}, {"unit", unit},
+                        {"at", at},       {"value", value},   {"std_error", optional_number(std_error)},
+                        {"basis", basis}, {"stale", stale}};
   return escape::json_text(out, 2) + '\n';
 }
 

@@ -57,10 +57,10 @@ std::int64_t RunDatabase::save_derivative_model(const DerivativeModelRecord& mod
   existing.bind(1, model.name);
   if (existing.step()) {
     if (taken == NameTaken::Refuse)
-      throw InputError(SourceLocation{path_.string()},
-                       "a derivative model named '" + escape::one_line(model.name) + "' exists (model " +
-                           std::to_string(existing.get_int(0)) + ", made " + existing.get_text(1) +
-                           "); give --replace to replace it, or another --name");
+      throw InputError(SourceLocation{path_.string()}, "a derivative model named '" + escape::one_line(model.name) +
+                                                           "' exists (model " + std::to_string(existing.get_int(0)) +
+                                                           ", made " + existing.get_text(1) +
+                                                           "); give --replace to replace it, or another --name");
     const std::int64_t old = existing.get_int(0);
     existing.reset();
     connection_.prepare("DELETE FROM derivative_model WHERE id = ?").bind(1, old).run();

@@ -31,12 +31,12 @@ struct DerivativeModelRecord {
   std::int64_t id = 0;
   std::string name;
   std::string body;
-  std::string output;          ///< X..N
-  std::string terms;           ///< canonical list, "v, r, v*|v|"
-  std::string model_template;  ///< "" or "abkowitz", "auv", "mmg", "mmg-beta"
-  std::string selection;       ///< "" or "loo", "kfold:K"
-  std::string candidates;      ///< the candidate list of a selection ("" without one)
-  std::string run_filter;      ///< the selection's canonical text ("" all runs)
+  std::string output;              ///< X..N
+  std::string terms;               ///< canonical list, "v, r, v*|v|"
+  std::string model_template;      ///< "" or "abkowitz", "auv", "mmg", "mmg-beta"
+  std::string selection;           ///< "" or "loo", "kfold:K"
+  std::string candidates;          ///< the candidate list of a selection ("" without one)
+  std::string run_filter;          ///< the selection's canonical text ("" all runs)
   std::string weighting = "none";  ///< "none" or "uncertainty"
   std::size_t n = 0;
   double rmse = 0.0;

@@ -45,9 +45,8 @@ class DerivativesApiTest : public ::testing::Test {
         }
     out.close();
     path_ = (dir_ / "d.db").string();
-    ASSERT_EQ(run_cli({"--db", "d.db", "import", "runs.csv", "--body", "b", "--sign", "on-body"}, dir_.path())
-                  .exit_code,
-              0);
+    ASSERT_EQ(
+        run_cli({"--db", "d.db", "import", "runs.csv", "--body", "b", "--sign", "on-body"}, dir_.path()).exit_code, 0);
   }
   nlohmann::json cli_json(std::vector<std::string> args) {
     args.insert(args.begin(), {"--db", "d.db", "derivatives"});
@@ -115,9 +114,9 @@ TEST_F(DerivativesApiTest, FitListShowEvaluateAndDeleteGiveTheCliNumbers) {
   show.length = 2.5;
   show.speed = 1.5;
   show.density = 1025.0;
-  expect_same_model(hydrocoef::show_derivative_model(db, show),
-                    cli_json({"show", "yaw", "--form", "prime", "--length", "2.5", "--speed", "1.5", "--density",
-                              "1025"}));
+  expect_same_model(
+      hydrocoef::show_derivative_model(db, show),
+      cli_json({"show", "yaw", "--form", "prime", "--length", "2.5", "--speed", "1.5", "--density", "1025"}));
   EXPECT_EQ(hydrocoef::show_derivative_model(db, show).text(),
             run_cli({"--db", "d.db", "derivatives", "show", "yaw", "--form", "prime", "--length", "2.5", "--speed",
                      "1.5", "--density", "1025"},
@@ -167,8 +166,7 @@ TEST_F(DerivativesApiTest, ValidateRefusesWithTheCliMessages) {
   EXPECT_EQ(error_of([&] { show.validate(); }), cli_message({"show", "x", "--form", "prime", "--length", "-1"}));
   hydrocoef::DerivativeEvaluationOptions at;
   at.name = "x";
-  EXPECT_EQ(error_of([&] { at.validate(); }),
-            "derivatives evaluate: expected the point (--at NAME=VALUE, repeatable)");
+  EXPECT_EQ(error_of([&] { at.validate(); }), "derivatives evaluate: expected the point (--at NAME=VALUE, repeatable)");
   // The library's refusals too: a template whose names the runs lack, and a name that is not there.
   auto db = Database::open(path_, OpenMode::ReadWrite);
   fit.where.clear();

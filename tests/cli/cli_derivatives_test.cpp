@@ -48,9 +48,8 @@ class CliDerivatives : public ::testing::Test {
  protected:
   void SetUp() override {
     write_runs(dir_ / "captive.csv");
-    const auto imported =
-        run_cli({"import", "captive.csv", "--body", "ship", "--disturbance", "delta", "--sign", "on-body"},
-                dir_.path());
+    const auto imported = run_cli(
+        {"import", "captive.csv", "--body", "ship", "--disturbance", "delta", "--sign", "on-body"}, dir_.path());
     ASSERT_EQ(imported.exit_code, 0) << imported.err;
   }
   test::CliResult fit(std::vector<std::string> extra) {
@@ -112,24 +111,23 @@ TEST_F(CliDerivatives, ThePrimeFormIsTheNormalisationLibrarysConversion) {
   reference.speed = 1.5;
   reference.density = 1025.0;
   const DerivativeFactor v{QuantityKind::LinearVelocity, 1}, r{QuantityKind::AngularVelocity, 1};
-  const std::vector<DerivativeKind> kinds{{QuantityKind::Force, {v}},
-                                          {QuantityKind::Force, {r}},
-                                          {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2}}},
-                                          {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2}}},
-                                          {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2}, r}},
-                                          {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2},
-                                                                 {QuantityKind::Angle, 1}}}};
+  const std::vector<DerivativeKind> kinds{
+      {QuantityKind::Force, {v}},
+      {QuantityKind::Force, {r}},
+      {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2}}},
+      {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2}}},
+      {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2}, r}},
+      {QuantityKind::Force, {{QuantityKind::LinearVelocity, 2}, {QuantityKind::Angle, 1}}}};
   for (std::size_t k = 0; k < kTrue.size(); ++k) {
     const auto& c = out.at("coefficients")[k];
-    const double expected =
-        to_nondimensional(kTrue[k], kinds[k], NormalisationSystem::Prime, reference);
+    const double expected = to_nondimensional(kTrue[k], kinds[k], NormalisationSystem::Prime, reference);
     EXPECT_NEAR(c.at("value").get<double>(), expected, 1e-9 * std::abs(expected)) << k;
     EXPECT_NE(c.at("normalisation").get<std::string>().find("prime (SNAME 1950)"), std::string::npos) << c;
     EXPECT_EQ(c.at("unit"), "1");
   }
-  const auto text = run_cli({"derivatives", "show", "sway", "--form", "prime", "--length", "3", "--speed", "1.5",
-                             "--density", "1025"},
-                            dir_.path());
+  const auto text = run_cli(
+      {"derivatives", "show", "sway", "--form", "prime", "--length", "3", "--speed", "1.5", "--density", "1025"},
+      dir_.path());
   EXPECT_NE(text.out.find("v*|v|: prime (SNAME 1950): Y_v|v|' = Y_v|v| / (1/2 rho L^2)"), std::string::npos)
       << text.out;
   const auto missing = run_cli({"derivatives", "show", "sway", "--form", "mmg", "--length", "3"}, dir_.path());
@@ -142,8 +140,8 @@ TEST_F(CliDerivatives, BadTermsTooFewRunsAndCollinearTermsAreRefusedLeavingTheDa
   const auto unknown = fit({"--terms", "v, v**r"});
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.err.find("v**r"), std::string::npos) << unknown.err;
-  const auto few = fit({"--terms", "v, r, v*|v|", "--where", "u=1", "--where", "r=0", "--where", "delta=0",
-                        "--where", "v>=0.1"});
+  const auto few =
+      fit({"--terms", "v, r, v*|v|", "--where", "u=1", "--where", "r=0", "--where", "delta=0", "--where", "v>=0.1"});
   EXPECT_EQ(few.exit_code, 2);
   EXPECT_NE(few.err.find("2 runs"), std::string::npos) << few.err;
   const auto collinear = fit({"--terms", "v, u*v", "--where", "u=1.5"});
