@@ -52,6 +52,10 @@ std::string model_names(store::Connection& connection) {
 
 std::int64_t RunDatabase::save_derivative_model(const DerivativeModelRecord& model, NameTaken taken) {
   check_name(NameKind::Fit, model.name, {}, "the derivative model");
+  if (model.coefficients.size() > kMaxStoredTerms)
+    throw InputError("derivative model '" + escape::one_line(model.name) +
+                     "': " + std::to_string(model.coefficients.size()) + " terms; expected at most " +
+                     std::to_string(kMaxStoredTerms) + " in a stored model (give --no-store to fit it only)");
   store::Transaction transaction(connection_);
   auto existing = connection_.prepare("SELECT id, created_at FROM derivative_model WHERE name = ?");
   existing.bind(1, model.name);
