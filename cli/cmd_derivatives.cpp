@@ -30,8 +30,8 @@ void add_fit(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, con
       "Fit OUTPUT = sum c_k term_k over all the selected runs of a body at once (linear least squares, weighted by "
       "1/s^2 when every run states an uncertainty), with covariance, 95 % intervals, VIFs and condition number; "
       "store it");
-  command->add_option("--body", args->fit.body, "Body whose runs are fitted")->required();
-  command->add_option("--output", args->fit.output, "Force or moment fitted: X Y Z K M N")->required();
+  command->add_option("--body", args->fit.body, "Body whose runs are fitted (required)");
+  command->add_option("--output", args->fit.output, "Force or moment fitted: X Y Z K M N (required)");
   command->add_option("--terms", args->fit.terms,
                       "Terms over the runs' u v w p q r and disturbances: products of names, x^2..x^4 and |x|, "
                       "comma-separated, e.g. \"v, r, v*|v|, u*v\" (or --template)");

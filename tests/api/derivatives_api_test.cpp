@@ -142,6 +142,7 @@ TEST_F(DerivativesApiTest, FitListShowEvaluateAndDeleteGiveTheCliNumbers) {
 TEST_F(DerivativesApiTest, ValidateRefusesWithTheCliMessages) {
   hydrocoef::DerivativeModelOptions fit;
   fit.body = "b";
+  EXPECT_EQ(error_of([&] { fit.validate(); }), cli_message({"fit", "--body", "b", "--terms", "v"}));
   fit.output = "Q";
   fit.terms = "v";
   EXPECT_EQ(error_of([&] { fit.validate(); }), cli_message({"fit", "--body", "b", "--output", "Q", "--terms", "v"}));
