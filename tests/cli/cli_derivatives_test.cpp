@@ -153,6 +153,30 @@ TEST_F(CliDerivatives, BadTermsTooFewRunsAndCollinearTermsAreRefusedLeavingTheDa
   EXPECT_EQ(test::dump_database(dir_ / "hydrocoef.db"), before);
 }
 
+TEST_F(CliDerivatives, RunsThatStateAnUncertaintyAreWeighted) {
+  write_runs(dir_ / "weighed.csv");  // the same runs, imported for another body with a stated uncertainty
+  const auto imported = run_cli({"import", "weighed.csv", "--body", "weighed", "--disturbance", "delta", "--sign",
+                                 "on-body", "--uncertainty", "Y=0.5", "--also", "weighed"},
+                                dir_.path());
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  const auto fitted =
+      run_cli({"derivatives", "fit", "--body", "weighed", "--output", "Y", "--terms", kTerms, "--no-store", "--json"},
+              dir_.path());
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
+  const auto out = nlohmann::json::parse(fitted.out);
+  EXPECT_EQ(out.at("weighting"), "uncertainty");
+  EXPECT_LT(out.at("chi2_reduced").get<double>(), 1e-12);  // noise-free runs, sigma 0.5 N stated
+  EXPECT_NE(out.at("warnings").dump().find("scatter-below-uncertainty"), std::string::npos) << out.at("warnings");
+  // The stated uncertainties as they are (never scaled down): the normal quantile 1.96.
+  EXPECT_NEAR(out.at("interval_factor").get<double>(), 1.959964, 1e-6);
+  for (std::size_t k = 0; k < kTrue.size(); ++k)
+    EXPECT_NEAR(out.at("coefficients")[k].at("value").get<double>(), kTrue[k], 1e-9 * std::abs(kTrue[k])) << k;
+  const auto unweighted = run_cli({"derivatives", "fit", "--body", "weighed", "--output", "Y", "--terms", kTerms,
+                                   "--no-store", "--unweighted", "--json"},
+                                  dir_.path());
+  EXPECT_EQ(nlohmann::json::parse(unweighted.out).at("weighting"), "none");
+}
+
 TEST_F(CliDerivatives, TermsChosenByCrossValidationDropATermTheRunsDoNotNeed) {
   const auto chosen = fit({"--terms", std::string(kTerms) + ", u*r", "--select", "loo", "--no-store", "--json"});
   ASSERT_EQ(chosen.exit_code, 0) << chosen.err;
