@@ -6,9 +6,9 @@
 // refused naming the reference values a form lacks), evaluated with the
 // model's value at a point, and deleted; runs that state an uncertainty are
 // fitted weighted, and --select loo drops a term the runs do not need. A term
-// the parser does not know,
-// fewer runs than terms and terms the runs cannot tell apart exit 2 with one
-// line naming them, and leave the database as it was.
+// the parser does not know, fewer runs than terms and terms the runs cannot
+// tell apart exit 2 with one line naming them, and leave the database as it
+// was.
 #include <gtest/gtest.h>
 
 #include <cmath>
