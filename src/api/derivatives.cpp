@@ -280,7 +280,8 @@ DerivativeModel fit_derivative_model(Database& database, const DerivativeModelOp
                                    finite_or_empty(fit.vif[k])});
   record.run_ids = run_ids;
   std::sort(record.run_ids.begin(), record.run_ids.end());
-  check_name(NameKind::Fit, record.name, {}, "the default name (give a shorter one with --name)");
+  if (options.store && options.name.empty())
+    check_name(NameKind::Fit, record.name, {}, "the default name (give a shorter one with --name)");
   if (options.store)
     record.id = store.save_derivative_model(
         record, options.replace ? RunDatabase::NameTaken::Replace : RunDatabase::NameTaken::Refuse);
