@@ -376,7 +376,7 @@ class RunDatabase {
   /// jobs, or PostgreSQL databases) into this one, in one transaction: their
   /// files, imports (with their provenance as recorded: paths, settings,
   /// times, versions), runs, force components with statistics, surface
-  /// integrals, mesh studies, forced-oscillation analyses, fits and surfaces
+  /// integrals, mesh studies, forced-oscillation analyses, fits, surfaces and derivative models
   /// (their run ids mapped to the runs here). What is here already adds
   /// nothing, so merging twice changes nothing. A conflict is refused as an
   /// import would refuse it (a component of a run from two files, a file

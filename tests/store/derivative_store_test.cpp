@@ -4,7 +4,8 @@
 // covariance, warnings, runs), a taken name refused or replaced, names that
 // are data (quotes, SQL) kept as they are, a model made stale when a force of
 // its runs changes, deleted by name (an unknown name refused listing the
-// stored ones, nothing deleted), and a damaged stored value refused naming
+// stored ones, nothing deleted), merged from a shard with its runs (once; a
+// model of its name that differs is a conflict), and a damaged stored value refused naming
 // the table and row.
 #include <gtest/gtest.h>
 
@@ -119,6 +120,34 @@ TEST_F(DerivativeStore, AChangedForceMakesTheModelStaleAndDeletingTakesItAway) {
   db_.delete_derivative_model("m");
   ASSERT_EQ(db_.derivative_models().size(), 1u);
   EXPECT_EQ(db_.derivative_models()[0].name, "n");
+}
+
+TEST_F(DerivativeStore, AMergeBringsAShardsModelWithItsRunsOnceAndRefusesAnotherOfItsName) {
+  const auto shard_path = test::database_location(dir_ / "shard.db");
+  {
+    RunDatabase shard(shard_path);
+    shard.import({test::one_run_batch(7, sway_run(0.3, -0.6)), test::one_run_batch(2, sway_run(0.2, -0.4))},
+                 ConflictPolicy::Error);
+    DerivativeModelRecord m = sample_model("from-shard");
+    m.run_ids.clear();
+    for (const auto& run : shard.runs()) m.run_ids.push_back(run.id);
+    shard.save_derivative_model(m);
+  }
+  db_.merge({shard_path});
+  db_.merge({shard_path});  // twice adds nothing
+  const auto models = db_.derivative_models();
+  ASSERT_EQ(models.size(), 1u);
+  EXPECT_EQ(models[0].name, "from-shard");
+  EXPECT_EQ(models[0].coefficients.size(), 2u);
+  std::vector<std::int64_t> here;  // the runs of v = 0.2 and 0.3 in this database
+  for (const auto& run : db_.runs())
+    if (run.key.nu_b[1] > 0.15) here.push_back(run.id);
+  EXPECT_EQ(models[0].run_ids, here);
+  DerivativeModelRecord other = sample_model("from-shard");
+  other.coefficients[0].value = -1.25;
+  db_.save_derivative_model(other, RunDatabase::NameTaken::Replace);
+  test::expect_input_error([&] { db_.merge({shard_path}); },
+                           {"derivative model 'from-shard' is here already with other terms or coefficients"});
 }
 
 TEST_F(DerivativeStore, ADamagedValueIsRefusedNamingTheTableAndRow) {
