@@ -24,6 +24,8 @@
 //                              or a body's fits written for another tool
 //   hydrocoef/analysis.hpp     mesh studies (grid_convergence), forced oscillation (analyse_pmm,
 //                              added_mass_matrix, ...), where to run CFD next (suggest_runs)
+//   hydrocoef/derivatives.hpp  derivative models of several variables: fit_derivative_model,
+//                              list, show (in the prime, bis or MMG form), delete, evaluate
 //   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
 //                              trajectory as columns, with the Monte Carlo
 //                              bands and the comparison with a measured
@@ -46,6 +48,7 @@
 
 #include "hydrocoef/analysis.hpp"
 #include "hydrocoef/database.hpp"
+#include "hydrocoef/derivatives.hpp"
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/exports.hpp"
 #include "hydrocoef/integrate.hpp"

@@ -44,6 +44,9 @@ from ._hydrocoef import (BodyReference, BodyReferences, RunCoefficients, body_re
                          set_body_reference)
 from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, LevelFits, MergeSummary,
                          MigrationSummary, Refits, ReportSummary, RunDetails)
+from ._hydrocoef import (DerivativeCoefficient, DerivativeDeletion, DerivativeEvaluation, DerivativeModel,
+                         DerivativeModelList, delete_derivative_model, evaluate_derivative_model,
+                         fit_derivative_model, list_derivative_models, show_derivative_model)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
@@ -58,6 +61,9 @@ __all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnal
             "delete_pmm_runs", "PmmDeletion", "added_mass_matrix", "AddedMassMatrix", "suggest_runs", "Suggestion"]
 __all__ += ["set_body_reference", "body_references", "BodyReference", "BodyReferences", "run_coefficients",
             "RunCoefficients"]
+__all__ += ["fit_derivative_model", "list_derivative_models", "show_derivative_model", "delete_derivative_model",
+            "evaluate_derivative_model", "DerivativeModel", "DerivativeCoefficient", "DerivativeModelList",
+            "DerivativeDeletion", "DerivativeEvaluation"]
 
 
 class Table(dict):

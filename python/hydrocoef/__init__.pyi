@@ -812,3 +812,79 @@ def plot_steady(vehicle: str, database: _Path | None = None, *, dof: str = "N", 
                 tau_from: float | None = None, tau_to: float | None = None, count: int = 6,
                 experiment_points: _Path | None = None, samples: int = 0, seed: int = 1,
                 percentiles: Sequence[float] = (), image: _Path | None = None, size: str | None = None) -> PlotFiles: ...
+
+# ---- derivative models of several variables (hydrocoef derivatives) ----
+
+class DerivativeCoefficient:
+    term: str
+    unit: str
+    value: float
+    std_error: float
+    interval_low: float
+    interval_high: float
+    vif: float
+    normalisation: str
+
+class DerivativeModel:
+    name: str
+    body: str
+    output: str
+    terms: str
+    template: str
+    selection: str
+    candidates: str
+    where: str
+    unit: str
+    form: str
+    coefficients: list[DerivativeCoefficient]
+    covariance: list[float]
+    condition_number: float
+    rmse: float
+    r2: float
+    n: int
+    weighting: str
+    chi2_reduced: float
+    covariance_scale: float
+    interval_factor: float
+    runs: list[int]
+    warnings: list[str]
+    id: int
+    stale: bool
+    created_at: str
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class DerivativeModelList:
+    models: list[DerivativeModel]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class DerivativeDeletion:
+    name: str
+    id: int
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+class DerivativeEvaluation:
+    name: str
+    output: str
+    unit: str
+    at: dict[str, float]
+    value: float
+    std_error: float
+    basis: list[float]
+    stale: bool
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def fit_derivative_model(database: Database, *, body: str, output: str, terms: str = "", template: str = "",
+                         select: str = "", seed: int = 1, where: str | Sequence[str] | None = None,
+                         exclude_runs: Sequence[int] | None = None, name: str = "", replace: bool = False,
+                         store: bool = True, weighted: bool = True, vif_threshold: float = 10.0) -> DerivativeModel: ...
+def list_derivative_models(database: Database, body: str = "") -> DerivativeModelList: ...
+def show_derivative_model(database: Database, name: str, *, form: str = "dimensional", length: float | None = None,
+                          speed: float | None = None, density: float | None = None, draft: float | None = None,
+                          mass: float | None = None, volume: float | None = None,
+                          gravity: float = 9.80665) -> DerivativeModel: ...
+def delete_derivative_model(database: Database, name: str) -> DerivativeDeletion: ...
+def evaluate_derivative_model(database: Database, name: str, at: Mapping[str, float]) -> DerivativeEvaluation: ...

@@ -42,4 +42,5 @@ PYBIND11_MODULE(_hydrocoef, m) {
   m.attr("PlotFiles").attr("__module__") = "hydrocoef";
   hydrocoef_python::register_analysis(m);
   hydrocoef_python::register_reference(m);
+  hydrocoef_python::register_derivatives(m);
 }

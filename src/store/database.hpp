@@ -236,6 +236,7 @@ struct SurfaceRecord {
 
 struct PmmRecord;
 struct PmmSaved;
+struct DerivativeModelRecord;  // src/store/derivative_store.hpp
 struct PmmDeleted;
 struct BodyReferenceRecord;  // src/store/body_reference.hpp
 
@@ -324,6 +325,16 @@ class RunDatabase {
   std::vector<std::int64_t> save_fits(const std::vector<FitRecord>& fits, NameTaken taken = NameTaken::Refuse);
   std::vector<FitRecord> fits(const std::optional<std::string>& body = std::nullopt);
 
+  /// Stores a derivative model (src/store/derivative_store.hpp) in one
+  /// transaction; returns its id. A model of the same name is replaced with
+  /// NameTaken::Replace, else an InputError names it (nothing stored).
+  std::int64_t save_derivative_model(const DerivativeModelRecord& model, NameTaken taken = NameTaken::Refuse);
+  /// The stored derivative models of a body (all when empty), by name.
+  std::vector<DerivativeModelRecord> derivative_models(const std::optional<std::string>& body = std::nullopt);
+  /// Deletes the derivative model of this name in one transaction;
+  /// InputError listing the stored names when there is none.
+  void delete_derivative_model(const std::string& name);
+
   /// Stores a surface, replacing one of the same name (which clears its
   /// stale flag); returns its id.
   std::int64_t save_surface(const SurfaceRecord& surface);
@@ -377,7 +388,7 @@ class RunDatabase {
   /// jobs, or PostgreSQL databases) into this one, in one transaction: their
   /// files, imports (with their provenance as recorded: paths, settings,
   /// times, versions), runs, force components with statistics, surface
-  /// integrals, mesh studies, forced-oscillation analyses, fits and surfaces
+  /// integrals, mesh studies, forced-oscillation analyses, fits, surfaces and derivative models
   /// (their run ids mapped to the runs here). What is here already adds
   /// nothing, so merging twice changes nothing. A conflict is refused as an
   /// import would refuse it (a component of a run from two files, a file

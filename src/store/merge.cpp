@@ -12,6 +12,7 @@
 #include "src/store/backend.hpp"
 #include "src/store/checked_row.hpp"
 #include "src/store/database.hpp"
+#include "src/store/derivative_store.hpp"
 #include "src/store/pmm_record.hpp"
 #include "src/store/run_rows.hpp"
 
@@ -24,6 +25,18 @@ bool same_fit(const FitRecord& a, const FitRecord& b) {
   if (std::tie(a.body, a.dof, a.variable, a.terms, a.loss, a.run_filter, a.mirror, a.weighting, a.n) !=
           std::tie(b.body, b.dof, b.variable, b.terms, b.loss, b.run_filter, b.mirror, b.weighting, b.n) ||
       a.sign != b.sign || a.coefficients.size() != b.coefficients.size() || a.covariance != b.covariance)
+    return false;
+  for (std::size_t i = 0; i < a.coefficients.size(); ++i)
+    if (a.coefficients[i].term != b.coefficients[i].term || a.coefficients[i].value != b.coefficients[i].value ||
+        a.coefficients[i].std_error != b.coefficients[i].std_error)
+      return false;
+  return true;
+}
+
+bool same_derivative_model(const DerivativeModelRecord& a, const DerivativeModelRecord& b) {
+  if (std::tie(a.body, a.output, a.terms, a.run_filter, a.weighting, a.n, a.covariance) !=
+          std::tie(b.body, b.output, b.terms, b.run_filter, b.weighting, b.n, b.covariance) ||
+      a.coefficients.size() != b.coefficients.size())
     return false;
   for (std::size_t i = 0; i < a.coefficients.size(); ++i)
     if (a.coefficients[i].term != b.coefficients[i].term || a.coefficients[i].value != b.coefficients[i].value ||
@@ -312,6 +325,23 @@ MergeOutcome RunDatabase::merge_one(RunDatabase& shard) {
       const std::int64_t id = save_surface(surface);
       keep_record("surface", id, surface.created_at, surface.stale);
       ++outcome.surfaces_added;
+    }
+  }
+  // Derivative models by name, as fits (schema/0018_derivative_models.sql).
+  {
+    std::map<std::string, DerivativeModelRecord> here;
+    for (auto& model : derivative_models()) here.emplace(model.name, std::move(model));
+    for (DerivativeModelRecord model : shard.derivative_models()) {
+      if (const auto found = here.find(model.name); found != here.end()) {
+        if (!same_derivative_model(found->second, model))
+          throw InputError(where, "derivative model '" + printable_text(model.name, 160) +
+                                      "' is here already with other terms or coefficients; expected the same model, "
+                                      "or one of them renamed or deleted first");
+        continue;
+      }
+      model.run_ids = mapped_runs(model.run_ids);
+      const std::int64_t id = save_derivative_model(model, NameTaken::Refuse);
+      keep_record("derivative_model", id, model.created_at, model.stale);
     }
   }
 

@@ -1,8 +1,9 @@
 // Test support: every write path of the store (import, import --replace,
-// runs delete, fit, surface, gci and pmm store, body reference data, merge of
-// a shard, copy into an empty database) run against a database with content
-// while a fault injector makes the N-th I/O call or allocation fail, for N =
-// 1, 2, 3, ... until the operation runs through without meeting the fault: SQLite's own
+// runs delete, fit, surface, gci, pmm and derivative-model store and delete,
+// body reference data, merge of a shard, copy into an empty database) run
+// against a database with content while a fault injector makes the N-th I/O
+// call or allocation fail, for N = 1, 2, 3, ... until the operation runs
+// through without meeting the fault: SQLite's own
 // habit (its ioerr and malloc tests). After each failure the database must
 // pass PRAGMA integrity_check and hold exactly what it held before; after a
 // reported success, exactly what the operation writes without a fault. A
@@ -28,6 +29,7 @@
 #include "src/pipeline/grid_convergence_runs.hpp"
 #include "src/store/body_reference.hpp"
 #include "src/store/database.hpp"
+#include "src/store/derivative_store.hpp"
 #include "src/store/pmm_record.hpp"
 #include "tests/support/import_batch.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -84,6 +86,23 @@ inline FitRecord sphere_fit(RunDatabase& db, const std::string& name) {
   for (const auto& run : db.runs(RunFilter{std::string("sphere"), {}, std::nullopt})) fit.run_ids.push_back(run.id);
   fit.n = fit.run_ids.size();
   return fit;
+}
+
+inline DerivativeModelRecord sphere_derivatives(RunDatabase& db, double rmse) {
+  DerivativeModelRecord m;
+  m.name = "sphere:X(u, u*|u|)";
+  m.body = "sphere";
+  m.output = "X";
+  m.terms = "u, u*|u|";
+  m.rmse = rmse;
+  m.condition_number = 3.0;
+  m.interval_factor = 2.1;
+  m.covariance = {0.01, 0.0, 0.0, 0.02};
+  m.warnings = {{"unweighted", "only some runs state an uncertainty"}};
+  m.coefficients = {{"u", -0.5, 0.1, -0.7, -0.3, 1.5}, {"u*|u|", -3.0, std::nullopt, std::nullopt, std::nullopt, 1.5}};
+  for (const auto& run : db.runs(RunFilter{std::string("sphere"), {}, std::nullopt})) m.run_ids.push_back(run.id);
+  m.n = m.run_ids.size();
+  return m;
 }
 
 inline SurfaceRecord sphere_surface(RunDatabase& db, double scale) {
@@ -148,6 +167,7 @@ inline void fill(const std::filesystem::path& path) {
   db.save_fit(sphere_fit(db, "sphere:X"));
   db.save_surface(sphere_surface(db, 1.0));
   db.save_pmm({pmm_record(0.2, 0.5)});
+  db.save_derivative_model(sphere_derivatives(db, 0.5));
 }
 
 /// A shard as a cluster job makes it: runs new to the database, one run
@@ -220,6 +240,12 @@ inline std::vector<WritePath> store_write_paths() {
          reference.moment_point_b = std::array<double, 3>{0.0, 0.0, 0.01};
          db.save_body_reference(reference);
        }},
+      {"derivatives_save",
+       [](RunDatabase& db, const std::filesystem::path&) {
+         db.save_derivative_model(sphere_derivatives(db, 0.25), RunDatabase::NameTaken::Replace);
+       }},
+      {"derivatives_delete",
+       [](RunDatabase& db, const std::filesystem::path&) { db.delete_derivative_model("sphere:X(u, u*|u|)"); }},
       {"merge", [](RunDatabase& db, const std::filesystem::path& dir) { db.merge({(dir / "shard.db").string()}); },
        false, "shard.db"},
       {"copy",
