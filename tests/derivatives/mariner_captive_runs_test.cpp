@@ -146,19 +146,17 @@ TEST_P(MarinerCaptiveRuns, DimensionalRunsGiveTheNormalisedDerivativesInSi) {
     si["du"] *= kSpeed;
     si["v"] *= kSpeed;
     si["r"] *= kSpeed / kLength;
-    const double value =
-        to_dimensional(model(terms, prime, point), output, NormalisationSystem::Prime, reference);
+    const double value = to_dimensional(model(terms, prime, point), output, NormalisationSystem::Prime, reference);
     runs.push_back({"", si, value});
   }
   const DerivativeFit fit = fit_derivatives(sway ? "Y" : "N", terms, runs);
   for (std::size_t k = 0; k < terms.size(); ++k) {
-    const double expected =
-        to_dimensional(prime[k], kind_of(terms[k], output), NormalisationSystem::Prime, reference);
+    const double expected = to_dimensional(prime[k], kind_of(terms[k], output), NormalisationSystem::Prime, reference);
     EXPECT_NEAR(fit.coefficients[k], expected, 1e-9 * std::abs(expected)) << terms[k].text();
     // And back: the fitted SI derivative in prime form is the printed number.
-    EXPECT_NEAR(to_nondimensional(fit.coefficients[k], kind_of(terms[k], output), NormalisationSystem::Prime,
-                                  reference),
-                prime[k], 1e-9 * std::abs(prime[k]))
+    EXPECT_NEAR(
+        to_nondimensional(fit.coefficients[k], kind_of(terms[k], output), NormalisationSystem::Prime, reference),
+        prime[k], 1e-9 * std::abs(prime[k]))
         << terms[k].text();
   }
 }
