@@ -14,22 +14,12 @@
 
 #include "src/core/error.hpp"
 
+#include "tests/support/expect_input_error.hpp"
+
 namespace hydrocoef {
 namespace {
 
-// The message of the InputError `action` throws; fails the test if it throws nothing or something else.
-std::string input_error_message(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  } catch (const std::exception& error) {
-    ADD_FAILURE() << "threw a non-InputError: " << error.what();
-    return {};
-  }
-  ADD_FAILURE() << "did not throw";
-  return {};
-}
+using test::input_error_message;
 
 double relative_error(double value, double expected) { return std::abs(value - expected) / std::abs(expected); }
 
