@@ -19,21 +19,10 @@ namespace {
 
 using namespace pybind11::literals;
 
-/// tp_new of the result classes here: refused, as for the module's other
-/// result classes (python/src/common.cpp): only the functions below make them.
-PyObject* refuse_new(PyTypeObject* type, PyObject*, PyObject*) {
-  const char* dot = std::strrchr(type->tp_name, '.');
-  PyErr_SetString(PyExc_TypeError, ("hydrocoef." + std::string(dot ? dot + 1 : type->tp_name) +
-                                    " objects come from hydrocoef's analysis functions (grid_convergence, "
-                                    "analyse_pmm, pmm_runs, delete_pmm_runs, added_mass_matrix, suggest_runs); "
-                                    "they cannot be made directly")
-                                       .c_str());
-  return nullptr;
-}
-
-py::custom_type_setup analysis_result() {
-  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new; });
-}
+/// The calls that make the result classes here.
+constexpr const char* kMadeBy =
+    "hydrocoef's analysis functions (grid_convergence, analyse_pmm, pmm_runs, delete_pmm_runs, added_mass_matrix, "
+    "suggest_runs)";
 
 /// A 6x6 matrix as a numpy array.
 py::array_t<double> matrix_array(const hydrocoef::Matrix6x6& m) {
@@ -53,7 +42,7 @@ void add_documents(py::class_<Result>& type) {
 std::string optional_text(const py::object& value) { return value.is_none() ? "" : value.cast<std::string>(); }
 
 void bind_gci(py::module_& m) {
-  py::class_<hydrocoef::GciComponent>(m, "GciComponent", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::GciComponent>(m, "GciComponent", py::is_final(), made_by_the_module_only(kMadeBy),
                                       "One force component of one key's mesh study.")
       .def_readonly("component", &hydrocoef::GciComponent::component)
       .def_readonly("phi", &hydrocoef::GciComponent::phi, "Values fine to coarse [N or N m].")
@@ -71,7 +60,8 @@ void bind_gci(py::module_& m) {
       .def_readonly("values_convergence", &hydrocoef::GciComponent::values_convergence)
       .def_readonly("values_error", &hydrocoef::GciComponent::values_error)
       .def_readonly("note", &hydrocoef::GciComponent::note);
-  py::class_<hydrocoef::GciKey>(m, "GciKey", py::is_final(), analysis_result(), "One physical key's mesh study.")
+  py::class_<hydrocoef::GciKey>(m, "GciKey", py::is_final(), made_by_the_module_only(kMadeBy),
+                                "One physical key's mesh study.")
       .def_readonly("body", &hydrocoef::GciKey::body)
       .def_readonly("velocity", &hydrocoef::GciKey::velocity, "u, v, w [m/s], p, q, r [rad/s].")
       .def_readonly("disturbances", &hydrocoef::GciKey::disturbances)
@@ -82,7 +72,7 @@ void bind_gci(py::module_& m) {
       .def_readonly("cell_size_from", &hydrocoef::GciKey::cell_size_from)
       .def_readonly("components", &hydrocoef::GciKey::components)
       .def_readonly("notes", &hydrocoef::GciKey::notes);
-  py::class_<hydrocoef::GciStudy> study(m, "GciStudy", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::GciStudy> study(m, "GciStudy", py::is_final(), made_by_the_module_only(kMadeBy),
                                         "A body's mesh studies (Celik et al. 2008), as `hydrocoef gci`.");
   study.def_readonly("body", &hydrocoef::GciStudy::body)
       .def_readonly("mesh_parameter", &hydrocoef::GciStudy::mesh_parameter)
@@ -120,7 +110,7 @@ dimension: h = (V/N)^(1/D)) or cell_size (h in m). Returns a GciStudy.)doc");
 }
 
 void bind_pmm(py::module_& m) {
-  py::class_<hydrocoef::PmmComponent>(m, "PmmComponent", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::PmmComponent>(m, "PmmComponent", py::is_final(), made_by_the_module_only(kMadeBy),
                                       "One force component of a forced-oscillation run: entry [component][dof].")
       .def_readonly("component", &hydrocoef::PmmComponent::component)
       .def_readonly("mean", &hydrocoef::PmmComponent::mean)
@@ -135,7 +125,7 @@ void bind_pmm(py::module_& m) {
       .def_readonly("added_mass_coefficient", &hydrocoef::PmmComponent::added_mass_coefficient)
       .def_readonly("in_phase_spread", &hydrocoef::PmmComponent::in_phase_spread)
       .def_readonly("quadrature_spread", &hydrocoef::PmmComponent::quadrature_spread);
-  py::class_<hydrocoef::PmmRunResult>(m, "PmmRun", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::PmmRunResult>(m, "PmmRun", py::is_final(), made_by_the_module_only(kMadeBy),
                                       "One forced-oscillation run analysed.")
       .def_readonly("path", &hydrocoef::PmmRunResult::path)
       .def_readonly("format", &hydrocoef::PmmRunResult::format)
@@ -164,7 +154,7 @@ void bind_pmm(py::module_& m) {
       .def_readonly("components", &hydrocoef::PmmRunResult::components)
       .def_readonly("stored_id", &hydrocoef::PmmRunResult::stored_id)
       .def_readonly("replaced", &hydrocoef::PmmRunResult::replaced);
-  py::class_<hydrocoef::PmmAnalysis> analysis(m, "PmmAnalysis", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::PmmAnalysis> analysis(m, "PmmAnalysis", py::is_final(), made_by_the_module_only(kMadeBy),
                                               "Forced-oscillation runs analysed, as `hydrocoef pmm`.");
   analysis.def_readonly("runs", &hydrocoef::PmmAnalysis::runs)
       .def_readonly("stored", &hydrocoef::PmmAnalysis::stored)
@@ -233,7 +223,7 @@ store_pmm(db, analysis) stores it.)doc");
       "database"_a, "analysis"_a,
       "Stores an analysis's runs in one transaction (as `hydrocoef pmm` does) and notes their ids in it.");
 
-  py::class_<hydrocoef::PmmRunSummary>(m, "PmmRunSummary", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::PmmRunSummary>(m, "PmmRunSummary", py::is_final(), made_by_the_module_only(kMadeBy),
                                        "A stored forced-oscillation run, as `hydrocoef pmm-runs` lists it.")
       .def_readonly("id", &hydrocoef::PmmRunSummary::id)
       .def_readonly("body", &hydrocoef::PmmRunSummary::body)
@@ -250,7 +240,7 @@ store_pmm(db, analysis) stores it.)doc");
       .def_readonly("damping_unit", &hydrocoef::PmmRunSummary::damping_unit)
       .def_readonly("source_path", &hydrocoef::PmmRunSummary::source_path)
       .def_readonly("created_at", &hydrocoef::PmmRunSummary::created_at);
-  py::class_<hydrocoef::PmmRunList> list(m, "PmmRunList", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::PmmRunList> list(m, "PmmRunList", py::is_final(), made_by_the_module_only(kMadeBy),
                                          "The stored forced-oscillation runs.");
   list.def_readonly("runs", &hydrocoef::PmmRunList::runs);
   add_documents(list);
@@ -265,12 +255,12 @@ store_pmm(db, analysis) stores it.)doc");
       "database"_a, "body"_a = py::none(),
       "The stored forced-oscillation runs (of one body), as `hydrocoef pmm-runs`.");
 
-  py::class_<hydrocoef::PmmDeletedRun>(m, "PmmDeletedRun", py::is_final(), analysis_result())
+  py::class_<hydrocoef::PmmDeletedRun>(m, "PmmDeletedRun", py::is_final(), made_by_the_module_only(kMadeBy))
       .def_readonly("id", &hydrocoef::PmmDeletedRun::id)
       .def_readonly("body", &hydrocoef::PmmDeletedRun::body)
       .def_readonly("dof", &hydrocoef::PmmDeletedRun::dof)
       .def_readonly("source_path", &hydrocoef::PmmDeletedRun::source_path);
-  py::class_<hydrocoef::PmmDeletion> deletion(m, "PmmDeletion", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::PmmDeletion> deletion(m, "PmmDeletion", py::is_final(), made_by_the_module_only(kMadeBy),
                                               "What `hydrocoef pmm-runs delete` removed.");
   deletion.def_readonly("database", &hydrocoef::PmmDeletion::database)
       .def_readonly("deleted", &hydrocoef::PmmDeletion::deleted);
@@ -288,7 +278,7 @@ store_pmm(db, analysis) stores it.)doc");
 }
 
 void bind_added_mass(py::module_& m) {
-  py::class_<hydrocoef::AddedMassEntry>(m, "AddedMassEntry", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::AddedMassEntry>(m, "AddedMassEntry", py::is_final(), made_by_the_module_only(kMadeBy),
                                         "One measured entry of the added-mass matrix, before symmetry.")
       .def_readonly("row", &hydrocoef::AddedMassEntry::row)
       .def_readonly("column", &hydrocoef::AddedMassEntry::column)
@@ -305,7 +295,7 @@ void bind_added_mass(py::module_& m) {
       .def_readonly("kc_min", &hydrocoef::AddedMassEntry::kc_min)
       .def_readonly("kc_max", &hydrocoef::AddedMassEntry::kc_max)
       .def_readonly("pmm_runs", &hydrocoef::AddedMassEntry::pmm_runs);
-  py::class_<hydrocoef::AddedMassFrequency>(m, "AddedMassFrequency", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::AddedMassFrequency>(m, "AddedMassFrequency", py::is_final(), made_by_the_module_only(kMadeBy),
                                             "The in-line added mass and damping of one DOF at one frequency.")
       .def_readonly("dof", &hydrocoef::AddedMassFrequency::dof)
       .def_readonly("omega", &hydrocoef::AddedMassFrequency::omega)
@@ -318,7 +308,7 @@ void bind_added_mass(py::module_& m) {
       .def_readonly("damping", &hydrocoef::AddedMassFrequency::damping)
       .def_readonly("damping_se", &hydrocoef::AddedMassFrequency::damping_se)
       .def_readonly("used", &hydrocoef::AddedMassFrequency::used);
-  py::class_<hydrocoef::QuadraticDampingFit>(m, "QuadraticDampingFit", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::QuadraticDampingFit>(m, "QuadraticDampingFit", py::is_final(), made_by_the_module_only(kMadeBy),
                                              "D_eq(A) = linear + quadratic (8/(3 pi)) A omega.")
       .def_readonly("dof", &hydrocoef::QuadraticDampingFit::dof)
       .def_readonly("omega", &hydrocoef::QuadraticDampingFit::omega)
@@ -328,7 +318,7 @@ void bind_added_mass(py::module_& m) {
       .def_readonly("quadratic", &hydrocoef::QuadraticDampingFit::quadratic)
       .def_readonly("quadratic_se", &hydrocoef::QuadraticDampingFit::quadratic_se);
   py::class_<hydrocoef::AddedMassMatrix> matrix(
-      m, "AddedMassMatrix", py::is_final(), analysis_result(),
+      m, "AddedMassMatrix", py::is_final(), made_by_the_module_only(kMadeBy),
       "A body's 6x6 added-mass and damping matrices (rows and columns surge..yaw), as `hydrocoef added-mass`.");
   matrix.def_readonly("body", &hydrocoef::AddedMassMatrix::body)
       .def_readonly("omega", &hydrocoef::AddedMassMatrix::omega)
@@ -376,11 +366,11 @@ Returns an AddedMassMatrix.)doc");
 }
 
 void bind_suggest(py::module_& m) {
-  py::class_<hydrocoef::SuggestedKey>(m, "SuggestedKey", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::SuggestedKey>(m, "SuggestedKey", py::is_final(), made_by_the_module_only(kMadeBy),
                                       "A proposed run key and the standard deviation there before it was chosen.")
       .def_readonly("key", &hydrocoef::SuggestedKey::key)
       .def_readonly("sd_before", &hydrocoef::SuggestedKey::sd_before);
-  py::class_<hydrocoef::Suggestion> suggestion(m, "Suggestion", py::is_final(), analysis_result(),
+  py::class_<hydrocoef::Suggestion> suggestion(m, "Suggestion", py::is_final(), made_by_the_module_only(kMadeBy),
                                                "The next runs of a GP surface, as `hydrocoef suggest`.");
   suggestion.def_readonly("surface", &hydrocoef::Suggestion::surface)
       .def_readonly("output", &hydrocoef::Suggestion::output)

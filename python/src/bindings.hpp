@@ -51,9 +51,10 @@ void register_derivatives(py::module_& m);
 hydrocoef::Database& database_of(py::handle self);
 
 /// The attributes of a class whose objects only the module makes: its
-/// __new__ refuses, and it cannot be subclassed (a subclass's __new__ could
-/// reach pybind11's).
-py::custom_type_setup made_by_the_module_only();
+/// __new__ refuses with "hydrocoef.NAME objects come from MADE_BY; they
+/// cannot be made directly" (made_by: the calls that make them), and it
+/// cannot be subclassed (a subclass's __new__ could reach pybind11's).
+py::custom_type_setup made_by_the_module_only(std::string made_by);
 
 /// A list of run ids (None: empty).
 std::vector<std::int64_t> run_ids(const py::object& value, const char* what);

@@ -2,14 +2,24 @@
 // (python/src/bindings.hpp): classes whose objects only the module makes, and
 // the arguments given as a list of run ids or of names.
 #include <cstring>
+#include <map>
+#include <string>
+#include <utility>
 
 #include "python/src/bindings.hpp"
 
 namespace hydrocoef_python {
 namespace {
 
+/// The call that makes each class's objects, by type (set as the class is
+/// made, read by refuse_new; both run holding the GIL).
+std::map<const PyTypeObject*, std::string>& made_by_of_type() {
+  static std::map<const PyTypeObject*, std::string> made_by;
+  return made_by;
+}
+
 /// tp_new of the classes whose objects only the module makes (Surface, Fit,
-/// SurfaceInfo, ImportedFile, ImportSummary): refuses. It is the type's own
+/// ImportSummary and every result class): refuses. It is the type's own
 /// slot (py::custom_type_setup), not a Python __new__ attribute, so that
 /// every way to one (Surface(), Surface.__new__(Surface), object.__new__ or
 /// Surface.__mro__[1].__new__(Surface), whose "is not safe" check compares
@@ -18,10 +28,8 @@ namespace {
 PyObject* refuse_new(PyTypeObject* type, PyObject*, PyObject*) {
   const char* dot = std::strrchr(type->tp_name, '.');
   const std::string name = dot ? dot + 1 : type->tp_name;
-  const std::string from = name == "Surface"       ? "Database.surface(name)"
-                           : name == "Fit"         ? "Database.fit(...) and Database.fits()"
-                           : name == "SurfaceInfo" ? "Database.surfaces() and Database.build_surface(...)"
-                                                   : "Database.import_files(...)";
+  const auto found = made_by_of_type().find(type);
+  const std::string from = found != made_by_of_type().end() ? found->second : "the module's functions";
   PyErr_SetString(PyExc_TypeError,
                   ("hydrocoef." + name + " objects come from " + from + "; they cannot be made directly").c_str());
   return nullptr;
@@ -29,8 +37,11 @@ PyObject* refuse_new(PyTypeObject* type, PyObject*, PyObject*) {
 
 }  // namespace
 
-py::custom_type_setup made_by_the_module_only() {
-  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new; });
+py::custom_type_setup made_by_the_module_only(std::string made_by) {
+  return py::custom_type_setup([made_by = std::move(made_by)](PyHeapTypeObject* heap_type) {
+    made_by_of_type()[&heap_type->ht_type] = made_by;
+    heap_type->ht_type.tp_new = refuse_new;
+  });
 }
 
 std::vector<std::int64_t> run_ids(const py::object& value, const char* what) {

@@ -119,7 +119,8 @@ std::map<std::string, std::string> settings_texts(const py::object& settings) {
 
 /// integrate_surface and its result (include/hydrocoef/integrate.hpp).
 void bind_integration(py::module_& m) {
-  py::class_<hydrocoef::SurfaceIntegration>(m, "SurfaceIntegration", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::SurfaceIntegration>(m, "SurfaceIntegration", py::is_final(),
+                                            made_by_the_module_only("hydrocoef.integrate_surface(...)"),
                                             "One surface export's forces and moments (integrate_surface).")
       .def_readonly("file", &hydrocoef::SurfaceIntegration::file)
       .def_readonly("format", &hydrocoef::SurfaceIntegration::format)
@@ -161,7 +162,7 @@ what the CLI prints. Raises InputError as the CLI would.)doc");
 
 /// The result classes of the records' operations: fields as attributes, text() and json().
 void bind_records(py::module_& m) {
-  py::class_<hydrocoef::RunDetails>(m, "RunDetails", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::RunDetails>(m, "RunDetails", py::is_final(), made_by_the_module_only("Database.show_run(id)"),
                                     "One run with its provenance (Database.show_run).")
       .def_readonly("id", &hydrocoef::RunDetails::id)
       .def_readonly("body", &hydrocoef::RunDetails::body)
@@ -187,7 +188,8 @@ void bind_records(py::module_& m) {
       .def("text", &hydrocoef::RunDetails::text)
       .def("json", &hydrocoef::RunDetails::json);
 
-  py::class_<hydrocoef::DeleteSummary>(m, "DeleteSummary", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::DeleteSummary>(m, "DeleteSummary", py::is_final(),
+                                       made_by_the_module_only("Database.delete_runs(...)"),
                                        "What Database.delete_runs did.")
       .def_readonly("runs", &hydrocoef::DeleteSummary::runs)
       .def_readonly("components", &hydrocoef::DeleteSummary::components)
@@ -197,7 +199,7 @@ void bind_records(py::module_& m) {
       .def("text", &hydrocoef::DeleteSummary::text)
       .def("json", &hydrocoef::DeleteSummary::json);
 
-  py::class_<hydrocoef::MergeSummary>(m, "MergeSummary", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::MergeSummary>(m, "MergeSummary", py::is_final(), made_by_the_module_only("Database.merge(...)"),
                                       "What Database.merge did.")
       .def_readonly("into", &hydrocoef::MergeSummary::into)
       .def_property_readonly(
@@ -217,7 +219,7 @@ void bind_records(py::module_& m) {
       .def("text", &hydrocoef::MergeSummary::text)
       .def("json", &hydrocoef::MergeSummary::json);
 
-  py::class_<hydrocoef::CopySummary>(m, "CopySummary", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::CopySummary>(m, "CopySummary", py::is_final(), made_by_the_module_only("Database.copy_to(...)"),
                                      "What Database.copy_to did.")
       .def_readonly("source", &hydrocoef::CopySummary::from)
       .def_readonly("target", &hydrocoef::CopySummary::to)
@@ -230,7 +232,8 @@ void bind_records(py::module_& m) {
       .def("text", &hydrocoef::CopySummary::text)
       .def("json", &hydrocoef::CopySummary::json);
 
-  py::class_<hydrocoef::MigrationSummary>(m, "MigrationSummary", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::MigrationSummary>(m, "MigrationSummary", py::is_final(),
+                                          made_by_the_module_only("Database.migration()"),
                                           "The schema versions of a database (Database.migration).")
       .def_readonly("database", &hydrocoef::MigrationSummary::database)
       .def_readonly("from_version", &hydrocoef::MigrationSummary::from)
@@ -238,8 +241,8 @@ void bind_records(py::module_& m) {
       .def("text", &hydrocoef::MigrationSummary::text)
       .def("json", &hydrocoef::MigrationSummary::json);
 
-  py::class_<hydrocoef::ReportSummary>(m, "ReportSummary", py::is_final(), made_by_the_module_only(),
-                                       "What Database.report wrote.")
+  py::class_<hydrocoef::ReportSummary>(m, "ReportSummary", py::is_final(),
+                                       made_by_the_module_only("Database.report(...)"), "What Database.report wrote.")
       .def_readonly("index", &hydrocoef::ReportSummary::index)
       .def_readonly("plots", &hydrocoef::ReportSummary::plots)
       .def_readonly("notes", &hydrocoef::ReportSummary::notes)
@@ -284,7 +287,8 @@ after that raises InputError "PATH: database is closed".)doc");
 }
 
 void bind_database(py::module_& m, py::class_<Database>& database) {
-  py::class_<hydrocoef::ImportedFile>(m, "ImportedFile", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::ImportedFile>(m, "ImportedFile", py::is_final(),
+                                      made_by_the_module_only("Database.import_files(...)"),
                                       "What an import did with one input.")
       .def_readonly("path", &hydrocoef::ImportedFile::path)
       .def_readonly("format", &hydrocoef::ImportedFile::format)
@@ -300,7 +304,8 @@ void bind_database(py::module_& m, py::class_<Database>& database) {
                (f.already_imported ? ", already imported" : "") + ")>";
       });
 
-  py::class_<hydrocoef::ImportSummary>(m, "ImportSummary", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::ImportSummary>(m, "ImportSummary", py::is_final(),
+                                       made_by_the_module_only("Database.import_files(...)"),
                                        "What Database.import_files did.")
       .def_readonly("files", &hydrocoef::ImportSummary::files, "One ImportedFile per input (folders expanded).")
       .def_readonly("notes", &hydrocoef::ImportSummary::notes)

@@ -24,6 +24,11 @@ void add_documents(py::class_<Result>& type) {
       .def("json", &Result::json, "What the hydrocoef CLI prints with --json (a JSON text).");
 }
 
+/// The calls that make the result classes here.
+constexpr const char* kMadeBy =
+    "hydrocoef's derivative-model functions (fit_derivative_model, list_derivative_models, show_derivative_model, "
+    "delete_derivative_model, evaluate_derivative_model)";
+
 double or_nan(const py::object& value) {
   return value.is_none() ? std::numeric_limits<double>::quiet_NaN() : value.cast<double>();
 }
@@ -33,7 +38,7 @@ double or_nan(const py::object& value) {
 void register_derivatives(py::module_& m) {
   using hydrocoef::DerivativeCoefficient;
   using hydrocoef::DerivativeModel;
-  py::class_<DerivativeCoefficient>(m, "DerivativeCoefficient", py::is_final(), made_by_the_module_only(),
+  py::class_<DerivativeCoefficient>(m, "DerivativeCoefficient", py::is_final(), made_by_the_module_only(kMadeBy),
                                     "One coefficient of a derivative model (the derivative by its term).")
       .def_readonly("term", &DerivativeCoefficient::term)
       .def_readonly("unit", &DerivativeCoefficient::unit)
@@ -43,7 +48,7 @@ void register_derivatives(py::module_& m) {
       .def_readonly("interval_high", &DerivativeCoefficient::interval_high)
       .def_readonly("vif", &DerivativeCoefficient::vif)
       .def_readonly("normalisation", &DerivativeCoefficient::normalisation);
-  py::class_<DerivativeModel> model(m, "DerivativeModel", py::is_final(), made_by_the_module_only(),
+  py::class_<DerivativeModel> model(m, "DerivativeModel", py::is_final(), made_by_the_module_only(kMadeBy),
                                     "A derivative model of several variables, fitted or stored.");
   model.def_readonly("name", &DerivativeModel::name)
       .def_readonly("body", &DerivativeModel::body)
@@ -71,16 +76,17 @@ void register_derivatives(py::module_& m) {
       .def_readonly("stale", &DerivativeModel::stale)
       .def_readonly("created_at", &DerivativeModel::created_at);
   add_documents(model);
-  py::class_<hydrocoef::DerivativeModelList> list(m, "DerivativeModelList", py::is_final(), made_by_the_module_only());
+  py::class_<hydrocoef::DerivativeModelList> list(m, "DerivativeModelList", py::is_final(),
+                                                  made_by_the_module_only(kMadeBy));
   list.def_readonly("models", &hydrocoef::DerivativeModelList::models);
   add_documents(list);
   py::class_<hydrocoef::DerivativeDeletion> deletion(m, "DerivativeDeletion", py::is_final(),
-                                                     made_by_the_module_only());
+                                                     made_by_the_module_only(kMadeBy));
   deletion.def_readonly("name", &hydrocoef::DerivativeDeletion::name)
       .def_readonly("id", &hydrocoef::DerivativeDeletion::id);
   add_documents(deletion);
   py::class_<hydrocoef::DerivativeEvaluation> evaluation(m, "DerivativeEvaluation", py::is_final(),
-                                                         made_by_the_module_only());
+                                                         made_by_the_module_only(kMadeBy));
   evaluation.def_readonly("name", &hydrocoef::DerivativeEvaluation::name)
       .def_readonly("output", &hydrocoef::DerivativeEvaluation::output)
       .def_readonly("unit", &hydrocoef::DerivativeEvaluation::unit)

@@ -18,21 +18,8 @@ namespace {
 using namespace pybind11::literals;
 using hydrocoef::Database;
 
-/// tp_new of the result classes: refuses (as made_by_the_module_only).
-PyObject* refuse_new_export(PyTypeObject* type, PyObject*, PyObject*) {
-  const char* dot = std::strrchr(type->tp_name, '.');
-  const std::string name = dot ? dot + 1 : type->tp_name;
-  PyErr_SetString(PyExc_TypeError,
-                  ("hydrocoef." + name +
-                   " objects come from Database.export_surface(...) and Database.export_gazebo(...); they cannot be "
-                   "made directly")
-                      .c_str());
-  return nullptr;
-}
-
-py::custom_type_setup made_by_an_export() {
-  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new_export; });
-}
+/// The calls that make the result classes here.
+constexpr const char* kMadeBy = "Database.export_surface(...) and Database.export_gazebo(...)";
 
 std::optional<std::string> optional_text(const py::object& value) {
   if (value.is_none()) return std::nullopt;
@@ -47,14 +34,14 @@ std::optional<double> optional_number(const py::object& value) {
 }  // namespace
 
 void bind_exports(py::module_& m, py::class_<Database>& database) {
-  py::class_<hydrocoef::TableExportAxis>(m, "TableExportAxis", py::is_final(), made_by_an_export())
+  py::class_<hydrocoef::TableExportAxis>(m, "TableExportAxis", py::is_final(), made_by_the_module_only(kMadeBy))
       .def_readonly("name", &hydrocoef::TableExportAxis::name)
       .def_readonly("unit", &hydrocoef::TableExportAxis::unit)
       .def_readonly("breakpoints", &hydrocoef::TableExportAxis::breakpoints, "How many.")
       .def_readonly("lower", &hydrocoef::TableExportAxis::lower)
       .def_readonly("upper", &hydrocoef::TableExportAxis::upper)
       .def_readonly("extrapolation", &hydrocoef::TableExportAxis::extrapolation);
-  py::class_<hydrocoef::TableExportResult>(m, "TableExportResult", py::is_final(), made_by_an_export(),
+  py::class_<hydrocoef::TableExportResult>(m, "TableExportResult", py::is_final(), made_by_the_module_only(kMadeBy),
                                            "What `hydrocoef export` wrote.")
       .def_readonly("surface", &hydrocoef::TableExportResult::surface)
       .def_readonly("body", &hydrocoef::TableExportResult::body)
@@ -71,7 +58,7 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("notes", &hydrocoef::TableExportResult::notes)
       .def("text", &hydrocoef::TableExportResult::text)
       .def("json", &hydrocoef::TableExportResult::json);
-  py::class_<hydrocoef::GazeboFitExport>(m, "GazeboFitExport", py::is_final(), made_by_an_export())
+  py::class_<hydrocoef::GazeboFitExport>(m, "GazeboFitExport", py::is_final(), made_by_the_module_only(kMadeBy))
       .def_readonly("dof", &hydrocoef::GazeboFitExport::dof)
       .def_readonly("variable", &hydrocoef::GazeboFitExport::variable)
       .def_readonly("name", &hydrocoef::GazeboFitExport::name)
@@ -84,11 +71,11 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("quadratic_unit", &hydrocoef::GazeboFitExport::quadratic_unit)
       .def_readonly("runs", &hydrocoef::GazeboFitExport::runs)
       .def_readonly("dropped_constant", &hydrocoef::GazeboFitExport::dropped_constant);
-  py::class_<hydrocoef::GazeboElementExport>(m, "GazeboElementExport", py::is_final(), made_by_an_export())
+  py::class_<hydrocoef::GazeboElementExport>(m, "GazeboElementExport", py::is_final(), made_by_the_module_only(kMadeBy))
       .def_readonly("name", &hydrocoef::GazeboElementExport::name)
       .def_readonly("values", &hydrocoef::GazeboElementExport::values)
       .def_readonly("unit", &hydrocoef::GazeboElementExport::unit);
-  py::class_<hydrocoef::GazeboExportResult>(m, "GazeboExportResult", py::is_final(), made_by_an_export(),
+  py::class_<hydrocoef::GazeboExportResult>(m, "GazeboExportResult", py::is_final(), made_by_the_module_only(kMadeBy),
                                             "What `hydrocoef export-gazebo` wrote; matrices 6x6 row-major (36).")
       .def_readonly("body", &hydrocoef::GazeboExportResult::body)
       .def_readonly("flavor", &hydrocoef::GazeboExportResult::flavor)

@@ -81,7 +81,8 @@ hydrocoef::FitOptions fit_options(const std::string& body, const std::string& ou
 }  // namespace
 
 void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
-  py::class_<hydrocoef::FitSummary>(m, "Fit", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::FitSummary>(m, "Fit", py::is_final(),
+                                    made_by_the_module_only("Database.fit(...) and Database.fits()"),
                                     "A fitted damping law F_output(x) = sum_k c_k term_k(x).")
       .def_readonly("name", &hydrocoef::FitSummary::name)
       .def_readonly("body", &hydrocoef::FitSummary::body)
@@ -127,7 +128,8 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
       .def("json", &hydrocoef::FitSummary::json, "What `hydrocoef fit --json` (or `fits --json`) prints.")
       .def("__repr__", &repr_fit);
 
-  py::class_<hydrocoef::LevelFitSummary>(m, "LevelFit", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::LevelFitSummary>(m, "LevelFit", py::is_final(),
+                                         made_by_the_module_only("Database.fit_by_level(...)"),
                                          "The law fitted at one level of a per-level fit.")
       .def_readonly("level", &hydrocoef::LevelFitSummary::level)
       .def_readonly("name", &hydrocoef::LevelFitSummary::name)
@@ -148,7 +150,8 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
                              })
       .def_readonly("id", &hydrocoef::LevelFitSummary::id);
 
-  py::class_<hydrocoef::LevelFits>(m, "LevelFits", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::LevelFits>(m, "LevelFits", py::is_final(),
+                                   made_by_the_module_only("Database.fit_by_level(...)"),
                                    "What `hydrocoef fit --by` makes: the law at each level, each coefficient as a "
                                    "curve of the level.")
       .def_readonly("name", &hydrocoef::LevelFits::name)
@@ -178,14 +181,15 @@ void bind_fits(py::module_& m, py::class_<hydrocoef::Database>& database) {
       .def("text", &hydrocoef::LevelFits::text)
       .def("json", &hydrocoef::LevelFits::json);
 
-  py::class_<hydrocoef::Refits>(m, "Refits", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::Refits>(m, "Refits", py::is_final(), made_by_the_module_only("Database.refit(...)"),
                                 "Stored fits made again: each as it was (previous) and as made (made).")
       .def_readonly("previous", &hydrocoef::Refits::previous)
       .def_readonly("made", &hydrocoef::Refits::made)
       .def("text", &hydrocoef::Refits::text)
       .def("json", &hydrocoef::Refits::json);
 
-  py::class_<hydrocoef::FitEvaluation>(m, "FitEvaluation", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::FitEvaluation>(m, "FitEvaluation", py::is_final(),
+                                       made_by_the_module_only("Database.evaluate_fit(...)"),
                                        "A stored law at given velocities with the standard error of each value.")
       .def_readonly("name", &hydrocoef::FitEvaluation::name)
       .def_readonly("output", &hydrocoef::FitEvaluation::output)

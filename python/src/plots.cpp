@@ -38,8 +38,11 @@ constexpr const char* kImageDoc =
 }  // namespace
 
 void bind_plots(py::module_& m) {
-  py::class_<hydrocoef::PlotFiles>(m, "PlotFiles", py::is_final(), made_by_the_module_only(),
-                                   "The files a plot wrote and what it drew.")
+  py::class_<hydrocoef::PlotFiles>(
+      m, "PlotFiles", py::is_final(),
+      made_by_the_module_only("hydrocoef's plot functions (plot_fit, plot_curves, plot_surface, plot_history, "
+                              "plot_simulation, plot_steady, plot_coefficient)"),
+      "The files a plot wrote and what it drew.")
       .def_readonly("title", &hydrocoef::PlotFiles::title)
       .def_readonly("image", &hydrocoef::PlotFiles::image)
       .def_readonly("data", &hydrocoef::PlotFiles::data)

@@ -19,19 +19,8 @@ namespace {
 
 using namespace pybind11::literals;
 
-/// tp_new of the result classes here: refused (only the functions below make them).
-PyObject* refuse_new(PyTypeObject* type, PyObject*, PyObject*) {
-  const char* dot = std::strrchr(type->tp_name, '.');
-  PyErr_SetString(PyExc_TypeError, ("hydrocoef." + std::string(dot ? dot + 1 : type->tp_name) +
-                                    " objects come from set_body_reference, body_references and run_coefficients; "
-                                    "they cannot be made directly")
-                                       .c_str());
-  return nullptr;
-}
-
-py::custom_type_setup reference_result() {
-  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new; });
-}
+/// The calls that make the result classes here.
+constexpr const char* kMadeBy = "set_body_reference, body_references and run_coefficients";
 
 py::array_t<double> array(const std::vector<double>& values) {
   return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
@@ -48,7 +37,7 @@ constexpr const char* kCoefficientNames[] = {"C_X", "C_Y", "C_Z", "C_K", "C_M", 
 }  // namespace
 
 void register_reference(py::module_& m) {
-  py::class_<hydrocoef::BodyReference>(m, "BodyReference", py::is_final(), reference_result(),
+  py::class_<hydrocoef::BodyReference>(m, "BodyReference", py::is_final(), made_by_the_module_only(kMadeBy),
                                        "A body's reference data (SI; nan where not given).")
       .def_readonly("body", &hydrocoef::BodyReference::body)
       .def_readonly("length", &hydrocoef::BodyReference::length, "Reference length L [m].")
@@ -62,14 +51,14 @@ void register_reference(py::module_& m) {
       .def("text", &hydrocoef::BodyReference::text, "What `hydrocoef body set` prints.")
       .def("json", &hydrocoef::BodyReference::json, "What `hydrocoef body set --json` prints.");
 
-  py::class_<hydrocoef::BodyReferences>(m, "BodyReferences", py::is_final(), reference_result(),
+  py::class_<hydrocoef::BodyReferences>(m, "BodyReferences", py::is_final(), made_by_the_module_only(kMadeBy),
                                         "The reference data of a database's bodies.")
       .def_readonly("database", &hydrocoef::BodyReferences::database)
       .def_readonly("bodies", &hydrocoef::BodyReferences::bodies)
       .def("text", &hydrocoef::BodyReferences::text, "What `hydrocoef body show` prints.")
       .def("json", &hydrocoef::BodyReferences::json, "What `hydrocoef body show --json` prints.");
 
-  py::class_<hydrocoef::RunCoefficients>(m, "RunCoefficients", py::is_final(), reference_result(),
+  py::class_<hydrocoef::RunCoefficients>(m, "RunCoefficients", py::is_final(), made_by_the_module_only(kMadeBy),
                                          "The selected runs' coefficients as columns (numpy arrays; nan where "
                                          "not defined, `note` says why).")
       .def_readonly("database", &hydrocoef::RunCoefficients::database)

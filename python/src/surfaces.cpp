@@ -201,21 +201,9 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
   return result;
 }
 
-/// tp_new of the report classes: refuses (as made_by_the_module_only, with
-/// the call that makes each).
-PyObject* refuse_new_report(PyTypeObject* type, PyObject*, PyObject*) {
-  const char* dot = std::strrchr(type->tp_name, '.');
-  const std::string name = dot ? dot + 1 : type->tp_name;
-  PyErr_SetString(PyExc_TypeError, ("hydrocoef." + name +
-                                    " objects come from the Database's surface methods (surface_show, surface_list, "
-                                    "surface_build, surface_rebuild, query_surface); they cannot be made directly")
-                                       .c_str());
-  return nullptr;
-}
-
-py::custom_type_setup made_by_a_surface_call() {
-  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new_report; });
-}
+/// The calls that make the report classes here.
+constexpr const char* kMadeBy =
+    "the Database's surface methods (surface_show, surface_list, surface_build, surface_rebuild, query_surface)";
 
 /// The values of `source` (a mapping or the keywords) for each axis, as lists of breakpoints.
 std::vector<std::vector<double>> breakpoints_of(const Surface& surface, const py::args& args,
@@ -344,8 +332,9 @@ auto build_method(Build build) {
 
 void bind_surfaces(py::module_& m, py::class_<Database>& database) {
   // Surface.__call__ takes **axes: its docstring gives the signature, not pybind11's "*args, **kwargs".
-  auto surface_class = py::class_<Surface>(m, "Surface", py::is_final(), made_by_the_module_only(),
-                                           R"doc(A coefficient surface read from a run database.
+  auto surface_class =
+      py::class_<Surface>(m, "Surface", py::is_final(), made_by_the_module_only("Database.surface(name)"),
+                          R"doc(A coefficient surface read from a run database.
 
 Call it with one value or numpy array per axis, by name, to get every output at
 every point, as numpy arrays shaped like the inputs:
@@ -476,7 +465,8 @@ non-finite breakpoints, or a node outside an axis whose policy is 'error'.)doc")
           "{output: [{'point': {axis: value}, 'sd': sd}, ...]}: where each output's standard deviation is largest, "
           "largest first, as `hydrocoef surface show` lists them ({} when the surface states none).");
 
-  py::class_<hydrocoef::SurfaceInfo>(m, "SurfaceInfo", py::is_final(), made_by_the_module_only(),
+  py::class_<hydrocoef::SurfaceInfo>(m, "SurfaceInfo", py::is_final(),
+                                     made_by_the_module_only("Database.surfaces() and Database.build_surface(...)"),
                                      "A stored surface, as `hydrocoef surface list` shows it.")
       .def_readonly("name", &hydrocoef::SurfaceInfo::name)
       .def_readonly("body", &hydrocoef::SurfaceInfo::body)
@@ -534,14 +524,14 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
 
   // The reports of the surface commands: the numbers as attributes, and
   // text() / json(), what the CLI prints (and with --json).
-  py::class_<hydrocoef::SurfaceAxisReport>(m, "SurfaceAxisReport", py::is_final(), made_by_a_surface_call())
+  py::class_<hydrocoef::SurfaceAxisReport>(m, "SurfaceAxisReport", py::is_final(), made_by_the_module_only(kMadeBy))
       .def_readonly("name", &hydrocoef::SurfaceAxisReport::name)
       .def_readonly("unit", &hydrocoef::SurfaceAxisReport::unit)
       .def_readonly("lower", &hydrocoef::SurfaceAxisReport::lower)
       .def_readonly("upper", &hydrocoef::SurfaceAxisReport::upper)
       .def_readonly("out_of_range", &hydrocoef::SurfaceAxisReport::out_of_range)
       .def_readonly("breakpoints", &hydrocoef::SurfaceAxisReport::breakpoints, "Gridded surfaces; [] otherwise.");
-  py::class_<hydrocoef::SurfaceOutputReport>(m, "SurfaceOutputReport", py::is_final(), made_by_a_surface_call())
+  py::class_<hydrocoef::SurfaceOutputReport>(m, "SurfaceOutputReport", py::is_final(), made_by_the_module_only(kMadeBy))
       .def_readonly("name", &hydrocoef::SurfaceOutputReport::name)
       .def_readonly("unit", &hydrocoef::SurfaceOutputReport::unit)
       .def_readonly("loo_max", &hydrocoef::SurfaceOutputReport::loo_max)
@@ -556,7 +546,7 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
             return out;
           },
           "[(point as a list in axis order, sd), ...], largest first.");
-  py::class_<hydrocoef::SurfaceReport>(m, "SurfaceReport", py::is_final(), made_by_a_surface_call(),
+  py::class_<hydrocoef::SurfaceReport>(m, "SurfaceReport", py::is_final(), made_by_the_module_only(kMadeBy),
                                        "A stored surface described whole, as `hydrocoef surface show`.")
       .def_readonly("name", &hydrocoef::SurfaceReport::name)
       .def_readonly("body", &hydrocoef::SurfaceReport::body)
@@ -570,12 +560,12 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
       .def_readonly("outputs", &hydrocoef::SurfaceReport::outputs)
       .def("text", &hydrocoef::SurfaceReport::text)
       .def("json", &hydrocoef::SurfaceReport::json);
-  py::class_<hydrocoef::SurfaceList>(m, "SurfaceList", py::is_final(), made_by_a_surface_call(),
+  py::class_<hydrocoef::SurfaceList>(m, "SurfaceList", py::is_final(), made_by_the_module_only(kMadeBy),
                                      "The stored surfaces, as `hydrocoef surface list`.")
       .def_readonly("surfaces", &hydrocoef::SurfaceList::surfaces)
       .def("text", &hydrocoef::SurfaceList::text)
       .def("json", &hydrocoef::SurfaceList::json);
-  py::class_<hydrocoef::SurfaceBuildReport>(m, "SurfaceBuildReport", py::is_final(), made_by_a_surface_call(),
+  py::class_<hydrocoef::SurfaceBuildReport>(m, "SurfaceBuildReport", py::is_final(), made_by_the_module_only(kMadeBy),
                                             "A surface built and stored, as `hydrocoef surface build`.")
       .def_readonly("surface", &hydrocoef::SurfaceBuildReport::surface)
       .def_readonly("id", &hydrocoef::SurfaceBuildReport::id)
@@ -586,12 +576,13 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
       .def_readonly("mirror", &hydrocoef::SurfaceBuildReport::mirror)
       .def("text", &hydrocoef::SurfaceBuildReport::text)
       .def("json", &hydrocoef::SurfaceBuildReport::json);
-  py::class_<hydrocoef::SurfaceRebuildReport>(m, "SurfaceRebuildReport", py::is_final(), made_by_a_surface_call(),
+  py::class_<hydrocoef::SurfaceRebuildReport>(m, "SurfaceRebuildReport", py::is_final(),
+                                              made_by_the_module_only(kMadeBy),
                                               "Surfaces built again, as `hydrocoef surface rebuild`.")
       .def_readonly("rebuilt", &hydrocoef::SurfaceRebuildReport::rebuilt)
       .def("text", &hydrocoef::SurfaceRebuildReport::text)
       .def("json", &hydrocoef::SurfaceRebuildReport::json);
-  py::class_<hydrocoef::SurfaceQueryResult>(m, "SurfaceQueryResult", py::is_final(), made_by_a_surface_call(),
+  py::class_<hydrocoef::SurfaceQueryResult>(m, "SurfaceQueryResult", py::is_final(), made_by_the_module_only(kMadeBy),
                                             "The answer of `hydrocoef query`: a point, or a batch written as CSV.")
       .def_readonly("surface", &hydrocoef::SurfaceQueryResult::surface)
       .def_readonly("stale", &hydrocoef::SurfaceQueryResult::stale)
