@@ -15,27 +15,20 @@
 #include <random>
 #include <string>
 
+#include "tests/support/derivative_sets.hpp"
 #include "tests/support/expect_input_error.hpp"
 
 namespace hydrocoef {
 namespace {
 
+using test::derivative_set;
 using test::expect_input_error;
 
-DerivativeSet make_set(const std::string& output, const std::string& terms, std::vector<double> c) {
-  DerivativeSet set;
-  set.name = "fit-" + output;
-  set.output = output;
-  set.terms = parse_terms(terms);
-  set.coefficients = std::move(c);
-  return set;
-}
-
 std::vector<DerivativeSet> sets() {
-  return {make_set("X", "u, u*|u|, v*r, u^2", {-1.5, -20.0, 3.0, -0.5}),
-          make_set("Y", "v, r, v*|v|, u*v, u*r, |u|*v, u*p, u", {-2.0, 0.4, -11.0, -3.0, 0.7, -0.9, 0.05, 0.02}),
-          make_set("K", "p, p*|p|, v", {-0.1, -0.2, 0.03}),
-          make_set("N", "r, v, r*|r|, u*r, v*|r|", {-0.8, -0.3, -1.1, -0.2, 0.6})};
+  return {derivative_set("X", "u, u*|u|, v*r, u^2", {-1.5, -20.0, 3.0, -0.5}),
+          derivative_set("Y", "v, r, v*|v|, u*v, u*r, |u|*v, u*p, u", {-2.0, 0.4, -11.0, -3.0, 0.7, -0.9, 0.05, 0.02}),
+          derivative_set("K", "p, p*|p|, v", {-0.1, -0.2, 0.03}),
+          derivative_set("N", "r, v, r*|r|, u*r, v*|r|", {-0.8, -0.3, -1.1, -0.2, 0.6})};
 }
 
 std::map<std::string, double> by_name(const DerivativeGazeboExport& e) {
@@ -114,7 +107,7 @@ TEST(DerivativeGazebo, GzSimsForceLawGivesTheSetsForces) {
 }
 
 TEST(DerivativeGazebo, OpposingSetsAreNegatedAndAddedMassWritten) {
-  DerivativeSet y = make_set("Y", "v, v*|v|", {2.0, 11.0});
+  DerivativeSet y = derivative_set("Y", "v, v*|v|", {2.0, 11.0});
   y.sign = SignConvention::OpposingMotion;
   DerivativeGazeboOptions options;
   Matrix6 ma = Matrix6::Identity() * 3.0;
@@ -131,7 +124,7 @@ TEST(DerivativeGazebo, OpposingSetsAreNegatedAndAddedMassWritten) {
 
 TEST(DerivativeGazebo, TermsGzSimCannotHoldAreRefusedOrDroppedWhenAsked) {
   std::vector<DerivativeSet> s = sets();
-  s[1] = make_set("Y", "v, v^2*r, r", {-2.0, 5.0, 0.4});
+  s[1] = derivative_set("Y", "v, v^2*r, r", {-2.0, 5.0, 0.4});
   expect_input_error([&] { derivative_gazebo(s, {}); }, {"fit-Y", "'v^2*r'", "drop"});
   DerivativeGazeboOptions drop;
   drop.drop_unrepresentable = true;
@@ -141,22 +134,23 @@ TEST(DerivativeGazebo, TermsGzSimCannotHoldAreRefusedOrDroppedWhenAsked) {
   EXPECT_NE(dropped.text.find("dropped Y: v^2*r"), std::string::npos);
   EXPECT_EQ(by_name(dropped).at("yR"), 0.4);
   for (const std::string& bad : {"1", "|v|", "delta", "u*v*r", "|u|*|v|", "v^3"}) {
-    std::vector<DerivativeSet> one = {make_set("N", "r, " + bad, {-1.0, 1.0})};
+    std::vector<DerivativeSet> one = {derivative_set("N", "r, " + bad, {-1.0, 1.0})};
     expect_input_error([&] { derivative_gazebo(one, {}); }, {"fit-N", "'" + parse_terms(bad)[0].text() + "'"});
   }
-  expect_input_error([&] { derivative_gazebo({make_set("CY", "v", {1.0})}, {}); }, {"'CY'", "X, Y, Z, K, M or N"});
+  expect_input_error([&] { derivative_gazebo({derivative_set("CY", "v", {1.0})}, {}); },
+                     {"'CY'", "X, Y, Z, K, M or N"});
   expect_input_error(
       [&] {
-        derivative_gazebo({make_set("Y", "v", {1.0}), make_set("Y", "r", {1.0})}, {});
+        derivative_gazebo({derivative_set("Y", "v", {1.0}), derivative_set("Y", "r", {1.0})}, {});
       },
       {"second set of output Y"});
   // A plain s_j s_k parameter comes with gz-sim's own warning restated.
-  const auto x = derivative_gazebo({make_set("X", "u^2", {-1.0})}, {});
+  const auto x = derivative_gazebo({derivative_set("X", "u^2", {-1.0})}, {});
   EXPECT_NE(x.text.find("may cause"), std::string::npos);
 }
 
 TEST(DerivativeGazebo, HostileNamesStayData) {
-  DerivativeSet y = make_set("Y", "v", {-1.0});
+  DerivativeSet y = derivative_set("Y", "v", {-1.0});
   y.name = "a --> <plugin name=\"evil\"/> <!--";
   DerivativeGazeboOptions options;
   options.link_name = "base</link_name><evil/><link_name>";

@@ -16,21 +16,14 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/derivative_sets.hpp"
 #include "tests/support/expect_input_error.hpp"
 
 namespace hydrocoef {
 namespace {
 
+using test::derivative_set;
 using test::expect_input_error;
-
-DerivativeSet make_set(const std::string& output, const std::string& terms, std::vector<double> c) {
-  DerivativeSet set;
-  set.name = "fit-" + output;
-  set.output = output;
-  set.terms = parse_terms(terms);
-  set.coefficients = std::move(c);
-  return set;
-}
 
 Matrix6 mass() {
   Matrix6 m = Matrix6::Identity() * 10.0;
@@ -74,8 +67,8 @@ double factor_value(const std::string& text, const std::vector<double>& x, const
 
 TEST(DerivativeMatlab, MssFormWithEveryTermReadingItsStateOrInput) {
   const std::vector<DerivativeSet> sets = {
-      make_set("Y", "v, r, v*|v|, u*v, v^2*r, u^2*delta, 1", {-2.0, 0.4, -11.0, -3.0, 5.0, 1.5, 0.01}),
-      make_set("N", "r, r*|r|, current, v^3, v^2*|v|", {-0.8, -1.1, 0.2, 0.3, -0.4})};
+      derivative_set("Y", "v, r, v*|v|, u*v, v^2*r, u^2*delta, 1", {-2.0, 0.4, -11.0, -3.0, 5.0, 1.5, 0.01}),
+      derivative_set("N", "r, r*|r|, current, v^3, v^2*|v|", {-0.8, -1.1, 0.2, 0.3, -0.4})};
   const std::string text = derivative_matlab("auv_model", sets, mass());
   EXPECT_TRUE(text.starts_with("function [xdot, U] = auv_model(x, ui)\n")) << text;
   EXPECT_NE(text.find("if numel(x) ~= 6, error('x must have 6 elements: [u v w p q r]'''); end"), std::string::npos);
@@ -116,7 +109,7 @@ TEST(DerivativeMatlab, MssFormWithEveryTermReadingItsStateOrInput) {
     EXPECT_NEAR(tau[i], own, 1e-14) << set.output;
   }
   // "opposing" numbers are negated to the force on the body.
-  DerivativeSet opposing = make_set("Y", "v", {2.0});
+  DerivativeSet opposing = derivative_set("Y", "v", {2.0});
   opposing.sign = SignConvention::OpposingMotion;
   EXPECT_NE(derivative_matlab("m", {opposing}, mass()).find("      (-2) * x(2);"), std::string::npos);
 }
@@ -124,9 +117,10 @@ TEST(DerivativeMatlab, MssFormWithEveryTermReadingItsStateOrInput) {
 TEST(DerivativeMatlab, HostileNamesStayData) {
   for (const std::string& bad :
        std::vector<std::string>{"", "1model", "a b", "end", "x;system('rm -rf /')", std::string(64, 'a'), "_x"})
-    expect_input_error([&] { derivative_matlab(bad, {make_set("Y", "v", {1.0})}, mass()); }, {"MATLAB function name"});
-  EXPECT_NO_THROW(derivative_matlab(std::string(63, 'a'), {make_set("Y", "v", {1.0})}, mass()));
-  DerivativeSet set = make_set("Y", "v, x, ui, xdot, end_", {1.0, 2.0, 3.0, 4.0, 5.0});
+    expect_input_error([&] { derivative_matlab(bad, {derivative_set("Y", "v", {1.0})}, mass()); },
+                       {"MATLAB function name"});
+  EXPECT_NO_THROW(derivative_matlab(std::string(63, 'a'), {derivative_set("Y", "v", {1.0})}, mass()));
+  DerivativeSet set = derivative_set("Y", "v, x, ui, xdot, end_", {1.0, 2.0, 3.0, 4.0, 5.0});
   set.name = "evil\nsystem('rm -rf /')\n%{";
   const std::string text = derivative_matlab("m", {set}, mass());
   std::istringstream in(text);
@@ -147,19 +141,19 @@ TEST(DerivativeMatlab, HostileNamesStayData) {
 TEST(DerivativeMatlab, BadInputsAreRefused) {
   Matrix6 m = mass();
   m(0, 0) = -1.0;
-  expect_input_error([&] { derivative_matlab("m", {make_set("Y", "v", {1.0})}, m); }, {"not positive definite"});
+  expect_input_error([&] { derivative_matlab("m", {derivative_set("Y", "v", {1.0})}, m); }, {"not positive definite"});
   m = mass();
   m(0, 1) = 3.0;
-  expect_input_error([&] { derivative_matlab("m", {make_set("Y", "v", {1.0})}, m); }, {"symmetric", "(1,2)"});
+  expect_input_error([&] { derivative_matlab("m", {derivative_set("Y", "v", {1.0})}, m); }, {"symmetric", "(1,2)"});
   expect_input_error(
       [&] {
-        derivative_matlab("m", {make_set("Y", "v, beta", {1.0, 2.0})}, mass());
+        derivative_matlab("m", {derivative_set("Y", "v, beta", {1.0, 2.0})}, mass());
       },
       {"fit-Y", "'beta'"});
-  expect_input_error([&] { derivative_matlab("m", {make_set("Q", "v", {1.0})}, mass()); }, {"'Q'"});
+  expect_input_error([&] { derivative_matlab("m", {derivative_set("Q", "v", {1.0})}, mass()); }, {"'Q'"});
   expect_input_error(
       [&] {
-        derivative_matlab("m", {make_set("Y", "v", {1.0}), make_set("Y", "r", {1.0})}, mass());
+        derivative_matlab("m", {derivative_set("Y", "v", {1.0}), derivative_set("Y", "r", {1.0})}, mass());
       },
       {"second set of output Y"});
   expect_input_error([&] { derivative_matlab("m", {}, mass()); }, {"no derivative sets"});
