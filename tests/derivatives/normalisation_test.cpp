@@ -14,8 +14,10 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "src/core/error.hpp"
@@ -549,34 +551,38 @@ TEST(Normalisation, AMissingReferenceValueIsNamedWithHowToGiveIt) {
   full.draft = 7.47;
   full.mass = 1.7e7;
 
-  auto without_length = full;
-  without_length.length.reset();
-  EXPECT_EQ(input_error_message([&] { (void)to_dimensional(1.0, K::Force, S::Prime, without_length); }),
-            "prime (SNAME 1950): the unit of force, 1/2 rho U^2 L^2, needs the reference length L [m], which is not "
-            "given; give the length with the reference data");
-  auto without_speed = full;
-  without_speed.speed.reset();
-  EXPECT_EQ(input_error_message([&] { (void)to_nondimensional(1.0, K::Moment, S::Mmg, without_speed); }),
-            "MMG (Yasukawa and Yoshimura 2015): the unit of moment, 1/2 rho U^2 L^2 d, needs the reference speed U "
-            "[m/s], which is not given; give the speed with the reference data");
-  auto without_density = full;
-  without_density.density.reset();
-  EXPECT_EQ(input_error_message([&] {
-              (void)to_dimensional(1.0, DerivativeKind{K::Force, {{K::LinearVelocity, 1}, {K::AngularVelocity, 1}}},
-                                   S::Prime, without_density);
-            }),
-            "prime (SNAME 1950): the unit of force / (linear velocity * angular velocity), 1/2 rho L^3, needs the "
-            "water density rho [kg/m^3], which is not given; give the density with the reference data");
-  auto without_draft = full;
-  without_draft.draft.reset();
-  EXPECT_EQ(input_error_message([&] { (void)to_dimensional(1.0, K::Mass, S::Mmg, without_draft); }),
-            "MMG (Yasukawa and Yoshimura 2015): the unit of mass, 1/2 rho L^2 d, needs the draft d [m], which is not "
-            "given; give the draft with the reference data");
+  // Each case: the reference value taken away, the conversion that needs it, and the one line it gives.
+  using Conversion = std::function<void(const NormalisationReference&)>;
+  const DerivativeKind per_velocity_and_rate{K::Force, {{K::LinearVelocity, 1}, {K::AngularVelocity, 1}}};
+  const std::vector<std::tuple<std::optional<double> NormalisationReference::*, Conversion, std::string>> cases = {
+      {&NormalisationReference::length, [](const auto& r) { (void)to_dimensional(1.0, K::Force, S::Prime, r); },
+       "prime (SNAME 1950): the unit of force, 1/2 rho U^2 L^2, needs the reference length L [m], which is not "
+       "given; give the length with the reference data"},
+      {&NormalisationReference::speed, [](const auto& r) { (void)to_nondimensional(1.0, K::Moment, S::Mmg, r); },
+       "MMG (Yasukawa and Yoshimura 2015): the unit of moment, 1/2 rho U^2 L^2 d, needs the reference speed U "
+       "[m/s], which is not given; give the speed with the reference data"},
+      {&NormalisationReference::density,
+       [&](const auto& r) { (void)to_dimensional(1.0, per_velocity_and_rate, S::Prime, r); },
+       "prime (SNAME 1950): the unit of force / (linear velocity * angular velocity), 1/2 rho L^3, needs the "
+       "water density rho [kg/m^3], which is not given; give the density with the reference data"},
+      {&NormalisationReference::draft, [](const auto& r) { (void)to_dimensional(1.0, K::Mass, S::Mmg, r); },
+       "MMG (Yasukawa and Yoshimura 2015): the unit of mass, 1/2 rho L^2 d, needs the draft d [m], which is not "
+       "given; give the draft with the reference data"},
+      {&NormalisationReference::mass, [](const auto& r) { (void)to_dimensional(1.0, K::Force, S::Bis, r); },
+       "bis (Norrbin 1971): the unit of force, m g, needs the mass m [kg] or the displaced volume [m^3] (m = rho "
+       "* volume), which is not given; give the mass or the displaced volume and density with the reference "
+       "data"}};
+  for (const auto& entry : cases) {
+    auto without = full;
+    (without.*std::get<0>(entry)).reset();
+    EXPECT_EQ(input_error_message([&] { std::get<1>(entry)(without); }), std::get<2>(entry));
+  }
   auto without_mass = full;
   without_mass.mass.reset();
-  EXPECT_EQ(input_error_message([&] { (void)to_dimensional(1.0, K::Force, S::Bis, without_mass); }),
-            "bis (Norrbin 1971): the unit of force, m g, needs the mass m [kg] or the displaced volume [m^3] (m = rho "
-            "* volume), which is not given; give the mass or the displaced volume and density with the reference data");
+  auto without_speed = full;
+  without_speed.speed.reset();
+  auto without_length = full;
+  without_length.length.reset();
   auto volume_without_density = without_mass;
   volume_without_density.displaced_volume = 16600.0;
   volume_without_density.density.reset();
