@@ -22,15 +22,11 @@ Run from the repository after a build (scripts/build.sh):
 """
 
 import argparse
-import json
 import math
 import pathlib
 
 import hydrocoef
-
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-STUDY = ROOT / "data" / "openfoam-sphere" / "converged"
-R = 0.15
+from sphere_study import RADIUS as R, ROOT, import_study
 
 
 def main():
@@ -39,12 +35,8 @@ def main():
     args = parser.parse_args()
     pathlib.Path(args.db).parent.mkdir(parents=True, exist_ok=True)
 
-    cases = json.loads((STUDY / "reference.json").read_text())["cases"]
     with hydrocoef.Database(args.db, mode="create") as db:
-        for case in cases.values():
-            db.import_files(STUDY / case["case"], body="sphere",
-                            settings={"axes": "-x,y,-z", "symmetry": "y=0,z=0",
-                                      "disturbances": {"mesh": case["mesh"]}})
+        import_study(db, axes="-x,y,-z", symmetry="y=0,z=0")
         hydrocoef.set_body_reference(db, "sphere", length=2 * R, areas={"frontal": math.pi * R ** 2})
         table = hydrocoef.run_coefficients(db)
     for i in range(table.id.size):

@@ -22,13 +22,10 @@ Run from the repository after a build (scripts/build.sh):
 """
 
 import argparse
-import json
 import pathlib
 
 import hydrocoef
-
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-STUDY = ROOT / "data" / "openfoam-sphere" / "converged"
+from sphere_study import ROOT, import_study
 
 
 def main():
@@ -37,11 +34,8 @@ def main():
     args = parser.parse_args()
     pathlib.Path(args.db).parent.mkdir(parents=True, exist_ok=True)
 
-    cases = json.loads((STUDY / "reference.json").read_text())["cases"]
     with hydrocoef.Database(args.db, mode="create") as db:
-        for case in cases.values():
-            db.import_files(STUDY / case["case"], body="sphere",
-                            settings={"disturbances": {"mesh": case["mesh"], "cells": case["cells"]}})
+        import_study(db)
         study = hydrocoef.grid_convergence(db, body="sphere", allow_unconverged=True)
     for key in study.keys:
         x = key.components[0]  # X, the drag of the quarter sphere (on the body)
