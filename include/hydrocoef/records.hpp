@@ -281,6 +281,8 @@ struct MergedShard {
   std::size_t surfaces_added = 0, surfaces_already = 0;
   std::size_t mesh_studies_added = 0, mesh_studies_already = 0;
   std::size_t pmm_added = 0, pmm_already = 0;
+  std::size_t body_references_added = 0, body_references_already = 0;  ///< bodies' reference data
+  std::size_t derivative_models_added = 0, derivative_models_already = 0;
 };
 
 struct HYDROCOEF_EXPORT MergeSummary {

@@ -207,13 +207,17 @@ void bind_records(py::module_& m) {
           [](const hydrocoef::MergeSummary& s) {
             py::list out;
             for (const auto& o : s.shards)
-              out.append(py::dict(
-                  "shard"_a = o.shard, "imports_added"_a = o.imports_added, "imports_already"_a = o.imports_already,
-                  "runs_created"_a = o.runs_created, "runs_extended"_a = o.runs_extended, "components"_a = o.components,
-                  "fits_added"_a = o.fits_added, "fits_already"_a = o.fits_already,
-                  "surfaces_added"_a = o.surfaces_added, "surfaces_already"_a = o.surfaces_already,
-                  "mesh_studies_added"_a = o.mesh_studies_added, "mesh_studies_already"_a = o.mesh_studies_already,
-                  "pmm_added"_a = o.pmm_added, "pmm_already"_a = o.pmm_already));
+              out.append(py::dict("shard"_a = o.shard, "imports_added"_a = o.imports_added,
+                                  "imports_already"_a = o.imports_already, "runs_created"_a = o.runs_created,
+                                  "runs_extended"_a = o.runs_extended, "components"_a = o.components,
+                                  "fits_added"_a = o.fits_added, "fits_already"_a = o.fits_already,
+                                  "surfaces_added"_a = o.surfaces_added, "surfaces_already"_a = o.surfaces_already,
+                                  "mesh_studies_added"_a = o.mesh_studies_added,
+                                  "mesh_studies_already"_a = o.mesh_studies_already, "pmm_added"_a = o.pmm_added,
+                                  "pmm_already"_a = o.pmm_already, "body_references_added"_a = o.body_references_added,
+                                  "body_references_already"_a = o.body_references_already,
+                                  "derivative_models_added"_a = o.derivative_models_added,
+                                  "derivative_models_already"_a = o.derivative_models_already));
             return out;
           })
       .def("text", &hydrocoef::MergeSummary::text)

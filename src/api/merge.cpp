@@ -26,7 +26,8 @@ MergeSummary merge_databases(Database& into, const MergeOptions& options) {
   for (const MergeOutcome& o : store.merge(options.shards, options.progress))
     out.shards.push_back({o.shard, o.imports_added, o.imports_already, o.runs_created, o.runs_extended, o.components,
                           o.fits_added, o.fits_already, o.surfaces_added, o.surfaces_already, o.mesh_studies_added,
-                          o.mesh_studies_already, o.pmm_added, o.pmm_already});
+                          o.mesh_studies_already, o.pmm_added, o.pmm_already, o.body_references_added,
+                          o.body_references_already, o.derivative_models_added, o.derivative_models_already});
   out.into = store.path().string();
   return out;
 }
@@ -47,7 +48,11 @@ std::string MergeSummary::json() const {
                    {"mesh_studies_added", o.mesh_studies_added},
                    {"mesh_studies_already", o.mesh_studies_already},
                    {"pmm_added", o.pmm_added},
-                   {"pmm_already", o.pmm_already}});
+                   {"pmm_already", o.pmm_already},
+                   {"body_references_added", o.body_references_added},
+                   {"body_references_already", o.body_references_already},
+                   {"derivative_models_added", o.derivative_models_added},
+                   {"derivative_models_already", o.derivative_models_already}});
   return escape::json_text({{"into", into}, {"shards", out}}, 2) + '\n';
 }
 
@@ -59,9 +64,11 @@ std::string MergeSummary::text() const {
     if (o.imports_already) out << " (" << o.imports_already << " here already)";
     out << ", " << o.runs_created << " runs created, " << o.runs_extended << " extended, " << o.components
         << " force components";
-    if (o.fits_added + o.surfaces_added + o.mesh_studies_added + o.pmm_added)
+    if (o.fits_added + o.surfaces_added + o.mesh_studies_added + o.pmm_added + o.body_references_added +
+        o.derivative_models_added)
       out << "; " << o.fits_added << " fits, " << o.surfaces_added << " surfaces, " << o.mesh_studies_added
-          << " mesh-study rows, " << o.pmm_added << " forced-oscillation runs";
+          << " mesh-study rows, " << o.pmm_added << " forced-oscillation runs, " << o.body_references_added
+          << " bodies' reference data, " << o.derivative_models_added << " derivative models";
     out << '\n';
     imports += o.imports_added;
     runs += o.runs_created;

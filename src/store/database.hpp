@@ -253,6 +253,7 @@ struct MergeOutcome {
   std::size_t mesh_studies_added = 0, mesh_studies_already = 0;  ///< rows of numerical uncertainty
   std::size_t pmm_added = 0, pmm_already = 0;                    ///< forced-oscillation analyses
   std::size_t body_references_added = 0, body_references_already = 0;
+  std::size_t derivative_models_added = 0, derivative_models_already = 0;
 };
 
 class RunDatabase {

@@ -337,11 +337,13 @@ MergeOutcome RunDatabase::merge_one(RunDatabase& shard) {
           throw InputError(where, "derivative model '" + printable_text(model.name, 160) +
                                       "' is here already with other terms or coefficients; expected the same model, "
                                       "or one of them renamed or deleted first");
+        ++outcome.derivative_models_already;
         continue;
       }
       model.run_ids = mapped_runs(model.run_ids);
       const std::int64_t id = save_derivative_model(model, NameTaken::Refuse);
       keep_record("derivative_model", id, model.created_at, model.stale);
+      ++outcome.derivative_models_added;
     }
   }
 

@@ -104,14 +104,29 @@ TEST_P(CliBackends, ShardsMergeAndADatabaseCopiesAcrossBackends) {
   const auto dir = db_.dir().path();
   ASSERT_EQ(run_cli({"--db", "a.db", "import", kSurge, "--body", "asr-v", "--sign", "opposing"}, dir).exit_code, 0);
   ASSERT_EQ(run_cli({"--db", "b.db", "import", kYaw, "--body", "asr-v"}, dir).exit_code, 0);
+  // A body's reference data in one shard, a derivative model in the other: each merged and counted.
+  ASSERT_EQ(run_cli({"--db", "a.db", "body", "set", "asr-v", "--length", "0.3"}, dir).exit_code, 0);
+  const auto fitted = run_cli({"--db", "b.db", "derivatives", "fit", "--body", "asr-v", "--output", "N", "--terms",
+                               "r, r*|r|", "--name", "yaw-damping"},
+                              dir);
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
   const auto merged = cli({"merge", "a.db", "b.db", "--json"});
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
   const auto report = nlohmann::json::parse(merged.out);
   ASSERT_EQ(report.at("shards").size(), 2u);
   EXPECT_EQ(report.at("shards").at(0).at("imports_added"), 1);
+  EXPECT_EQ(report.at("shards").at(0).at("body_references_added"), 1);
+  EXPECT_EQ(report.at("shards").at(0).at("derivative_models_added"), 0);
+  EXPECT_EQ(report.at("shards").at(1).at("body_references_added"), 0);
+  EXPECT_EQ(report.at("shards").at(1).at("derivative_models_added"), 1);
   const auto text = cli({"merge", "a.db", "b.db"});
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("0 imports added (1 here already)"), std::string::npos) << text.out;
+  const auto remerged = nlohmann::json::parse(cli({"merge", "a.db", "b.db", "--json"}).out);
+  EXPECT_EQ(remerged.at("shards").at(0).at("body_references_already"), 1);
+  EXPECT_EQ(remerged.at("shards").at(1).at("derivative_models_already"), 1);
+  const auto models = nlohmann::json::parse(cli({"derivatives", "list", "--json"}).out);
+  EXPECT_NE(models.dump().find("yaw-damping"), std::string::npos) << models.dump();
 
   const auto copied = run_cli({"copy", "--from", db_.location(), "--to", "back.db", "--json"}, dir);
   ASSERT_EQ(copied.exit_code, 0) << copied.err;

@@ -133,8 +133,13 @@ TEST_F(DerivativeStore, AMergeBringsAShardsModelWithItsRunsOnceAndRefusesAnother
     for (const auto& run : shard.runs()) m.run_ids.push_back(run.id);
     shard.save_derivative_model(m);
   }
-  db_.merge({shard_path});
-  db_.merge({shard_path});  // twice adds nothing
+  const auto first = db_.merge({shard_path});
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0].derivative_models_added, 1u);
+  EXPECT_EQ(first[0].derivative_models_already, 0u);
+  const auto second = db_.merge({shard_path});  // twice adds nothing, and says so
+  EXPECT_EQ(second[0].derivative_models_added, 0u);
+  EXPECT_EQ(second[0].derivative_models_already, 1u);
   const auto models = db_.derivative_models();
   ASSERT_EQ(models.size(), 1u);
   EXPECT_EQ(models[0].name, "from-shard");
