@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "hydrocoef/database.hpp"
+#include "hydrocoef/error.hpp"
 #include "tests/support/file_bytes.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/sqlite_dump.hpp"
@@ -192,6 +194,14 @@ TEST_F(CliCaptiveTable, MarinerBisTableGivesThePrintedDerivativesBack) {
   expect_mariner_back("mariner");
 }
 
+TEST_F(CliCaptiveTable, TheExampleTableInDataGivesThePrintedDerivativesBack) {
+  // data/captive-mariner/mariner-prime.csv, written by its make_mariner_table.py: the same programme.
+  const std::string table = std::string(HYDROCOEF_DATA_DIR) + "/captive-mariner/mariner-prime.csv";
+  const std::string imported = out({"import", "--format", "captive-table", table, "--body", "example"});
+  EXPECT_NE(imported.find("L = 160.93 m (line 5)"), std::string::npos) << imported;
+  expect_mariner_back("example");
+}
+
 TEST_F(CliCaptiveTable, TheBodysStoredLengthStandsInAndIsNamed) {
   std::string table = captive_table("prime");
   write("first.csv", table);
@@ -202,6 +212,31 @@ TEST_F(CliCaptiveTable, TheBodysStoredLengthStandsInAndIsNamed) {
   const std::string again =
       out({"import", "--format", "captive-table", "second.csv", "--body", "mariner", "--replace"});
   EXPECT_NE(again.find("L = 160.93 m (the body's reference data)"), std::string::npos) << again;
+}
+
+TEST_F(CliCaptiveTable, TheApiImportUsesItsOwnDatabasesBodyReference) {
+  if (test::on_postgresql()) GTEST_SKIP() << "the API opens the SQLite file itself";
+  write("first.csv", captive_table("prime"));
+  out({"import", "--format", "captive-table", "first.csv", "--body", "mariner", "--length", number(kLength)});
+  out({"body", "set", "mariner", "--length", number(kLength)});
+  write("second.csv", "# copy\n" + captive_table("prime"));
+  auto database = hydrocoef::Database::open((dir_.path() / "hydrocoef.db").string());
+  hydrocoef::ImportOptions options;
+  options.format = "captive-table";
+  options.body = "mariner";
+  options.replace = true;
+  const auto summary = database.import_files({(dir_.path() / "second.csv").string()}, options);
+  EXPECT_NE(summary.text().find("L = 160.93 m (the body's reference data)"), std::string::npos) << summary.text();
+  // Without the stored length the same call is refused naming the column, nothing stored.
+  options.body = "another";
+  try {
+    (void)database.import_files({(dir_.path() / "second.csv").string()}, options);
+    ADD_FAILURE() << "imported without a length";
+  } catch (const hydrocoef::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("second.csv:6:40: column Y' (prime) needs the reference length"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 TEST_F(CliCaptiveTable, RefusalsAreOneLineAndLeaveTheDatabaseAsItWas) {
