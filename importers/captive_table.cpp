@@ -469,6 +469,9 @@ CaptiveTable Reader::read() {
     }
     columns_.push_back(std::move(column));
   }
+  if (const Column* delta = first(Role::Delta); delta && options_.disturbances.count("delta"))
+    throw InputError(at(header_line_, delta->column), "column '" + printable_text(delta->header, 60) +
+                                                          "' and --set both give 'delta'; expected one of them");
   check_needs();
 
   CaptiveTable out;

@@ -232,6 +232,10 @@ TEST(CaptiveTable, NonFiniteAndOutOfRangeValuesAreRefused) {
   EXPECT_CONTAINS(error_of(head + "0,2,0.01\n"), "captive.csv:6:1: column 'U [m/s]': found '0', expected a speed above 0");
   EXPECT_CONTAINS(error_of(head + "1,2,1e308\n"), "captive.csv:6:5: column 'Y'': '1e308' overflows when made dimensional");
   EXPECT_CONTAINS(error_of(head + "1,2\n"), "captive.csv:6: found 2 fields, expected 3");
+  CaptiveTableOptions set_delta;
+  set_delta.disturbances["delta"] = 0.1;
+  EXPECT_CONTAINS(error_of("# form = prime\n# length = 2\n# rho = 1000\nU [m/s],delta [deg],Y'\n1,2,0.01\n", set_delta),
+                  "captive.csv:4:9: column 'delta [deg]' and --set both give 'delta'");
   EXPECT_CONTAINS(error_of(head + "1,2,0.01\n1,2,0.02\n"), "captive.csv:7: run ");
   EXPECT_CONTAINS(error_of(head + "1,2,0.01\n1,2,0.02\n"), "appears twice (also on line 6)");
   EXPECT_CONTAINS(error_of(head), "captive.csv:5: header but no data rows");
