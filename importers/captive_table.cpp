@@ -1,8 +1,8 @@
 #include "importers/captive_table.hpp"
 
 #include <algorithm>
-#include <map>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "importers/text_table.hpp"
@@ -28,8 +28,8 @@ struct Column {
 
 constexpr Dimension kAngleDimension{{0, 0, 0, 1, 0}};
 constexpr std::array<std::string_view, 4> kTests = {"static-drift", "rudder", "drift-rudder", "circular-motion"};
-constexpr std::array<std::string_view, 9> kSettings = {"form",  "drift_convention", "length", "speed", "density",
-                                                       "draft", "mass",             "volume", "gravity"};
+constexpr std::array<std::string_view, 9> kSettings = {
+    "form", "drift_convention", "length", "speed", "density", "draft", "mass", "volume", "gravity"};
 
 struct FileSetting {
   std::string text;
@@ -77,8 +77,9 @@ std::vector<TextField> split_blanks(const TextLine& line, const std::string& fil
     std::size_t end = i;
     while (end < text.size() && text[end] != ' ' && text[end] != '\t') ++end;
     if (end - i > kMaxTextFieldBytes)
-      throw InputError(SourceLocation{file, line.number, i + 1},
-                       "a field of more than " + std::to_string(kMaxTextFieldBytes) + " bytes; expected a header or number");
+      throw InputError(
+          SourceLocation{file, line.number, i + 1},
+          "a field of more than " + std::to_string(kMaxTextFieldBytes) + " bytes; expected a header or number");
     const std::string_view word = text.substr(i, end - i);
     if (word.front() == '[' && !out.empty()) {
       out.back().text += " " + std::string(word);
@@ -199,8 +200,7 @@ void Reader::resolve_form_and_convention() {
   if (convention) {
     const std::string text = lower(*convention);
     if (text != "mmg" && text != "fossen")
-      throw InputError(convention_origin_ == "--drift-convention" ? at(0)
-                                                                  : at(settings_.at("drift_convention").line),
+      throw InputError(convention_origin_ == "--drift-convention" ? at(0) : at(settings_.at("drift_convention").line),
                        "drift convention '" + printable_text(*convention, 40) + "' (" + convention_origin_ +
                            "): expected mmg (beta = atan2(-v, u)) or fossen (beta = atan2(v, u))");
     starboard_positive_ = text == "fossen";
@@ -267,8 +267,8 @@ Column Reader::classify(const TextField& field) const {
                                   printable_text(name, 60));
     if (bis_mark && form_known_ && system_ != NormalisationSystem::Bis)
       throw InputError(where, shown + " is in the bis form (two primes) but the table's form is " +
-                                  std::string(to_string(system_)) + " (" + form_origin_ + "); expected " + name.substr(0, 1) +
-                                  "' or the form bis");
+                                  std::string(to_string(system_)) + " (" + form_origin_ + "); expected " +
+                                  name.substr(0, 1) + "' or the form bis");
     column.role = Role::Force;
     column.component = *component;
     no_unit();
@@ -279,15 +279,14 @@ Column Reader::classify(const TextField& field) const {
 void Reader::refuse_missing(const Column& column, const std::string& what, const std::string& how) const {
   std::string form;
   if (column.role == Role::Force) form = " (" + std::string(to_string(system_)) + ")";
-  throw InputError(at(header_line_, column.column),
-                   "column " + printable_text(split_name_and_unit(column.header).name, 60) + form + " needs " + what +
-                       ": give " + how);
+  throw InputError(at(header_line_, column.column), "column " +
+                                                        printable_text(split_name_and_unit(column.header).name, 60) +
+                                                        form + " needs " + what + ": give " + how);
 }
 
 void Reader::check_needs() {
   const Column* force = first(Role::Force);
-  if (!force)
-    throw InputError(at(header_line_), "no force or moment column; expected at least one of X' Y' K' N'");
+  if (!force) throw InputError(at(header_line_), "no force or moment column; expected at least one of X' Y' K' N'");
   if (!form_known_)
     throw InputError(at(header_line_, force->column),
                      "column " + printable_text(split_name_and_unit(force->header).name, 60) +
@@ -395,8 +394,9 @@ ImportedRun Reader::read_row(const TextLine& line, const std::vector<TextField>&
     } else if (test == "drift-rudder") {
       expect_zero(rate, Role::Rate, "r'", "a circular-motion test has a yaw rate");
     } else if (!rate || *rate == 0.0) {
-      throw InputError(where, "column test: 'circular-motion' without a yaw rate; expected r' other than 0 (a "
-                              "static-drift, rudder or drift-rudder test has none)");
+      throw InputError(where,
+                       "column test: 'circular-motion' without a yaw rate; expected r' other than 0 (a "
+                       "static-drift, rudder or drift-rudder test has none)");
     }
   }
 
@@ -435,8 +435,7 @@ ImportedRun Reader::read_row(const TextLine& line, const std::vector<TextField>&
     run.tau_b[column.component] = ForceComponent{value, std::nullopt, std::nullopt};
   }
   for (const double v : run.key.nu_b)
-    if (!std::isfinite(v))
-      throw InputError(at(line.number), "the row's velocity overflows; expected finite u, v, r");
+    if (!std::isfinite(v)) throw InputError(at(line.number), "the row's velocity overflows; expected finite u, v, r");
   return run;
 }
 
@@ -458,14 +457,13 @@ CaptiveTable Reader::read() {
   for (const auto& field : fields_of(*header, kMaxTextFields)) {
     Column column = classify(field);
     if (column.role != Role::Ignored) {
-      const std::string what = column.role == Role::Force ? std::string(kForceNames[column.component])
+      const std::string what = column.role == Role::Force   ? std::string(kForceNames[column.component])
                                : column.role == Role::Speed ? std::string("the speed")
                                                             : split_name_and_unit(column.header).name;
       if (const auto [previous, inserted] = seen.emplace(what, field.column); !inserted)
-        throw InputError(at(header_line_, field.column), "column '" + printable_text(field.text, 60) + "' gives " +
-                                                             what + " again (first at column " +
-                                                             std::to_string(previous->second) +
-                                                             "); expected each column once");
+        throw InputError(at(header_line_, field.column),
+                         "column '" + printable_text(field.text, 60) + "' gives " + what + " again (first at column " +
+                             std::to_string(previous->second) + "); expected each column once");
     }
     columns_.push_back(std::move(column));
   }
@@ -536,7 +534,8 @@ CaptiveTable Reader::read() {
     key += *starboard_positive_ ? " drift=fossen" : " drift=mmg";
   }
   std::string test_counts;
-  for (const auto& [test, count] : tests) test_counts += (test_counts.empty() ? " (" : ", ") + std::to_string(count) + " " + test;
+  for (const auto& [test, count] : tests)
+    test_counts += (test_counts.empty() ? " (" : ", ") + std::to_string(count) + " " + test;
   if (!test_counts.empty()) test_counts += ")";
   out.note = printable_text(file_, 200) + ": captive-test table, " + std::to_string(out.runs.size()) + " runs" +
              test_counts + "; " + forces + " in " + std::string(normalisation_system_title(system_)) + " form (" +

@@ -410,9 +410,8 @@ force history, nan where none), source (files, ';'-separated), history_flags.)do
           "ignore"_a = py::none(), "monitors"_a = py::none(), "average_last"_a = 1, "include"_a = py::none(),
           "exclude"_a = py::none(), "key_from_name"_a = py::none(), "manifest"_a = py::none(), "sidecars"_a = true,
           "prefer_surfaces"_a = false, "replace"_a = false, "also"_a = "", "jobs"_a = 0, "form"_a = py::none(),
-          "drift_convention"_a = py::none(), "length"_a = py::none(), "speed"_a = py::none(),
-          "density"_a = py::none(), "draft"_a = py::none(), "mass"_a = py::none(), "volume"_a = py::none(),
-          "gravity"_a = py::none(),
+          "drift_convention"_a = py::none(), "length"_a = py::none(), "speed"_a = py::none(), "density"_a = py::none(),
+          "draft"_a = py::none(), "mass"_a = py::none(), "volume"_a = py::none(), "gravity"_a = py::none(),
           R"doc(Imports files, folders and case folders in one transaction, as `hydrocoef import` does.
 
 paths: a path or a list of paths. body: the runs' body (default 'vehicle').

@@ -35,7 +35,8 @@ bool states_key(const ImportedInput& input) {
 /// A file and where its run's key came from, for collision messages.
 std::string key_origin(const ImportedInput& input, const ImportedRun& run) {
   const std::string file = printable_text(input.input.path.string(), 200);
-  if (input.format == "table" || input.format == "captive-table") return file + " (its row at line " + std::to_string(run.source_line) + ")";
+  if (input.format == "table" || input.format == "captive-table")
+    return file + " (its row at line " + std::to_string(run.source_line) + ")";
   std::string parts;
   for (const auto& [name, setting] : input.settings.values) {
     if (!is_key_setting(name)) continue;

@@ -91,11 +91,10 @@ void refuse_forced_oscillation(const fs::path& case_dir, std::vector<std::string
 /// disturbances, density, viscosity and sign from the input's settings.
 void read_captive_input(const PlannedInput& input, const ImportRequest& request, const RunSettings& settings,
                         const RunKey& key, const Vec3& reference_b, ImportedInput& out) {
-  settings_not_applicable(
-      settings,
-      {"flow", "axes", "origin", "cofr", "symmetry", "window", "pressure", "shear", "pressure_kind",
-       "shear_convention", "length_unit", "pressure_unit", "normals", "locations"},
-      "a captive-test table (its rows are in body axes)", out.notes);
+  settings_not_applicable(settings,
+                          {"flow", "axes", "origin", "cofr", "symmetry", "window", "pressure", "shear", "pressure_kind",
+                           "shear_convention", "length_unit", "pressure_unit", "normals", "locations"},
+                          "a captive-test table (its rows are in body axes)", out.notes);
   for (std::size_t c = 0; c < key.nu_b.size(); ++c)
     if (const Setting* given = settings.find(kVelocityNames[c]))
       throw InputError(SourceLocation{input.path.string()},

@@ -160,8 +160,8 @@ class CliCaptiveTable : public ::testing::Test {
       const std::string name = body + (sway ? "-Y" : "-N");
       out({"derivatives", "fit", "--body", body, "--output", sway ? "Y" : "N", "--terms", terms_of(set), "--name",
            name});
-      const json shown = json::parse(out({"derivatives", "show", name, "--form", "prime", "--length",
-                                          number(kLength), "--speed", number(kSpeed), "--density", "1025", "--json"}));
+      const json shown = json::parse(out({"derivatives", "show", name, "--form", "prime", "--length", number(kLength),
+                                          "--speed", number(kSpeed), "--density", "1025", "--json"}));
       const auto& coefficients = shown.at("coefficients");
       ASSERT_EQ(coefficients.size(), set.size());
       for (std::size_t k = 0; k < set.size(); ++k) {
@@ -178,8 +178,8 @@ class CliCaptiveTable : public ::testing::Test {
 
 TEST_F(CliCaptiveTable, MarinerPrimeTableGivesThePrintedDerivativesBack) {
   write("mariner-prime.csv", captive_table("prime"));
-  const std::string imported = out({"import", "--format", "captive-table", "mariner-prime.csv", "--body", "mariner",
-                                    "--length", number(kLength)});
+  const std::string imported = out(
+      {"import", "--format", "captive-table", "mariner-prime.csv", "--body", "mariner", "--length", number(kLength)});
   EXPECT_NE(imported.find("captive-test table, 41 runs (20 circular-motion, 8 drift-rudder, 6 rudder, "
                           "7 static-drift)"),
             std::string::npos)
@@ -272,9 +272,8 @@ TEST_F(CliCaptiveTable, RefusalsAreOneLineAndLeaveTheDatabaseAsItWas) {
 TEST_F(CliCaptiveTable, HelpNamesTheOptions) {
   const auto help = test::run_cli({"import", "--help"}, dir_.path());
   ASSERT_EQ(help.exit_code, 0);
-  for (const char* option :
-       {"captive-table", "--form", "--drift-convention", "--length", "--speed", "--density", "--draft", "--mass",
-        "--volume", "--gravity"})
+  for (const char* option : {"captive-table", "--form", "--drift-convention", "--length", "--speed", "--density",
+                             "--draft", "--mass", "--volume", "--gravity"})
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
 }
 

@@ -61,7 +61,7 @@ TEST(CaptiveTable, PrimeRowsBecomeDimensionalRunsInBodyAxes) {
   EXPECT_NEAR(run.key.nu_b[kR], 0.3 * 2.0 / 4.0, 1e-15);
   EXPECT_NEAR(run.key.disturbances.at("delta"), -5 * kDeg, 1e-15);
   const double force_unit = 0.5 * 1000 * 2 * 2 * 4 * 4;  // 1/2 rho U^2 L^2 = 32000 N
-  const double moment_unit = force_unit * 4;              // 1/2 rho U^2 L^3
+  const double moment_unit = force_unit * 4;             // 1/2 rho U^2 L^3
   ASSERT_TRUE(run.tau_b[kX] && run.tau_b[kY] && run.tau_b[kN]);
   EXPECT_FALSE(run.tau_b[kK]);
   EXPECT_NEAR(run.tau_b[kX]->total, -0.001 * force_unit, 1e-12);
@@ -204,8 +204,9 @@ TEST(CaptiveTable, MissingDensitySpeedDraftMassOrFormNameTheColumn) {
 TEST(CaptiveTable, BetaWithoutItsConventionIsRefused) {
   std::string text = kPrime;
   text.erase(text.find("# drift_convention = mmg\n"), 25);
-  EXPECT_CONTAINS(error_of(text), "captive.csv:5:14: column beta [deg]: the drift-angle convention is not stated; "
-                                  "expected --drift-convention mmg");
+  EXPECT_CONTAINS(error_of(text),
+                  "captive.csv:5:14: column beta [deg]: the drift-angle convention is not stated; "
+                  "expected --drift-convention mmg");
   EXPECT_CONTAINS(error_of("# drift_convention = port\n" + text),
                   "captive.csv:1: drift convention 'port' (line 1): expected mmg (beta = atan2(-v, u)) or fossen");
 }
@@ -226,11 +227,14 @@ TEST(CaptiveTable, BadUnitsAreRefusedNamingTheColumn) {
 }
 
 TEST(CaptiveTable, NonFiniteAndOutOfRangeValuesAreRefused) {
-  const std::string head = "# form = prime\n# drift_convention = mmg\n# length = 2\n# rho = 1000\nU [m/s],beta [deg],Y'\n";
+  const std::string head =
+      "# form = prime\n# drift_convention = mmg\n# length = 2\n# rho = 1000\nU [m/s],beta [deg],Y'\n";
   EXPECT_CONTAINS(error_of(head + "1,nan,0.01\n"), "captive.csv:6:3: column 'beta [deg]': found 'nan', expected");
   EXPECT_CONTAINS(error_of(head + "1,2,inf\n"), "captive.csv:6:5: column 'Y'': found 'inf', expected");
-  EXPECT_CONTAINS(error_of(head + "0,2,0.01\n"), "captive.csv:6:1: column 'U [m/s]': found '0', expected a speed above 0");
-  EXPECT_CONTAINS(error_of(head + "1,2,1e308\n"), "captive.csv:6:5: column 'Y'': '1e308' overflows when made dimensional");
+  EXPECT_CONTAINS(error_of(head + "0,2,0.01\n"),
+                  "captive.csv:6:1: column 'U [m/s]': found '0', expected a speed above 0");
+  EXPECT_CONTAINS(error_of(head + "1,2,1e308\n"),
+                  "captive.csv:6:5: column 'Y'': '1e308' overflows when made dimensional");
   EXPECT_CONTAINS(error_of(head + "1,2\n"), "captive.csv:6: found 2 fields, expected 3");
   CaptiveTableOptions set_delta;
   set_delta.disturbances["delta"] = 0.1;
@@ -250,25 +254,25 @@ TEST(CaptiveTable, UnknownTestTypeAndRowsThatAreNotTheirTestAreRefused) {
   EXPECT_CONTAINS(error_of(head + "static-drift,1,4,0.2,0.01\n"),
                   "captive.csv:6:1: column test: 'static-drift' with r' = 0.2; expected r' = 0");
   EXPECT_CONTAINS(error_of(head + "rudder,1,4,0,0.01\n"), "'rudder' with beta = 4; expected beta = 0");
-  EXPECT_CONTAINS(error_of(head + "circular-motion,1,4,0,0.01\n"),
-                  "column test: 'circular-motion' without a yaw rate");
+  EXPECT_CONTAINS(error_of(head + "circular-motion,1,4,0,0.01\n"), "column test: 'circular-motion' without a yaw rate");
 }
 
 TEST(CaptiveTable, SettingLinesAreCheckedAndCommentsLeftAlone) {
   const std::string rows = "U [m/s],Y'\n1,0.01\n";
   EXPECT_CONTAINS(error_of("# form = prime\n# lenght = 2\n" + rows),
                   "captive.csv:2: setting 'lenght' is not known; expected one of form, drift_convention, length");
-  EXPECT_CONTAINS(error_of("# length = 2\n# length = 3\n" + rows), "captive.csv:2: setting 'length' again (first on line 1)");
+  EXPECT_CONTAINS(error_of("# length = 2\n# length = 3\n" + rows),
+                  "captive.csv:2: setting 'length' again (first on line 1)");
   EXPECT_CONTAINS(error_of("# length = -2\n" + rows),
                   "captive.csv:1: setting 'length': found '-2', expected a number above 0");
   EXPECT_CONTAINS(error_of("# form = ittc\n" + rows), "captive.csv:1: form 'ittc' (line 1): expected prime");
   EXPECT_CONTAINS(error_of("# form = prime\n# length = 2\n# rho = 1000\n" + rows + "# speed = 3\n"),
                   "captive.csv:6: setting 'speed' after the header (line 4)");
   // A free comment, with or without '=' in it, is a comment.
-  const auto table = parse_captive_table(
-      "# Mariner, generated with L = 160.93 m\n# form = prime\n# length = 2\n# rho = 1000\n" + rows +
-          "# a note\n1.5,0.02\n",
-      "c.csv", {});
+  const auto table =
+      parse_captive_table("# Mariner, generated with L = 160.93 m\n# form = prime\n# length = 2\n# rho = 1000\n" +
+                              rows + "# a note\n1.5,0.02\n",
+                          "c.csv", {});
   EXPECT_EQ(table.runs.size(), 2u);
   EXPECT_CONTAINS(error_of(""), "captive.csv: no header line");
 }
