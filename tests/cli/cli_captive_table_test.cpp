@@ -257,7 +257,7 @@ TEST_F(CliCaptiveTable, RefusalsAreOneLineAndLeaveTheDatabaseAsItWas) {
   write("bad-unit.csv", "# form = prime\n# length = 3\n# density = 1000\nU [m/s],delta [m],Y'\n1,2,0.01\n");
   refused(with("bad-unit.csv"), "bad-unit.csv:4:9: column 'delta [m]': unit 'm' is m, expected rad");
   write("not-finite.csv", "# form = prime\n# length = 3\n# density = 1000\nU [m/s],r',Y'\n1,0.1,nan\n");
-  refused(with("not-finite.csv"), "not-finite.csv:5:9: column 'Y'': found 'nan', expected a finite number");
+  refused(with("not-finite.csv"), "not-finite.csv:5:7: column 'Y'': found 'nan', expected a finite number");
   write("test-type.csv", "# form = prime\n# length = 3\n# density = 1000\ntest,U [m/s],Y'\npmm,1,0.01\n");
   refused(with("test-type.csv"), "test-type.csv:5:1: column test: found 'pmm', expected static-drift, rudder");
   // Options: checked before any file is read.
