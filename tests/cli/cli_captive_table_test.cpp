@@ -215,12 +215,11 @@ TEST_F(CliCaptiveTable, TheBodysStoredLengthStandsInAndIsNamed) {
 }
 
 TEST_F(CliCaptiveTable, TheApiImportUsesItsOwnDatabasesBodyReference) {
-  if (test::on_postgresql()) GTEST_SKIP() << "the API opens the SQLite file itself";
   write("first.csv", captive_table("prime"));
   out({"import", "--format", "captive-table", "first.csv", "--body", "mariner", "--length", number(kLength)});
   out({"body", "set", "mariner", "--length", number(kLength)});
   write("second.csv", "# copy\n" + captive_table("prime"));
-  auto database = hydrocoef::Database::open((dir_.path() / "hydrocoef.db").string());
+  auto database = hydrocoef::Database::open(test::database_location(dir_.path() / "hydrocoef.db"));
   hydrocoef::ImportOptions options;
   options.format = "captive-table";
   options.body = "mariner";
