@@ -161,7 +161,7 @@ struct HYDROCOEF_EXPORT ImportOptions {
   /// refused with any other format. `density` is --rho by another name (one or
   /// the other).
   std::optional<std::string> form;              ///< --form: prime, bis or mmg
-  std::optional<std::string> drift_convention;  ///< --drift-convention: mmg (v = -U sin beta) or fossen (v = U sin beta)
+  std::optional<std::string> drift_convention;  ///< --drift-convention: mmg (v = -U sin beta) or fossen
   std::optional<double> length;                 ///< --length L [m]
   std::optional<double> speed;                  ///< --speed U [m/s], for a table without a speed column
   std::optional<double> density;                ///< --density [kg m^-3]
