@@ -38,6 +38,7 @@ void run_import(const ImportArgs& args, const GlobalOptions& global) {
   options.columns = assignments(args.columns, "--column");
   options.units = assignments(args.units, "--unit");
   options.monitors = assignments(args.monitors, "--monitor");
+  options.reference_database = global.database;  // a captive table's body reference data
   const bool progress = isatty(STDERR_FILENO) && !args.quiet;
   if (progress)
     options.progress = [](std::size_t done, std::size_t total, const std::string& path) {
@@ -63,8 +64,8 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
       ->required();
   command
       ->add_option("--format", args->options.format,
-                   "auto (by extension and content), table, monitor, history, cfdpost, vtk or cfx-out (the wall "
-                   "force summary of a CFX solver output)")
+                   "auto (by extension and content), table, monitor, history, cfdpost, vtk, cfx-out (the wall "
+                   "force summary of a CFX solver output) or captive-table (non-dimensional captive-test forces)")
       ->capture_default_str();
   command->add_option("--body", args->options.body, "Body name the runs belong to (default vehicle)");
   add_surface_options(*command, args->options);
@@ -99,6 +100,17 @@ void add_import_command(CLI::App& app, const GlobalOptions& global) {
                    "Monitor: average the last N iterations (as --window last:N; by default the steady window "
                    "is found as for any force history)")
       ->capture_default_str();
+  auto& o = args->options;
+  command->add_option("--form", o.form, "Captive table: its forces' form, prime (SNAME), bis (Norrbin) or mmg");
+  command->add_option("--drift-convention", o.drift_convention,
+                      "Captive table: mmg (beta = atan2(-v, u), bow to port for beta > 0) or fossen (atan2(v, u))");
+  command->add_option("--length", o.length, "Captive table: reference length L [m] (else the file's, body set's)");
+  command->add_option("--speed", o.speed, "Captive table without a speed column: the speed U [m/s] of every row");
+  command->add_option("--density", o.density, "Captive table: water density [kg m^-3] (as --rho)");
+  command->add_option("--draft", o.draft, "Captive table, mmg: draft d [m] (else the file's, body set's)");
+  command->add_option("--mass", o.mass, "Captive table, bis: mass m [kg] (else rho times the volume)");
+  command->add_option("--volume", o.volume, "Captive table, bis: displaced volume [m^3] (else the file's, body set's)");
+  command->add_option("--gravity", o.gravity, "Captive table: g [m s^-2] for bis and Fn (default 9.80665)");
   command->add_option("--jobs", args->options.jobs, "Inputs read in parallel (default: the number of cores)");
   command->add_flag("--replace", args->options.replace,
                     "Replace the runs of an earlier import of the same file with other settings, and supersede force "

@@ -86,7 +86,8 @@ struct HYDROCOEF_EXPORT RunTable {
 
 /// How Database::import_files reads its inputs: the options of `hydrocoef import`.
 struct HYDROCOEF_EXPORT ImportOptions {
-  /// auto (by extension and content), table, monitor, history, cfdpost or vtk.
+  /// auto (by extension and content), table, monitor, history, cfdpost, vtk,
+  /// cfx-out, or captive-table (never chosen by auto).
   std::string format = "auto";
   /// The body of runs whose settings name none ("" : "vehicle", as the CLI).
   std::string body;
@@ -154,6 +155,25 @@ struct HYDROCOEF_EXPORT ImportOptions {
   std::vector<std::string> uncertainty;         ///< --uncertainty "X=0.01", "N=2%"
   std::vector<std::string> set;                 ///< --set "NAME=VALUE": run key (velocity or disturbance, SI)
   bool at_rest = false;                         ///< --at-rest
+  /// Captive-test tables (format captive-table; docs/importing.md): the form
+  /// of their non-dimensional forces and the reference values it needs, SI,
+  /// taking precedence over the table's own `# NAME = VALUE` lines; each
+  /// refused with any other format. `density` is --rho by another name (one or
+  /// the other).
+  std::optional<std::string> form;              ///< --form: prime, bis or mmg
+  std::optional<std::string> drift_convention;  ///< --drift-convention: mmg (v = -U sin beta) or fossen
+  std::optional<double> length;                 ///< --length L [m]
+  std::optional<double> speed;                  ///< --speed U [m/s], for a table without a speed column
+  std::optional<double> density;                ///< --density [kg m^-3]
+  std::optional<double> draft;                  ///< --draft d [m] (mmg)
+  std::optional<double> mass;                   ///< --mass m [kg] (bis)
+  std::optional<double> volume;                 ///< --volume [m^3] (bis without a mass: m = rho volume)
+  std::optional<double> gravity;                ///< --gravity g [m s^-2] (bis, Fn; default 9.80665)
+  /// Captive-test tables: a database whose bodies' reference data (`body
+  /// set`: length, draft, volume) stand in for values neither the options nor
+  /// the table give ("" none; Database::import_files uses its own). One that
+  /// cannot be opened read-only is passed over.
+  std::string reference_database;
   /// Called after each input is read (from the reading threads, one at a
   /// time): inputs done, inputs in all, the input's path. May be empty.
   std::function<void(std::size_t done, std::size_t total, const std::string& path)> progress;

@@ -383,7 +383,11 @@ class Database:
                      ignore: _Texts = None, monitors: Mapping[str, str] | None = None, average_last: int = 1,
                      include: _Texts = None, exclude: _Texts = None, key_from_name: str | None = None,
                      manifest: _Path | None = None, sidecars: bool = True, prefer_surfaces: bool = False,
-                     replace: bool = False, also: str = "", jobs: int = 0) -> ImportSummary: ...
+                     replace: bool = False, also: str = "", jobs: int = 0, form: str | None = None,
+                     drift_convention: str | None = None, length: float | None = None,
+                     speed: float | None = None, density: float | None = None, draft: float | None = None,
+                     mass: float | None = None, volume: float | None = None,
+                     gravity: float | None = None) -> ImportSummary: ...
     def fit(self, *, body: str, output: str, terms: str, where: _Texts = None,
             exclude_runs: Iterable[int] | None = None, mirror: _Texts = None, mirror_odd: _Texts = None,
             loss: str = "squared", name: str | None = None, replace: bool = False, store: bool = True,

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -371,7 +372,10 @@ force history, nan where none), source (files, ';'-separated), history_flags.)do
              const py::object& disturbance_columns, const py::object& ignore, const py::object& monitors,
              std::size_t average_last, const py::object& include, const py::object& exclude,
              const py::object& key_from_name, const py::object& manifest, bool sidecars, bool prefer_surfaces,
-             bool replace, const std::string& also, unsigned jobs) {
+             bool replace, const std::string& also, unsigned jobs, const std::optional<std::string>& form,
+             const std::optional<std::string>& drift_convention, std::optional<double> length,
+             std::optional<double> speed, std::optional<double> density, std::optional<double> draft,
+             std::optional<double> mass, std::optional<double> volume, std::optional<double> gravity) {
             Database& d = database_of(self);
             std::vector<std::string> inputs;
             if (py::isinstance<py::str>(paths) || py::hasattr(paths, "__fspath__")) {
@@ -398,6 +402,15 @@ force history, nan where none), source (files, ';'-separated), history_flags.)do
             options.replace = replace;
             options.also = also;
             options.jobs = jobs;
+            options.form = form;
+            options.drift_convention = drift_convention;
+            options.length = length;
+            options.speed = speed;
+            options.density = density;
+            options.draft = draft;
+            options.mass = mass;
+            options.volume = volume;
+            options.gravity = gravity;
             py::gil_scoped_release release;
             return d.import_files(inputs, options);
           },
@@ -405,11 +418,18 @@ force history, nan where none), source (files, ';'-separated), history_flags.)do
           "columns"_a = py::none(), "units"_a = py::none(), "disturbance_columns"_a = py::none(),
           "ignore"_a = py::none(), "monitors"_a = py::none(), "average_last"_a = 1, "include"_a = py::none(),
           "exclude"_a = py::none(), "key_from_name"_a = py::none(), "manifest"_a = py::none(), "sidecars"_a = true,
-          "prefer_surfaces"_a = false, "replace"_a = false, "also"_a = "", "jobs"_a = 0,
+          "prefer_surfaces"_a = false, "replace"_a = false, "also"_a = "", "jobs"_a = 0, "form"_a = py::none(),
+          "drift_convention"_a = py::none(), "length"_a = py::none(), "speed"_a = py::none(), "density"_a = py::none(),
+          "draft"_a = py::none(), "mass"_a = py::none(), "volume"_a = py::none(), "gravity"_a = py::none(),
           R"doc(Imports files, folders and case folders in one transaction, as `hydrocoef import` does.
 
 paths: a path or a list of paths. body: the runs' body (default 'vehicle').
-format: auto, table, monitor, history, cfdpost or vtk.
+format: auto, table, monitor, history, cfdpost, vtk, cfx-out or captive-table.
+form, drift_convention, length, speed, density, draft, mass, volume, gravity:
+  captive-test tables (format 'captive-table'): the forces' form (prime, bis,
+  mmg), the drift convention (mmg: beta = atan2(-v, u); fossen: atan2(v, u))
+  and the reference values [SI], over the table's own '# NAME = VALUE' lines;
+  length, draft and volume default to the body's stored reference data.
 settings: run settings as a sidecar holds them, above every other source:
   {"rho": 998.2, "nu": 1.004e-6, "axes": "-x,y,-z", "sign": "opposing",
    "ref_point": [0, 0, 0.1], "disturbances": {"current_v": 0.05}, "u": 0.2, ...}

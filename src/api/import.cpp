@@ -10,8 +10,12 @@
 #include "src/loads/frame.hpp"
 #include "src/loads/symmetry.hpp"
 #include "src/pipeline/given_uncertainty.hpp"
+#include "src/store/body_reference.hpp"
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -134,6 +138,10 @@ SettingsLayer command_line_layer(const ImportOptions& options) {
     }
   }
   if (options.sign) layer.set("sign", *options.sign, "--sign");
+  if (options.density) {
+    if (options.rho) throw InputError("--rho and --density both give the density; expected one of them");
+    set_number("rho", options.density, "--density");
+  }
 
   // The settings map: each value JSON, or a plain text when it is not ("-x,y,-z").
   if (!options.settings.empty()) {
@@ -155,10 +163,99 @@ SettingsLayer command_line_layer(const ImportOptions& options) {
   return layer;
 }
 
-void ImportOptions::validate() const { (void)command_line_layer(*this); }
+namespace {
+
+/// The captive-table options checked: a known form and convention, positive
+/// finite values, and none of them with another format.
+void check_captive_options(const ImportOptions& options) {
+  const bool captive = options.format == "captive-table";
+  const auto only_captive = [&](bool given, const char* option) {
+    if (given && !captive)
+      throw InputError(std::string(option) + " is for captive-test tables; expected --format captive-table with it");
+  };
+  only_captive(options.form.has_value(), "--form");
+  only_captive(options.drift_convention.has_value(), "--drift-convention");
+  only_captive(options.density.has_value(), "--density");
+  const std::array<std::pair<const std::optional<double>*, const char*>, 7> values{{{&options.length, "--length"},
+                                                                                    {&options.speed, "--speed"},
+                                                                                    {&options.density, "--density"},
+                                                                                    {&options.draft, "--draft"},
+                                                                                    {&options.mass, "--mass"},
+                                                                                    {&options.volume, "--volume"},
+                                                                                    {&options.gravity, "--gravity"}}};
+  for (const auto& [value, option] : values) {
+    only_captive(value->has_value(), option);
+    if (*value && !(std::isfinite(**value) && **value > 0.0))
+      throw InputError(std::string(option) + " must be a finite number above 0, not " + shortest_number(**value));
+  }
+  if (options.form && *options.form != "prime" && *options.form != "bis" && *options.form != "mmg")
+    throw InputError("--form '" + printable_text(*options.form, 40) +
+                     "': expected prime (SNAME 1950), bis (Norrbin 1971) or mmg (Yasukawa and Yoshimura 2015)");
+  if (options.drift_convention && *options.drift_convention != "mmg" && *options.drift_convention != "fossen")
+    throw InputError("--drift-convention '" + printable_text(*options.drift_convention, 40) +
+                     "': expected mmg (beta = atan2(-v, u)) or fossen (beta = atan2(v, u))");
+}
+
+CaptiveTableOptions captive_options(const ImportOptions& options) {
+  CaptiveTableOptions out;
+  out.form = options.form;
+  out.drift_convention = options.drift_convention;
+  out.length = {options.length, "--length"};
+  out.speed = {options.speed, "--speed"};
+  out.draft = {options.draft, "--draft"};
+  out.mass = {options.mass, "--mass"};
+  out.volume = {options.volume, "--volume"};
+  out.gravity = {options.gravity, "--gravity"};
+  return out;  // the density comes with each input's settings (--rho, --density, sidecars)
+}
+
+/// The bodies' stored reference data, for captive-test tables.
+std::map<std::string, CaptiveBodyReference> stored_body_references(RunDatabase& store) {
+  std::map<std::string, CaptiveBodyReference> out;
+  for (const auto& record : store.body_references())
+    out[record.body] = CaptiveBodyReference{record.length, record.draft, record.displaced_volume};
+  return out;
+}
+
+/// From options.reference_database, for a captive-table import; none when it
+/// cannot be opened read-only (a database not made yet).
+std::map<std::string, CaptiveBodyReference> reference_database_bodies(const ImportOptions& options) {
+  if (options.format != "captive-table" || options.reference_database.empty()) return {};
+  std::error_code ec;
+  const bool url = options.reference_database.find("://") != std::string::npos;
+  if (!url && !std::filesystem::exists(options.reference_database, ec)) return {};
+  try {
+    const Database database = Database::open(options.reference_database, OpenMode::ReadOnly);
+    auto& impl = Database::Access::impl(database);
+    const std::lock_guard lock(impl.mutex);
+    return stored_body_references(impl.open_store());
+  } catch (const InputError&) {
+    return {};  // a database that cannot be read says so when the runs are stored
+  }
+}
+
+PreparedImport prepare(const std::vector<std::string>& paths, const ImportOptions& options,
+                       std::map<std::string, CaptiveBodyReference> body_references);
+
+}  // namespace
+
+void ImportOptions::validate() const {
+  check_captive_options(*this);
+  (void)command_line_layer(*this);
+}
 
 PreparedImport prepare_import(const std::vector<std::string>& paths, const ImportOptions& options) {
+  check_captive_options(options);
+  return prepare(paths, options, reference_database_bodies(options));
+}
+
+namespace {
+
+PreparedImport prepare(const std::vector<std::string>& paths, const ImportOptions& options,
+                       std::map<std::string, CaptiveBodyReference> body_references) {
   ImportRequest request;
+  request.captive = captive_options(options);
+  request.body_references = std::move(body_references);
   for (const auto& path : paths) request.inputs.emplace_back(path);
   request.command_line = command_line_layer(options);  // validates the options
   request.format = options.format;
@@ -192,6 +289,8 @@ PreparedImport prepare_import(const std::vector<std::string>& paths, const Impor
   return PreparedImport::Access::make(std::move(impl));
 }
 
+}  // namespace
+
 ImportSummary import_prepared(Database& database, PreparedImport&& prepared) {
   auto& p = PreparedImport::Access::impl(prepared);
   auto& impl = Database::Access::impl(database);
@@ -204,11 +303,14 @@ ImportSummary import_prepared(Database& database, PreparedImport&& prepared) {
 }
 
 ImportSummary Database::import_files(const std::vector<std::string>& paths, const ImportOptions& options) {
+  check_captive_options(options);
+  std::map<std::string, CaptiveBodyReference> bodies;
   {
     const std::lock_guard lock(impl_->mutex);
-    impl_->writable_store("an import");  // refused before anything is read
+    RunDatabase& store = impl_->writable_store("an import");  // refused before anything is read
+    if (options.format == "captive-table") bodies = stored_body_references(store);
   }
-  return import_prepared(*this, prepare_import(paths, options));
+  return import_prepared(*this, prepare(paths, options, std::move(bodies)));
 }
 
 }  // namespace api

@@ -27,7 +27,7 @@ bool is_key_setting(const std::string& name) {
 /// True when the input states its runs' keys (a table's rows, or a velocity
 /// or disturbance from any source), false when its key is only the default.
 bool states_key(const ImportedInput& input) {
-  if (input.format == "table") return true;
+  if (input.format == "table" || input.format == "captive-table") return true;
   return std::any_of(input.settings.values.begin(), input.settings.values.end(),
                      [](const auto& entry) { return is_key_setting(entry.first); });
 }
@@ -35,7 +35,8 @@ bool states_key(const ImportedInput& input) {
 /// A file and where its run's key came from, for collision messages.
 std::string key_origin(const ImportedInput& input, const ImportedRun& run) {
   const std::string file = printable_text(input.input.path.string(), 200);
-  if (input.format == "table") return file + " (its row at line " + std::to_string(run.source_line) + ")";
+  if (input.format == "table" || input.format == "captive-table")
+    return file + " (its row at line " + std::to_string(run.source_line) + ")";
   std::string parts;
   for (const auto& [name, setting] : input.settings.values) {
     if (!is_key_setting(name)) continue;

@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "importers/captive_table.hpp"
 #include "importers/cfx_monitor.hpp"
 #include "src/core/run.hpp"
 #include "src/history/history_analysis.hpp"
@@ -61,8 +62,13 @@ struct ImportRequest {
   std::vector<std::filesystem::path> inputs;
   SettingsLayer command_line;  ///< source CommandLine
   ImportPlanOptions plan;
-  std::string format = "auto";  ///< auto, table, monitor, cfdpost, vtk, history
+  std::string format = "auto";  ///< auto, table, monitor, cfdpost, vtk, history, captive-table
   ColumnOptions columns;
+  /// Captive-test tables: the form, drift convention and reference values
+  /// given as options (body, disturbances, fluid and sign come from each
+  /// input's settings), and the stored reference data of the bodies by name.
+  CaptiveTableOptions captive;
+  std::map<std::string, CaptiveBodyReference> body_references;
   std::string default_body = "vehicle";
   /// Refuse a history or surface input whose velocity no setting gives
   /// (require_velocity); `integrate`, which stores nothing, reads without.
@@ -82,6 +88,9 @@ struct ImportedInput {
   std::optional<SurfaceRun> surface;
   std::optional<HistoryAnalysis> history;
   std::vector<std::string> notes;
+  /// A captive-test table's normalisation and reference values, canonical:
+  /// part of the import's identity (settings_key); "" for other formats.
+  std::string captive_settings;
 };
 
 /// A force-history input before any averaging: every sample in body axes,
@@ -114,7 +123,8 @@ ImportedInput read_input(const PlannedInput& input, const ImportRequest& request
 /// order. After all stop, the first error in plan order is rethrown.
 std::vector<ImportedInput> read_inputs(const ImportPlan& plan, const ImportRequest& request);
 
-/// The format an input will be read as: the requested one (checked), or by
+/// The format an input will be read as: the requested one (checked; a
+/// "captive-table" only when requested), or by
 /// extension and first bytes: "cfdpost", "vtk", "monitor", "table",
 /// "openfoam-forces" (OpenFOAM's force files, or a folder of them),
 /// "force-history" (a table with a time or iteration column),

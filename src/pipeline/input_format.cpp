@@ -74,10 +74,11 @@ bool looks_like_time_history(std::string_view head) {
 }  // namespace
 
 std::string input_format(const PlannedInput& input, const std::string& requested) {
-  static const std::vector<std::string> known = {"auto", "cfdpost", "vtk", "monitor", "table", "history", "cfx-out"};
+  static const std::vector<std::string> known = {"auto",  "cfdpost", "vtk",     "monitor",
+                                                 "table", "history", "cfx-out", "captive-table"};
   if (std::find(known.begin(), known.end(), requested) == known.end())
     throw InputError("--format '" + requested +
-                     "': expected one of auto, table, monitor, history, cfdpost, vtk, cfx-out");
+                     "': expected one of auto, table, monitor, history, cfdpost, vtk, cfx-out, captive-table");
   if (input.kind == InputKind::OpenFoamCase) return "openfoam-case";
   std::error_code ec;
   if (fs::is_directory(input.path, ec)) return "openfoam-forces";  // a function object's folder

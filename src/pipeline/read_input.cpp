@@ -86,6 +86,41 @@ void refuse_forced_oscillation(const fs::path& case_dir, std::vector<std::string
                    "`, which reads forced-oscillation runs, or a case without an imposed motion");
 }
 
+/// A captive-test table: its rows' keys and forces from its columns and the
+/// table's normalisation (importers/captive_table.hpp); the body, fixed
+/// disturbances, density, viscosity and sign from the input's settings.
+void read_captive_input(const PlannedInput& input, const ImportRequest& request, const RunSettings& settings,
+                        const RunKey& key, const Vec3& reference_b, ImportedInput& out) {
+  settings_not_applicable(settings,
+                          {"flow", "axes", "origin", "cofr", "symmetry", "window", "pressure", "shear", "pressure_kind",
+                           "shear_convention", "length_unit", "pressure_unit", "normals", "locations"},
+                          "a captive-test table (its rows are in body axes)", out.notes);
+  for (std::size_t c = 0; c < key.nu_b.size(); ++c)
+    if (const Setting* given = settings.find(kVelocityNames[c]))
+      throw InputError(SourceLocation{input.path.string()},
+                       "setting '" + std::string(kVelocityNames[c]) + "' (" + given->origin.where +
+                           "): a captive-test table's rows give u, v and r (from U, beta and r'); expected no "
+                           "velocity setting");
+  CaptiveTableOptions options = request.captive;
+  options.body = key.body;
+  options.disturbances = key.disturbances;
+  if (const auto body = request.body_references.find(key.body); body != request.body_references.end())
+    options.body_reference = body->second;
+  const Fluid fluid = fluid_of(settings);
+  if (fluid.density_kg_m3)
+    options.density = CaptiveValue{fluid.density_kg_m3, settings.find("rho")->origin.where.empty()
+                                                            ? std::string("the settings")
+                                                            : settings.find("rho")->origin.where};
+  options.kinematic_viscosity = fluid.kinematic_viscosity_m2_s;
+  options.sign = sign_of(settings);
+  options.reference_point_b = reference_b;
+  options.ignored_columns = request.columns.ignored_columns;
+  CaptiveTableFile table = read_captive_table(input.path, options);
+  out.batch = std::move(table.batch);
+  out.notes.push_back(std::move(table.note));
+  out.captive_settings = std::move(table.settings_key);
+}
+
 /// The runs of one input as its format gives them, with its settings.
 ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& request) {
   RunSettings settings = reading::input_settings(input, request);
@@ -134,10 +169,13 @@ ImportedInput read_input_values(const PlannedInput& input, const ImportRequest& 
     options.fluid = fluid_of(settings);
     options.reference_point_b = reference_b;
     out.batch = read_force_table(input.path, options);
+  } else if (format == "captive-table") {
+    read_captive_input(input, request, settings, key, reference_b, out);
   } else {
     throw InputError(SourceLocation{input.path.string()}, "no importer for format '" + format + "'");
   }
   record_settings(out.batch, settings, format, input.path);
+  if (!out.captive_settings.empty()) out.batch.source.settings_key += " " + out.captive_settings;
   out.settings = std::move(settings);
   return out;
 }
