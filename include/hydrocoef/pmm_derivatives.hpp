@@ -119,7 +119,7 @@ struct HYDROCOEF_EXPORT PmmDerivatives {
 /// The body's sway and yaw derivatives from its stored pure sway and pure
 /// yaw runs. InputError for a bad option; a body with no stored runs, or
 /// none that moves sway or yaw; a chosen run that is not the body's or not a
-/// sway or yaw run; a run without Y or N; runs of one group whose densities
+/// sway or yaw run; a run without Y or N; chosen runs whose densities
 /// differ (without a density given); or, with prime, a missing L, rho or
 /// U > 0 (naming what to give). Reads only.
 HYDROCOEF_EXPORT PmmDerivatives pmm_derivatives(const Database& database, const PmmDerivativeOptions& options);

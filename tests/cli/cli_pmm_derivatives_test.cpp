@@ -17,6 +17,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/support/run_cli.hpp"
@@ -215,6 +216,38 @@ TEST(PmmDerivativesCli, BadInputIsOneLineWithExitCodeTwoAndTheDatabaseUnchanged)
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.out.find("note: 1 run of another DOF left out"), std::string::npos) << ok.out;
   EXPECT_NE(ok.out.find("note: no reference length: no omega' or prime form"), std::string::npos) << ok.out;
+  EXPECT_EQ(test::dump_database(dir / "hydrocoef.db"), before);
+}
+
+TEST(PmmDerivativesCli, RunsOfDifferentDensitiesNeedTheDensityGiven) {
+  TempDir dir;
+  const double period = 2.0 * kPi / kOmega;
+  // Two runs (of two amplitudes: a file of the same contents would replace the first) at two densities.
+  for (const auto& [rho, amplitude] : {std::pair{"1000", 5.0}, std::pair{"1025", 6.0}}) {
+    const fs::path csv = write_run(dir.path(), std::string("sway-") + rho + ".csv", true, amplitude);
+    ASSERT_EQ(run_cli({"pmm", csv.string(), "--body", "twin", "--motion", "sway", "--amplitude", number(amplitude),
+                       "--period", number(period), "--set", "u=2", "--rho", rho},
+                      dir.path())
+                  .exit_code,
+              0);
+  }
+  const std::string before = test::dump_database(dir / "hydrocoef.db");
+  const auto refused = run_cli({"derivatives", "pmm", "twin", "--length", "10"}, dir.path());
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("body 'twin': the sway and yaw runs state densities 1000 and 1025 kg/m^3; expected one "
+                             "(give --density)"),
+            std::string::npos)
+      << refused.err;
+  const auto given =
+      run_cli({"derivatives", "pmm", "twin", "--length", "10", "--density", "1010", "--json"}, dir.path());
+  ASSERT_EQ(given.exit_code, 0) << given.err;
+  const json out = json::parse(given.out);
+  EXPECT_EQ(out["density_from"], "--density");
+  // Y_vdot' = Y_vdot / (1/2 rho L^3) with the density given.
+  const json& y_vdot = out["sets"][0]["derivatives"][1];
+  EXPECT_NEAR(y_vdot["prime"].get<double>(), y_vdot["value"].get<double>() / (0.5 * 1010.0 * 1000.0),
+              1e-12 * std::abs(y_vdot["prime"].get<double>()));
+  EXPECT_NEAR(out["sets"][0]["omega_prime"].get<double>(), kOmega * 10.0 / 2.0, 1e-12);
   EXPECT_EQ(test::dump_database(dir / "hydrocoef.db"), before);
 }
 
