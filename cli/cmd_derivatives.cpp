@@ -92,7 +92,9 @@ void add_show(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, co
 void add_derivatives_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<DerivativesArgs>();
   auto* derivatives = app.add_subcommand(
-      "derivatives", "Derivative models of several variables: fit, list, show (SI, prime, bis, MMG), delete, evaluate");
+      "derivatives",
+      "Derivative models of several variables: fit, list, show (SI, prime, bis, MMG), delete, evaluate; pmm: sway "
+      "and yaw derivatives from forced-oscillation runs");
   derivatives->require_subcommand(1);
   add_fit(*derivatives, args, global);
 
@@ -127,6 +129,7 @@ void add_derivatives_command(CLI::App& app, const GlobalOptions& global) {
     const auto database = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly);
     print(hydrocoef::evaluate_derivative_model(database, options), args->json);
   });
+  add_derivatives_pmm_command(*derivatives, global);
 }
 
 }  // namespace hydrocoef::cli

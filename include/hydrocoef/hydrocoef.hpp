@@ -26,6 +26,8 @@
 //                              added_mass_matrix, ...), where to run CFD next (suggest_runs)
 //   hydrocoef/derivatives.hpp  derivative models of several variables: fit_derivative_model,
 //                              list, show (in the prime, bis or MMG form), delete, evaluate
+//   hydrocoef/pmm_derivatives.hpp  pmm_derivatives: sway and yaw derivatives (Y_v, Y_vdot, ...,
+//                              N_rdot) from pure sway and pure yaw forced-oscillation runs
 //   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
 //                              trajectory as columns, with the Monte Carlo
 //                              bands and the comparison with a measured
@@ -53,6 +55,7 @@
 #include "hydrocoef/exports.hpp"
 #include "hydrocoef/integrate.hpp"
 #include "hydrocoef/plot.hpp"
+#include "hydrocoef/pmm_derivatives.hpp"
 #include "hydrocoef/records.hpp"
 #include "hydrocoef/reference.hpp"
 #include "hydrocoef/simulation.hpp"

@@ -24,6 +24,7 @@ Analyses: grid_convergence (gci), analyse_pmm and store_pmm (pmm), pmm_runs, del
 added_mass_matrix (added-mass), suggest_runs (suggest).
 Reference data and coefficients: set_body_reference (body set), body_references (body show),
 run_coefficients (runs --coefficients).
+Sway and yaw derivatives from forced oscillation: pmm_derivatives (derivatives pmm).
 """
 
 import json as _json
@@ -47,6 +48,8 @@ from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, Le
 from ._hydrocoef import (DerivativeCoefficient, DerivativeDeletion, DerivativeEvaluation, DerivativeModel,
                          DerivativeModelList, delete_derivative_model, evaluate_derivative_model,
                          fit_derivative_model, list_derivative_models, show_derivative_model)
+from ._hydrocoef import (PmmDerivative, PmmDerivativeRun, PmmDerivatives, PmmFrequencyDerivatives,
+                         pmm_derivatives)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
@@ -64,6 +67,7 @@ __all__ += ["set_body_reference", "body_references", "BodyReference", "BodyRefer
 __all__ += ["fit_derivative_model", "list_derivative_models", "show_derivative_model", "delete_derivative_model",
             "evaluate_derivative_model", "DerivativeModel", "DerivativeCoefficient", "DerivativeModelList",
             "DerivativeDeletion", "DerivativeEvaluation"]
+__all__ += ["pmm_derivatives", "PmmDerivatives", "PmmFrequencyDerivatives", "PmmDerivative", "PmmDerivativeRun"]
 
 
 class Table(dict):

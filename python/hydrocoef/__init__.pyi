@@ -892,3 +892,53 @@ def show_derivative_model(database: Database, name: str, *, form: str = "dimensi
                           gravity: float = 9.80665) -> DerivativeModel: ...
 def delete_derivative_model(database: Database, name: str) -> DerivativeDeletion: ...
 def evaluate_derivative_model(database: Database, name: str, at: Mapping[str, float]) -> DerivativeEvaluation: ...
+
+class PmmDerivative:
+    name: str
+    value: float
+    std_error: float
+    unit: str
+    source: str
+    prime: float | None
+    prime_std_error: float | None
+    normalisation: str
+
+class PmmFrequencyDerivatives:
+    motion: str
+    dof: str
+    speed: float
+    omega: float
+    period: float
+    omega_prime: float | None
+    runs: int
+    amplitude_min: float
+    amplitude_max: float
+    amplitude_unit: str
+    pmm_runs: list[int]
+    derivatives: list[PmmDerivative]
+
+class PmmDerivativeRun:
+    id: int
+    dof: str
+    speed: float
+    amplitude: float
+    omega: float
+    source_path: str
+    derivatives: list[PmmDerivative]
+
+class PmmDerivatives:
+    body: str
+    length: float | None
+    density: float | None
+    length_from: str
+    density_from: str
+    sets: list[PmmFrequencyDerivatives]
+    runs: list[PmmDerivativeRun]
+    other_runs: int
+    notes: list[str]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def pmm_derivatives(database: Database, body: str, *, runs: Sequence[int] | None = None, speed: float | None = None,
+                    length: float | None = None, density: float | None = None,
+                    prime: bool = False) -> PmmDerivatives: ...

@@ -13,6 +13,7 @@
 //                   added_mass_matrix, suggest_runs and their results
 //   reference.cpp   set_body_reference, body_references, run_coefficients and their results
 //   derivatives.cpp fit_derivative_model, list/show/delete/evaluate_derivative_model and their results
+//   pmm_derivatives.cpp pmm_derivatives (sway and yaw derivatives from forced oscillation) and its result
 //   common.cpp      the helpers below that are not one topic's
 #pragma once
 
@@ -43,6 +44,7 @@ void bind_plots(py::module_& m);
 void register_analysis(py::module_& m);
 void register_reference(py::module_& m);
 void register_derivatives(py::module_& m);
+void register_pmm_derivatives(py::module_& m);
 
 /// The Database of a method's self. pybind11 would run a method on an
 /// instance whose C++ object was never made on uninitialised memory; this

@@ -27,35 +27,6 @@ std::string four_digits(double value) {
   return text.str();
 }
 
-/// Inverse-variance weighted mean and its standard error, scaled up by the
-/// Birge ratio sqrt(chi^2 / (n - 1)) when the runs scatter more than their
-/// standard errors say (runs at other amplitudes or frequencies differ by
-/// more than their period-to-period spread); the plain mean and the standard
-/// error of the spread when a standard error is zero.
-std::pair<double, double> combined(const std::vector<double>& values, const std::vector<double>& se) {
-  const std::size_t n = values.size();
-  if (n == 1) return {values[0], se[0]};
-  const bool weighted = std::all_of(se.begin(), se.end(), [](double s) { return s > 0.0; });
-  if (weighted) {
-    double sw = 0.0, swx = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double w = 1.0 / (se[k] * se[k]);
-      sw += w;
-      swx += w * values[k];
-    }
-    const double mean = swx / sw;
-    double chi2 = 0.0;
-    for (std::size_t k = 0; k < n; ++k) chi2 += (values[k] - mean) * (values[k] - mean) / (se[k] * se[k]);
-    const double birge = std::max(1.0, chi2 / static_cast<double>(n - 1));
-    return {mean, std::sqrt(birge / sw)};
-  }
-  double mean = 0.0;
-  for (const double v : values) mean += v / static_cast<double>(n);
-  double ss = 0.0;
-  for (const double v : values) ss += (v - mean) * (v - mean);
-  return {mean, std::sqrt(ss / static_cast<double>(n - 1) / static_cast<double>(n))};
-}
-
 bool same_frequency(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }
 
 /// The frequency of `frequencies` that `omega` equals.
@@ -78,6 +49,30 @@ std::string period_list(const std::string& body, const std::vector<PmmRecord>& r
 }
 
 }  // namespace
+
+std::pair<double, double> combine_pmm_estimates(const std::vector<double>& values, const std::vector<double>& se) {
+  const std::size_t n = values.size();
+  if (n == 1) return {values[0], se[0]};
+  const bool weighted = std::all_of(se.begin(), se.end(), [](double s) { return s > 0.0; });
+  if (weighted) {
+    double sw = 0.0, swx = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double w = 1.0 / (se[k] * se[k]);
+      sw += w;
+      swx += w * values[k];
+    }
+    const double mean = swx / sw;
+    double chi2 = 0.0;
+    for (std::size_t k = 0; k < n; ++k) chi2 += (values[k] - mean) * (values[k] - mean) / (se[k] * se[k]);
+    const double birge = std::max(1.0, chi2 / static_cast<double>(n - 1));
+    return {mean, std::sqrt(birge / sw)};
+  }
+  double mean = 0.0;
+  for (const double v : values) mean += v / static_cast<double>(n);
+  double ss = 0.0;
+  for (const double v : values) ss += (v - mean) * (v - mean);
+  return {mean, std::sqrt(ss / static_cast<double>(n - 1) / static_cast<double>(n))};
+}
 
 std::vector<double> pmm_frequencies(const std::string& body, const std::vector<PmmRecord>& records) {
   std::vector<double> out;
@@ -168,8 +163,8 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
       const auto& s = samples[i][j];
       if (s.m.empty()) continue;
       PmmEntry& e = out.measured[i][j];
-      std::tie(e.added_mass, e.added_mass_se) = combined(s.m, s.m_se);
-      std::tie(e.damping, e.damping_se) = combined(s.d, s.d_se);
+      std::tie(e.added_mass, e.added_mass_se) = combine_pmm_estimates(s.m, s.m_se);
+      std::tie(e.damping, e.damping_se) = combine_pmm_estimates(s.d, s.d_se);
       double lo = s.m.front(), hi = s.m.front();
       for (const double v : s.m) lo = std::min(lo, v), hi = std::max(hi, v);
       e.added_mass_spread = hi - lo;
@@ -281,8 +276,8 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
           d.push_back(c.damping), d_se.push_back(c.damping_se);
         }
     if (frequency.runs > 0) {
-      std::tie(frequency.added_mass, frequency.added_mass_se) = combined(m, m_se);
-      std::tie(frequency.damping, frequency.damping_se) = combined(d, d_se);
+      std::tie(frequency.added_mass, frequency.added_mass_se) = combine_pmm_estimates(m, m_se);
+      std::tie(frequency.damping, frequency.damping_se) = combine_pmm_estimates(d, d_se);
       out.by_frequency.push_back(frequency);
     }
   }

@@ -39,6 +39,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "src/core/matrix6.hpp"
@@ -101,6 +102,15 @@ struct AddedMassAssembly {
   std::size_t records = 0;                     ///< runs at the chosen frequency
   std::size_t other_frequency_records = 0;     ///< the body's runs at other frequencies (left out)
 };
+
+/// The estimate of one entry from several runs: the inverse-variance
+/// weighted mean and its standard error, scaled up by the Birge ratio
+/// sqrt(chi^2 / (n - 1)) when the runs scatter more than their standard
+/// errors say; the plain mean and the standard error of the spread when a
+/// standard error is zero; one run's own value and standard error.
+/// {value, standard error}; `values` and `standard_errors` of one length > 0.
+std::pair<double, double> combine_pmm_estimates(const std::vector<double>& values,
+                                                const std::vector<double>& standard_errors);
 
 /// The distinct frequencies [rad/s] of a body's runs (equal to 1e-9), ascending.
 std::vector<double> pmm_frequencies(const std::string& body, const std::vector<PmmRecord>& records);
