@@ -6,7 +6,6 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -17,18 +16,8 @@ namespace {
 
 using namespace pybind11::literals;
 
-/// tp_new of the result classes here: refused (only pmm_derivatives makes them).
-PyObject* refuse_new(PyTypeObject* type, PyObject*, PyObject*) {
-  const char* dot = std::strrchr(type->tp_name, '.');
-  PyErr_SetString(PyExc_TypeError, ("hydrocoef." + std::string(dot ? dot + 1 : type->tp_name) +
-                                    " objects come from pmm_derivatives; they cannot be made directly")
-                                       .c_str());
-  return nullptr;
-}
-
-py::custom_type_setup pmm_derivatives_result() {
-  return py::custom_type_setup([](PyHeapTypeObject* heap_type) { heap_type->ht_type.tp_new = refuse_new; });
-}
+/// The call that makes the result classes here.
+constexpr const char* kMadeBy = "pmm_derivatives";
 
 }  // namespace
 
@@ -37,7 +26,7 @@ void register_pmm_derivatives(py::module_& m) {
   using hydrocoef::PmmDerivativeRun;
   using hydrocoef::PmmDerivatives;
   using hydrocoef::PmmFrequencyDerivatives;
-  py::class_<PmmDerivative>(m, "PmmDerivative", py::is_final(), pmm_derivatives_result(),
+  py::class_<PmmDerivative>(m, "PmmDerivative", py::is_final(), made_by_the_module_only(kMadeBy),
                             "One sway or yaw derivative (SI), with its prime form when L, rho and U are known.")
       .def_readonly("name", &PmmDerivative::name, "Y_v, Y_vdot, N_v, N_vdot, Y_r, Y_rdot, N_r or N_rdot.")
       .def_readonly("value", &PmmDerivative::value)
@@ -47,7 +36,7 @@ void register_pmm_derivatives(py::module_& m) {
       .def_readonly("prime", &PmmDerivative::prime, "The prime (SNAME 1950) value, or None.")
       .def_readonly("prime_std_error", &PmmDerivative::prime_std_error)
       .def_readonly("normalisation", &PmmDerivative::normalisation);
-  py::class_<PmmFrequencyDerivatives>(m, "PmmFrequencyDerivatives", py::is_final(), pmm_derivatives_result(),
+  py::class_<PmmFrequencyDerivatives>(m, "PmmFrequencyDerivatives", py::is_final(), made_by_the_module_only(kMadeBy),
                                       "The derivatives of the runs of one motion at one speed and frequency.")
       .def_readonly("motion", &PmmFrequencyDerivatives::motion, "pure sway or pure yaw.")
       .def_readonly("dof", &PmmFrequencyDerivatives::dof)
@@ -61,7 +50,7 @@ void register_pmm_derivatives(py::module_& m) {
       .def_readonly("amplitude_unit", &PmmFrequencyDerivatives::amplitude_unit)
       .def_readonly("pmm_runs", &PmmFrequencyDerivatives::pmm_runs)
       .def_readonly("derivatives", &PmmFrequencyDerivatives::derivatives);
-  py::class_<PmmDerivativeRun>(m, "PmmDerivativeRun", py::is_final(), pmm_derivatives_result(),
+  py::class_<PmmDerivativeRun>(m, "PmmDerivativeRun", py::is_final(), made_by_the_module_only(kMadeBy),
                                "One stored run's derivatives (SI).")
       .def_readonly("id", &PmmDerivativeRun::id)
       .def_readonly("dof", &PmmDerivativeRun::dof)
@@ -70,7 +59,7 @@ void register_pmm_derivatives(py::module_& m) {
       .def_readonly("omega", &PmmDerivativeRun::omega)
       .def_readonly("source_path", &PmmDerivativeRun::source_path)
       .def_readonly("derivatives", &PmmDerivativeRun::derivatives);
-  py::class_<PmmDerivatives>(m, "PmmDerivatives", py::is_final(), pmm_derivatives_result(),
+  py::class_<PmmDerivatives>(m, "PmmDerivatives", py::is_final(), made_by_the_module_only(kMadeBy),
                              "A body's sway and yaw derivatives, as `hydrocoef derivatives pmm`.")
       .def_readonly("body", &PmmDerivatives::body)
       .def_readonly("length", &PmmDerivatives::length, "L [m] used, or None.")

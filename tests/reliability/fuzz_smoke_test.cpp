@@ -87,10 +87,18 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
   EXPECT_EQ(executed, kFuzzRuns) << fuzz.log;
 }
 
-const std::vector<std::string> kTargets = {
-    "cfdpost_export_fuzz",     "cfx_monitor_fuzz", "force_table_fuzz",   "units_fuzz",       "vehicle_fuzz",
-    "scenario_fuzz",           "vtp_fuzz",         "stored_record_fuzz", "case_motion_fuzz", "cfx_ccl_fuzz",
-    "openfoam_dictionary_fuzz", "captive_table_fuzz"};
+const std::vector<std::string> kTargets = {"cfdpost_export_fuzz",
+                                           "cfx_monitor_fuzz",
+                                           "force_table_fuzz",
+                                           "units_fuzz",
+                                           "vehicle_fuzz",
+                                           "scenario_fuzz",
+                                           "vtp_fuzz",
+                                           "stored_record_fuzz",
+                                           "case_motion_fuzz",
+                                           "cfx_ccl_fuzz",
+                                           "openfoam_dictionary_fuzz",
+                                           "captive_table_fuzz"};
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke, ::testing::ValuesIn(kTargets));
 
