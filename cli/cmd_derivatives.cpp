@@ -1,7 +1,8 @@
 // hydrocoef derivatives fit | list | show | delete | evaluate: derivative
 // models of several variables fitted to all the selected runs of a body at
 // once, stored, shown in the form asked for (SI, prime, bis, MMG) and
-// evaluated with their standard error. The library fits, stores and renders
+// evaluated with their standard error, and exported
+// (cli/cmd_derivatives_export.cpp). The library fits, stores and renders
 // (hydrocoef/derivatives.hpp); this command parses, calls and prints.
 #include <iostream>
 #include <memory>
@@ -92,7 +93,8 @@ void add_show(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, co
 void add_derivatives_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<DerivativesArgs>();
   auto* derivatives = app.add_subcommand(
-      "derivatives", "Derivative models of several variables: fit, list, show (SI, prime, bis, MMG), delete, evaluate");
+      "derivatives",
+      "Derivative models of several variables: fit, list, show (SI, prime, bis, MMG), delete, evaluate, export");
   derivatives->require_subcommand(1);
   add_fit(*derivatives, args, global);
 
@@ -127,6 +129,8 @@ void add_derivatives_command(CLI::App& app, const GlobalOptions& global) {
     const auto database = hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly);
     print(hydrocoef::evaluate_derivative_model(database, options), args->json);
   });
+
+  add_derivatives_export(*derivatives, global);
 }
 
 }  // namespace hydrocoef::cli
