@@ -47,6 +47,7 @@ void add_fit(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, con
   command->add_flag("--replace", args->fit.replace, "Replace a stored model of the same name (otherwise refused)");
   command->add_option("--vif-threshold", args->fit.vif_threshold, "Warn of variance inflation factors above this")
       ->capture_default_str();
+  command->add_option("--u0", args->fit.u0, "Nominal speed U0 [m/s] of terms in du = u - U0 (abkowitz)");
   command->add_flag("--no-store", args->no_store, "Do not store the model");
   command->add_flag("--unweighted", args->unweighted,
                     "Ordinary least squares even when every run states an uncertainty");
