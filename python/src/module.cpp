@@ -43,4 +43,5 @@ PYBIND11_MODULE(_hydrocoef, m) {
   hydrocoef_python::register_analysis(m);
   hydrocoef_python::register_reference(m);
   hydrocoef_python::register_derivatives(m);
+  hydrocoef_python::register_derivative_exports(m);
 }
