@@ -72,8 +72,9 @@ void add_scale_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--form-factor", o.form_factor,
                       "1+k given, or prohaska (Prohaska's plot over the scale-1 points: give low speeds); default: "
                       "submerged or given C_W, the mean of (C_T - C_W)/C_F over the points");
-  command->add_option("--target-speeds", o.target_speeds,
-                      "submerged or given C_W: the speed at scale 2 [m/s] of each point (or --speeds)")
+  command
+      ->add_option("--target-speeds", o.target_speeds,
+                   "submerged or given C_W: the speed at scale 2 [m/s] of each point (or --speeds)")
       ->delimiter(',');
   command->add_option("--gravity", o.gravity, "g [m/s^2] of the Froude number")->capture_default_str();
   command->add_option("--sign", o.sign, "The points' forces: on-body (X, negative ahead) or opposing (R)")
@@ -87,11 +88,10 @@ void add_scale_command(CLI::App& app, const GlobalOptions& global) {
       options.forces.push_back(force);
     }
     options.validate();
-    const auto result =
-        options.fit.empty()
-            ? hydrocoef::scale_surge_resistance(options)
-            : hydrocoef::scale_surge_resistance(
-                  hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly), options);
+    const auto result = options.fit.empty()
+                            ? hydrocoef::scale_surge_resistance(options)
+                            : hydrocoef::scale_surge_resistance(
+                                  hydrocoef::Database::open(global.database, hydrocoef::OpenMode::ReadOnly), options);
     std::cout << (args->json ? result.json() : result.text());
   });
 }

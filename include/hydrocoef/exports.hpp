@@ -218,10 +218,10 @@ struct DerivativeExportOptions {
 /// What a derivative export wrote.
 struct DerivativeExportResult {
   std::string database;
-  std::string format;  ///< csv, json, gazebo, matlab
-  std::string form;    ///< dimensional, prime, bis, mmg
-  std::string file;    ///< the file written
-  std::string body;    ///< the models' body
+  std::string format;                ///< csv, json, gazebo, matlab
+  std::string form;                  ///< dimensional, prime, bis, mmg
+  std::string file;                  ///< the file written
+  std::string body;                  ///< the models' body
   std::vector<std::string> models;   ///< in the order given
   std::vector<std::string> outputs;  ///< each model's output X..N
   std::vector<std::string> terms;    ///< each model's terms, "v, r, v*|v|"

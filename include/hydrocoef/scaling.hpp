@@ -109,7 +109,7 @@ struct ResistanceScalingResult {
   std::string sign;    ///< "on-body" or "opposing": of every force in and out
   std::string wave;    ///< "submerged (C_W = 0)", "C_W at equal Froude number", "C_W = 0.0004 (given)"
   double one_plus_k = 0.0;
-  std::string form_factor_method;  ///< "given", "prohaska" or "mean ratio"
+  std::string form_factor_method;                                    ///< "given", "prohaska" or "mean ratio"
   double prohaska_slope = std::numeric_limits<double>::quiet_NaN();  ///< c of C_T/C_F = (1+k) + c Fn^4/C_F
   std::string form_factor;                                           ///< the value and how it was obtained
   std::vector<ResistanceScalingPoint> points;                        ///< in the order given

@@ -126,20 +126,19 @@ void register_derivative_exports(py::module_& m) {
         const py::gil_scoped_release release;
         return hydrocoef::export_derivatives(database, options);
       },
-      "database"_a, "names"_a, py::kw_only(), "format"_a, "output"_a, "form"_a = "dimensional",
-      "length"_a = py::none(), "speed"_a = py::none(), "density"_a = py::none(), "draft"_a = py::none(),
-      "mass"_a = py::none(), "volume"_a = py::none(), "gravity"_a = 9.80665, "link"_a = py::none(),
-      "link_axes"_a = py::none(), "drop_unrepresentable"_a = false, "added_mass"_a = py::none(),
-      "added_mass_matrix"_a = py::none(), "mass_diagonal"_a = py::none(), "mass_matrix"_a = py::none(),
+      "database"_a, "names"_a, py::kw_only(), "format"_a, "output"_a, "form"_a = "dimensional", "length"_a = py::none(),
+      "speed"_a = py::none(), "density"_a = py::none(), "draft"_a = py::none(), "mass"_a = py::none(),
+      "volume"_a = py::none(), "gravity"_a = 9.80665, "link"_a = py::none(), "link_axes"_a = py::none(),
+      "drop_unrepresentable"_a = false, "added_mass"_a = py::none(), "added_mass_matrix"_a = py::none(),
+      "mass_diagonal"_a = py::none(), "mass_matrix"_a = py::none(),
       "Writes stored derivative models as csv, json, gazebo or matlab, as `hydrocoef derivatives export`.");
   m.def(
       "scale_surge_resistance",
       [](const py::object& db, double from_length, double from_area, double from_viscosity, double from_density,
          double to_length, double to_area, double to_viscosity, double to_density, const std::string& wave,
-         const std::string& form_factor, const py::object& points, const std::string& fit,
-         const py::object& speeds, const py::object& target_speeds, const py::object& from_roughness,
-         const py::object& to_roughness, const py::object& from_air_area, const py::object& to_air_area,
-         double gravity, const std::string& sign) {
+         const std::string& form_factor, const py::object& points, const std::string& fit, const py::object& speeds,
+         const py::object& target_speeds, const py::object& from_roughness, const py::object& to_roughness,
+         const py::object& from_air_area, const py::object& to_air_area, double gravity, const std::string& sign) {
         hydrocoef::ResistanceScalingOptions options;
         options.from_length = from_length;
         options.from_area = from_area;
@@ -173,11 +172,11 @@ void register_derivative_exports(py::module_& m) {
         const py::gil_scoped_release release;
         return hydrocoef::scale_surge_resistance(database, options);
       },
-      "database"_a = py::none(), py::kw_only(), "from_length"_a, "from_area"_a, "from_viscosity"_a,
-      "from_density"_a, "to_length"_a, "to_area"_a, "to_viscosity"_a, "to_density"_a, "wave"_a,
-      "form_factor"_a = "", "points"_a = py::none(), "fit"_a = "", "speeds"_a = py::none(),
-      "target_speeds"_a = py::none(), "from_roughness"_a = py::none(), "to_roughness"_a = py::none(),
-      "from_air_area"_a = py::none(), "to_air_area"_a = py::none(), "gravity"_a = 9.80665, "sign"_a = "on-body",
+      "database"_a = py::none(), py::kw_only(), "from_length"_a, "from_area"_a, "from_viscosity"_a, "from_density"_a,
+      "to_length"_a, "to_area"_a, "to_viscosity"_a, "to_density"_a, "wave"_a, "form_factor"_a = "",
+      "points"_a = py::none(), "fit"_a = "", "speeds"_a = py::none(), "target_speeds"_a = py::none(),
+      "from_roughness"_a = py::none(), "to_roughness"_a = py::none(), "from_air_area"_a = py::none(),
+      "to_air_area"_a = py::none(), "gravity"_a = 9.80665, "sign"_a = "on-body",
       "A surge resistance curve (points [(U, X), ...]) or a stored surge law (fit, speeds; needs the database) from "
       "one scale to another, as `hydrocoef scale`.");
   for (const char* name : {"DerivativeExportResult", "ResistanceScalingPoint", "ResistanceScalingResult"})

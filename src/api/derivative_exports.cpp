@@ -39,8 +39,8 @@ std::array<double, 6> six_numbers(const std::string& text, const std::string& op
     double value = 0.0;
     const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (item.empty() || ec != std::errc() || end != item.data() + item.size() || !std::isfinite(value))
-      throw InputError(option + " '" + escape::one_line(text) + "': found '" + escape::one_line(item) +
-                       "', expected " + what);
+      throw InputError(option + " '" + escape::one_line(text) + "': found '" + escape::one_line(item) + "', expected " +
+                       what);
     if (count < 6) out[count] = value;
     ++count;
   }
@@ -51,7 +51,8 @@ std::array<double, 6> six_numbers(const std::string& text, const std::string& op
 }
 
 const std::string kAddedMassWhat = "six numbers Xu' Yv' Zw' (kg) Kp' Mq' Nr' (kg m^2), comma-separated";
-const std::string kMassWhat = "six numbers m+Xu', m+Yv', m+Zw' (kg), Ixx+Kp', Iyy+Mq', Izz+Nr' (kg m^2), comma-separated";
+const std::string kMassWhat =
+    "six numbers m+Xu', m+Yv', m+Zw' (kg), Ixx+Kp', Iyy+Mq', Izz+Nr' (kg m^2), comma-separated";
 
 DerivativeShowOptions show_options(const DerivativeExportOptions& o, const std::string& name, bool with_form) {
   DerivativeShowOptions show;
@@ -129,8 +130,9 @@ Matrix6 read_matrix(const std::string& path, const std::string& option) {
 
 void DerivativeExportOptions::validate() const {
   if (names.empty())
-    throw InputError("derivatives export: expected the name of at least one stored model ('hydrocoef derivatives "
-                     "list' lists them)");
+    throw InputError(
+        "derivatives export: expected the name of at least one stored model ('hydrocoef derivatives "
+        "list' lists them)");
   for (const auto& name : names)
     if (name.empty()) throw InputError("derivatives export: found an empty model name, expected a stored model's name");
   if (std::find(kFormats.begin(), kFormats.end(), format) == kFormats.end())
@@ -164,9 +166,9 @@ void DerivativeExportOptions::validate() const {
   }
   if (matlab) {
     if (int(mass_diagonal.has_value()) + int(mass_matrix.has_value()) != 1)
-      throw InputError(std::string(mass_diagonal ? "both --mass-diagonal and --mass-matrix given"
-                                                 : "no mass matrix given") +
-                       "; expected exactly one of --mass-diagonal d1,...,d6 and --mass-matrix FILE (M = M_RB + M_A)");
+      throw InputError(
+          std::string(mass_diagonal ? "both --mass-diagonal and --mass-matrix given" : "no mass matrix given") +
+          "; expected exactly one of --mass-diagonal d1,...,d6 and --mass-matrix FILE (M = M_RB + M_A)");
     if (mass_diagonal) (void)six_numbers(*mass_diagonal, "--mass-diagonal", kMassWhat);
     const std::filesystem::path path(output);
     if (path.extension() != ".m")
@@ -203,7 +205,8 @@ DerivativeExportResult export_derivatives(const Database& db, const DerivativeEx
     sets.push_back(derivative_set(model, options));
   }
 
-  const DerivativeForm form = options.form == "dimensional" ? DerivativeForm::Dimensional : DerivativeForm::NonDimensional;
+  const DerivativeForm form =
+      options.form == "dimensional" ? DerivativeForm::Dimensional : DerivativeForm::NonDimensional;
   if (options.format == "csv") {
     r.content = derivative_csv(sets.front(), form);
   } else if (options.format == "json") {

@@ -32,9 +32,9 @@ std::string DerivativeExportResult::text() const {
 }
 
 std::string DerivativeExportResult::json() const {
-  nlohmann::json doc = {{"database", database}, {"format", format},   {"form", form},
-                        {"file", file},         {"body", body},       {"bytes", bytes},
-                        {"dropped", dropped},   {"notes", notes},     {"function_name", function_name},
+  nlohmann::json doc = {{"database", database}, {"format", format}, {"form", form},
+                        {"file", file},         {"body", body},     {"bytes", bytes},
+                        {"dropped", dropped},   {"notes", notes},   {"function_name", function_name},
                         {"inputs", inputs}};
   doc["models"] = nlohmann::json::array();
   for (std::size_t k = 0; k < models.size(); ++k)

@@ -52,8 +52,8 @@ ScaleConditions conditions(double length, double area, double viscosity, double 
 
 ScalingOptions library_options(const ResistanceScalingOptions& o, SignConvention convention) {
   ScalingOptions out;
-  out.from = conditions(o.from_length, o.from_area, o.from_viscosity, o.from_density, o.from_roughness,
-                        o.from_air_area);
+  out.from =
+      conditions(o.from_length, o.from_area, o.from_viscosity, o.from_density, o.from_roughness, o.from_air_area);
   out.to = conditions(o.to_length, o.to_area, o.to_viscosity, o.to_density, o.to_roughness, o.to_air_area);
   out.wave = parse_wave_resistance(o.wave);
   out.target_speeds = o.target_speeds;
@@ -66,8 +66,7 @@ ScalingOptions library_options(const ResistanceScalingOptions& o, SignConvention
 std::optional<FormFactor> form_factor(const ResistanceScalingOptions& o, const ScalingOptions& scaling,
                                       const std::vector<ResistanceRun>& runs) {
   if (const auto given = given_one_plus_k(o.form_factor)) return given_form_factor(*given);
-  if (o.form_factor == "prohaska")
-    return prohaska_form_factor(runs, scaling.from, scaling.convention, scaling.gravity);
+  if (o.form_factor == "prohaska") return prohaska_form_factor(runs, scaling.from, scaling.convention, scaling.gravity);
   return std::nullopt;
 }
 
@@ -147,9 +146,9 @@ void ResistanceScalingOptions::validate() const {
     check_positive(value, option);
   }
   const std::array<std::pair<double, const char*>, 4> allowances{{{from_roughness, "--from-roughness"},
-                                                                {to_roughness, "--to-roughness"},
-                                                                {from_air_area, "--from-air-area"},
-                                                                {to_air_area, "--to-air-area"}}};
+                                                                  {to_roughness, "--to-roughness"},
+                                                                  {from_air_area, "--from-air-area"},
+                                                                  {to_air_area, "--to-air-area"}}};
   for (const auto& [value, option] : allowances)
     if (!std::isnan(value)) check_positive(value, option);
   check_positive(gravity, "--gravity");

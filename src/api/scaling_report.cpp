@@ -34,8 +34,8 @@ std::string ResistanceScalingResult::text() const {
   std::string out = "scaling: " + method + "\n";
   out += "  wave resistance: " + wave + "\n";
   out += "  form factor: " + escape::one_line(form_factor) + "\n";
-  out += "  forces: " + sign +
-         (sign == "on-body" ? " (X on the body, R = -X)" : " (resistance magnitudes, R = X)") + "\n";
+  out +=
+      "  forces: " + sign + (sign == "on-body" ? " (X on the body, R = -X)" : " (resistance magnitudes, R = X)") + "\n";
   for (const auto& a : assumptions) out += "  assumption: " + escape::one_line(a) + "\n";
   if (!fit.empty()) {
     out += "law '" + escape::one_line(fit) + "' X(u) = " + escape::one_line(terms) + ":\n";
@@ -71,14 +71,22 @@ std::string ResistanceScalingResult::json() const {
                         {"assumptions", assumptions}};
   doc["points"] = nlohmann::json::array();
   for (const auto& p : points)
-    doc["points"].push_back({{"speed_from", p.speed_from},         {"speed_to", p.speed_to},
-                             {"force_from", p.force_from},         {"force_to", p.force_to},
-                             {"resistance_from", p.resistance_from}, {"resistance_to", p.resistance_to},
-                             {"froude_from", p.froude_from},       {"froude_to", p.froude_to},
-                             {"reynolds_from", p.reynolds_from},   {"reynolds_to", p.reynolds_to},
-                             {"friction_from", p.friction_from},   {"friction_to", p.friction_to},
-                             {"wave", p.wave},                     {"residual", p.residual},
-                             {"total_from", p.total_from},         {"total_to", p.total_to}});
+    doc["points"].push_back({{"speed_from", p.speed_from},
+                             {"speed_to", p.speed_to},
+                             {"force_from", p.force_from},
+                             {"force_to", p.force_to},
+                             {"resistance_from", p.resistance_from},
+                             {"resistance_to", p.resistance_to},
+                             {"froude_from", p.froude_from},
+                             {"froude_to", p.froude_to},
+                             {"reynolds_from", p.reynolds_from},
+                             {"reynolds_to", p.reynolds_to},
+                             {"friction_from", p.friction_from},
+                             {"friction_to", p.friction_to},
+                             {"wave", p.wave},
+                             {"residual", p.residual},
+                             {"total_from", p.total_from},
+                             {"total_to", p.total_to}});
   if (!fit.empty())
     doc["law"] = {{"fit", fit},
                   {"terms", terms},

@@ -127,7 +127,7 @@ void read_derivatives(const Json& value, const std::string& file, const std::str
                "found an empty name, expected a stored derivative model's name (hydrocoef derivatives list)");
     return;
   }
-  ji::expect_object(value, file, path, {"terms", "coefficients", "covariance", "model"});
+  ji::expect_object(value, file, path, {"terms", "coefficients", "covariance"});
   const std::string terms_path = ji::join(path, "terms");
   const Json& terms = ji::require(value, file, path, "terms");
   std::string list;

@@ -139,7 +139,8 @@ TEST_F(DerivativeExportsApiTest, EveryFormatWritesTheCliBytesAndReport) {
 
 TEST_F(DerivativeExportsApiTest, ValidateRefusesWithTheCliMessage) {
   const auto db = Database::open(path_, OpenMode::ReadOnly);
-  const auto same = [&](std::vector<std::string> args, const std::function<void(hydrocoef::DerivativeExportOptions&)>& set) {
+  const auto same = [&](std::vector<std::string> args,
+                        const std::function<void(hydrocoef::DerivativeExportOptions&)>& set) {
     hydrocoef::DerivativeExportOptions options;
     options.names = {"sway"};
     options.output = (dir_ / "x.out").string();
@@ -175,10 +176,10 @@ TEST_F(DerivativeExportsApiTest, ValidateRefusesWithTheCliMessage) {
 }
 
 TEST_F(DerivativeExportsApiTest, ScalingGivesTheCliNumbers) {
-  const std::vector<std::string> scales{"--from-length", "5",       "--from-area",      "4",         "--from-viscosity",
-                                        "1.13902e-6",    "--from-density", "999.1",     "--to-length", "125",
-                                        "--to-area",     "2500",    "--to-viscosity",   "1.18831e-6", "--to-density",
-                                        "1025.9",        "--wave",  "froude",           "--form-factor", "1.15"};
+  const std::vector<std::string> scales{
+      "--from-length", "5",      "--from-area",   "4",    "--from-viscosity", "1.13902e-6", "--from-density", "999.1",
+      "--to-length",   "125",    "--to-area",     "2500", "--to-viscosity",   "1.18831e-6", "--to-density",   "1025.9",
+      "--wave",        "froude", "--form-factor", "1.15"};
   hydrocoef::ResistanceScalingOptions options;
   options.from_length = 5;
   options.from_area = 4;
@@ -212,8 +213,7 @@ TEST_F(DerivativeExportsApiTest, ScalingGivesTheCliNumbers) {
   ASSERT_EQ(api.coefficients_to.size(), 2u);
   EXPECT_LT(api.coefficients_to[1], 0.0);
   // Without a database a stored fit cannot be read.
-  EXPECT_NE(error_of([&] { hydrocoef::scale_surge_resistance(options); }).find("--fit 'surge-law'"),
-            std::string::npos);
+  EXPECT_NE(error_of([&] { hydrocoef::scale_surge_resistance(options); }).find("--fit 'surge-law'"), std::string::npos);
   // validate() is the CLI's check.
   options.wave.clear();
   args.erase(std::find(args.begin(), args.end(), "--wave"), std::find(args.begin(), args.end(), "--wave") + 2);
@@ -259,7 +259,8 @@ TEST_F(DerivativeExportsApiTest, AVehicleNamingStoredModelsSimulatesAsTheInlineF
   const auto yaw = nlohmann::json::parse(hydrocoef::show_derivative_model(db, show).json());
   const std::string scenario = R"({"duration": 6, "output_rate": 10, "integrator": {"method": "rk4", "step": 0.01},
     "initial": {"position": [0, 0, 0], "euler_deg": [0, 0, 0], "velocity": [0.8, 0, 0, 0, 0, 0]},
-    "segments": [{"start": 0, "tau": {"X": 10, "Y": 2, "N": 0.5}}]})" "\n";
+    "segments": [{"start": 0, "tau": {"X": 10, "Y": 2, "N": 0.5}}]})"
+                               "\n";
   std::ofstream(dir_ / "scenario.json") << scenario;
 
   hydrocoef::SimulateOptions named;
@@ -289,8 +290,9 @@ TEST_F(DerivativeExportsApiTest, AVehicleNamingStoredModelsSimulatesAsTheInlineF
       << message;
   EXPECT_NE(message.find("(models of Y: sway)"), std::string::npos) << message;
   missing.vehicle = vehicle(R"({"model": "yaw"})", R"({"model": "yaw"})", false);
-  EXPECT_NE(error_of([&] { hydrocoef::simulate(missing); })
-                .find("the derivative model \"yaw\" is of N, expected a model of Y"),
+  EXPECT_NE(error_of([&] {
+              hydrocoef::simulate(missing);
+            }).find("the derivative model \"yaw\" is of N, expected a model of Y"),
             std::string::npos);
   missing.vehicle = vehicle(R"({"model": "sway"})", R"({"model": "yaw"})", false);
   missing.database.clear();

@@ -16,6 +16,7 @@
 //   inside CSV comments and XML and MATLAB comments only.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -50,9 +51,8 @@ void write_runs(const std::filesystem::path& path) {
       for (const double r : {-0.1, 0.0, 0.1})
         for (const double delta : {-0.2, 0.0, 0.2}) {
           const double e = 0.01 * std::sin(1.3 * ++i);  // deterministic scatter: a covariance of full rank
-          out << u << "," << v << "," << r << "," << delta << ","
-              << -5 * u - 20 * u * std::abs(u) + 3 * v * r + e << ","
-              << -120 * v + 35 * r - 480 * v * std::abs(v) - 60 * u * v - 25 * u * u * delta + 2 * e << ","
+          out << u << "," << v << "," << r << "," << delta << "," << -5 * u - 20 * u * std::abs(u) + 3 * v * r + e
+              << "," << -120 * v + 35 * r - 480 * v * std::abs(v) - 60 * u * v - 25 * u * u * delta + 2 * e << ","
               << -40 * v - 90 * r - 300 * r * std::abs(r) - 10 * u * r + 0.5 * e << "\n";
         }
 }
@@ -108,7 +108,8 @@ double number(std::string_view text) {
 
 TEST_F(CliDerivativesExport, APrimeCsvReadBackIsWhatShowPrints) {
   const std::vector<std::string> reference{"--length", "3", "--speed", "1.5", "--density", "1025"};
-  std::vector<std::string> args{"derivatives", "export", "sway", "--format", "csv", "--form", "prime", "-o", "sway.csv"};
+  std::vector<std::string> args{"derivatives", "export", "sway", "--format", "csv",
+                                "--form",      "prime",  "-o",   "sway.csv"};
   args.insert(args.end(), reference.begin(), reference.end());
   const auto written = cli(args);
   ASSERT_EQ(written.exit_code, 0) << written.err;
@@ -168,7 +169,8 @@ TEST_F(CliDerivativesExport, GzSimAndMatlabFilesAreTheLibrarysForTheSameSets) {
   options.added_mass = ma;
   const DerivativeGazeboExport expected = derivative_gazebo({set_of("surge"), set_of("sway"), set_of("yaw")}, options);
   EXPECT_EQ(read_bytes(dir_ / "ship.sdf"), expected.text);
-  EXPECT_NE(expected.text.find("<yUabsV>"), std::string::npos);  // v*|v| in Y: a term with a cross name
+  EXPECT_NE(expected.text.find("<yVabsV>"), std::string::npos);  // v*|v| in Y
+  EXPECT_NE(expected.text.find("<yUV>"), std::string::npos);     // u*v in Y: a cross term
   EXPECT_NE(expected.text.find("<nUR>"), std::string::npos);     // u*r in N
 
   const auto m = cli({"derivatives", "export", "surge", "sway-rudder", "yaw", "--format", "matlab", "-o", "ship.m",
@@ -179,7 +181,8 @@ TEST_F(CliDerivativesExport, GzSimAndMatlabFilesAreTheLibrarysForTheSameSets) {
   Matrix6 mass = Matrix6::Zero();
   const double masses[6] = {60, 80, 80, 3, 9, 9};
   for (int i = 0; i < 6; ++i) mass(i, i) = masses[i];
-  EXPECT_EQ(read_bytes(dir_ / "ship.m"), derivative_matlab("ship", {set_of("surge"), set_of("sway-rudder"), set_of("yaw")}, mass));
+  EXPECT_EQ(read_bytes(dir_ / "ship.m"),
+            derivative_matlab("ship", {set_of("surge"), set_of("sway-rudder"), set_of("yaw")}, mass));
 }
 
 TEST_F(CliDerivativesExport, RefusalsAreOneLineExitTwoNothingWritten) {
@@ -208,12 +211,12 @@ TEST_F(CliDerivativesExport, RefusalsAreOneLineExitTwoNothingWritten) {
   refused({"sway", "--format", "matlab", "-o", "out.x"}, "no mass matrix given");
   refused({"sway", "--format", "matlab", "--mass-diagonal", "1,2,3,4,5,6", "-o", "out.x"},
           "a MATLAB function is written to NAME.m");
-  refused({"sway", "--format", "matlab", "--mass-diagonal", "1,2,3", "-o", "out.m"}, "--mass-diagonal '1,2,3': 3 numbers");
+  refused({"sway", "--format", "matlab", "--mass-diagonal", "1,2,3", "-o", "out.m"},
+          "--mass-diagonal '1,2,3': 3 numbers");
   refused({"sway", "--format", "matlab", "--mass-diagonal", "1,2,3,4,5,6", "-o", "1bad.m"},
           "MATLAB function name '1bad'");
   refused({"sway", "--format", "matlab", "--mass-diagonal", "1,2,3,4,5,-6", "-o", "ok.m"}, "mass");
-  refused({"sway", "--format", "csv", "--added-mass", "1,2,3,4,5,6", "-o", "out.x"},
-          "apply to --format gazebo only");
+  refused({"sway", "--format", "csv", "--added-mass", "1,2,3,4,5,6", "-o", "out.x"}, "apply to --format gazebo only");
   refused({"sway", "--format", "csv", "-o", "missing/dir/out.x"}, "missing/dir/out.x");
   EXPECT_FALSE(std::filesystem::exists(dir_ / "out.m"));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "ok.m"));

@@ -11,10 +11,12 @@
 // - each refusal is one line, exit 2, the database unchanged.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "src/derivatives/scaling.hpp"
 #include "tests/support/file_bytes.hpp"
@@ -31,9 +33,8 @@ double relative_error(double value, double expected) { return std::abs(value - e
 
 // Model (fresh water, 15 C) and ship (sea water, 15 C), as scaling_test.cpp.
 const std::vector<std::string> kModelToShip{
-    "--from-length", "5",   "--from-area",      "4",          "--from-viscosity", "1.13902e-6", "--from-density",
-    "999.1",         "--to-length", "125",      "--to-area",  "2500",             "--to-viscosity", "1.18831e-6",
-    "--to-density",  "1025.9"};
+    "--from-length", "5",   "--from-area", "4",    "--from-viscosity", "1.13902e-6", "--from-density", "999.1",
+    "--to-length",   "125", "--to-area",   "2500", "--to-viscosity",   "1.18831e-6", "--to-density",   "1025.9"};
 
 class CliScale : public ::testing::Test {
  protected:
@@ -52,8 +53,8 @@ class CliScale : public ::testing::Test {
 };
 
 TEST_F(CliScale, TheWorkedModelToShipExample) {
-  const auto out = scale_json({"--point", "1.5,-30", "--to-roughness", "150e-6", "--wave", "froude", "--form-factor",
-                               "1.15"});
+  const auto out =
+      scale_json({"--point", "1.5,-30", "--to-roughness", "150e-6", "--wave", "froude", "--form-factor", "1.15"});
   ASSERT_EQ(out.at("points").size(), 1u);
   const auto& p = out.at("points")[0];
   const double digits = 5e-7;
@@ -74,8 +75,8 @@ TEST_F(CliScale, TheWorkedModelToShipExample) {
   EXPECT_EQ(out.at("wave"), "C_W at equal Froude number");
 
   // The text names the method, its sources and the assumptions, and tabulates U and R at scale 2.
-  const auto text = scale({"--point", "1.5,-30", "--to-roughness", "150e-6", "--wave", "froude", "--form-factor",
-                           "1.15"});
+  const auto text =
+      scale({"--point", "1.5,-30", "--to-roughness", "150e-6", "--wave", "froude", "--form-factor", "1.15"});
   ASSERT_EQ(text.exit_code, 0) << text.err;
   for (const char* expected :
        {"ITTC-1957 friction line C_F = 0.075/(log10 Re - 2)^2 (8th ITTC, Madrid 1957; ITTC 7.5-02-02-01 and "
@@ -95,9 +96,10 @@ TEST_F(CliScale, SubmergedAndProhaskaAreTheLibrarys) {
   // Runs of a body with 1 + k = 1.3 exactly, no waves: the mean ratio recovers 1.3.
   const ScaleConditions model{1.0, 1.2, 1.0e-6, 998.0, 0.0, 0.0};
   const auto line = [](double re) { return 0.075 / std::pow(std::log10(re) - 2.0, 2); };
-  std::vector<std::string> args{"--wave", "submerged", "--target-speeds", "2,4", "--from-length", "1", "--from-area",
-                                "1.2", "--from-viscosity", "1e-6", "--from-density", "998", "--to-length", "4",
-                                "--to-area", "19.2", "--to-viscosity", "1e-6", "--to-density", "1025"};
+  std::vector<std::string> args{"--wave",       "submerged", "--target-speeds",  "2,4",  "--from-length",  "1",
+                                "--from-area",  "1.2",       "--from-viscosity", "1e-6", "--from-density", "998",
+                                "--to-length",  "4",         "--to-area",        "19.2", "--to-viscosity", "1e-6",
+                                "--to-density", "1025"};
   std::vector<ResistanceRun> runs;
   for (const double u : {0.5, 1.0}) {
     const double force = -0.5 * model.density * model.wetted_area * u * u * 1.3 * line(u * model.length / 1e-6);
@@ -143,11 +145,11 @@ TEST_F(CliScale, AStoredSurgeLawIsTheLibrarysScaledLaw) {
     for (const double u : {0.3, 0.6, 0.9, 1.2, 1.5, 1.8, 2.1}) out << u << "," << -2 * u - 12 * u * std::abs(u) << "\n";
   }
   ASSERT_EQ(run_cli({"import", "surge.csv", "--body", "m", "--sign", "on-body"}, dir_.path()).exit_code, 0);
-  ASSERT_EQ(run_cli({"fit", "--body", "m", "--dof", "X", "--terms", "u,u|u|", "--name", "surge"}, dir_.path()).exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli({"fit", "--body", "m", "--dof", "X", "--terms", "u,u|u|", "--name", "surge"}, dir_.path()).exit_code, 0);
   const std::string before = test::read_bytes(dir_ / "hydrocoef.db");
-  const auto out = scale_json({"--fit", "surge", "--speeds", "0.6,0.9,1.2,1.5,1.8,2.1", "--wave", "froude",
-                               "--form-factor", "1.1"});
+  const auto out =
+      scale_json({"--fit", "surge", "--speeds", "0.6,0.9,1.2,1.5,1.8,2.1", "--wave", "froude", "--form-factor", "1.1"});
   const auto fits = nlohmann::json::parse(run_cli({"fits", "--json"}, dir_.path()).out);
   std::vector<double> stored;
   for (const auto& c : fits.at(0).at("coefficients")) stored.push_back(c.at("value"));
