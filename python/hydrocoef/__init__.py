@@ -47,6 +47,8 @@ from ._hydrocoef import (CopySummary, DeleteSummary, FitEvaluation, LevelFit, Le
 from ._hydrocoef import (DerivativeCoefficient, DerivativeDeletion, DerivativeEvaluation, DerivativeModel,
                          DerivativeModelList, delete_derivative_model, evaluate_derivative_model,
                          fit_derivative_model, list_derivative_models, show_derivative_model)
+from ._hydrocoef import (DerivativeExportResult, ResistanceScalingPoint, ResistanceScalingResult, export_derivatives,
+                         scale_surge_resistance)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
@@ -64,6 +66,8 @@ __all__ += ["set_body_reference", "body_references", "BodyReference", "BodyRefer
 __all__ += ["fit_derivative_model", "list_derivative_models", "show_derivative_model", "delete_derivative_model",
             "evaluate_derivative_model", "DerivativeModel", "DerivativeCoefficient", "DerivativeModelList",
             "DerivativeDeletion", "DerivativeEvaluation"]
+__all__ += ["export_derivatives", "DerivativeExportResult", "scale_surge_resistance", "ResistanceScalingResult",
+            "ResistanceScalingPoint"]
 
 
 class Table(dict):

@@ -222,7 +222,8 @@ DerivativeExportResult export_derivatives(const Database& db, const DerivativeEx
     const DerivativeGazeboExport written = derivative_gazebo(sets, gazebo);
     r.content = written.text;
     r.dropped = written.dropped;
-    r.notes.insert(r.notes.end(), written.notes.begin(), written.notes.end());
+    for (const auto& note : written.notes)  // the dropped terms are listed in `dropped`
+      if (note.rfind("dropped ", 0) != 0) r.notes.push_back(note);
   } else {
     const Matrix6 mass = options.mass_diagonal
                              ? diagonal(six_numbers(*options.mass_diagonal, "--mass-diagonal", kMassWhat))

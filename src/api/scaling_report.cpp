@@ -50,12 +50,15 @@ std::string ResistanceScalingResult::text() const {
   const std::size_t w = 13;
   out += header("U1 [m/s]", w) + header("X1 [N]", w) + header("Fn1", w) + header("Re1", w) + header("C_F1", w) +
          header("C_T1", w) + header("U2 [m/s]", w) + header("Fn2", w) + header("Re2", w) + header("C_F2", w) +
-         header("C_T2", w) + header("R2 [N]", w) + header("X2 [N]", w) + "\n";
-  for (const auto& p : points)
+         header("C_T2", w) + header("R2 [N]", w) + header("X2 [N]", w);
+  out.back() = '\n';
+  for (const auto& p : points) {
     out += cell(p.speed_from, w) + cell(p.force_from, w) + cell(p.froude_from, w) + cell(p.reynolds_from, w) +
            cell(p.friction_from, w) + cell(p.total_from, w) + cell(p.speed_to, w) + cell(p.froude_to, w) +
            cell(p.reynolds_to, w) + cell(p.friction_to, w) + cell(p.total_to, w) + cell(p.resistance_to, w) +
-           cell(p.force_to, w) + "\n";
+           cell(p.force_to, w);
+    out.back() = '\n';  // no space at the end of a line
+  }
   return out;
 }
 

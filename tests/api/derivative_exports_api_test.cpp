@@ -44,7 +44,7 @@ class DerivativeExportsApiTest : public ::testing::Test {
     int i = 0;
     for (const double u : {0.5, 1.0, 1.5, 2.0})
       for (const double v : {-0.2, -0.1, 0.0, 0.1, 0.2})
-        for (const double r : {-0.1, 0.0, 0.1}) {
+        for (const double r : {-0.1, -0.04, 0.0, 0.05, 0.1}) {
           const double e = 0.01 * std::sin(1.7 * ++i);
           out << u << "," << v << "," << r << "," << -2 * u - 12 * u * std::abs(u) + e << ","
               << -40 * v + 5 * r - 150 * v * std::abs(v) - 8 * u * v + e << ","

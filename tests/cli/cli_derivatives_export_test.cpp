@@ -48,7 +48,7 @@ void write_runs(const std::filesystem::path& path) {
   int i = 0;
   for (const double u : {0.5, 1.0, 1.5, 2.0})
     for (const double v : {-0.3, -0.1, 0.0, 0.1, 0.3})
-      for (const double r : {-0.1, 0.0, 0.1})
+      for (const double r : {-0.1, -0.04, 0.0, 0.05, 0.1})
         for (const double delta : {-0.2, 0.0, 0.2}) {
           const double e = 0.01 * std::sin(1.3 * ++i);  // deterministic scatter: a covariance of full rank
           out << u << "," << v << "," << r << "," << delta << "," << -5 * u - 20 * u * std::abs(u) + 3 * v * r + e

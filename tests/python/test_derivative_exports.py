@@ -25,8 +25,11 @@ def grid_db(tmp_path):
     run_cli(path, "derivatives", "fit", "--body", "grid", "--output", "Y", "--terms", "v, v*|v|, u*v", "--name",
             "sway")
     run_cli(path, "derivatives", "fit", "--body", "grid", "--output", "X", "--terms", "u*|u|, v", "--name", "surge")
-    run_cli(path, "fit", "--body", "grid", "--dof", "X", "--terms", "u,u|u|", "--where", "v=0", "--name",
-            "surge-law")
+    surge = tmp_path / "surge.csv"
+    surge.write_text("u [m s^-1],X [N]\n" + "".join(f"{u!r},{-2 * u - 12 * u * abs(u)!r}\n"
+                                                      for u in (0.3, 0.6, 0.9, 1.2, 1.5)))
+    run_cli(path, "import", str(surge), "--body", "model", "--sign", "on-body")
+    run_cli(path, "fit", "--body", "model", "--dof", "X", "--terms", "u,u|u|", "--name", "surge-law")
     return path
 
 
@@ -77,9 +80,9 @@ def test_scaling_gives_the_cli_numbers(grid_db):
     assert ours.points[0].resistance_to == pytest.approx(378474.8, rel=5e-7)
     assert ours.points[0].speed_to == pytest.approx(7.5)
     with hydrocoef.Database(grid_db) as db:
-        law = hydrocoef.scale_surge_resistance(db, fit="surge-law", speeds=[0.1, 0.2, 0.3], wave="froude",
+        law = hydrocoef.scale_surge_resistance(db, fit="surge-law", speeds=[0.3, 0.9, 1.5], wave="froude",
                                                form_factor="1.1", **SHIP)
-    theirs = cli_json(grid_db, "scale", "--fit", "surge-law", "--speeds", "0.1,0.2,0.3", "--wave", "froude",
+    theirs = cli_json(grid_db, "scale", "--fit", "surge-law", "--speeds", "0.3,0.9,1.5", "--wave", "froude",
                       "--form-factor", "1.1", *SHIP_ARGS)
     assert law.coefficients_to == theirs["law"]["coefficients_to"]
     assert json.loads(law.json()) == theirs
