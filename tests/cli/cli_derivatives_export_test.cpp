@@ -62,8 +62,10 @@ class CliDerivativesExport : public ::testing::Test {
   void SetUp() override {
     write_runs(dir_ / "captive.csv");
     for (const std::string body : {"ship", "other"}) {
-      const auto imported = run_cli(
-          {"import", "captive.csv", "--body", body, "--disturbance", "delta", "--sign", "on-body"}, dir_.path());
+      std::vector<std::string> args{"import", "captive.csv", "--body", body, "--disturbance", "delta", "--sign",
+                                    "on-body"};
+      if (body == "other") args.insert(args.end(), {"--also", "other"});  // the same file read again
+      const auto imported = run_cli(args, dir_.path());
       ASSERT_EQ(imported.exit_code, 0) << imported.err;
     }
     fit("ship", "X", "u, u*|u|, v*r", "surge");
@@ -226,7 +228,10 @@ TEST_F(CliDerivativesExport, RefusalsAreOneLineExitTwoNothingWritten) {
 
 TEST_F(CliDerivativesExport, HostileNamesAreDataInEveryFormat) {
   const std::string name = kHostile;
-  ASSERT_EQ(cli({"import", "captive.csv", "--body", name, "--disturbance", "delta", "--sign", "on-body"}).exit_code, 0);
+  ASSERT_EQ(cli({"import", "captive.csv", "--body", name, "--disturbance", "delta", "--sign", "on-body", "--also",
+                 "hostile"})
+                .exit_code,
+            0);
   fit(name, "Y", "v, r, v*|v|", name + " Y");
   fit(name, "N", "v, r", name + " N");
 
