@@ -239,24 +239,33 @@ TEST_F(CliDerivativesExport, HostileNamesAreDataInEveryFormat) {
   EXPECT_EQ(nlohmann::json::parse(read_bytes(dir_ / "h.json")).at("name"), name + " Y");
 
   ASSERT_EQ(cli({"derivatives", "export", name + " Y", "--format", "csv", "-o", "h.csv"}).exit_code, 0);
-  for (const std::string_view line : split(read_bytes(dir_ / "h.csv"), '\n'))
+  const std::string csv = read_bytes(dir_ / "h.csv");
+  for (const std::string_view line : split(csv, '\n'))
     if (line.find("<!--") != std::string_view::npos) EXPECT_EQ(line.front(), '#') << line;
 
   const auto gz = cli({"derivatives", "export", name + " Y", name + " N", "--format", "gazebo", "-o", "h.sdf"});
   ASSERT_EQ(gz.exit_code, 0) << gz.err;
   const std::string sdf = read_bytes(dir_ / "h.sdf");
-  EXPECT_EQ(sdf.find("]]>"), std::string::npos);
-  // Every comment closes where it was meant to: no "--" inside one.
-  for (std::size_t open = sdf.find("<!--"); open != std::string::npos; open = sdf.find("<!--", open + 4)) {
+  // Every comment closes where it was meant to (no "--" inside one), and the names are in comments only.
+  std::string outside;
+  std::size_t from = 0;
+  for (std::size_t open = sdf.find("<!--"); open != std::string::npos; open = sdf.find("<!--", from)) {
     const std::size_t close = sdf.find("-->", open + 4);
     ASSERT_NE(close, std::string::npos);
     EXPECT_EQ(sdf.substr(open + 4, close - open - 4).find("--"), std::string::npos) << sdf.substr(open, close - open);
+    outside += sdf.substr(from, open - from);
+    from = close + 3;
   }
+  outside += sdf.substr(from);
+  EXPECT_NE(sdf.find("$(rm)"), std::string::npos);  // the name is in the file ...
+  EXPECT_EQ(outside.find("$(rm)"), std::string::npos) << outside;  // ... in comments only
+  EXPECT_EQ(outside.find("]]>"), std::string::npos) << outside;
 
   const auto m = cli({"derivatives", "export", name + " Y", name + " N", "--format", "matlab", "-o", "h.m",
                       "--mass-diagonal", "60,80,80,3,9,9"});
   ASSERT_EQ(m.exit_code, 0) << m.err;
-  for (const std::string_view line : split(read_bytes(dir_ / "h.m"), '\n'))
+  const std::string matlab = read_bytes(dir_ / "h.m");
+  for (const std::string_view line : split(matlab, '\n'))
     if (line.find("<!--") != std::string_view::npos) EXPECT_EQ(line.substr(0, 2), "% ") << line;
   // The report prints the names on one line each.
   EXPECT_EQ(std::count(m.out.begin(), m.out.end(), '\n'), 4) << m.out;

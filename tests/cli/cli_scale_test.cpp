@@ -191,10 +191,13 @@ TEST_F(CliScale, RefusalsAreOneLineExitTwo) {
   refused({"--wave", "froude", "--form-factor", "1.1"}, "expected either --point U,X (repeatable) or --fit NAME");
   refused({"--point", "1.5,-30", "--wave", "froude", "--form-factor", "-1"}, "--form-factor '-1'");
   refused({"--point", "1.5,-30", "--wave", "froude", "--form-factor", "1.1", "--sign", "up"}, "--sign 'up'");
-  refused({"--point", "1.5,-30", "--wave", "froude", "--form-factor", "1.1", "--from-length", "0"},
-          "--from-length must be a finite number above 0, not 0");
+  std::vector<std::string> zero_length{"--point", "1.5,-30", "--wave", "froude", "--form-factor", "1.1"};
+  zero_length.insert(zero_length.end(), kModelToShip.begin(), kModelToShip.end());
+  zero_length[std::find(zero_length.begin(), zero_length.end(), "--from-length") - zero_length.begin() + 1] = "0";
+  refused(zero_length, "--from-length must be a finite number above 0, not 0", false);
   refused({"--point", "1.5,-30", "--wave", "froude"}, "scale: expected --from-length", false);
-  refused({"--point", "0.01,-0.001", "--wave", "froude", "--form-factor", "1.1"}, "1e+05");
+  refused({"--point", "0.01,-0.001", "--wave", "froude", "--form-factor", "1.1"},
+          "the Reynolds number U L / nu = 43897.4 is below 100000");
   refused({"--point", "1.5,30", "--wave", "froude", "--form-factor", "1.1"}, "oppose");
   refused({"--point", "1.5,-30", "--wave", "submerged"}, "target");
   refused({"--fit", "nosuch", "--speeds", "1,2", "--wave", "froude", "--form-factor", "1.1"},
