@@ -6,6 +6,8 @@
 //   the database is left byte-identical;
 // - scale_surge_resistance gives the CLI's `scale --json` for points and for
 //   a stored surge law;
+// - fit_derivative_model with u0 (--u0) fits terms in du = u - U0 as the CLI
+//   does, and refuses them without it;
 // - a vehicle whose sway and yaw damping name stored models ("derivatives":
 //   {"model": NAME}) simulates bit-identically to the same vehicle with the
 //   models' terms, coefficients and covariance written inline (nominal run
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -218,6 +221,39 @@ TEST_F(DerivativeExportsApiTest, ScalingGivesTheCliNumbers) {
   options.wave.clear();
   args.erase(std::find(args.begin(), args.end(), "--wave"), std::find(args.begin(), args.end(), "--wave") + 2);
   EXPECT_EQ(error_of([&] { hydrocoef::scale_surge_resistance(db, options); }), cli_error(cli(args)));
+}
+
+// --u0 U0 gives each run du = u - U0 (the Abkowitz template's surge variable):
+// X = -2 u - 12 u|u| about U0 = 1 is -14 - 26 du - 12 du^2 over these runs (u > 0).
+TEST_F(DerivativeExportsApiTest, U0GivesDuAsTheCliDoes) {
+  const auto fitted = cli({"derivatives", "fit", "--body", "b", "--output", "X", "--terms", "1, du, du^2", "--u0", "1",
+                           "--no-store", "--json"});
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
+  const auto theirs = nlohmann::json::parse(fitted.out);
+  auto db = Database::open(path_, OpenMode::ReadOnly);
+  hydrocoef::DerivativeModelOptions options;
+  options.body = "b";
+  options.output = "X";
+  options.terms = "1, du, du^2";
+  options.u0 = 1.0;
+  options.store = false;
+  const auto ours = hydrocoef::fit_derivative_model(db, options);
+  EXPECT_EQ(ours.json(), fitted.out);
+  ASSERT_EQ(ours.coefficients.size(), 3u);
+  EXPECT_NEAR(ours.coefficients[0].value, -14.0, 0.01);
+  EXPECT_NEAR(ours.coefficients[1].value, -26.0, 0.01);
+  EXPECT_NEAR(ours.coefficients[2].value, -12.0, 0.01);
+  EXPECT_EQ(theirs.at("terms"), "1, du, du^2");
+  // Without U0 a term in du is refused naming --u0, as the CLI refuses it.
+  options.u0 = std::numeric_limits<double>::quiet_NaN();
+  const std::string message = error_of([&] { hydrocoef::fit_derivative_model(db, options); });
+  EXPECT_EQ(message, "derivatives fit: term 'du' reads du = u - U0; expected the nominal speed with --u0 U0 [m/s]");
+  EXPECT_EQ(
+      message,
+      cli_error(cli({"derivatives", "fit", "--body", "b", "--output", "X", "--terms", "1, du, du^2", "--no-store"})));
+  options.u0 = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(error_of([&] { hydrocoef::fit_derivative_model(db, options); }),
+            "--u0 must be a finite speed [m/s], not inf");
 }
 
 std::string numbers(const nlohmann::json& list) {

@@ -62,8 +62,8 @@ class CliDerivativesExport : public ::testing::Test {
   void SetUp() override {
     write_runs(dir_ / "captive.csv");
     for (const std::string body : {"ship", "other"}) {
-      std::vector<std::string> args{"import", "captive.csv", "--body", body, "--disturbance", "delta", "--sign",
-                                    "on-body"};
+      std::vector<std::string> args{"import",        "captive.csv", "--body", body,
+                                    "--disturbance", "delta",       "--sign", "on-body"};
       if (body == "other") args.insert(args.end(), {"--also", "other"});  // the same file read again
       const auto imported = run_cli(args, dir_.path());
       ASSERT_EQ(imported.exit_code, 0) << imported.err;
@@ -228,10 +228,10 @@ TEST_F(CliDerivativesExport, RefusalsAreOneLineExitTwoNothingWritten) {
 
 TEST_F(CliDerivativesExport, HostileNamesAreDataInEveryFormat) {
   const std::string name = kHostile;
-  ASSERT_EQ(cli({"import", "captive.csv", "--body", name, "--disturbance", "delta", "--sign", "on-body", "--also",
-                 "hostile"})
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      cli({"import", "captive.csv", "--body", name, "--disturbance", "delta", "--sign", "on-body", "--also", "hostile"})
+          .exit_code,
+      0);
   fit(name, "Y", "v, r, v*|v|", name + " Y");
   fit(name, "N", "v, r", name + " N");
 
@@ -257,7 +257,7 @@ TEST_F(CliDerivativesExport, HostileNamesAreDataInEveryFormat) {
     from = close + 3;
   }
   outside += sdf.substr(from);
-  EXPECT_NE(sdf.find("$(rm)"), std::string::npos);  // the name is in the file ...
+  EXPECT_NE(sdf.find("$(rm)"), std::string::npos);                 // the name is in the file ...
   EXPECT_EQ(outside.find("$(rm)"), std::string::npos) << outside;  // ... in comments only
   EXPECT_EQ(outside.find("]]>"), std::string::npos) << outside;
 
