@@ -1,7 +1,8 @@
 // hydrocoef derivatives fit | list | show | delete | evaluate: derivative
 // models of several variables fitted to all the selected runs of a body at
 // once, stored, shown in the form asked for (SI, prime, bis, MMG) and
-// evaluated with their standard error. The library fits, stores and renders
+// evaluated with their standard error, and exported
+// (cli/cmd_derivatives_export.cpp). The library fits, stores and renders
 // (hydrocoef/derivatives.hpp); this command parses, calls and prints.
 #include <iostream>
 #include <memory>
@@ -46,6 +47,7 @@ void add_fit(CLI::App& parent, const std::shared_ptr<DerivativesArgs>& args, con
   command->add_flag("--replace", args->fit.replace, "Replace a stored model of the same name (otherwise refused)");
   command->add_option("--vif-threshold", args->fit.vif_threshold, "Warn of variance inflation factors above this")
       ->capture_default_str();
+  command->add_option("--u0", args->fit.u0, "Nominal speed U0 [m/s] of terms in du = u - U0 (abkowitz)");
   command->add_flag("--no-store", args->no_store, "Do not store the model");
   command->add_flag("--unweighted", args->unweighted,
                     "Ordinary least squares even when every run states an uncertainty");
@@ -93,8 +95,8 @@ void add_derivatives_command(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<DerivativesArgs>();
   auto* derivatives = app.add_subcommand(
       "derivatives",
-      "Derivative models of several variables: fit, list, show (SI, prime, bis, MMG), delete, evaluate; pmm: sway "
-      "and yaw derivatives from forced-oscillation runs");
+      "Derivative models of several variables: fit, list, show (SI, prime, bis, MMG), delete, evaluate, "
+      "export; pmm: sway and yaw derivatives from forced-oscillation runs");
   derivatives->require_subcommand(1);
   add_fit(*derivatives, args, global);
 
@@ -130,6 +132,8 @@ void add_derivatives_command(CLI::App& app, const GlobalOptions& global) {
     print(hydrocoef::evaluate_derivative_model(database, options), args->json);
   });
   add_derivatives_pmm_command(*derivatives, global);
+
+  add_derivatives_export(*derivatives, global);
 }
 
 }  // namespace hydrocoef::cli

@@ -43,6 +43,9 @@ void add_merge_command(CLI::App& app, const GlobalOptions& global);
 void add_derivatives_command(CLI::App& app, const GlobalOptions& global);
 /// `derivatives pmm`, a subcommand of `derivatives` (cli/cmd_derivatives_pmm.cpp).
 void add_derivatives_pmm_command(CLI::App& derivatives, const GlobalOptions& global);
+/// `derivatives export` (cli/cmd_derivatives_export.cpp), a subcommand of `derivatives`.
+void add_derivatives_export(CLI::App& derivatives, const GlobalOptions& global);
+void add_scale_command(CLI::App& app, const GlobalOptions& global);
 
 /// The selection options of runs, fit and surface build: --where (the
 /// selection language of src/core/run_selection.hpp, repeatable, combined

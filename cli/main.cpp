@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   cli::add_added_mass_command(app, global);
   cli::add_merge_command(app, global);
   cli::add_derivatives_command(app, global);
+  cli::add_scale_command(app, global);
   cli::add_export_command(app, global);
   cli::add_export_gazebo_command(app, global);
   cli::add_plot_command(app, global);

@@ -56,11 +56,16 @@ struct HYDROCOEF_EXPORT DerivativeModelOptions {
   bool store = true;            ///< false: --no-store
   bool weighted = true;         ///< false: --unweighted
   double vif_threshold = 10.0;  ///< VIFs above it are warned of (--vif-threshold)
+  /// The nominal speed U0 [m/s] of terms in du = u - U0 (--u0; the
+  /// Abkowitz template's surge variable): each run's du is its u less U0.
+  /// NaN: not given (a term in du is then refused). Not stored with the
+  /// model: `evaluate` takes du itself (--at du=...).
+  double u0 = std::numeric_limits<double>::quiet_NaN();
 
   /// InputError for a missing body or output, an output not X..N, both or
   /// neither of terms and template, a --select other than loo or kfold:K
-  /// (K >= 2), a selection clause that does not parse, a bad name, or a VIF
-  /// threshold not above 1.
+  /// (K >= 2), a selection clause that does not parse, a bad name, a VIF
+  /// threshold not above 1, or a --u0 that is not finite.
   void validate() const;
 };
 

@@ -1,7 +1,9 @@
 // Exports as library calls: `hydrocoef export` (a stored gridded surface as a
-// file another tool loads) and `hydrocoef export-gazebo` (a body's damping-law
-// fits and an added-mass matrix as Gazebo hydrodynamics parameters). The CLI
-// commands are these functions and print their results' text() or json().
+// file another tool loads), `hydrocoef export-gazebo` (a body's damping-law
+// fits and an added-mass matrix as Gazebo hydrodynamics parameters) and
+// `hydrocoef derivatives export` (stored derivative models as CSV, JSON,
+// gz-sim parameters or a MATLAB function). The CLI commands are these
+// functions and print their results' text() or json().
 //
 // Units and frames: SI; body axes x forward, y starboard, z down (FRD); the
 // tables' outputs and the damping coefficients are forces on the body (a
@@ -12,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -159,6 +162,90 @@ struct GazeboExportResult {
 /// `hydrocoef export-gazebo` (options.validate() first). InputError, nothing
 /// written, for what the flavor cannot express (see the CLI's help).
 HYDROCOEF_EXPORT GazeboExportResult export_gazebo(const Database& db, const GazeboExportOptions& options);
+
+/// What `hydrocoef derivatives export NAME... --format F -o PATH` writes:
+/// stored derivative models (include/hydrocoef/derivatives.hpp) as a file
+/// another tool reads.
+///   csv, json  one model, dimensional (SI) or in the prime, bis or MMG form
+///              (the reference values as `derivatives show` takes them); the
+///              dimensional JSON's terms, coefficients and covariance are
+///              what a vehicle file's "derivatives" takes
+///   gazebo     one gz-sim Hydrodynamics parameter file from models of one
+///              body (one per output X..N), cross terms in gz-sim's names
+///              (<yUabsV>, <nUR>), signs and axes as export-gazebo's
+///   matlab     one MATLAB function [xdot, U] = NAME(x, ui) in the form of
+///              Fossen's MSS vessel models (NAME the file's stem), from
+///              models of one body (one per output), with the mass matrix
+///              M = M_RB + M_A given
+/// Coefficients are SNAME derivatives on the body [output unit / term unit].
+struct DerivativeExportOptions {
+  std::vector<std::string> names;    ///< the stored models (derivatives list)
+  std::string format;                ///< csv, json, gazebo or matlab (--format)
+  std::string output;                ///< the file to write (-o), whole or not at all
+  std::string form = "dimensional";  ///< csv, json: dimensional, prime, bis or mmg (--form)
+  /// csv, json in a non-dimensional form: the reference values (NaN: not
+  /// given), as DerivativeShowOptions: --length L [m], --speed U [m/s],
+  /// --density RHO [kg/m^3], --draft D [m] (mmg), --mass M [kg] (bis; else
+  /// rho times --volume [m^3]), --gravity [m/s^2] (bis).
+  double length = std::numeric_limits<double>::quiet_NaN();
+  double speed = std::numeric_limits<double>::quiet_NaN();
+  double density = std::numeric_limits<double>::quiet_NaN();
+  double draft = std::numeric_limits<double>::quiet_NaN();
+  double mass = std::numeric_limits<double>::quiet_NaN();
+  double volume = std::numeric_limits<double>::quiet_NaN();
+  double gravity = 9.80665;
+  std::optional<std::string> link;       ///< gazebo: <link_name> (default base_link)
+  std::optional<std::string> link_axes;  ///< gazebo: "flu" (default) or "frd"
+  bool drop_unrepresentable = false;     ///< gazebo: leave out (and list) terms gz-sim cannot hold
+  /// gazebo, optional: the added mass Ma (positive, body axes), a diagonal
+  /// "d1,...,d6" (kg x3, kg m^2 x3) or a file of 36 numbers row by row; 0
+  /// (with a note) when neither is given.
+  std::optional<std::string> added_mass;
+  std::optional<std::string> added_mass_matrix;
+  /// matlab, exactly one: M = M_RB + M_A, a diagonal "d1,...,d6" or a file
+  /// of 36 numbers row by row (kg, kg m, kg m^2), symmetric positive definite.
+  std::optional<std::string> mass_diagonal;
+  std::optional<std::string> mass_matrix;
+
+  /// InputError, one line, for no model, an unknown format or form, a form
+  /// other than dimensional or reference values with gazebo or matlab, more
+  /// than one model for csv or json, no output file, an option of one
+  /// format given with another, a reference value that is not finite and
+  /// positive, or a malformed number list.
+  HYDROCOEF_EXPORT void validate() const;
+};
+
+/// What a derivative export wrote.
+struct DerivativeExportResult {
+  std::string database;
+  std::string format;                ///< csv, json, gazebo, matlab
+  std::string form;                  ///< dimensional, prime, bis, mmg
+  std::string file;                  ///< the file written
+  std::string body;                  ///< the models' body
+  std::vector<std::string> models;   ///< in the order given
+  std::vector<std::string> outputs;  ///< each model's output X..N
+  std::vector<std::string> terms;    ///< each model's terms, "v, r, v*|v|"
+  std::vector<bool> stale;           ///< each model: a force of its runs changed since the fit
+  std::string function_name;         ///< matlab: the function (the file's stem); "" otherwise
+  std::vector<std::string> inputs;   ///< matlab: the inputs ui in order (controls, disturbances)
+  std::vector<std::string> dropped;  ///< gazebo: terms left out (drop_unrepresentable)
+  std::vector<std::string> notes;    ///< what the reader should know (added mass 0, Q terms, stale models)
+  std::size_t bytes = 0;             ///< the file's size
+  std::string content;               ///< the file's text, as written
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `derivatives export` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< what `derivatives export --json` prints
+};
+
+/// Writes stored derivative models in a format, as `hydrocoef derivatives
+/// export` (options.validate() first). InputError, one line, nothing
+/// written, for an unknown model (listing the stored names), csv/json
+/// reference values the form needs and lacks or a term variable without a
+/// normalisation, models of several bodies or two of one output (gazebo,
+/// matlab), a term the format cannot hold, a MATLAB function name that is
+/// not an identifier, a mass matrix that is not one, or a path that cannot
+/// be written. Never writes to the database.
+HYDROCOEF_EXPORT DerivativeExportResult export_derivatives(const Database& db, const DerivativeExportOptions& options);
 
 }  // namespace api
 }  // namespace hydrocoef

@@ -20,14 +20,16 @@
 //                              point, with its gradient, or at many points at
 //                              once on every core; tabulated for a controller;
 //                              surface_build, _rebuild, _list, _show, query_surface
-//   hydrocoef/exports.hpp      export_surface, export_gazebo: a gridded surface
-//                              or a body's fits written for another tool
+//   hydrocoef/exports.hpp      export_surface, export_gazebo, export_derivatives: a gridded
+//                              surface, a body's fits or derivative models written for another tool
 //   hydrocoef/analysis.hpp     mesh studies (grid_convergence), forced oscillation (analyse_pmm,
 //                              added_mass_matrix, ...), where to run CFD next (suggest_runs)
 //   hydrocoef/derivatives.hpp  derivative models of several variables: fit_derivative_model,
 //                              list, show (in the prime, bis or MMG form), delete, evaluate
 //   hydrocoef/pmm_derivatives.hpp  pmm_derivatives: sway and yaw derivatives (Y_v, Y_vdot, ...,
 //                              N_rdot) from pure sway and pure yaw forced-oscillation runs
+//   hydrocoef/scaling.hpp      scale_surge_resistance: a surge resistance curve or law
+//                              from one scale to another (ITTC-1957 line, form factor)
 //   hydrocoef/simulation.hpp   simulate: a vehicle through a scenario, the
 //                              trajectory as columns, with the Monte Carlo
 //                              bands and the comparison with a measured
@@ -58,6 +60,7 @@
 #include "hydrocoef/pmm_derivatives.hpp"
 #include "hydrocoef/records.hpp"
 #include "hydrocoef/reference.hpp"
+#include "hydrocoef/scaling.hpp"
 #include "hydrocoef/simulation.hpp"
 #include "hydrocoef/surface.hpp"
 #include "hydrocoef/version.hpp"

@@ -50,6 +50,8 @@ from ._hydrocoef import (DerivativeCoefficient, DerivativeDeletion, DerivativeEv
                          fit_derivative_model, list_derivative_models, show_derivative_model)
 from ._hydrocoef import (PmmDerivative, PmmDerivativeRun, PmmDerivatives, PmmFrequencyDerivatives,
                          pmm_derivatives)
+from ._hydrocoef import (DerivativeExportResult, ResistanceScalingPoint, ResistanceScalingResult, export_derivatives,
+                         scale_surge_resistance)
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
@@ -68,6 +70,8 @@ __all__ += ["fit_derivative_model", "list_derivative_models", "show_derivative_m
             "evaluate_derivative_model", "DerivativeModel", "DerivativeCoefficient", "DerivativeModelList",
             "DerivativeDeletion", "DerivativeEvaluation"]
 __all__ += ["pmm_derivatives", "PmmDerivatives", "PmmFrequencyDerivatives", "PmmDerivative", "PmmDerivativeRun"]
+__all__ += ["export_derivatives", "DerivativeExportResult", "scale_surge_resistance", "ResistanceScalingResult",
+            "ResistanceScalingPoint"]
 
 
 class Table(dict):

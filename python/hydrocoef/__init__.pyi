@@ -884,7 +884,8 @@ class DerivativeEvaluation:
 def fit_derivative_model(database: Database, *, body: str, output: str, terms: str = "", template: str = "",
                          select: str = "", seed: int = 1, where: str | Sequence[str] | None = None,
                          exclude_runs: Sequence[int] | None = None, name: str = "", replace: bool = False,
-                         store: bool = True, weighted: bool = True, vif_threshold: float = 10.0) -> DerivativeModel: ...
+                         store: bool = True, weighted: bool = True, vif_threshold: float = 10.0,
+                         u0: float | None = None) -> DerivativeModel: ...
 def list_derivative_models(database: Database, body: str = "") -> DerivativeModelList: ...
 def show_derivative_model(database: Database, name: str, *, form: str = "dimensional", length: float | None = None,
                           speed: float | None = None, density: float | None = None, draft: float | None = None,
@@ -942,3 +943,77 @@ class PmmDerivatives:
 def pmm_derivatives(database: Database, body: str, *, runs: Sequence[int] | None = None, speed: float | None = None,
                     length: float | None = None, density: float | None = None,
                     prime: bool = False) -> PmmDerivatives: ...
+# ---- derivative exports (hydrocoef derivatives export) and scaling (hydrocoef scale) ----
+class DerivativeExportResult:
+    database: str
+    format: str
+    form: str
+    file: str
+    body: str
+    models: list[str]
+    outputs: list[str]
+    terms: list[str]
+    stale: list[bool]
+    function_name: str
+    inputs: list[str]
+    dropped: list[str]
+    notes: list[str]
+    bytes: int
+    content: str
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def export_derivatives(database: Database, names: Sequence[str], *, format: str, output: str | os.PathLike[str],
+                       form: str = "dimensional", length: float | None = None, speed: float | None = None,
+                       density: float | None = None, draft: float | None = None, mass: float | None = None,
+                       volume: float | None = None, gravity: float = 9.80665, link: str | None = None,
+                       link_axes: str | None = None, drop_unrepresentable: bool = False,
+                       added_mass: str | None = None, added_mass_matrix: str | os.PathLike[str] | None = None,
+                       mass_diagonal: str | None = None,
+                       mass_matrix: str | os.PathLike[str] | None = None) -> DerivativeExportResult: ...
+
+class ResistanceScalingPoint:
+    speed_from: float
+    speed_to: float
+    force_from: float
+    force_to: float
+    resistance_from: float
+    resistance_to: float
+    froude_from: float
+    froude_to: float
+    reynolds_from: float
+    reynolds_to: float
+    friction_from: float
+    friction_to: float
+    wave: float
+    residual: float
+    total_from: float
+    total_to: float
+
+class ResistanceScalingResult:
+    method: str
+    sign: str
+    wave: str
+    one_plus_k: float
+    form_factor_method: str
+    prohaska_slope: float
+    form_factor: str
+    points: list[ResistanceScalingPoint]
+    assumptions: list[str]
+    fit: str
+    terms: str
+    coefficients_from: list[float]
+    coefficients_to: list[float]
+    units: list[str]
+    max_relative_deviation: float
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def scale_surge_resistance(database: Database | None = None, *, from_length: float, from_area: float,
+                           from_viscosity: float, from_density: float, to_length: float, to_area: float,
+                           to_viscosity: float, to_density: float, wave: str, form_factor: str = "",
+                           points: Sequence[tuple[float, float]] | None = None, fit: str = "",
+                           speeds: Sequence[float] | None = None, target_speeds: Sequence[float] | None = None,
+                           from_roughness: float | None = None, to_roughness: float | None = None,
+                           from_air_area: float | None = None, to_air_area: float | None = None,
+                           gravity: float = 9.80665, sign: str = "on-body") -> ResistanceScalingResult: ...

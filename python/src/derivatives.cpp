@@ -102,7 +102,7 @@ void register_derivatives(py::module_& m) {
       [](py::handle db, const std::string& body, const std::string& output, const std::string& terms,
          const std::string& model_template, const std::string& select, std::uint64_t seed, const py::object& where,
          const py::object& exclude_runs, const std::string& name, bool replace, bool store, bool weighted,
-         double vif_threshold) {
+         double vif_threshold, const py::object& u0) {
         hydrocoef::DerivativeModelOptions options;
         options.body = body;
         options.output = output;
@@ -117,13 +117,14 @@ void register_derivatives(py::module_& m) {
         options.store = store;
         options.weighted = weighted;
         options.vif_threshold = vif_threshold;
+        options.u0 = or_nan(u0);
         auto& database = database_of(db);
         const py::gil_scoped_release release;
         return hydrocoef::fit_derivative_model(database, options);
       },
       "database"_a, py::kw_only(), "body"_a, "output"_a, "terms"_a = "", "template"_a = "", "select"_a = "",
       "seed"_a = 1, "where"_a = py::none(), "exclude_runs"_a = py::none(), "name"_a = "", "replace"_a = false,
-      "store"_a = true, "weighted"_a = true, "vif_threshold"_a = 10.0,
+      "store"_a = true, "weighted"_a = true, "vif_threshold"_a = 10.0, "u0"_a = py::none(),
       "Fits a derivative model to a body's runs and stores it, as `hydrocoef derivatives fit`.");
   m.def(
       "list_derivative_models",

@@ -44,4 +44,5 @@ PYBIND11_MODULE(_hydrocoef, m) {
   hydrocoef_python::register_reference(m);
   hydrocoef_python::register_derivatives(m);
   hydrocoef_python::register_pmm_derivatives(m);
+  hydrocoef_python::register_derivative_exports(m);
 }

@@ -63,6 +63,7 @@ std::vector<DerivativeRun> gather_runs(RunDatabase& store, const DerivativeModel
     point.label = "run " + std::to_string(run.id);
     for (std::size_t c = 0; c < 6; ++c) point.values[std::string(kVelocityNames[c])] = run.key.nu_b[c];
     for (const auto& [name, value] : run.key.disturbances) point.values[name] = value;
+    if (!std::isnan(options.u0)) point.values["du"] = run.key.nu_b[0] - options.u0;
     const StoredForce& force = *run.tau_b[dof];
     point.output = to_convention(force.value.total, force.sign, SignConvention::OnBody);
     const double sigma = force.standard_uncertainty();
@@ -223,6 +224,8 @@ void DerivativeModelOptions::validate() const {
   if (!name.empty()) check_name(NameKind::Fit, name, {}, "--name");
   if (!(vif_threshold > 1.0) || !std::isfinite(vif_threshold))
     throw InputError("--vif-threshold must be a finite number above 1, not " + shortest_number(vif_threshold));
+  if (!std::isnan(u0) && !std::isfinite(u0))
+    throw InputError("--u0 must be a finite speed [m/s], not " + shortest_number(u0));
 }
 
 DerivativeModel fit_derivative_model(Database& database, const DerivativeModelOptions& options) {
@@ -237,6 +240,14 @@ DerivativeModel fit_derivative_model(Database& database, const DerivativeModelOp
   RunDatabase& store = options.store ? impl.writable_store("derivatives fit") : impl.open_store();
   std::vector<std::int64_t> run_ids;
   const std::vector<DerivativeRun> runs = gather_runs(store, options, dof, selection, run_ids);
+  // du = u - U0 comes from --u0 (unless every run states a disturbance du).
+  const bool runs_state_du = std::all_of(runs.begin(), runs.end(), [](const auto& r) { return r.values.count("du"); });
+  if (std::isnan(options.u0) && !runs_state_du)
+    for (const Term& term : candidates)
+      for (const auto& variable : term.variables())
+        if (variable == "du")
+          throw InputError("derivatives fit: term '" + term.text() +
+                           "' reads du = u - U0; expected the nominal speed with --u0 U0 [m/s]");
 
   std::vector<Term> terms = candidates;
   if (!options.select.empty()) {

@@ -5,6 +5,7 @@
 #include "src/core/error.hpp"
 #include "src/dynamics/surface_source.hpp"
 #include "src/dynamics/vehicle.hpp"
+#include "src/dynamics/vehicle_stored_models.hpp"
 
 namespace hydrocoef {
 
@@ -20,6 +21,10 @@ VehicleModel load_vehicle_model(const std::string& vehicle, const std::string& d
   if (database.empty() && description.added_mass_from_database)
     throw InputError(SourceLocation{description.file},
                      "key 'added_mass.from_database': no database was given; expected one");
+  if (database.empty() && names_derivative_models(description))
+    throw InputError(SourceLocation{description.file},
+                     "a damping's \"derivatives\": {\"model\": ...} names a stored model, but no database was "
+                     "given; expected one");
   return VehicleModel(std::move(description),
                       database.empty() ? SurfaceResolver() : database_surface_resolver(database));
 }

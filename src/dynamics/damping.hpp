@@ -73,6 +73,9 @@ struct DofDamping {
   /// sign are filled from the database by resolve_stored_records
   /// (src/dynamics/surface_source.hpp) before the model is built.
   std::string fit;
+  /// Derivatives from a stored model of this name ("derivatives": {"model":
+  /// NAME}): terms, coefficients, covariance and sign filled likewise.
+  std::string derivative_model;
   /// Surface: use it although its output feeds energy into its own motion
   /// somewhere in its range (src/surface/surface_checks.hpp); refused
   /// otherwise.

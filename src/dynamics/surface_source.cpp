@@ -9,6 +9,7 @@
 #include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
 #include "src/dynamics/rigid_body.hpp"
+#include "src/dynamics/vehicle_stored_models.hpp"
 #include "src/pmm/added_mass_assembly.hpp"
 #include "src/pmm/imposed_motion.hpp"
 #include "src/store/database.hpp"
@@ -77,6 +78,14 @@ void resolve_stored_records(VehicleDescription& vehicle, const std::filesystem::
       throw InputError(SourceLocation{vehicle.file}, std::string("key 'added_mass.from_database': ") + e.what());
     }
     resolve_added_mass(vehicle, *db);
+  }
+  if (names_derivative_models(vehicle)) {
+    try {
+      if (!db) db = std::make_unique<RunDatabase>(database, RunDatabase::OpenMode::ReadOnly);
+    } catch (const InputError& e) {
+      throw InputError(SourceLocation{vehicle.file}, std::string("a stored derivative model: ") + e.what());
+    }
+    resolve_derivative_models(vehicle, *db, database.string());
   }
   std::vector<FitRecord> fits;
   bool fits_loaded = false;

@@ -26,7 +26,9 @@ SurfaceResolver database_surface_resolver(const std::filesystem::path& database)
 /// for a fit that is not stored (listing those of the vehicle's DOF), of
 /// another force component than the DOF it is given for, or whose stored
 /// covariance is not one (src/dynamics/damping.hpp, covariance_problem).
-/// Opens the database only when a fit or the added mass names it.
+/// Fills each damping that names a stored derivative model likewise
+/// (src/dynamics/vehicle_stored_models.hpp). Opens the database only when a
+/// fit, a derivative model or the added mass names it.
 void resolve_stored_records(VehicleDescription& vehicle, const std::filesystem::path& database);
 
 }  // namespace hydrocoef

@@ -116,8 +116,17 @@ SignConvention read_sign(const Json& object, const std::string& file, const std:
 }
 
 // "derivatives": {"terms": "v, r, v*|v|", "coefficients": [...], "covariance": [[...], ...]}
-// into d (terms, coefficients, covariance), every size and value checked.
+// into d (terms, coefficients, covariance), every size and value checked; or
+// {"model": NAME}, a stored model's name, filled by resolve_stored_records.
 void read_derivatives(const Json& value, const std::string& file, const std::string& path, DofDamping& d) {
+  if (value.is_object() && value.contains("model")) {
+    ji::expect_object(value, file, path, {"model"});
+    d.derivative_model = ji::string(value["model"], file, ji::join(path, "model"));
+    if (d.derivative_model.empty())
+      ji::fail(file, ji::join(path, "model"),
+               "found an empty name, expected a stored derivative model's name (hydrocoef derivatives list)");
+    return;
+  }
   ji::expect_object(value, file, path, {"terms", "coefficients", "covariance"});
   const std::string terms_path = ji::join(path, "terms");
   const Json& terms = ji::require(value, file, path, "terms");
@@ -131,22 +140,7 @@ void read_derivatives(const Json& value, const std::string& file, const std::str
     ji::fail(file, terms_path,
              "found " + ji::describe(terms) + ", expected a list of terms such as \"v, r, v*|v|, u*v\"");
   }
-  try {
-    d.terms = parse_terms(list);
-  } catch (const InputError& e) {
-    ji::fail(file, terms_path, e.what());
-  }
-  if (d.terms.size() > DampingModel::kMaxDerivativeTerms)
-    ji::fail(file, terms_path,
-             "found " + std::to_string(d.terms.size()) + " terms, expected at most " +
-                 std::to_string(DampingModel::kMaxDerivativeTerms));
-  for (const auto& term : d.terms)
-    for (const auto& f : term.factors())
-      if (f.variable == "alpha" || f.variable == "beta" || f.variable == "du")
-        ji::fail(file, terms_path,
-                 "term '" + term.text() + "' reads '" + f.variable +
-                     "', which the dynamics model does not supply; expected terms in u, v, w, p, q, r and "
-                     "disturbance parameters");
+  set_derivative_terms(d, list, file, path);
   const Json& coefficients = ji::require(value, file, path, "coefficients");
   d.coefficients = ji::numbers(coefficients, file, ji::join(path, "coefficients"), d.terms.size());
   if (const Json* covariance = ji::find(value, "covariance")) {
@@ -181,6 +175,16 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
     d.fit = ji::string(*fit, file, ji::join(path, "fit"));
     if (d.fit.empty()) ji::fail(file, ji::join(path, "fit"), "found an empty name, expected a stored fit's name");
     d.kind = DofDamping::Kind::Law;
+    return d;
+  }
+  if (derivatives && derivatives->is_object() && derivatives->contains("model")) {
+    // A stored derivative model brings its terms, coefficients, covariance
+    // and sign (forces on the body), as a stored fit does.
+    for (const char* key : {"sign", "covariance", "output", "axes"})
+      if (ji::find(value, key))
+        ji::fail(file, ji::join(path, key), "a stored derivative model brings its own terms, sign and covariance");
+    read_derivatives(*derivatives, file, ji::join(path, "derivatives"), d);
+    d.kind = DofDamping::Kind::Derivatives;
     return d;
   }
   d.sign = read_sign(value, file, path);
@@ -242,6 +246,26 @@ DofDamping read_dof_damping(const Json& value, const std::string& file, const st
 }
 
 }  // namespace
+
+void set_derivative_terms(DofDamping& d, const std::string& terms, const std::string& file, const std::string& path) {
+  const std::string terms_path = ji::join(path, "terms");
+  try {
+    d.terms = parse_terms(terms);
+  } catch (const InputError& e) {
+    ji::fail(file, terms_path, e.what());
+  }
+  if (d.terms.size() > DampingModel::kMaxDerivativeTerms)
+    ji::fail(file, terms_path,
+             "found " + std::to_string(d.terms.size()) + " terms, expected at most " +
+                 std::to_string(DampingModel::kMaxDerivativeTerms));
+  for (const auto& term : d.terms)
+    for (const auto& f : term.factors())
+      if (f.variable == "alpha" || f.variable == "beta" || f.variable == "du")
+        ji::fail(file, terms_path,
+                 "term '" + term.text() + "' reads '" + f.variable +
+                     "', which the dynamics model does not supply; expected terms in u, v, w, p, q, r and "
+                     "disturbance parameters");
+}
 
 VehicleDescription parse_vehicle(std::string_view json_text, const std::string& file) {
   const Json doc = ji::parse(json_text, file);

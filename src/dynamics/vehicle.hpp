@@ -44,7 +44,11 @@
 // read the velocity relative to the water, other names the scenario's
 // disturbance parameters; "coefficients" one per term [N or N m over the
 // term's unit], "covariance" (optional, m x m, symmetric positive
-// semi-definite) what Monte Carlo draws use; "sign" as for a law.
+// semi-definite) what Monte Carlo draws use; "sign" as for a law. Or
+// "derivatives": {"model": NAME}, a model stored by `hydrocoef derivatives
+// fit` in the simulation's database, without "sign": its terms, coefficients,
+// covariance and sign (forces on the body) are used exactly as the inline
+// form would use them (resolve_stored_records, src/dynamics/surface_source.hpp).
 #pragma once
 
 #include <filesystem>
@@ -91,6 +95,12 @@ struct VehicleDescription {
   std::vector<Thruster> thrusters;
   DampingSpec damping;
 };
+
+/// Sets d.terms from a list "v, r, v*|v|" as a vehicle file's "derivatives"
+/// reads it: InputError "FILE: key 'PATH.terms': ..." for a term the parser
+/// does not know, more than DampingModel::kMaxDerivativeTerms terms, or a
+/// term in alpha, beta or du (which the dynamics model does not supply).
+void set_derivative_terms(DofDamping& d, const std::string& terms, const std::string& file, const std::string& path);
 
 /// Parses a vehicle description (format in the file comment). Throws
 /// InputError "FILE: key 'PATH': found ..., expected ..." for a syntax error,
