@@ -84,7 +84,7 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
 const std::vector<std::string> kTargets = {
     "cfdpost_export_fuzz",     "cfx_monitor_fuzz", "force_table_fuzz",   "units_fuzz",       "vehicle_fuzz",
     "scenario_fuzz",           "vtp_fuzz",         "stored_record_fuzz", "case_motion_fuzz", "cfx_ccl_fuzz",
-    "openfoam_dictionary_fuzz"};
+    "openfoam_dictionary_fuzz", "runtime_file_fuzz"};
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke, ::testing::ValuesIn(kTargets));
 
