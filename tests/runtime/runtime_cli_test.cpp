@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "hydrocoef/exports.hpp"
 #include "hydrocoef/runtime.h"
 #include "src/store/database.hpp"
 #include "src/surface/stored_surface.hpp"
@@ -111,6 +112,48 @@ TEST(RuntimeCli, ExportedFileEvaluatesWhatQueryAnswersBitForBit) {
       ASSERT_TRUE(same_bits(value[0], r_value) && same_bits(gradient[0], r_gradient) && same_bits(sigma[0], r_sigma))
           << "surface " << s << " at u = " << x;
     }
+  }
+}
+
+TEST(RuntimeCli, TheApiWritesWhatTheCliWritesAndValidatesAsItDoes) {
+  TempDir dir;
+  make_database(dir);
+  ASSERT_EQ(run_cli({"export", "surge", "--format", "runtime", "-o", "cli.hcrt", "--surface", "surge_linear"},
+                    dir.path())
+                .exit_code,
+            0);
+  const auto db = Database::open((dir / "hydrocoef.db").string(), OpenMode::ReadOnly);
+  TableExportOptions options;
+  options.name = "surge";
+  options.format = "runtime";
+  options.output = (dir / "api.hcrt").string();
+  options.surfaces = {"surge_linear"};
+  const TableExportResult result = export_surface(db, options);
+  EXPECT_EQ(result.surfaces, (std::vector<std::string>{"surge", "surge_linear"}));
+  EXPECT_EQ(result.files, std::vector<std::string>{options.output});
+  hc_runtime_model* from_cli = nullptr;
+  hc_runtime_model* from_api = nullptr;
+  ASSERT_EQ(hc_runtime_open((dir / "cli.hcrt").c_str(), &from_cli, nullptr, 0), HC_RUNTIME_OK);
+  ASSERT_EQ(hc_runtime_open(options.output.c_str(), &from_api, nullptr, 0), HC_RUNTIME_OK);
+  const std::unique_ptr<hc_runtime_model, ModelCloser> cli_model(from_cli), api_model(from_api);
+  ASSERT_EQ(hc_runtime_surface_count(from_api), 2u);
+  for (std::size_t s = 0; s < 2; ++s) {
+    EXPECT_STREQ(hc_runtime_surface_metadata(from_api, s, "content_sha256"),
+                 hc_runtime_surface_metadata(from_cli, s, "content_sha256"));
+    for (const double u : {-0.1, 0.0, 0.2, 0.5}) {
+      double a[3], b[3];
+      ASSERT_EQ(hc_runtime_evaluate(from_cli, s, &u, &a[0], &a[1], &a[2]), HC_RUNTIME_OK);
+      ASSERT_EQ(hc_runtime_evaluate(from_api, s, &u, &b[0], &b[1], &b[2]), HC_RUNTIME_OK);
+      for (int k = 0; k < 3; ++k) EXPECT_TRUE(same_bits(a[k], b[k])) << "surface " << s << " u = " << u;
+    }
+  }
+  options.format = "csv";
+  try {
+    options.validate();
+    FAIL() << "--surface with csv was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "--surface applies to --format runtime only; expected it with runtime (got --format csv)");
   }
 }
 
