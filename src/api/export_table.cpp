@@ -44,6 +44,22 @@ std::string run_list(const std::vector<std::int64_t>& runs) {
   return out;
 }
 
+// Where a runtime surface's table comes from: the stored grid, or an RBF
+// surface tabulated on a grid by `surface build --resample` (its quality
+// figures then count the grid's nodes and those far from every run).
+std::string runtime_source(const SurfaceRecord& record) {
+  const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality, nullptr, false);
+  if (quality.is_object() && quality.contains("grid_points")) {
+    const std::size_t far = quality.contains("far_from_data") && quality["far_from_data"].is_array()
+                                ? quality["far_from_data"].size()
+                                : 0;
+    return "an RBF surface tabulated on a grid by surface build --resample (" + quality["grid_points"].dump() +
+           " nodes, " + std::to_string(far) + " of them far from every run: extrapolation), as hydrocoef "
+           "evaluates the stored grid";
+  }
+  return "the stored grid table, as hydrocoef evaluates it";
+}
+
 // The runtime file: `name` and options.surfaces, all of one body.
 void write_runtime_file(const Database& db, const TableExportOptions& options, std::vector<StoredSurface>& stored) {
   std::vector<std::string> names{options.name};
@@ -65,7 +81,8 @@ void write_runtime_file(const Database& db, const TableExportOptions& options, s
                                         {"runs", run_list(s.record.run_ids)},
                                         {"created_at", s.record.created_at},
                                         {"stale", s.record.stale ? "true" : "false"},
-                                        {"source", "the stored grid table, as hydrocoef evaluates it"},
+                                        {"source", runtime_source(s.record)},
+                                        {"quality", s.record.quality},
                                         {"sigma", s.surface.has_standard_deviation()
                                                       ? "runs' sigma interpolated (clamped), at least 0, in "
                                                         "quadrature with the leave-one-out RMS"

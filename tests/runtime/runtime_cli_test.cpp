@@ -76,6 +76,7 @@ TEST(RuntimeCli, ExportedFileEvaluatesWhatQueryAnswersBitForBit) {
             report.at("content_sha256").get<std::string>());
   EXPECT_EQ(std::string(hc_runtime_surface_metadata(opened, 0, "runs")).size() > 10, true);
   EXPECT_STREQ(hc_runtime_surface_metadata(opened, 0, "stale"), "false");
+  EXPECT_STREQ(hc_runtime_surface_metadata(opened, 0, "source"), "the stored grid table, as hydrocoef evaluates it");
   EXPECT_STREQ(hc_runtime_axis_unit(opened, 0, 0), "m/s");
   EXPECT_STREQ(hc_runtime_output_unit(opened, 0, 0), "N");
   EXPECT_STREQ(hc_runtime_axis_extrapolation(opened, 1, 0), "clamp");
@@ -170,6 +171,26 @@ TEST(RuntimeCli, RefusalsAreOneLineAndWriteNothing) {
   EXPECT_NE(refused.err.find("surface 'surge_rbf' is an RBF surface"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("--resample"), std::string::npos) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "m.hcrt"));
+
+  // Its tabulation on a grid (surface build --resample) is exported, and the file says so.
+  const auto resampled = run_cli({"surface", "build", "surge_rbf_grid", "--body", "asr-v", "--outputs", "X", "--axes",
+                                  "u", "--method", "rbf", "--resample", "u=0:0.38:12"},
+                                 dir.path());
+  ASSERT_EQ(resampled.exit_code, 0) << resampled.err;
+  const auto tabulated = run_cli({"export", "surge_rbf_grid", "--format", "runtime", "-o", "grid.hcrt"}, dir.path());
+  ASSERT_EQ(tabulated.exit_code, 0) << tabulated.err;
+  hc_runtime_model* model = nullptr;
+  ASSERT_EQ(hc_runtime_open((dir / "grid.hcrt").c_str(), &model, nullptr, 0), HC_RUNTIME_OK);
+  const std::unique_ptr<hc_runtime_model, ModelCloser> closer(model);
+  EXPECT_EQ(std::string(hc_runtime_surface_metadata(model, 0, "source"))
+                .rfind("an RBF surface tabulated on a grid by surface build --resample (12 nodes, ", 0),
+            0u)
+      << hc_runtime_surface_metadata(model, 0, "source");
+  const double u = 0.2;
+  double value = 0.0;
+  ASSERT_EQ(hc_runtime_evaluate(model, 0, &u, &value, nullptr, nullptr), HC_RUNTIME_OK);
+  const auto queried = run_cli({"query", "surge_rbf_grid", "u=0.2", "--json"}, dir.path());
+  EXPECT_TRUE(same_bits(value, nlohmann::json::parse(queried.out).at("values").at("X").get<double>()));
 
   const auto twice =
       run_cli({"export", "surge", "--format", "runtime", "-o", "m.hcrt", "--surface", "surge"}, dir.path());
