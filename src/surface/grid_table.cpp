@@ -105,9 +105,20 @@ void natural_spline_slopes(std::span<const double> x, std::span<const double> y,
 template <std::size_t N, std::size_t K>
 void sum_terms(const double* axis_weights, std::size_t replaced, const double* replacement, const std::size_t* offsets,
                const double* data, std::size_t count, double* out, std::size_t out_stride) {
-  // The shared kernel's local sum, with N and K constants here.
-  std::array<double, power(K, N - 1)> inner;
-  hc_kernel_sum(N, K, axis_weights, replaced, replacement, offsets, data, count, out, out_stride, inner.data());
+  // hc_kernel_sum's steps, the shared kernel's, with N, K and K^(N-1) known
+  // here at compile time (so the sums over the K^(N-1) inner terms unroll).
+  constexpr std::size_t kInner = power(K, N - 1);
+  std::array<double, kInner> inner;
+  hc_kernel_inner_weights(N, K, axis_weights, replaced, replacement, inner.data());
+  const double* last = N - 1 == replaced ? replacement : axis_weights + 4 * (N - 1);
+  std::size_t k = 0;
+  for (; k + 4 <= count; k += 4)
+    accumulate<4, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
+  if (count - k >= 2) {
+    accumulate<2, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
+    k += 2;
+  }
+  if (k < count) accumulate<1, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
 }
 
 template <std::size_t K, std::size_t... N>
