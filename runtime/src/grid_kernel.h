@@ -55,14 +55,14 @@ enum { HC_KERNEL_OK = 0, HC_KERNEL_OUTSIDE = 1, HC_KERNEL_NOT_FINITE = 2 };
 
 /* Per-axis lookup data derived from the breakpoints (hc_kernel_axis_setup). */
 typedef struct hc_kernel_axis {
-  double lo;              /* first breakpoint */
-  double hi;              /* last breakpoint */
-  double inv_step;        /* 1 / spacing, used when evenly spaced */
-  int even;               /* located by direct index */
-  int extrapolation;      /* HC_KERNEL_ERROR .. HC_KERNEL_METHOD */
-  size_t count;           /* breakpoints, >= 2 */
-  size_t offset;          /* of the first breakpoint in the table's breakpoint array */
-  size_t node_stride;     /* nodes between neighbours along this axis */
+  double lo;          /* first breakpoint */
+  double hi;          /* last breakpoint */
+  double inv_step;    /* 1 / spacing, used when evenly spaced */
+  int even;           /* located by direct index */
+  int extrapolation;  /* HC_KERNEL_ERROR .. HC_KERNEL_METHOD */
+  size_t count;       /* breakpoints, >= 2 */
+  size_t offset;      /* of the first breakpoint in the table's breakpoint array */
+  size_t node_stride; /* nodes between neighbours along this axis */
 } hc_kernel_axis;
 
 /* Terms per axis of a method's local sum: 1 (nearest), 2 (linear), 4 (cubic). */
@@ -286,8 +286,7 @@ HC_KERNEL_INLINE void hc_kernel_inner_weights(size_t n, size_t K, const double* 
  * is inner[t_inner] * last[e], so out[j * out_stride] =
  * sum_e last[e] sum_t_inner inner[t_inner] * data[offsets[t] + j]. */
 HC_KERNEL_INLINE void hc_kernel_accumulate(size_t m, size_t k_inner, size_t K, const double* inner, const double* last,
-                                           const size_t* offsets, const double* data, double* out,
-                                           size_t out_stride) {
+                                           const size_t* offsets, const double* data, double* out, size_t out_stride) {
   double total[4] = {0.0, 0.0, 0.0, 0.0};
   for (size_t e = 0; e < K; ++e) {
     double part[4] = {0.0, 0.0, 0.0, 0.0};
@@ -306,8 +305,8 @@ HC_KERNEL_INLINE void hc_kernel_accumulate(size_t m, size_t k_inner, size_t K, c
  * out[k * out_stride] = sum over the K^n terms of the product of per-axis
  * weights times data[offsets[t] + k]. inner: scratch of K^(n-1) doubles. */
 HC_KERNEL_INLINE void hc_kernel_sum(size_t n, size_t K, const double* axis_weights, size_t replaced,
-                                    const double* replacement, const size_t* offsets, const double* data,
-                                    size_t count, double* out, size_t out_stride, double* inner) {
+                                    const double* replacement, const size_t* offsets, const double* data, size_t count,
+                                    double* out, size_t out_stride, double* inner) {
   const size_t k_inner = hc_kernel_power(K, n - 1);
   hc_kernel_inner_weights(n, K, axis_weights, replaced, replacement, inner);
   const double* last = n - 1 == replaced ? replacement : axis_weights + 4 * (n - 1);

@@ -132,8 +132,8 @@ const char* hc_runtime_output_unit(const hc_runtime_model* model, size_t surface
 
 /* The local sum with the axis count and terms per axis as constants, so the
  * compiler specializes the kernel for each (as GridTable's templates do). */
-#define HC_SUM_CASE(N, K)                                                                                    \
-  case (K) * 8 + (N):                                                                                        \
+#define HC_SUM_CASE(N, K)                                                                                  \
+  case (K)*8 + (N):                                                                                        \
     hc_kernel_sum((N), (K), weights, replaced, replacement, offsets, data, count, out, out_stride, inner); \
     break;
 
@@ -141,10 +141,10 @@ static void sum(size_t n, size_t K, const double* weights, size_t replaced, cons
                 const size_t* offsets, const double* data, size_t count, double* out, size_t out_stride) {
   double inner[1024]; /* K^(n-1) <= 4^5 */
   switch (K * 8 + n) {
-    HC_SUM_CASE(1, 1) HC_SUM_CASE(2, 1) HC_SUM_CASE(3, 1) HC_SUM_CASE(4, 1) HC_SUM_CASE(5, 1) HC_SUM_CASE(6, 1)
-    HC_SUM_CASE(1, 2) HC_SUM_CASE(2, 2) HC_SUM_CASE(3, 2) HC_SUM_CASE(4, 2) HC_SUM_CASE(5, 2) HC_SUM_CASE(6, 2)
-    HC_SUM_CASE(1, 4) HC_SUM_CASE(2, 4) HC_SUM_CASE(3, 4) HC_SUM_CASE(4, 4) HC_SUM_CASE(5, 4) HC_SUM_CASE(6, 4)
-    default: break;
+    HC_SUM_CASE(1, 1)
+    HC_SUM_CASE(2, 1) HC_SUM_CASE(3, 1) HC_SUM_CASE(4, 1) HC_SUM_CASE(5, 1) HC_SUM_CASE(6, 1) HC_SUM_CASE(1, 2)
+        HC_SUM_CASE(2, 2) HC_SUM_CASE(3, 2) HC_SUM_CASE(4, 2) HC_SUM_CASE(5, 2) HC_SUM_CASE(6, 2) HC_SUM_CASE(1, 4)
+            HC_SUM_CASE(2, 4) HC_SUM_CASE(3, 4) HC_SUM_CASE(4, 4) HC_SUM_CASE(5, 4) HC_SUM_CASE(6, 4) default : break;
   }
 }
 
@@ -155,8 +155,8 @@ static int locate(const hc_runtime_surface* s, const hc_kernel_axis* axes, const
   size_t base = 0;
   for (size_t a = 0; a < s->axis_count; ++a) {
     size_t node = 0;
-    const int status = hc_kernel_axis_cell(&axes[a], s->breakpoints + axes[a].offset, s->terms_per_axis,
-                                           with_gradient, x[a], w + 4 * a, dw + 4 * a, &node);
+    const int status = hc_kernel_axis_cell(&axes[a], s->breakpoints + axes[a].offset, s->terms_per_axis, with_gradient,
+                                           x[a], w + 4 * a, dw + 4 * a, &node);
     if (status != HC_KERNEL_OK) {
       *failed_axis = a;
       return status;
@@ -180,8 +180,7 @@ int hc_runtime_evaluate(const hc_runtime_model* model, size_t surface, const dou
   const double* data = s->data + base * s->node_block;
   sum(n, K, w, HC_KERNEL_MAX_AXES, NULL, s->term_offsets, data, n_out, values, 1);
   if (gradients != NULL) {
-    for (size_t a = 0; a < n; ++a)
-      sum(n, K, w, a, dw + 4 * a, s->term_offsets, data, n_out, gradients + a, n);
+    for (size_t a = 0; a < n; ++a) sum(n, K, w, a, dw + 4 * a, s->term_offsets, data, n_out, gradients + a, n);
   }
   if (sigma != NULL) {
     /* The runs' part through the same interpolant, clamped outside the
@@ -213,9 +212,10 @@ int hc_runtime_check_point(const hc_runtime_model* model, size_t surface, const 
       snprintf(err, errlen, "surface '%s': axis '%s' = %g is not a number; expected a finite value", s->name,
                s->axis_info[a].name, x[a]);
     else
-      snprintf(err, errlen, "surface '%s': axis '%s' = %.17g is outside [%.17g, %.17g]; expected a value in range "
-               "(its extrapolation policy is error)", s->name, s->axis_info[a].name, x[a], s->axes[a].lo,
-               s->axes[a].hi);
+      snprintf(err, errlen,
+               "surface '%s': axis '%s' = %.17g is outside [%.17g, %.17g]; expected a value in range "
+               "(its extrapolation policy is error)",
+               s->name, s->axis_info[a].name, x[a], s->axes[a].lo, s->axes[a].hi);
   }
   return status == HC_KERNEL_OUTSIDE ? HC_RUNTIME_E_OUTSIDE : HC_RUNTIME_E_NOT_FINITE;
 }

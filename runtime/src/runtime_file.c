@@ -12,13 +12,7 @@
 #include "runtime_internal.h"
 #include "xxh64.h"
 
-enum {
-  HEADER_SIZE = 64,
-  SECTION_ENTRY_SIZE = 24,
-  SECTION_MODEL = 1,
-  SECTION_SURFACE = 2,
-  SURFACE_FLAG_SIGMA = 1
-};
+enum { HEADER_SIZE = 64, SECTION_ENTRY_SIZE = 24, SECTION_MODEL = 1, SECTION_SURFACE = 2, SURFACE_FLAG_SIGMA = 1 };
 
 static const unsigned char kMagic[8] = {0x89, 'H', 'C', 'R', 'T', '\r', '\n', 0x1a};
 
@@ -36,7 +30,8 @@ typedef struct reader {
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((format(printf, 4, 5)))
 #endif
-static int fail_at(reader* r, int status, size_t offset, const char* format, ...) {
+static int
+fail_at(reader* r, int status, size_t offset, const char* format, ...) {
   if (r->err == NULL || r->errlen == 0) return status;
   int used = snprintf(r->err, r->errlen, "runtime file, %s, byte %zu: ", r->section, offset);
   if (used < 0) used = 0;
@@ -97,14 +92,13 @@ static int read_text(reader* r, const char* what, const char** text) {
   if (status != HC_RUNTIME_OK) return status;
   const size_t available = r->end - r->pos;
   if (length >= available)
-    return fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s has length %u; expected at most %zu (the rest of the section)",
-                   what, (unsigned)length, available == 0 ? (size_t)0 : available - 1);
+    return fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s has length %u; expected at most %zu (the rest of the section)", what,
+                   (unsigned)length, available == 0 ? (size_t)0 : available - 1);
   const unsigned char* bytes = r->base + r->pos;
   if (memchr(bytes, 0, length) != NULL)
     return fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s holds a NUL byte; expected text", what);
   const size_t padded = (4 + (size_t)length + 1 + 7) / 8 * 8 - 4; /* bytes after the length */
-  if (padded > available)
-    return fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s's padding runs past the section's end", what);
+  if (padded > available) return fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s's padding runs past the section's end", what);
   for (size_t i = length; i < padded; ++i) {
     if (bytes[i] != 0)
       return fail_at(r, HC_RUNTIME_E_FORMAT, r->pos + i, "%s's padding byte is %u; expected 0", what,
@@ -141,8 +135,8 @@ static int read_doubles(reader* r, const char* what, uint64_t count, const doubl
 static int check_finite(reader* r, const char* what, const double* values, size_t count, size_t first_byte) {
   for (size_t i = 0; i < count; ++i) {
     if (!isfinite(values[i]))
-      return fail_at(r, HC_RUNTIME_E_FORMAT, first_byte + 8 * i, "%s number %zu is not finite; expected a finite number",
-                     what, i);
+      return fail_at(r, HC_RUNTIME_E_FORMAT, first_byte + 8 * i,
+                     "%s number %zu is not finite; expected a finite number", what, i);
   }
   return HC_RUNTIME_OK;
 }
@@ -225,8 +219,8 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     if (info->name[0] == '\0') return fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "axis %zu's name is empty", a);
     for (size_t b = 0; b < a; ++b) {
       if (strcmp(s->axis_info[b].name, info->name) == 0)
-        return fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "axes %zu and %zu are both named '%s'; expected unique names",
-                       b, a, info->name);
+        return fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "axes %zu and %zu are both named '%s'; expected unique names", b,
+                       a, info->name);
     }
     const size_t policy_at = r->pos;
     uint32_t policy = 0;
@@ -267,8 +261,10 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     product *= (size_t)count;
   }
   if (nodes != product)
-    return fail_at(r, HC_RUNTIME_E_FORMAT, start + 16, "node count %llu; expected %zu (the product of the axes' "
-                   "breakpoint counts)", (unsigned long long)nodes, product);
+    return fail_at(r, HC_RUNTIME_E_FORMAT, start + 16,
+                   "node count %llu; expected %zu (the product of the axes' "
+                   "breakpoint counts)",
+                   (unsigned long long)nodes, product);
   s->node_count = product;
 
   s->output_names = (const char**)calloc(outputs, sizeof(const char*));
@@ -282,8 +278,8 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     if (s->output_names[k][0] == '\0') return fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "output %zu's name is empty", k);
     for (size_t j = 0; j < k; ++j) {
       if (strcmp(s->output_names[j], s->output_names[k]) == 0)
-        return fail_at(r, HC_RUNTIME_E_FORMAT, r->pos,
-                       "outputs %zu and %zu are both named '%s'; expected unique names", j, k, s->output_names[k]);
+        return fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "outputs %zu and %zu are both named '%s'; expected unique names",
+                       j, k, s->output_names[k]);
     }
   }
 
@@ -358,11 +354,12 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
   r.err = err;
   r.errlen = errlen;
   if (model->size < HEADER_SIZE)
-    return fail_at(&r, HC_RUNTIME_E_FORMAT, 0, "the file has %zu bytes; a runtime file has at least %d",
-                   model->size, HEADER_SIZE);
+    return fail_at(&r, HC_RUNTIME_E_FORMAT, 0, "the file has %zu bytes; a runtime file has at least %d", model->size,
+                   HEADER_SIZE);
   const unsigned char* h = model->bytes;
   if (memcmp(h, kMagic, sizeof kMagic) != 0)
-    return fail_at(&r, HC_RUNTIME_E_FORMAT, 0, "not a hydrocoef runtime file (its first 8 bytes are not the magic "
+    return fail_at(&r, HC_RUNTIME_E_FORMAT, 0,
+                   "not a hydrocoef runtime file (its first 8 bytes are not the magic "
                    "number 89 48 43 52 54 0d 0a 1a)");
   const uint32_t version = get_u32(h + 8);
   if (version != HC_RUNTIME_FILE_VERSION)
@@ -372,8 +369,10 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
     return fail_at(&r, HC_RUNTIME_E_FORMAT, 12, "header size %u; expected %d", (unsigned)get_u32(h + 12), HEADER_SIZE);
   const uint64_t file_size = get_u64(h + 16);
   if (file_size != (uint64_t)model->size)
-    return fail_at(&r, HC_RUNTIME_E_FORMAT, 16, "the header states %llu bytes; the file has %zu (truncated or "
-                   "extended)", (unsigned long long)file_size, model->size);
+    return fail_at(&r, HC_RUNTIME_E_FORMAT, 16,
+                   "the header states %llu bytes; the file has %zu (truncated or "
+                   "extended)",
+                   (unsigned long long)file_size, model->size);
   const uint64_t stored_hash = get_u64(h + 24);
   const uint32_t section_count = get_u32(h + 32);
   const uint32_t flags = get_u32(h + 36);
@@ -384,9 +383,10 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
   }
   const uint64_t hash = hc_xxh64(h + HEADER_SIZE, model->size - HEADER_SIZE, 0);
   if (hash != stored_hash)
-    return fail_at(&r, HC_RUNTIME_E_HASH, 24, "content hash %016llx; the content hashes to %016llx (the file was "
-                   "changed or damaged after it was written)", (unsigned long long)stored_hash,
-                   (unsigned long long)hash);
+    return fail_at(&r, HC_RUNTIME_E_HASH, 24,
+                   "content hash %016llx; the content hashes to %016llx (the file was "
+                   "changed or damaged after it was written)",
+                   (unsigned long long)stored_hash, (unsigned long long)hash);
   model->hash = hash;
   if (table_offset != HEADER_SIZE)
     return fail_at(&r, HC_RUNTIME_E_FORMAT, 40, "section table at byte %llu; expected %d (right after the header)",
@@ -421,12 +421,15 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
       return fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 4, "section %zu's reserved word is %u; expected 0", i,
                      (unsigned)reserved);
     if (offset != previous_end || offset % 8 != 0)
-      return fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 8, "section %zu starts at byte %llu; expected %zu (sections "
-                     "follow one another, 8-byte aligned)", i, (unsigned long long)offset, previous_end);
+      return fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 8,
+                     "section %zu starts at byte %llu; expected %zu (sections "
+                     "follow one another, 8-byte aligned)",
+                     i, (unsigned long long)offset, previous_end);
     if (size > (uint64_t)(model->size - (size_t)offset) || size % 8 != 0)
-      return fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 16, "section %zu has %llu bytes from byte %llu; the file has "
-                     "%zu bytes (and sections are multiples of 8 bytes)", i, (unsigned long long)size,
-                     (unsigned long long)offset, model->size);
+      return fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 16,
+                     "section %zu has %llu bytes from byte %llu; the file has "
+                     "%zu bytes (and sections are multiples of 8 bytes)",
+                     i, (unsigned long long)size, (unsigned long long)offset, model->size);
     r.pos = (size_t)offset;
     r.end = (size_t)(offset + size);
     previous_end = r.end;
@@ -444,8 +447,10 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
       status = read_surface(&r, s);
       for (size_t j = 0; status == HC_RUNTIME_OK && j + 1 < i; ++j) {
         if (strcmp(model->surfaces[j].name, s->name) == 0)
-          status = fail_at(&r, HC_RUNTIME_E_FORMAT, (size_t)offset, "surface '%s' is also surface %zu; expected "
-                           "unique surface names", s->name, j + 1);
+          status = fail_at(&r, HC_RUNTIME_E_FORMAT, (size_t)offset,
+                           "surface '%s' is also surface %zu; expected "
+                           "unique surface names",
+                           s->name, j + 1);
       }
     }
     if (status != HC_RUNTIME_OK) return status;

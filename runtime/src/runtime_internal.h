@@ -22,7 +22,7 @@ typedef struct hc_runtime_axis_info {
 
 typedef struct hc_runtime_surface {
   const char* name;
-  int method;            /* HC_KERNEL_NEAREST .. HC_KERNEL_NATURAL_SPLINE */
+  int method; /* HC_KERNEL_NEAREST .. HC_KERNEL_NATURAL_SPLINE */
   int has_sigma;
   size_t axis_count;
   size_t output_count;
@@ -32,13 +32,13 @@ typedef struct hc_runtime_surface {
   hc_kernel_axis axes[HC_KERNEL_MAX_AXES];
   hc_kernel_axis sigma_axes[HC_KERNEL_MAX_AXES]; /* the same, every policy clamp */
   hc_runtime_axis_info axis_info[HC_KERNEL_MAX_AXES];
-  const double* breakpoints;  /* every axis's, one after another (axes[a].offset) */
+  const double* breakpoints; /* every axis's, one after another (axes[a].offset) */
   const char** output_names;
   const char** output_units;
-  const double* data;        /* node_count * node_block evaluated numbers */
-  const double* loo;         /* output_count leave-one-out standard deviations (has_sigma) */
-  const double* sigma_data;  /* the runs' sigma table, as data (has_sigma) */
-  size_t* term_offsets;      /* K^n offsets of the local sum's terms */
+  const double* data;       /* node_count * node_block evaluated numbers */
+  const double* loo;        /* output_count leave-one-out standard deviations (has_sigma) */
+  const double* sigma_data; /* the runs' sigma table, as data (has_sigma) */
+  size_t* term_offsets;     /* K^n offsets of the local sum's terms */
   hc_text_pair* metadata;
   size_t metadata_count;
 } hc_runtime_surface;

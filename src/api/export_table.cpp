@@ -50,11 +50,11 @@ std::string run_list(const std::vector<std::int64_t>& runs) {
 std::string runtime_source(const SurfaceRecord& record) {
   const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality, nullptr, false);
   if (quality.is_object() && quality.contains("grid_points")) {
-    const std::size_t far = quality.contains("far_from_data") && quality["far_from_data"].is_array()
-                                ? quality["far_from_data"].size()
-                                : 0;
+    const std::size_t far =
+        quality.contains("far_from_data") && quality["far_from_data"].is_array() ? quality["far_from_data"].size() : 0;
     return "an RBF surface tabulated on a grid by surface build --resample (" + quality["grid_points"].dump() +
-           " nodes, " + std::to_string(far) + " of them far from every run: extrapolation), as hydrocoef "
+           " nodes, " + std::to_string(far) +
+           " of them far from every run: extrapolation), as hydrocoef "
            "evaluates the stored grid";
   }
   return "the stored grid table, as hydrocoef evaluates it";
@@ -76,15 +76,15 @@ void write_runtime_file(const Database& db, const TableExportOptions& options, s
       throw InputError("surface '" + s.record.name + "' belongs to body '" + s.record.body + "', surface '" +
                        stored.front().record.name + "' to body '" + stored.front().record.body +
                        "'; expected the surfaces of one body in a runtime file");
-    surfaces.push_back(runtime_surface(s.record.name, s.surface,
-                                       {{"content_sha256", content_sha256(s.record)},
-                                        {"runs", run_list(s.record.run_ids)},
-                                        {"created_at", s.record.created_at},
-                                        {"stale", s.record.stale ? "true" : "false"},
-                                        {"source", runtime_source(s.record)},
-                                        {"quality", s.record.quality},
-                                        {"sigma", s.surface.has_standard_deviation()
-                                                      ? "runs' sigma interpolated (clamped), at least 0, in "
+    surfaces.push_back(runtime_surface(
+        s.record.name, s.surface,
+        {{"content_sha256", content_sha256(s.record)},
+         {"runs", run_list(s.record.run_ids)},
+         {"created_at", s.record.created_at},
+         {"stale", s.record.stale ? "true" : "false"},
+         {"source", runtime_source(s.record)},
+         {"quality", s.record.quality},
+         {"sigma", s.surface.has_standard_deviation() ? "runs' sigma interpolated (clamped), at least 0, in "
                                                         "quadrature with the leave-one-out RMS"
                                                       : "none"}}));
     listed += (listed.empty() ? "" : ",") + s.record.name;

@@ -124,9 +124,9 @@ std::string_view export_format_name(ExportFormat format) {
 }
 
 ExportFormat parse_export_format(std::string_view text) {
-  for (ExportFormat format : {ExportFormat::Csv, ExportFormat::CsvWide, ExportFormat::Json, ExportFormat::CHeader,
-                              ExportFormat::Mat, ExportFormat::Jsbsim, ExportFormat::Vtk, ExportFormat::Daveml,
-                              ExportFormat::Runtime}) {
+  for (ExportFormat format :
+       {ExportFormat::Csv, ExportFormat::CsvWide, ExportFormat::Json, ExportFormat::CHeader, ExportFormat::Mat,
+        ExportFormat::Jsbsim, ExportFormat::Vtk, ExportFormat::Daveml, ExportFormat::Runtime}) {
     if (text == export_format_name(format)) return format;
   }
   throw InputError("unknown export format '" + std::string(text) +

@@ -39,8 +39,7 @@ class Writer {
   }
   // u32 length, the bytes, 1 to 8 zero bytes to the next multiple of 8.
   void text(const std::string& value, const std::string& what) {
-    if (value.find('\0') != std::string::npos)
-      throw InputError(what + " holds a NUL character; expected text");
+    if (value.find('\0') != std::string::npos) throw InputError(what + " holds a NUL character; expected text");
     if (value.size() > 0xffff'ffffu) throw InputError(what + " is too long; expected under 4 GiB");
     u32(static_cast<std::uint32_t>(value.size()));
     bytes_ += value;
@@ -91,10 +90,12 @@ std::string surface_section(const RuntimeSurface& surface) {
     bool same = s.method() == table.method() && s.axis_count() == table.axis_count() &&
                 s.output_count() == table.output_count() && surface.loo.size() == table.output_count();
     for (std::size_t a = 0; same && a < table.axis_count(); ++a)
-      same = s.axes()[a].breakpoints == table.axes()[a].breakpoints && s.axes()[a].extrapolation == Extrapolation::Clamp;
+      same =
+          s.axes()[a].breakpoints == table.axes()[a].breakpoints && s.axes()[a].extrapolation == Extrapolation::Clamp;
     if (!same)
-      throw InputError(what + ": its sigma table does not share the surface's breakpoints and method (clamped), or "
-                              "the leave-one-out part has not one number per output; expected them to");
+      throw InputError(what +
+                       ": its sigma table does not share the surface's breakpoints and method (clamped), or "
+                       "the leave-one-out part has not one number per output; expected them to");
   }
   const std::size_t n = table.axis_count(), n_out = table.output_count();
   const std::size_t block = (is_cubic(table.method()) ? (std::size_t{1} << n) : 1) * n_out;
@@ -138,15 +139,18 @@ std::string surface_section(const RuntimeSurface& surface) {
 
 RuntimeSurface runtime_surface(const std::string& name, const CoefficientSurface& surface, RuntimeTexts metadata) {
   if (surface.kind() == CoefficientSurface::Kind::Gp)
-    throw InputError("surface '" + name + "' is a GP surface (scattered samples); a runtime file holds gridded "
+    throw InputError("surface '" + name +
+                     "' is a GP surface (scattered samples); a runtime file holds gridded "
                      "surfaces; expected a grid: build one from the same runs with --method rbf --resample "
                      "AXIS=FROM:TO:COUNT (one per axis) and export that");
   if (surface.kind() == CoefficientSurface::Kind::Rbf)
-    throw InputError("surface '" + name + "' is an RBF surface (scattered samples); a runtime file holds gridded "
+    throw InputError("surface '" + name +
+                     "' is an RBF surface (scattered samples); a runtime file holds gridded "
                      "surfaces; expected a grid: tabulate it with `hydrocoef surface build NAME ... --method rbf "
                      "--resample AXIS=FROM:TO:COUNT` (one per axis) and export that");
   if (!surface.symmetry().empty())
-    throw InputError("surface '" + name + "' has a mirror symmetry imposed (--symmetry); a runtime file holds "
+    throw InputError("surface '" + name +
+                     "' has a mirror symmetry imposed (--symmetry); a runtime file holds "
                      "tables evaluated as they are; expected a surface built without --symmetry");
   RuntimeSurface out;
   out.name = name;
@@ -165,8 +169,9 @@ RuntimeTexts runtime_model_texts(RuntimeTexts given) {
   given.emplace_back("format", "hydrocoef runtime file, version 1 (docs/runtime.md)");
   given.emplace_back("hydrocoef_version", kVersion);
   given.emplace_back("frame", "body axes: x forward, y starboard, z down (FRD), origin at the body's reference point");
-  given.emplace_back("units", "SI: m/s for u, v, w; rad/s for p, q, r; rad for angles; N for X, Y, Z; N m for K, M, "
-                              "N; each axis's and output's unit stated with it");
+  given.emplace_back("units",
+                     "SI: m/s for u, v, w; rad/s for p, q, r; rad for angles; N for X, Y, Z; N m for K, M, "
+                     "N; each axis's and output's unit stated with it");
   given.emplace_back("sign_convention",
                      "on-body: forces and moments of the fluid on the body (SNAME); damping is negative");
   return given;

@@ -41,9 +41,9 @@ struct GridLayout {
   std::size_t n_out = 0;
   const double* data = nullptr;  // values() (linear) or hermite_data() (cubic)
   std::array<const double*, kMaxGridAxes> x{};
-  std::array<std::size_t, kMaxGridAxes> stride{};  // data elements between neighbouring nodes along the axis
+  std::array<std::size_t, kMaxGridAxes> stride{};   // data elements between neighbouring nodes along the axis
   std::array<hc_kernel_axis, kMaxGridAxes> axis{};  // the shared kernel's lookup (range, even spacing)
-  std::vector<std::size_t> term_offsets;  // of the K^N terms from the cell's base, axis 0's term fastest
+  std::vector<std::size_t> term_offsets;            // of the K^N terms from the cell's base, axis 0's term fastest
 };
 
 GridLayout grid_layout(const GridTable& table, std::size_t terms_per_axis) {

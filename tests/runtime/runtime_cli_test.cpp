@@ -35,8 +35,10 @@ const std::string kSurge = HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-surge-dam
 void make_database(const TempDir& dir) {
   auto imported = run_cli({"import", kSurge, "--body", "asr-v", "--sign", "opposing", "--rho", "998.2"}, dir.path());
   ASSERT_EQ(imported.exit_code, 0) << imported.err;
-  for (const auto& [name, method, policy] : std::vector<std::array<std::string, 3>>{
-           {"surge", "pchip", "linear"}, {"surge_linear", "linear", "clamp"}, {"surge_spline", "natural-spline", "method"}}) {
+  for (const auto& [name, method, policy] :
+       std::vector<std::array<std::string, 3>>{{"surge", "pchip", "linear"},
+                                               {"surge_linear", "linear", "clamp"},
+                                               {"surge_spline", "natural-spline", "method"}}) {
     auto built = run_cli({"surface", "build", name, "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method",
                           method, "--extrapolate", policy},
                          dir.path());
@@ -86,8 +88,8 @@ TEST(RuntimeCli, ExportedFileEvaluatesWhatQueryAnswersBitForBit) {
     ASSERT_EQ(hc_runtime_surface_has_sigma(opened, s), 1) << name;
     for (const double u : {-0.2, 0.0, 0.013, 0.1, 0.123456789, 0.25, 0.38, 0.45, 0.9}) {
       SCOPED_TRACE(name + " at u = " + std::to_string(u));
-      const auto queried = run_cli({"query", name, "u=" + std::to_string(u), "--gradient", "--uncertainty", "--json"},
-                                   dir.path());
+      const auto queried =
+          run_cli({"query", name, "u=" + std::to_string(u), "--gradient", "--uncertainty", "--json"}, dir.path());
       ASSERT_EQ(queried.exit_code, 0) << queried.err;
       const auto json = nlohmann::json::parse(queried.out);
       const double x = json.at("point").at("u").get<double>();
@@ -119,10 +121,10 @@ TEST(RuntimeCli, ExportedFileEvaluatesWhatQueryAnswersBitForBit) {
 TEST(RuntimeCli, TheApiWritesWhatTheCliWritesAndValidatesAsItDoes) {
   TempDir dir;
   make_database(dir);
-  ASSERT_EQ(run_cli({"export", "surge", "--format", "runtime", "-o", "cli.hcrt", "--surface", "surge_linear"},
-                    dir.path())
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli({"export", "surge", "--format", "runtime", "-o", "cli.hcrt", "--surface", "surge_linear"}, dir.path())
+          .exit_code,
+      0);
   const auto db = Database::open((dir / "hydrocoef.db").string(), OpenMode::ReadOnly);
   TableExportOptions options;
   options.name = "surge";
@@ -161,12 +163,12 @@ TEST(RuntimeCli, TheApiWritesWhatTheCliWritesAndValidatesAsItDoes) {
 TEST(RuntimeCli, RefusalsAreOneLineAndWriteNothing) {
   TempDir dir;
   make_database(dir);
-  const auto rbf = run_cli({"surface", "build", "surge_rbf", "--body", "asr-v", "--outputs", "X", "--axes", "u",
-                            "--method", "rbf"},
-                           dir.path());
+  const auto rbf =
+      run_cli({"surface", "build", "surge_rbf", "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method", "rbf"},
+              dir.path());
   ASSERT_EQ(rbf.exit_code, 0) << rbf.err;
-  const auto refused = run_cli({"export", "surge", "--format", "runtime", "-o", "m.hcrt", "--surface", "surge_rbf"},
-                               dir.path());
+  const auto refused =
+      run_cli({"export", "surge", "--format", "runtime", "-o", "m.hcrt", "--surface", "surge_rbf"}, dir.path());
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("surface 'surge_rbf' is an RBF surface"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("--resample"), std::string::npos) << refused.err;
@@ -201,8 +203,7 @@ TEST(RuntimeCli, RefusalsAreOneLineAndWriteNothing) {
   const auto wrong_format =
       run_cli({"export", "surge", "--format", "csv", "-o", "m.csv", "--surface", "surge_linear"}, dir.path());
   EXPECT_EQ(wrong_format.exit_code, 2);
-  EXPECT_NE(wrong_format.err.find("--surface applies to --format runtime only"), std::string::npos)
-      << wrong_format.err;
+  EXPECT_NE(wrong_format.err.find("--surface applies to --format runtime only"), std::string::npos) << wrong_format.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "m.csv"));
 }
 

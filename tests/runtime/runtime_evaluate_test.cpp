@@ -37,11 +37,10 @@ Model open_bytes(const std::string& bytes) {
   return Model(model);
 }
 
-constexpr std::array<Interpolation, 5> kMethods = {Interpolation::Nearest, Interpolation::Linear,
-                                                   Interpolation::Pchip, Interpolation::Akima,
-                                                   Interpolation::NaturalSpline};
-constexpr std::array<Extrapolation, 4> kPolicies = {Extrapolation::Error, Extrapolation::Clamp,
-                                                    Extrapolation::Linear, Extrapolation::Method};
+constexpr std::array<Interpolation, 5> kMethods = {Interpolation::Nearest, Interpolation::Linear, Interpolation::Pchip,
+                                                   Interpolation::Akima, Interpolation::NaturalSpline};
+constexpr std::array<Extrapolation, 4> kPolicies = {Extrapolation::Error, Extrapolation::Clamp, Extrapolation::Linear,
+                                                    Extrapolation::Method};
 
 // Breakpoints of axis a: even on axes 0 and 2, uneven on 1 and 3.
 std::vector<double> breakpoints(std::size_t a, std::size_t axes) {
@@ -69,8 +68,8 @@ Case make_case(Interpolation method, const std::vector<Extrapolation>& policies,
     axes.push_back({std::string(1, "uvwpqr"[a]), breakpoints(a, n), policies[a]});
     nodes *= axes.back().breakpoints.size();
   }
-  const std::vector<std::string> outputs = n == 1 ? std::vector<std::string>{"X", "Y", "N"}
-                                                  : std::vector<std::string>{"X", "N"};
+  const std::vector<std::string> outputs =
+      n == 1 ? std::vector<std::string>{"X", "Y", "N"} : std::vector<std::string>{"X", "N"};
   std::uniform_real_distribution<double> noise(-1.0, 1.0);
   std::vector<double> values, sigma;
   for (std::size_t node = 0; node < nodes; ++node) {
@@ -99,7 +98,9 @@ double coordinate(const GridAxis& axis, std::mt19937_64& random) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double kind = unit(random);
   if (kind < 0.6) return lo + range * unit(random);
-  if (kind < 0.75) return axis.breakpoints[static_cast<std::size_t>(unit(random) * 0.999 * static_cast<double>(axis.breakpoints.size()))];
+  if (kind < 0.75)
+    return axis
+        .breakpoints[static_cast<std::size_t>(unit(random) * 0.999 * static_cast<double>(axis.breakpoints.size()))];
   if (kind < 0.8) return unit(random) < 0.5 ? lo : hi;
   return unit(random) < 0.5 ? lo - 0.6 * range * unit(random) : hi + 0.6 * range * unit(random);
 }
@@ -135,8 +136,8 @@ void compare(const Case& c, const hc_runtime_model* model, std::size_t index, st
     std::vector<double> plain(n_out);
     c.table.evaluate(x, plain);
     for (std::size_t k = 0; k < n_out; ++k) {
-      ASSERT_TRUE(same_bits(value[k], r_value[k])) << "point " << i << " output " << k << ": " << value[k] << " vs "
-                                                   << r_value[k];
+      ASSERT_TRUE(same_bits(value[k], r_value[k]))
+          << "point " << i << " output " << k << ": " << value[k] << " vs " << r_value[k];
       ASSERT_TRUE(same_bits(plain[k], r_plain[k])) << "point " << i << " output " << k;
       ASSERT_TRUE(same_bits(sd[k], r_sd[k])) << "point " << i << " sigma " << k << ": " << sd[k] << " vs " << r_sd[k];
     }

@@ -136,11 +136,11 @@ std::string hex(double value) {
 TEST(RuntimeLinking, AC99ProgramLinksStaticallyAndDynamicallyAndEvaluates) {
   if (!std::filesystem::exists(HYDROCOEF_C_COMPILER)) GTEST_SKIP() << "no C compiler at " << HYDROCOEF_C_COMPILER;
   test::TempDir dir;
-  const GridTable table({{"u", {-1.0, 0.0, 0.5, 1.0}, Extrapolation::Linear},
-                         {"v", {-0.6, -0.2, 0.3, 0.6}, Extrapolation::Method}},
-                        {"Y", "N"}, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,
-                                     -1, -2, -3, -5, -8, -13, -21, -34, 1, 1, 2, 3, 5, 8, 13, 21},
-                        Interpolation::Pchip);
+  const GridTable table(
+      {{"u", {-1.0, 0.0, 0.5, 1.0}, Extrapolation::Linear}, {"v", {-0.6, -0.2, 0.3, 0.6}, Extrapolation::Method}},
+      {"Y", "N"}, {1,  2,  3,  4,  5,  6,   7,   8,   9, 10, 11, 12, 13, 14, 15, 16,
+                   -1, -2, -3, -5, -8, -13, -21, -34, 1, 1,  2,  3,  5,  8,  13, 21},
+      Interpolation::Pchip);
   const CoefficientSurface surface(table);
   {
     std::ofstream file(dir / "model.hcrt", std::ios::binary);
@@ -151,8 +151,8 @@ TEST(RuntimeLinking, AC99ProgramLinksStaticallyAndDynamicallyAndEvaluates) {
   const double x[2] = {0.37, -0.21};
   std::vector<double> values(2), gradient(4);
   table.evaluate_with_gradient(x, values, gradient);
-  const std::string expected = hex(values[0]) + " " + hex(values[1]) + " " + hex(gradient[0]) + " " +
-                               hex(gradient[1]) + " " + hex(gradient[2]) + " " + hex(gradient[3]) + "\n";
+  const std::string expected = hex(values[0]) + " " + hex(values[1]) + " " + hex(gradient[0]) + " " + hex(gradient[1]) +
+                               " " + hex(gradient[2]) + " " + hex(gradient[3]) + "\n";
   const std::filesystem::path shared(HYDROCOEF_RUNTIME_SHARED);
   const std::string cc = shell_quote(HYDROCOEF_C_COMPILER) + " -std=c99 -pedantic -Wall -Wextra -Werror " +
                          HYDROCOEF_RUNTIME_CONSUMER_FLAGS + " -I" + shell_quote(HYDROCOEF_RUNTIME_INCLUDE) + " " +

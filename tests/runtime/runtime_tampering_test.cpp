@@ -39,8 +39,7 @@ Opened open_bytes(const std::string& bytes) {
     // A model that opened evaluates without a crash.
     double x[6] = {0.1, 0.1, 0.1, 0.1, 0.1, 0.1}, values[16], gradients[96];
     for (std::size_t s = 0; s < hc_runtime_surface_count(model); ++s)
-      if (hc_runtime_output_count(model, s) <= 16)
-        (void)hc_runtime_evaluate(model, s, x, values, gradients, nullptr);
+      if (hc_runtime_output_count(model, s) <= 16) (void)hc_runtime_evaluate(model, s, x, values, gradients, nullptr);
     hc_runtime_close(model);
   } else {
     EXPECT_EQ(model, nullptr);
@@ -59,7 +58,9 @@ std::uint64_t get_u64(const std::string& bytes, std::size_t at) {
   for (int i = 7; i >= 0; --i) value = value << 8 | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
   return value;
 }
-void put_double(std::string& bytes, std::size_t at, double value) { put_u64(bytes, at, std::bit_cast<std::uint64_t>(value)); }
+void put_double(std::string& bytes, std::size_t at, double value) {
+  put_u64(bytes, at, std::bit_cast<std::uint64_t>(value));
+}
 
 // The header's size and hash made right again after a change.
 std::string rehashed(std::string bytes) {
@@ -76,7 +77,8 @@ struct Original {
                   {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18},
                   Interpolation::Pchip};
   GridTable linear{{{"u", {0.0, 1.0}, Extrapolation::Error}}, {"X"}, {1.0, 3.0}, Interpolation::Linear};
-  CoefficientSurface with_sigma = CoefficientSurface(pchip).with_run_uncertainty(std::vector<double>(18, 0.5), {1.0, 2.0});
+  CoefficientSurface with_sigma =
+      CoefficientSurface(pchip).with_run_uncertainty(std::vector<double>(18, 0.5), {1.0, 2.0});
   CoefficientSurface plain{linear};
   std::string bytes = runtime_file_bytes(runtime_model_texts({{"body", "b"}}),
                                          {runtime_surface("s1", with_sigma, {}), runtime_surface("s2", plain, {})});
@@ -87,9 +89,9 @@ struct Original {
 // "s1" (8 bytes), no metadata (8), axis u (name 8, unit "m/s" 8, policy 8,
 // count 8, 3 breakpoints), axis v likewise, outputs X [N], N [N m], then the
 // 9 x 8 table, 2 leave-one-out numbers and the 9 x 8 sigma table.
-constexpr std::size_t kAxisCount = 0, kOutputCount = 4, kMethod = 8, kFlags = 12, kNodes = 16, kBlock = 24,
-                      kName = 32, kMetadataCount = 40, kAxisU = 48, kPolicyU = 64, kCountU = 72, kPointsU = 80,
-                      kAxisV = 104, kPointsV = 136, kTable = 192, kLoo = 768, kSigma = 784, kEnd = 1360;
+constexpr std::size_t kAxisCount = 0, kOutputCount = 4, kMethod = 8, kFlags = 12, kNodes = 16, kBlock = 24, kName = 32,
+                      kMetadataCount = 40, kAxisU = 48, kPolicyU = 64, kCountU = 72, kPointsU = 80, kAxisV = 104,
+                      kPointsV = 136, kTable = 192, kLoo = 768, kSigma = 784, kEnd = 1360;
 
 struct Variant {
   std::string name;
@@ -117,17 +119,53 @@ std::vector<Variant> variants() {
   for (const std::size_t length : {64ul, 100ul, s1, s1 + 20, s1 + 500, good.size() - 8, good.size() - 1})
     add("truncated at " + std::to_string(length), good.substr(0, length), HC_RUNTIME_E_FORMAT, "truncated");
   add("extended", good + std::string(8, '\0'), HC_RUNTIME_E_FORMAT, "truncated or extended");
-  add("version 2", [&] { std::string b = good; put_u32(b, 8, 2); return b; }(), HC_RUNTIME_E_VERSION,
-      "format version 2");
-  add("header size", [&] { std::string b = good; put_u32(b, 12, 72); return b; }(), HC_RUNTIME_E_FORMAT,
-      "header size 72");
-  add("header flags", [&] { std::string b = good; put_u32(b, 36, 1); return b; }(), HC_RUNTIME_E_FORMAT,
-      "header flags");
-  add("reserved header byte", [&] { std::string b = good; b[60] = 1; return b; }(), HC_RUNTIME_E_FORMAT,
-      "reserved header byte");
-  add("stored hash changed", [&] { std::string b = good; b[24] ^= 1; return b; }(), HC_RUNTIME_E_HASH,
-      "content hash");
-  add("a table bit flipped", [&] { std::string b = good; b[s1 + kTable + 3] ^= 0x10; return b; }(),
+  add(
+      "version 2",
+      [&] {
+        std::string b = good;
+        put_u32(b, 8, 2);
+        return b;
+      }(),
+      HC_RUNTIME_E_VERSION, "format version 2");
+  add(
+      "header size",
+      [&] {
+        std::string b = good;
+        put_u32(b, 12, 72);
+        return b;
+      }(),
+      HC_RUNTIME_E_FORMAT, "header size 72");
+  add(
+      "header flags",
+      [&] {
+        std::string b = good;
+        put_u32(b, 36, 1);
+        return b;
+      }(),
+      HC_RUNTIME_E_FORMAT, "header flags");
+  add(
+      "reserved header byte",
+      [&] {
+        std::string b = good;
+        b[60] = 1;
+        return b;
+      }(),
+      HC_RUNTIME_E_FORMAT, "reserved header byte");
+  add(
+      "stored hash changed",
+      [&] {
+        std::string b = good;
+        b[24] ^= 1;
+        return b;
+      }(),
+      HC_RUNTIME_E_HASH, "content hash");
+  add(
+      "a table bit flipped",
+      [&] {
+        std::string b = good;
+        b[s1 + kTable + 3] ^= 0x10;
+        return b;
+      }(),
       HC_RUNTIME_E_HASH, "changed or damaged");
   add("no sections", changed([&](std::string& b) { put_u32(b, 32, 0); }), HC_RUNTIME_E_FORMAT, "0 sections");
   add("huge section count", changed([&](std::string& b) { put_u32(b, 32, 0xffffffffu); }), HC_RUNTIME_E_FORMAT,
@@ -140,8 +178,8 @@ std::vector<Variant> variants() {
       "section 0 has kind 2");
   add("section misaligned", changed([&](std::string& b) { put_u64(b, 64 + 24 + 8, s1 + 4); }), HC_RUNTIME_E_FORMAT,
       "section 1 starts at byte");
-  add("huge section size", changed([&](std::string& b) { put_u64(b, 64 + 24 + 16, ~0ull - 7); }),
-      HC_RUNTIME_E_FORMAT, "section 1 has");
+  add("huge section size", changed([&](std::string& b) { put_u64(b, 64 + 24 + 16, ~0ull - 7); }), HC_RUNTIME_E_FORMAT,
+      "section 1 has");
   add("section size too small", changed([&](std::string& b) { put_u64(b, 64 + 24 + 16, kEnd - 8); }),
       HC_RUNTIME_E_FORMAT, "fit in the rest of the section");
   add("axis count 0", changed([&](std::string& b) { put_u32(b, s1 + kAxisCount, 0); }), HC_RUNTIME_E_FORMAT,
@@ -154,8 +192,7 @@ std::vector<Variant> variants() {
       HC_RUNTIME_E_FORMAT, "output count 2147483647");
   add("unknown method", changed([&](std::string& b) { put_u32(b, s1 + kMethod, 9); }), HC_RUNTIME_E_FORMAT,
       "method code 9");
-  add("unknown flag", changed([&](std::string& b) { put_u32(b, s1 + kFlags, 2); }), HC_RUNTIME_E_FORMAT,
-      "flags 0x2");
+  add("unknown flag", changed([&](std::string& b) { put_u32(b, s1 + kFlags, 2); }), HC_RUNTIME_E_FORMAT, "flags 0x2");
   add("sigma flag cleared", changed([&](std::string& b) { put_u32(b, s1 + kFlags, 0); }), HC_RUNTIME_E_FORMAT,
       "after the surface's last table");
   add("node count off by one", changed([&](std::string& b) { put_u64(b, s1 + kNodes, 10); }), HC_RUNTIME_E_FORMAT,
@@ -164,14 +201,13 @@ std::vector<Variant> variants() {
       "node count");
   add("numbers per node", changed([&](std::string& b) { put_u64(b, s1 + kBlock, 2); }), HC_RUNTIME_E_FORMAT,
       "2 numbers per node; expected 8");
-  add("huge name length", changed([&](std::string& b) { put_u32(b, s1 + kName, 0xffffffffu); }),
-      HC_RUNTIME_E_FORMAT, "the surface name has length 4294967295");
+  add("huge name length", changed([&](std::string& b) { put_u32(b, s1 + kName, 0xffffffffu); }), HC_RUNTIME_E_FORMAT,
+      "the surface name has length 4294967295");
   add("NUL in a name", changed([&](std::string& b) { b[s1 + kName + 5] = '\0'; }), HC_RUNTIME_E_FORMAT,
       "holds a NUL byte");
   add("padding not zero", changed([&](std::string& b) { b[s1 + kName + 7] = 'x'; }), HC_RUNTIME_E_FORMAT,
       "padding byte");
-  add("empty name", changed([&](std::string& b) { put_u32(b, s1 + kName, 0); }), HC_RUNTIME_E_FORMAT,
-      "padding byte");
+  add("empty name", changed([&](std::string& b) { put_u32(b, s1 + kName, 0); }), HC_RUNTIME_E_FORMAT, "padding byte");
   add("huge metadata count", changed([&](std::string& b) { put_u32(b, s1 + kMetadataCount, 0x10000000u); }),
       HC_RUNTIME_E_FORMAT, "surface metadata count");
   add("axis name longer than written", changed([&](std::string& b) { put_u32(b, s1 + kAxisU, 6); }),
@@ -182,13 +218,11 @@ std::vector<Variant> variants() {
       HC_RUNTIME_E_FORMAT, "breakpoints: 2305843009213693952 numbers");
   add("too few breakpoints", changed([&](std::string& b) { put_u64(b, s1 + kCountU, 2); }), HC_RUNTIME_E_FORMAT,
       "has 2 breakpoints; expected at least 3");
-  add("NaN breakpoint", changed([&](std::string& b) {
-        put_double(b, s1 + kPointsU + 8, std::numeric_limits<double>::quiet_NaN());
-      }),
+  add("NaN breakpoint",
+      changed([&](std::string& b) { put_double(b, s1 + kPointsU + 8, std::numeric_limits<double>::quiet_NaN()); }),
       HC_RUNTIME_E_FORMAT, "axis 'u' breakpoint 1 is not finite");
-  add("infinite breakpoint", changed([&](std::string& b) {
-        put_double(b, s1 + kPointsV + 16, std::numeric_limits<double>::infinity());
-      }),
+  add("infinite breakpoint",
+      changed([&](std::string& b) { put_double(b, s1 + kPointsV + 16, std::numeric_limits<double>::infinity()); }),
       HC_RUNTIME_E_FORMAT, "axis 'v' breakpoint 2 is not finite");
   add("unsorted breakpoints", changed([&](std::string& b) { put_double(b, s1 + kPointsU + 8, -2.0); }),
       HC_RUNTIME_E_FORMAT, "is not greater than breakpoint 0");
@@ -196,19 +230,18 @@ std::vector<Variant> variants() {
       HC_RUNTIME_E_FORMAT, "axis 'v' breakpoint 2 (0) is not greater");
   add("two axes of one name", changed([&](std::string& b) { b[s1 + kAxisV + 4] = 'u'; }), HC_RUNTIME_E_FORMAT,
       "both named 'u'");
-  add("NaN in the table", changed([&](std::string& b) {
-        put_double(b, s1 + kTable + 8 * 17, std::numeric_limits<double>::quiet_NaN());
-      }),
+  add("NaN in the table",
+      changed([&](std::string& b) { put_double(b, s1 + kTable + 8 * 17, std::numeric_limits<double>::quiet_NaN()); }),
       HC_RUNTIME_E_FORMAT, "the table's number 17 is not finite");
   add("negative leave-one-out", changed([&](std::string& b) { put_double(b, s1 + kLoo + 8, -1.0); }),
       HC_RUNTIME_E_FORMAT, "output 'N' leave-one-out standard deviation -1");
-  add("infinite sigma", changed([&](std::string& b) {
-        put_double(b, s1 + kSigma, -std::numeric_limits<double>::infinity());
-      }),
+  add("infinite sigma",
+      changed([&](std::string& b) { put_double(b, s1 + kSigma, -std::numeric_limits<double>::infinity()); }),
       HC_RUNTIME_E_FORMAT, "sigma table's number 0 is not finite");
   add("two surfaces of one name", changed([&](std::string& b) { b[s2 + kName + 5] = '1'; }), HC_RUNTIME_E_FORMAT,
       "surface 's1' is also surface 1");
-  add("bytes after the last section", [&] { return rehashed(good + std::string(8, '\0')); }(), HC_RUNTIME_E_FORMAT,
+  add(
+      "bytes after the last section", [&] { return rehashed(good + std::string(8, '\0')); }(), HC_RUNTIME_E_FORMAT,
       "bytes after the last section");
   return out;
 }

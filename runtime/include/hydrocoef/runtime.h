@@ -63,16 +63,16 @@ extern "C" {
 
 typedef enum hc_runtime_status {
   HC_RUNTIME_OK = 0,
-  HC_RUNTIME_E_ARGUMENT = 1,     /* a NULL pointer or an index out of range */
-  HC_RUNTIME_E_IO = 2,           /* the file cannot be opened or read */
-  HC_RUNTIME_E_FORMAT = 3,       /* not a runtime file, or malformed (the message says where) */
-  HC_RUNTIME_E_VERSION = 4,      /* a format version this library does not read */
-  HC_RUNTIME_E_HASH = 5,         /* the content hash does not match the content */
-  HC_RUNTIME_E_MEMORY = 6,       /* out of memory while opening */
-  HC_RUNTIME_E_OUTSIDE = 7,      /* a coordinate outside an axis whose policy is "error" */
-  HC_RUNTIME_E_NOT_FINITE = 8,   /* a coordinate is NaN or infinite */
-  HC_RUNTIME_E_NO_SIGMA = 9,     /* sigma asked of a surface that states none */
-  HC_RUNTIME_E_NOT_FOUND = 10    /* no surface of that name */
+  HC_RUNTIME_E_ARGUMENT = 1,   /* a NULL pointer or an index out of range */
+  HC_RUNTIME_E_IO = 2,         /* the file cannot be opened or read */
+  HC_RUNTIME_E_FORMAT = 3,     /* not a runtime file, or malformed (the message says where) */
+  HC_RUNTIME_E_VERSION = 4,    /* a format version this library does not read */
+  HC_RUNTIME_E_HASH = 5,       /* the content hash does not match the content */
+  HC_RUNTIME_E_MEMORY = 6,     /* out of memory while opening */
+  HC_RUNTIME_E_OUTSIDE = 7,    /* a coordinate outside an axis whose policy is "error" */
+  HC_RUNTIME_E_NOT_FINITE = 8, /* a coordinate is NaN or infinite */
+  HC_RUNTIME_E_NO_SIGMA = 9,   /* sigma asked of a surface that states none */
+  HC_RUNTIME_E_NOT_FOUND = 10  /* no surface of that name */
 } hc_runtime_status;
 
 /* An opened runtime file (opaque). */
@@ -112,8 +112,7 @@ HC_RUNTIME_API const char* hc_runtime_surface_name(const hc_runtime_model* model
 HC_RUNTIME_API const char* hc_runtime_surface_method(const hc_runtime_model* model, size_t surface);
 /* A surface's provenance text by key ("content_sha256", "runs",
  * "created_at", "stale", "source"); NULL when absent. */
-HC_RUNTIME_API const char* hc_runtime_surface_metadata(const hc_runtime_model* model, size_t surface,
-                                                       const char* key);
+HC_RUNTIME_API const char* hc_runtime_surface_metadata(const hc_runtime_model* model, size_t surface, const char* key);
 /* 1 when the surface states a standard deviation (hc_runtime_evaluate's sigma), else 0. */
 HC_RUNTIME_API int hc_runtime_surface_has_sigma(const hc_runtime_model* model, size_t surface);
 /* Axis and output counts (0 for a surface index out of range). */
