@@ -31,13 +31,17 @@ void add_export_command(CLI::App& app, const GlobalOptions& global) {
       "export",
       "Write a stored gridded surface for another tool: csv, csv-wide, json, c (C99 header), mat "
       "(MATLAB v5 + Simulink set-up script), jsbsim (XML tables), vtk (ParaView) or daveml (DAVE-ML, "
-      "AIAA S-119; with each node's standard deviation when the surface states one)");
+      "AIAA S-119; with each node's standard deviation when the surface states one) or runtime "
+      "(libhydrocoef_runtime's file: the surfaces as hydrocoef evaluates them, with their standard deviation)");
   command->add_option("name", options.name, "Surface name")->required();
-  command->add_option("--format", options.format, "csv, csv-wide, json, c, mat, jsbsim, vtk or daveml")->required();
+  command->add_option("--format", options.format, "csv, csv-wide, json, c, mat, jsbsim, vtk, daveml or runtime")
+      ->required();
   command->add_option("-o,--output", options.output, "File to write (written whole or not at all)")->required();
   command->add_flag("--float", options.single_precision, "C header: float tables and arithmetic (microcontrollers)");
   command->add_option("--identifier", options.identifier,
                       "C header: prefix of its names (default from the surface name)");
+  command->add_option("--surface", options.surfaces,
+                      "runtime: a further surface of the same body in the file (repeat for more)");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_export(*args, global); });
 }

@@ -53,6 +53,7 @@ expected=(
   bin/hydrocoef
   "$multiarch/libhydrocoef.so.$version" "$multiarch/libhydrocoef.so.0" "$multiarch/libhydrocoef.so"
   "$multiarch/libhydrocoef.a"
+  "$multiarch/libhydrocoef_runtime.so.1" "$multiarch/libhydrocoef_runtime.a" include/hydrocoef/runtime.h
   "$multiarch/cmake/hydrocoef/hydrocoefConfig.cmake" "$multiarch/cmake/hydrocoef/hydrocoefConfigVersion.cmake"
   "$multiarch/cmake/hydrocoef/hydrocoefTargets.cmake" "$multiarch/cmake/hydrocoef/hydrocoefStaticTargets.cmake"
   "$multiarch/pkgconfig/hydrocoef.pc"
@@ -63,8 +64,8 @@ expected=(
 for file in "${expected[@]}"; do
   [[ -e $prefix/$file ]] || fail "cmake --install did not install $file"
 done
-# Public headers only: include/ holds include/hydrocoef/*.hpp and nothing else.
-extra=$(cd "$prefix/include" && find . -type f ! -path './hydrocoef/*.hpp' | head -3)
+# Public headers only: include/ holds include/hydrocoef/*.hpp and the runtime library's C header, nothing else.
+extra=$(cd "$prefix/include" && find . -type f ! -path './hydrocoef/*.hpp' ! -path './hydrocoef/runtime.h' | head -3)
 [[ -z $extra ]] || fail "cmake --install put more than include/hydrocoef/*.hpp under include/: $extra"
 for header in "$prefix"/include/hydrocoef/*.hpp; do
   if grep -Eq '#include +"(src|importers|cli)/' "$header"; then
@@ -157,6 +158,41 @@ cmake -S "$work/wrong-version" -B "$work/wrong-version/build" -DCMAKE_PREFIX_PAT
   cat "$work/wrong.log" >&2
   fail "find_package(hydrocoef 0.99) was not refused by the version file"
 }
+
+# --- 3b. a C99 program on libhydrocoef_runtime ------------------------------------------------------
+"$prefix/bin/hydrocoef" --db "$db" export surge --format runtime -o "$work/asr-v.hcrt" >/dev/null ||
+  fail "$prefix/bin/hydrocoef export surge --format runtime"
+cat >"$work/runtime_consumer.c" <<'EOF'
+#include <stdio.h>
+#include <hydrocoef/runtime.h>
+int main(int argc, char** argv) {
+  hc_runtime_model* model = NULL;
+  char err[256] = "";
+  double u = 0.25, x = 0.0;
+  if (argc != 2 || hc_runtime_open(argv[1], &model, err, sizeof err) != HC_RUNTIME_OK) {
+    fprintf(stderr, "%s\n", err);
+    return 1;
+  }
+  if (hc_runtime_evaluate(model, 0, &u, &x, NULL, NULL) != HC_RUNTIME_OK) return 1;
+  printf("%.17g\n", x);
+  hc_runtime_close(model);
+  return 0;
+}
+EOF
+for link in shared static; do
+  if [[ $link == shared ]]; then
+    libs=(-L"$prefix/$multiarch" -lhydrocoef_runtime)
+  else
+    libs=("$prefix/$multiarch/libhydrocoef_runtime.a" -lm)
+  fi
+  cc -std=c99 -pedantic -Wall -Wextra -Werror -I"$prefix/include" -o "$work/runtime_consumer_$link" \
+    "$work/runtime_consumer.c" "${libs[@]}" || fail "compiling a C99 program against libhydrocoef_runtime ($link)"
+  runtime_x=$(LD_LIBRARY_PATH="$prefix/$multiarch" "$work/runtime_consumer_$link" "$work/asr-v.hcrt") ||
+    fail "the C99 runtime consumer ($link) could not evaluate $work/asr-v.hcrt"
+  /usr/bin/python3 -c 'import sys; assert float(sys.argv[1]) == float(sys.argv[2]), sys.argv[1:]' "$runtime_x" "$x" ||
+    fail "the C99 runtime consumer ($link) gave X(0.25) = $runtime_x, the CLI $x"
+done
+say "ok: a C99 program (-std=c99 -pedantic) linked libhydrocoef_runtime shared and static and evaluated the runtime file: X(0.25) = $x N, as the CLI"
 
 # --- 4. pkg-config -----------------------------------------------------------------------------------
 pc_flags=$(PKG_CONFIG_PATH="$prefix/$multiarch/pkgconfig" pkg-config --cflags --libs hydrocoef | xargs) ||

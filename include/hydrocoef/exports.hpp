@@ -31,13 +31,19 @@ inline namespace api {
 struct TableExportOptions {
   std::string name;  ///< the stored surface
   /// csv, csv-wide, json, c (C99 header), mat (MATLAB v5 + Simulink set-up
-  /// script), jsbsim, vtk or daveml (with each node's standard deviation when
-  /// the surface states one).
+  /// script), jsbsim, vtk, daveml (with each node's standard deviation when
+  /// the surface states one) or runtime (libhydrocoef_runtime's file,
+  /// hydrocoef/runtime.h and docs/runtime.md: the surfaces as hydrocoef
+  /// evaluates them, with their standard deviation's tables).
   std::string format;
   std::string output;             ///< the file to write (mat: a set-up script beside it)
   bool single_precision = false;  ///< c: float tables and arithmetic (--float)
   std::string identifier;         ///< c: prefix of its names ("" : from the surface name)
-  /// InputError for an unknown format, or --float / --identifier with a format other than c.
+  /// runtime: further surfaces in the same file (--surface, repeated), of
+  /// the same body as `name`; the file holds `name` first, then these.
+  std::vector<std::string> surfaces;
+  /// InputError for an unknown format, --float / --identifier with a format
+  /// other than c, or --surface with a format other than runtime.
   HYDROCOEF_EXPORT void validate() const;
 };
 
@@ -61,6 +67,8 @@ struct TableExportResult {
   bool stale = false;  ///< forces changed since the surface was built
   std::size_t nodes = 0;
   std::vector<std::string> files;  ///< the files written
+  /// runtime: every surface in the file, `surface` first ({surface} otherwise).
+  std::vector<std::string> surfaces;
   std::vector<TableExportAxis> axes;
   std::vector<std::string> outputs;
   std::vector<std::string> output_units;

@@ -298,6 +298,7 @@ class TableExportResult:
     stale: bool
     nodes: int
     files: list[str]
+    surfaces: list[str]
     axes: list[TableExportAxis]
     outputs: list[str]
     output_units: list[str]
@@ -430,7 +431,7 @@ class Database:
     def query_surface(self, name: str, point: Mapping[str, float] | None = None, *, input: _Path | None = None,
                       output: str = "-", gradient: bool = False, uncertainty: bool = False) -> SurfaceQueryResult: ...
     def export_surface(self, name: str, *, format: str, output: _Path, single_precision: bool = False,
-                       identifier: str = "") -> TableExportResult: ...
+                       identifier: str = "", surfaces: Sequence[str] = ()) -> TableExportResult: ...
     def export_gazebo(self, body: str, *, flavor: str, output: _Path, fits: _Texts = None,
                       added_mass: Union[str, Sequence[float], None] = None, added_mass_matrix: _Path | None = None,
                       sphere_radius: float | None = None, rho: float | None = None,

@@ -52,6 +52,7 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("stale", &hydrocoef::TableExportResult::stale)
       .def_readonly("nodes", &hydrocoef::TableExportResult::nodes)
       .def_readonly("files", &hydrocoef::TableExportResult::files)
+      .def_readonly("surfaces", &hydrocoef::TableExportResult::surfaces)
       .def_readonly("axes", &hydrocoef::TableExportResult::axes)
       .def_readonly("outputs", &hydrocoef::TableExportResult::outputs)
       .def_readonly("output_units", &hydrocoef::TableExportResult::output_units)
@@ -98,20 +99,23 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def(
           "export_surface",
           [](py::handle self, const std::string& name, const std::string& format, const py::object& output,
-             bool single_precision, const std::string& identifier) {
+             bool single_precision, const std::string& identifier, const std::vector<std::string>& surfaces) {
             hydrocoef::TableExportOptions options;
             options.name = name;
             options.format = format;
             options.output = py::str(output).cast<std::string>();
             options.single_precision = single_precision;
             options.identifier = identifier;
+            options.surfaces = surfaces;
             Database& d = database_of(self);
             py::gil_scoped_release release;
             return hydrocoef::export_surface(d, options);
           },
           "name"_a, py::kw_only(), "format"_a, "output"_a, "single_precision"_a = false, "identifier"_a = "",
+          "surfaces"_a = std::vector<std::string>{},
           R"doc(Writes a stored gridded surface for another tool, as `hydrocoef export`: format csv, csv-wide,
-json, c (single_precision, identifier: the C header's), mat, jsbsim, vtk or daveml; output the file.
+json, c (single_precision, identifier: the C header's), mat, jsbsim, vtk, daveml or runtime (surfaces:
+further surfaces of the same body in the runtime file); output the file.
 Returns a TableExportResult; InputError (nothing written) for a surface that is not gridded.)doc")
       .def(
           "export_gazebo",

@@ -9,6 +9,7 @@
 #include "src/core/escape.hpp"
 #include "src/core/numbers.hpp"
 #include "src/export/export.hpp"
+#include "src/export/runtime_export.hpp"
 #include "src/surface/grid_table.hpp"
 
 namespace hydrocoef {
@@ -20,25 +21,108 @@ void TableExportOptions::validate() const {
     throw InputError("--float applies to --format c only; expected it with c (got --format " + format + ")");
   if (!identifier.empty() && parsed != ExportFormat::CHeader)
     throw InputError("--identifier applies to --format c only; expected it with c (got --format " + format + ")");
+  if (!surfaces.empty() && parsed != ExportFormat::Runtime)
+    throw InputError("--surface applies to --format runtime only; expected it with runtime (got --format " + format +
+                     ")");
 }
+
+namespace {
+
+// The database's location for a file's provenance, without a URL's user and password.
+std::string location_without_credentials(const std::string& location) {
+  const auto scheme = location.find("://");
+  if (scheme == std::string::npos) return location;
+  const auto at = location.find('@', scheme + 3);
+  const auto slash = location.find('/', scheme + 3);
+  if (at == std::string::npos || (slash != std::string::npos && at > slash)) return location;
+  return location.substr(0, scheme + 3) + location.substr(at + 1);
+}
+
+std::string run_list(const std::vector<std::int64_t>& runs) {
+  std::string out;
+  for (std::size_t i = 0; i < runs.size(); ++i) out += (i ? "," : "") + std::to_string(runs[i]);
+  return out;
+}
+
+// Where a runtime surface's table comes from: the stored grid, or an RBF
+// surface tabulated on a grid by `surface build --resample` (its quality
+// figures then count the grid's nodes and those far from every run).
+std::string runtime_source(const SurfaceRecord& record) {
+  const auto quality = nlohmann::json::parse(record.quality.empty() ? "{}" : record.quality, nullptr, false);
+  if (quality.is_object() && quality.contains("grid_points")) {
+    const std::size_t far =
+        quality.contains("far_from_data") && quality["far_from_data"].is_array() ? quality["far_from_data"].size() : 0;
+    return "an RBF surface tabulated on a grid by surface build --resample (" + quality["grid_points"].dump() +
+           " nodes, " + std::to_string(far) +
+           " of them far from every run: extrapolation), as hydrocoef "
+           "evaluates the stored grid";
+  }
+  return "the stored grid table, as hydrocoef evaluates it";
+}
+
+// The runtime file: `name` and options.surfaces, all of one body.
+void write_runtime_file(const Database& db, const TableExportOptions& options, std::vector<StoredSurface>& stored) {
+  std::vector<std::string> names{options.name};
+  names.insert(names.end(), options.surfaces.begin(), options.surfaces.end());
+  {
+    auto& impl = Database::Access::impl(db);
+    const std::lock_guard lock(impl.mutex);
+    for (const std::string& name : names) stored.push_back(load_surface(impl.open_store(), name));
+  }
+  std::vector<RuntimeSurface> surfaces;
+  std::string listed;
+  for (const StoredSurface& s : stored) {
+    if (s.record.body != stored.front().record.body)
+      throw InputError("surface '" + s.record.name + "' belongs to body '" + s.record.body + "', surface '" +
+                       stored.front().record.name + "' to body '" + stored.front().record.body +
+                       "'; expected the surfaces of one body in a runtime file");
+    surfaces.push_back(runtime_surface(
+        s.record.name, s.surface,
+        {{"content_sha256", content_sha256(s.record)},
+         {"runs", run_list(s.record.run_ids)},
+         {"created_at", s.record.created_at},
+         {"stale", s.record.stale ? "true" : "false"},
+         {"source", runtime_source(s.record)},
+         {"quality", s.record.quality},
+         {"sigma", s.surface.has_standard_deviation() ? "runs' sigma interpolated (clamped), at least 0, in "
+                                                        "quadrature with the leave-one-out RMS"
+                                                      : "none"}}));
+    listed += (listed.empty() ? "" : ",") + s.record.name;
+  }
+  const RuntimeTexts model = runtime_model_texts({{"database", location_without_credentials(db.path())},
+                                                  {"body", stored.front().record.body},
+                                                  {"created_at", utc_timestamp_now()},
+                                                  {"surfaces", listed}});
+  write_file_atomically(options.output, runtime_file_bytes(model, surfaces));
+}
+
+}  // namespace
 
 TableExportResult export_surface(const Database& db, const TableExportOptions& options) {
   options.validate();
   const ExportFormat format = parse_export_format(options.format);
-  StoredSurface stored = [&] {
+  std::vector<StoredSurface> all;
+  TableExportResult out;
+  if (format == ExportFormat::Runtime) {
+    write_runtime_file(db, options, all);
+    out.files.push_back(options.output);
+  } else {
     auto& impl = Database::Access::impl(db);
     const std::lock_guard lock(impl.mutex);
-    return load_surface(impl.open_store(), options.name);
-  }();
+    all.push_back(load_surface(impl.open_store(), options.name));
+  }
+  const StoredSurface& stored = all.front();
+  for (const StoredSurface& s : all) out.surfaces.push_back(s.record.name);
   const ExportMetadata metadata = metadata_from_record(stored.record, stored.surface);
   const GridTable& table = *stored.surface.grid();
   ExportOptions writing;
   writing.single_precision = options.single_precision;
   writing.c_identifier = options.identifier;
 
-  TableExportResult out;
-  for (const auto& file : export_table(table, metadata, format, options.output, writing))
-    out.files.push_back(file.string());
+  if (format != ExportFormat::Runtime) {
+    for (const auto& file : export_table(table, metadata, format, options.output, writing))
+      out.files.push_back(file.string());
+  }
   out.surface = metadata.surface_name;
   out.body = metadata.body;
   out.format = std::string(export_format_name(format));
@@ -75,6 +159,7 @@ std::string TableExportResult::json() const {
                         {"stale", stale},
                         {"nodes", nodes}};
   out["files"] = files;
+  out["surfaces"] = surfaces;
   for (const auto& axis : axes)
     out["axes"].push_back({{"name", axis.name},
                            {"unit", axis.unit},
@@ -99,6 +184,11 @@ std::string TableExportResult::text() const {
   for (std::size_t k = 0; k < outputs.size(); ++k)
     out << ' ' << escape::one_line(outputs[k]) << " [" << escape::one_line(output_units[k]) << "]";
   out << ", forces on the body\n  content sha256 " << escape::one_line(content_sha256) << '\n';
+  if (surfaces.size() > 1) {
+    out << "  surfaces";
+    for (const auto& name : surfaces) out << ' ' << escape::one_line(name);
+    out << '\n';
+  }
   for (const auto& file : files) out << "  wrote " << escape::one_line(file) << '\n';
   for (const auto& note : notes) out << "  note: " << escape::one_line(note) << '\n';
   if (stale)

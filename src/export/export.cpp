@@ -18,6 +18,7 @@
 #include "src/export/jsbsim_export.hpp"
 #include "src/export/json_export.hpp"
 #include "src/export/mat_export.hpp"
+#include "src/export/runtime_export.hpp"
 #include "src/export/vtk_export.hpp"
 
 namespace hydrocoef {
@@ -117,17 +118,19 @@ std::string_view export_format_name(ExportFormat format) {
     case ExportFormat::Jsbsim: return "jsbsim";
     case ExportFormat::Vtk: return "vtk";
     case ExportFormat::Daveml: return "daveml";
+    case ExportFormat::Runtime: return "runtime";
   }
   return "?";
 }
 
 ExportFormat parse_export_format(std::string_view text) {
-  for (ExportFormat format : {ExportFormat::Csv, ExportFormat::CsvWide, ExportFormat::Json, ExportFormat::CHeader,
-                              ExportFormat::Mat, ExportFormat::Jsbsim, ExportFormat::Vtk, ExportFormat::Daveml}) {
+  for (ExportFormat format :
+       {ExportFormat::Csv, ExportFormat::CsvWide, ExportFormat::Json, ExportFormat::CHeader, ExportFormat::Mat,
+        ExportFormat::Jsbsim, ExportFormat::Vtk, ExportFormat::Daveml, ExportFormat::Runtime}) {
     if (text == export_format_name(format)) return format;
   }
   throw InputError("unknown export format '" + std::string(text) +
-                   "'; expected csv, csv-wide, json, c, mat, jsbsim, vtk or daveml");
+                   "'; expected csv, csv-wide, json, c, mat, jsbsim, vtk, daveml or runtime");
 }
 
 void check_metadata(const GridTable& table, const ExportMetadata& metadata) {
@@ -158,6 +161,18 @@ std::vector<std::filesystem::path> export_table(const GridTable& table, const Ex
     case ExportFormat::Jsbsim: write_file_atomically(path, jsbsim_text(table, metadata)); return {path};
     case ExportFormat::Vtk: write_vtk(table, metadata, path); return {path};
     case ExportFormat::Daveml: write_file_atomically(path, daveml_text(table, metadata)); return {path};
+    case ExportFormat::Runtime: {
+      // One table, as given (without a standard deviation: ExportMetadata
+      // holds its values at the nodes only, not the runs' sigma table).
+      RuntimeSurface surface;
+      surface.name = metadata.surface_name;
+      surface.table = &table;
+      surface.axis_units = metadata.axis_units;
+      surface.output_units = metadata.output_units;
+      surface.metadata = {{"content_sha256", metadata.content_sha256}, {"source", provenance_line(metadata)}};
+      write_file_atomically(path, runtime_file_bytes(runtime_model_texts({{"body", metadata.body}}), {surface}));
+      return {path};
+    }
   }
   return {};
 }

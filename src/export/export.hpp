@@ -70,9 +70,10 @@ ExportMetadata metadata_from_record(const SurfaceRecord& record, const Coefficie
 /// units from default_unit of each name, hash of the values.
 ExportMetadata metadata_for_table(const GridTable& table, std::string surface_name);
 
-enum class ExportFormat { Csv, CsvWide, Json, CHeader, Mat, Jsbsim, Vtk, Daveml };
+enum class ExportFormat { Csv, CsvWide, Json, CHeader, Mat, Jsbsim, Vtk, Daveml, Runtime };
 
-/// "csv", "csv-wide", "json", "c", "mat", "jsbsim", "vtk", "daveml"; and back
+/// "csv", "csv-wide", "json", "c", "mat", "jsbsim", "vtk", "daveml", "runtime"
+/// (libhydrocoef_runtime's file: src/export/runtime_export.hpp); and back
 /// (InputError listing the names).
 std::string_view export_format_name(ExportFormat format);
 ExportFormat parse_export_format(std::string_view text);

@@ -41,11 +41,9 @@ struct GridLayout {
   std::size_t n_out = 0;
   const double* data = nullptr;  // values() (linear) or hermite_data() (cubic)
   std::array<const double*, kMaxGridAxes> x{};
-  std::array<std::size_t, kMaxGridAxes> last_cell{};
-  std::array<std::size_t, kMaxGridAxes> stride{};  // data elements between neighbouring nodes along the axis
-  std::array<double, kMaxGridAxes> lo{}, hi{}, inv_step{};
-  std::array<bool, kMaxGridAxes> even{};
-  std::vector<std::size_t> term_offsets;  // of the K^N terms from the cell's base, axis 0's term fastest
+  std::array<std::size_t, kMaxGridAxes> stride{};   // data elements between neighbouring nodes along the axis
+  std::array<hc_kernel_axis, kMaxGridAxes> axis{};  // the shared kernel's lookup (range, even spacing)
+  std::vector<std::size_t> term_offsets;            // of the K^N terms from the cell's base, axis 0's term fastest
 };
 
 GridLayout grid_layout(const GridTable& table, std::size_t terms_per_axis) {
@@ -56,29 +54,19 @@ GridLayout grid_layout(const GridTable& table, std::size_t terms_per_axis) {
   g.data = cubic ? table.hermite_data().data() : table.values().data();
   const std::size_t node_block = cubic ? (std::size_t{1} << n) * n_out : n_out;
   std::size_t nodes = 1;
-  std::array<std::array<std::size_t, 4>, kMaxGridAxes> axis_offsets{};
+  std::array<std::size_t, kMaxGridAxes> node_strides{};
   for (std::size_t a = 0; a < n; ++a) {
     const auto& x = table.axes()[a].breakpoints;
     g.x[a] = x.data();
-    g.last_cell[a] = x.size() - 2;
     g.stride[a] = nodes * node_block;
-    g.lo[a] = x.front();
-    g.hi[a] = x.back();
-    g.inv_step[a] = 1.0 / ((x.back() - x.front()) / static_cast<double>(x.size() - 1));
-    g.even[a] = table.evenly_spaced(a);
-    const std::size_t slope = (std::size_t{1} << a) * n_out;
-    axis_offsets[a] = cubic ? std::array<std::size_t, 4>{0, slope, g.stride[a], g.stride[a] + slope}
-                            : std::array<std::size_t, 4>{0, g.stride[a], 0, 0};
+    node_strides[a] = nodes;
+    hc_kernel_axis_setup(x.data(), x.size(), &g.axis[a]);  // as GridTable's (evenly_spaced)
+    g.axis[a].node_stride = nodes;
     nodes *= x.size();
   }
   g.term_offsets.assign(power(terms_per_axis, n), 0);
-  for (std::size_t t = 0; t < g.term_offsets.size(); ++t) {
-    std::size_t rest = t;
-    for (std::size_t a = 0; a < n; ++a) {
-      g.term_offsets[t] += axis_offsets[a][rest % terms_per_axis];
-      rest /= terms_per_axis;
-    }
-  }
+  hc_kernel_term_offsets(n, static_cast<int>(table.method()), n_out, node_block, node_strides.data(),
+                         g.term_offsets.data());
   return g;
 }
 
@@ -88,19 +76,14 @@ GridLayout grid_layout(const GridTable& table, std::size_t terms_per_axis) {
 template <std::size_t N>
 struct LocalAxes {
   std::array<const double*, N> x;
-  std::array<std::size_t, N> last_cell, stride;
-  std::array<double, N> lo, hi, inv_step;
-  std::array<bool, N> even;
+  std::array<std::size_t, N> stride;
+  std::array<hc_kernel_axis, N> axis;
 
   explicit LocalAxes(const GridLayout& g) {
     for (std::size_t a = 0; a < N; ++a) {
       x[a] = g.x[a];
-      last_cell[a] = g.last_cell[a];
       stride[a] = g.stride[a];
-      lo[a] = g.lo[a];
-      hi[a] = g.hi[a];
-      inv_step[a] = g.inv_step[a];
-      even[a] = g.even[a];
+      axis[a] = g.axis[a];
     }
   }
 };
@@ -110,56 +93,27 @@ struct LocalAxes {
 template <std::size_t N, std::size_t K, std::size_t kOutputs>
 inline bool grid_inside(const LocalAxes<N>& g, const double* data, const std::size_t* offsets, std::size_t n_out,
                         const double* point, double* out) {
-  std::array<std::array<double, K>, N> w;
+  // The shared kernel (runtime/src/grid_kernel.h): the cell and weights of
+  // each axis, the product of the weights of axes 0..N-2, the sums.
+  std::array<double, 4 * N> w;
   std::size_t base = 0;
 #pragma GCC unroll 6
   for (std::size_t a = 0; a < N; ++a) {
     const double value = point[a];
-    if (!(value >= g.lo[a] && value <= g.hi[a])) return false;
+    const hc_kernel_axis& axis = g.axis[a];
+    if (!(value >= axis.lo && value <= axis.hi)) return false;
     const double* x = g.x[a];
-    const std::size_t last_cell = g.last_cell[a];
-    std::size_t cell;
-    if (g.even[a]) {
-      // Through a signed integer: x86-64 converts a double to one in one instruction.
-      cell =
-          std::min(static_cast<std::size_t>(static_cast<std::int64_t>((value - g.lo[a]) * g.inv_step[a])), last_cell);
-      if (value < x[cell]) {
-        --cell;
-      } else if (cell < last_cell && value >= x[cell + 1]) {
-        ++cell;
-      }
-    } else {
-      const double* first = x;
-      std::size_t length = last_cell + 1;
-      while (length > 1) {
-        const std::size_t half = length / 2;
-        first = first[half] <= value ? first + half : first;
-        length -= half;
-      }
-      cell = static_cast<std::size_t>(first - x);
-    }
+    const std::size_t cell = hc_kernel_cell_inside(&axis, x, value);
     const double h = x[cell + 1] - x[cell];
     const double t = (value - x[cell]) / h;
     base += cell * g.stride[a];
-    if constexpr (K == 2) {
-      w[a][0] = 1.0 - t;
-      w[a][1] = t;
-    } else {
-      hermite_weights(t, h, w[a].data());
-    }
+    hc_kernel_cell_weights(K, 0, t, h, w.data() + 4 * a, nullptr);
   }
   constexpr std::size_t kInner = power(K, N - 1);
   std::array<double, kInner> inner;
-  inner[0] = 1.0;
-  std::size_t length = 1;
-  for (std::size_t a = 0; a + 1 < N; ++a) {
-    for (std::size_t e = K; e-- > 1;)
-      for (std::size_t j = 0; j < length; ++j) inner[e * length + j] = inner[j] * w[a][e];
-    for (std::size_t j = 0; j < length; ++j) inner[j] *= w[a][0];
-    length *= K;
-  }
+  hc_kernel_inner_weights(N, K, w.data(), kMaxGridAxes, nullptr, inner.data());
   const double* cell_data = data + base;
-  const double* last = w[N - 1].data();
+  const double* last = w.data() + 4 * (N - 1);
   if constexpr (kOutputs > 0) {
     accumulate<kOutputs, kInner, K>(inner.data(), last, offsets, cell_data, out, 1);
     return true;

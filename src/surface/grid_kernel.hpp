@@ -1,15 +1,19 @@
 // The arithmetic of a gridded table's local sum, shared by GridTable's
-// evaluation (src/surface/grid_table.cpp) and the batch evaluation on many
-// points (src/surface/batch_evaluation.cpp), so both give the same numbers
-// bit for bit: the cubic Hermite weights of an axis, and the sum over a
-// cell's K^N terms of weight times node value, outputs M at a time.
+// evaluation (src/surface/grid_table.cpp), the batch evaluation on many
+// points (src/surface/batch_evaluation.cpp) and the C runtime library
+// (runtime/src/runtime_evaluate.c), so all give the same numbers bit for
+// bit. The arithmetic itself is runtime/src/grid_kernel.h (C11 and C++20,
+// static inline); this header gives its C++ callers compile-time sizes.
 #pragma once
 
 #include <array>
 #include <cstddef>
 
+#include "runtime/src/grid_kernel.h"
+
 namespace hydrocoef::grid_kernel {
 
+// Sizes of compile-time arrays (hc_kernel_power is the same, at run time).
 constexpr std::size_t power(std::size_t base, std::size_t exponent) {
   std::size_t result = 1;
   for (std::size_t i = 0; i < exponent; ++i) result *= base;
@@ -19,22 +23,11 @@ constexpr std::size_t power(std::size_t base, std::size_t exponent) {
 // Cubic Hermite basis on a cell of width h at t = (x - x_i) / h, in term order
 // (corner 0 value, corner 0 slope, corner 1 value, corner 1 slope); slope
 // terms carry h so that they multiply d/dx in axis units.
-inline void hermite_weights(double t, double h, double* w) {
-  const double t2 = t * t;
-  const double t3 = t2 * t;
-  w[0] = 2.0 * t3 - 3.0 * t2 + 1.0;
-  w[1] = h * (t3 - 2.0 * t2 + t);
-  w[2] = 3.0 * t2 - 2.0 * t3;
-  w[3] = h * (t3 - t2);
-}
+inline void hermite_weights(double t, double h, double* w) { hc_kernel_hermite_weights(t, h, w); }
 
 // d/dx of hermite_weights.
 inline void hermite_derivative_weights(double t, double h, double* dw) {
-  const double t2 = t * t;
-  dw[0] = 6.0 * (t2 - t) / h;
-  dw[1] = 3.0 * t2 - 4.0 * t + 1.0;
-  dw[2] = 6.0 * (t - t2) / h;
-  dw[3] = 3.0 * t2 - 2.0 * t;
+  hc_kernel_hermite_derivative_weights(t, h, dw);
 }
 
 // M outputs at once. The weight of term t = t_inner + e * kInner is
@@ -43,18 +36,8 @@ inline void hermite_derivative_weights(double t, double h, double* dw) {
 template <std::size_t M, std::size_t kInner, std::size_t K>
 inline void accumulate(const double* inner_weights, const double* last, const std::size_t* offsets, const double* data,
                        double* out, std::size_t out_stride) {
-  std::array<double, M> total{};
-  for (std::size_t e = 0; e < K; ++e) {
-    std::array<double, M> part{};
-    const std::size_t* term_offsets = offsets + e * kInner;
-    for (std::size_t t = 0; t < kInner; ++t) {
-      const double* row = data + term_offsets[t];
-      const double w = inner_weights[t];
-      for (std::size_t j = 0; j < M; ++j) part[j] += w * row[j];
-    }
-    for (std::size_t j = 0; j < M; ++j) total[j] += last[e] * part[j];
-  }
-  for (std::size_t j = 0; j < M; ++j) out[j * out_stride] = total[j];
+  static_assert(M >= 1 && M <= 4);
+  hc_kernel_accumulate(M, kInner, K, inner_weights, last, offsets, data, out, out_stride);
 }
 
 }  // namespace hydrocoef::grid_kernel

@@ -17,6 +17,17 @@ namespace {
 
 using namespace grid_kernel;
 
+// The enums are the shared kernel's codes (runtime/src/grid_kernel.h) and the runtime file's.
+static_assert(static_cast<int>(Interpolation::Nearest) == HC_KERNEL_NEAREST &&
+              static_cast<int>(Interpolation::Linear) == HC_KERNEL_LINEAR &&
+              static_cast<int>(Interpolation::Pchip) == HC_KERNEL_PCHIP &&
+              static_cast<int>(Interpolation::Akima) == HC_KERNEL_MAKIMA &&
+              static_cast<int>(Interpolation::NaturalSpline) == HC_KERNEL_NATURAL_SPLINE);
+static_assert(static_cast<int>(Extrapolation::Error) == HC_KERNEL_ERROR &&
+              static_cast<int>(Extrapolation::Clamp) == HC_KERNEL_CLAMP &&
+              static_cast<int>(Extrapolation::Linear) == HC_KERNEL_EXTRAPOLATE_LINEAR &&
+              static_cast<int>(Extrapolation::Method) == HC_KERNEL_METHOD);
+
 bool is_cubic(Interpolation method) {
   return method == Interpolation::Pchip || method == Interpolation::Akima || method == Interpolation::NaturalSpline;
 }
@@ -94,26 +105,15 @@ void natural_spline_slopes(std::span<const double> x, std::span<const double> y,
 template <std::size_t N, std::size_t K>
 void sum_terms(const double* axis_weights, std::size_t replaced, const double* replacement, const std::size_t* offsets,
                const double* data, std::size_t count, double* out, std::size_t out_stride) {
-  // The product of the weights of axes 0 .. N-2, inner[t] = prod_a w_a[e_a]
-  // with t = sum_a e_a K^a, built one axis at a time; the last axis's weights
-  // multiply partial sums instead, which saves K^N multiplications.
+  // hc_kernel_sum's steps, the shared kernel's, with N, K and K^(N-1) known
+  // here at compile time (so the sums over the K^(N-1) inner terms unroll).
   constexpr std::size_t kInner = power(K, N - 1);
   std::array<double, kInner> inner;
-  inner[0] = 1.0;
-  std::size_t length = 1;
-  for (std::size_t a = 0; a + 1 < N; ++a) {
-    const double* w = a == replaced ? replacement : axis_weights + 4 * a;
-    for (std::size_t e = K; e-- > 1;) {
-      for (std::size_t j = 0; j < length; ++j) inner[e * length + j] = inner[j] * w[e];
-    }
-    for (std::size_t j = 0; j < length; ++j) inner[j] *= w[0];
-    length *= K;
-  }
+  hc_kernel_inner_weights(N, K, axis_weights, replaced, replacement, inner.data());
   const double* last = N - 1 == replaced ? replacement : axis_weights + 4 * (N - 1);
   std::size_t k = 0;
-  for (; k + 4 <= count; k += 4) {
+  for (; k + 4 <= count; k += 4)
     accumulate<4, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
-  }
   if (count - k >= 2) {
     accumulate<2, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
     k += 2;
@@ -221,23 +221,11 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
       }
     }
     AxisLookup& lookup = lookup_[a];
-    lookup.lo = x.front();
-    lookup.hi = x.back();
-    lookup.count = x.size();
+    hc_kernel_axis_setup(x.data(), x.size(), &lookup);  // lo, hi, count, even, inv_step
     lookup.node_stride = node_count_;
     lookup.offset = breakpoints_.size();
     breakpoints_.insert(breakpoints_.end(), x.begin(), x.end());
-    lookup.extrapolation = axis.extrapolation;
-    const double step = (lookup.hi - lookup.lo) / static_cast<double>(x.size() - 1);
-    const double tolerance = 1e-12 * std::max(std::abs(lookup.lo), std::abs(lookup.hi));
-    // The direct index is corrected by one cell at most, so "even" also needs
-    // the tolerance to be well below the spacing.
-    bool even = tolerance < 0.25 * step;
-    for (std::size_t i = 0; i < x.size() && even; ++i) {
-      even = std::abs(x[i] - (lookup.lo + static_cast<double>(i) * step)) <= tolerance;
-    }
-    lookup.even = even;
-    lookup.inv_step = 1.0 / step;
+    lookup.extrapolation = static_cast<int>(axis.extrapolation);
     if (node_count_ > values_.max_size() / x.size()) {
       throw InputError("a grid table of this size has too many nodes; expected fewer breakpoints");
     }
@@ -324,27 +312,11 @@ GridTable::GridTable(std::vector<GridAxis> axes, std::vector<std::string> output
   }
 
   // Offsets of the local sum's terms from the cell base.
-  terms_per_axis_ = method_ == Interpolation::Nearest ? 1 : (cubic ? 4 : 2);
-  std::array<std::array<std::size_t, 4>, kMaxGridAxes> axis_offsets{};
-  for (std::size_t a = 0; a < n; ++a) {
-    const std::size_t next_node = lookup_[a].node_stride * node_block_;
-    if (cubic) {
-      const std::size_t slope = (std::size_t{1} << a) * n_out;
-      axis_offsets[a] = {0, slope, next_node, next_node + slope};
-    } else {
-      axis_offsets[a] = {0, next_node, 0, 0};
-    }
-  }
-  std::size_t terms = 1;
-  for (std::size_t a = 0; a < n; ++a) terms *= terms_per_axis_;
-  term_offsets_.assign(terms, 0);
-  for (std::size_t t = 0; t < terms; ++t) {
-    std::size_t rest = t;
-    for (std::size_t a = 0; a < n; ++a) {
-      term_offsets_[t] += axis_offsets[a][rest % terms_per_axis_];
-      rest /= terms_per_axis_;
-    }
-  }
+  terms_per_axis_ = hc_kernel_terms_per_axis(static_cast<int>(method_));
+  std::array<std::size_t, kMaxGridAxes> node_strides{};
+  for (std::size_t a = 0; a < n; ++a) node_strides[a] = lookup_[a].node_stride;
+  term_offsets_.assign(hc_kernel_power(terms_per_axis_, n), 0);
+  hc_kernel_term_offsets(n, static_cast<int>(method_), n_out, node_block_, node_strides.data(), term_offsets_.data());
   static constexpr auto kNearest = kernels_for<1>(std::make_index_sequence<kMaxGridAxes>());
   static constexpr auto kLinear = kernels_for<2>(std::make_index_sequence<kMaxGridAxes>());
   static constexpr auto kCubic = kernels_for<4>(std::make_index_sequence<kMaxGridAxes>());
@@ -389,100 +361,16 @@ void GridTable::throw_outside(std::size_t axis, double value) const {
                    "]; expected a value in range (or an extrapolation policy)");
 }
 
-// The cell [x[cell], x[cell + 1]] of a value inside the axis's range: the
-// last breakpoint <= value among x[0 .. count-2].
-inline std::size_t GridTable::cell_inside(const AxisLookup& axis, const double* x, double value) {
-  const std::size_t last_cell = axis.count - 2;
-  if (axis.even) {
-    // value >= lo here, so the signed conversion (one instruction, where the
-    // unsigned one is several) gives the same index.
-    std::size_t cell =
-        std::min(static_cast<std::size_t>(static_cast<std::int64_t>((value - axis.lo) * axis.inv_step)), last_cell);
-    // Rounding in the breakpoints or the product can put the index one cell off.
-    if (value < x[cell]) {
-      --cell;
-    } else if (cell < last_cell && value >= x[cell + 1]) {
-      ++cell;
-    }
-    return cell;
-  }
-  // Branch-free binary search.
-  const double* first = x;
-  std::size_t length = axis.count - 1;
-  while (length > 1) {
-    const std::size_t half = length / 2;
-    first = first[half] <= value ? first + half : first;
-    length -= half;
-  }
-  return static_cast<std::size_t>(first - x);
-}
-
-template <std::size_t K, bool WithGradient>
-std::size_t GridTable::axis_cell_outside(std::size_t a, double value, double* w, double* dw, bool& done) const {
-  // NaN, infinite or outside the breakpoints.
-  const AxisLookup& axis = lookup_[a];
-  if (!std::isfinite(value) || axis.extrapolation == Extrapolation::Error) throw_outside(a, value);
-  const bool below = value < axis.lo;
-  const std::size_t cell = below ? 0 : axis.count - 2;
-  Extrapolation policy = axis.extrapolation;
-  if (K == 1) policy = Extrapolation::Clamp;  // a constant's own continuation and its slope are both flat
-  if (K == 2 && policy == Extrapolation::Linear) policy = Extrapolation::Method;  // the same line
-  done = true;
-  if (policy == Extrapolation::Clamp) {
-    // The end node's value alone; flat along this axis.
-    const std::size_t end = below || K == 1 ? 0 : (K == 4 ? 2 : 1);
-    for (std::size_t e = 0; e < K; ++e) {
-      w[e] = e == end ? 1.0 : 0.0;
-      if constexpr (WithGradient) dw[e] = 0.0;
-    }
-    return K == 1 && !below ? cell + 1 : cell;
-  }
-  if (K == 4 && policy == Extrapolation::Linear) {
-    // End value plus end slope times the distance beyond the end.
-    const double distance = value - (below ? axis.lo : axis.hi);
-    const std::size_t end = below ? 0 : 2;
-    for (std::size_t e = 0; e < K; ++e) {
-      w[e] = e == end ? 1.0 : (e == end + 1 ? distance : 0.0);
-      if constexpr (WithGradient) dw[e] = e == end + 1 ? 1.0 : 0.0;
-    }
-    return cell;
-  }
-  // Extrapolation::Method: the end cell's polynomial at t outside [0, 1].
-  done = false;
-  return cell;
-}
-
 template <std::size_t K, bool WithGradient>
 inline std::size_t GridTable::axis_cell(std::size_t a, double value, double* w, double* dw) const {
+  // The shared kernel: the cell search inside the range, the extrapolation
+  // policy outside it (out of line), the weights of the method.
   const AxisLookup& axis = lookup_[a];
-  const double* x = breakpoints_.data() + axis.offset;
-  std::size_t cell = 0;
-  if (value >= axis.lo && value <= axis.hi) [[likely]] {
-    cell = cell_inside(axis, x, value);
-  } else {
-    // Out of line, so that the hot path above stays small.
-    bool done = false;
-    cell = axis_cell_outside<K, WithGradient>(a, value, w, dw, done);
-    if (done) return cell;
-  }
-  const double h = x[cell + 1] - x[cell];
-  const double t = (value - x[cell]) / h;
-  if constexpr (K == 1) {
-    w[0] = 1.0;
-    if constexpr (WithGradient) dw[0] = 0.0;
-    return t >= 0.5 ? cell + 1 : cell;
-  } else if constexpr (K == 2) {
-    w[0] = 1.0 - t;
-    w[1] = t;
-    if constexpr (WithGradient) {
-      dw[0] = -1.0 / h;
-      dw[1] = 1.0 / h;
-    }
-  } else {
-    hermite_weights(t, h, w);
-    if constexpr (WithGradient) hermite_derivative_weights(t, h, dw);
-  }
-  return cell;
+  std::size_t node = 0;
+  if (hc_kernel_axis_cell(&axis, breakpoints_.data() + axis.offset, K, WithGradient, value, w, dw, &node) !=
+      HC_KERNEL_OK) [[unlikely]]
+    throw_outside(a, value);
+  return node;
 }
 
 template <std::size_t K, bool WithGradient>
@@ -592,7 +480,7 @@ void GridTable::evaluate_one_axis_lanes(const std::array<const GridTable*, N>& t
   // cell search, the division and the weights vectorize over the lanes).
   const double* x = first.breakpoints_.data() + axis.offset;
   std::array<double, N> h, t;
-  for (std::size_t l = 0; l < N; ++l) node[l] = cell_inside(axis, x, values[l]);
+  for (std::size_t l = 0; l < N; ++l) node[l] = hc_kernel_cell_inside(&axis, x, values[l]);
   for (std::size_t l = 0; l < N; ++l) {
     h[l] = x[node[l] + 1] - x[node[l]];
     t[l] = (values[l] - x[node[l]]) / h[l];
@@ -602,17 +490,19 @@ void GridTable::evaluate_one_axis_lanes(const std::array<const GridTable*, N>& t
       w[0][l] = 1.0;
       if (t[l] >= 0.5) ++node[l];
     }
-  } else if (terms == 2) {
-    for (std::size_t l = 0; l < N; ++l) {
-      w[0][l] = 1.0 - t[l];
-      w[1][l] = t[l];
-    }
   } else {
-    for (std::size_t l = 0; l < N; ++l) {
-      std::array<double, 4> lane;
-      hermite_weights(t[l], h[l], lane.data());
-      for (std::size_t e = 0; e < 4; ++e) w[e][l] = lane[e];
-    }
+    // The shared kernel's weights, K a constant in each loop.
+    const auto weights = [&]<std::size_t K>() {
+      for (std::size_t l = 0; l < N; ++l) {
+        std::array<double, 4> lane;
+        hc_kernel_cell_weights(K, 0, t[l], h[l], lane.data(), nullptr);
+        for (std::size_t e = 0; e < K; ++e) w[e][l] = lane[e];
+      }
+    };
+    if (terms == 2)
+      weights.template operator()<2>();
+    else
+      weights.template operator()<4>();
   }
   sum_lanes(tables, node, w, out);
 }

@@ -43,9 +43,12 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/src/grid_kernel.h"
+
 namespace hydrocoef {
 
-/// The 1-D method; N-D is its tensor product (see the file comment).
+/// The 1-D method; N-D is its tensor product (see the file comment). The
+/// values are the runtime file's method codes (runtime/src/grid_kernel.h).
 enum class Interpolation {
   /// Value of the nearest breakpoint along each axis (a tie goes to the upper
   /// breakpoint). Piecewise constant: the gradient is 0.
@@ -74,6 +77,7 @@ enum class Interpolation {
 };
 
 /// What happens at a query coordinate outside an axis's breakpoint range.
+/// The values are the runtime file's policy codes (runtime/src/grid_kernel.h).
 enum class Extrapolation {
   /// Throw InputError naming the axis, the value and the valid range.
   Error,
@@ -200,17 +204,10 @@ class GridTable {
   double evaluate_one(std::span<const double> point, std::size_t output) const;
 
  private:
-  // Per-axis lookup data derived from the breakpoints.
-  struct AxisLookup {
-    double lo = 0.0;
-    double hi = 0.0;
-    double inv_step = 0.0;        // 1 / spacing, when evenly spaced
-    bool even = false;            // located by direct index
-    std::size_t count = 0;        // breakpoints
-    std::size_t offset = 0;       // of the first breakpoint in breakpoints_
-    std::size_t node_stride = 0;  // nodes between neighbours along this axis
-    Extrapolation extrapolation = Extrapolation::Error;
-  };
+  // Per-axis lookup data derived from the breakpoints (the shared kernel's:
+  // lo, hi, inv_step, even, extrapolation as its code, count, offset of the
+  // first breakpoint in breakpoints_, node_stride).
+  using AxisLookup = hc_kernel_axis;
   struct Location;
   // The local sum for one (axis count, terms per axis) pair, with both known
   // at compile time: out[k * out_stride] = sum over the K^n terms of the
@@ -223,15 +220,10 @@ class GridTable {
 
   // locate's work along axis a: the weights w (and their derivatives dw) of
   // `value`, and the node along the axis the weights start at.
+  // Throws (throw_outside) for a value outside under Extrapolation::Error or
+  // not finite. The shared kernel's hc_kernel_axis_cell.
   template <std::size_t K, bool WithGradient>
   std::size_t axis_cell(std::size_t a, double value, double* w, double* dw) const;
-  // axis_cell for a value outside the axis's range (or not finite): throws
-  // under Extrapolation::Error; `done` when the weights are written (clamped,
-  // or linear beyond a cubic's end), else the end cell whose polynomial
-  // continues.
-  template <std::size_t K, bool WithGradient>
-  [[gnu::noinline, gnu::cold]] std::size_t axis_cell_outside(std::size_t a, double value, double* w, double* dw,
-                                                             bool& done) const;
   template <std::size_t K, bool WithGradient>
   void locate(std::span<const double> point, Location& location) const;
   // evaluate_one_axis_lanes' sum from each lane's node and weights w[e][lane].
@@ -246,7 +238,6 @@ class GridTable {
   static constexpr std::array<PointKernel, sizeof...(N)> point_kernels(std::index_sequence<N...>);
   template <bool WithGradient>
   void locate_any(std::span<const double> point, Location& location) const;
-  static std::size_t cell_inside(const AxisLookup& axis, const double* x, double value);
   void check_point(std::span<const double> point) const;
   [[noreturn]] void throw_outside(std::size_t axis, double value) const;
 

@@ -98,7 +98,8 @@ const std::vector<std::string> kTargets = {"cfdpost_export_fuzz",
                                            "case_motion_fuzz",
                                            "cfx_ccl_fuzz",
                                            "openfoam_dictionary_fuzz",
-                                           "captive_table_fuzz"};
+                                           "captive_table_fuzz",
+                                           "runtime_file_fuzz"};
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzSmoke, ::testing::ValuesIn(kTargets));
 
