@@ -73,9 +73,6 @@ struct DofDamping {
   /// sign are filled from the database by resolve_stored_records
   /// (src/dynamics/surface_source.hpp) before the model is built.
   std::string fit;
-  /// Derivatives from a stored model of this name ("derivatives": {"model":
-  /// NAME}): terms, coefficients, covariance and sign filled likewise.
-  std::string derivative_model;
   /// Surface: use it although its output feeds energy into its own motion
   /// somewhere in its range (src/surface/surface_checks.hpp); refused
   /// otherwise.
@@ -88,6 +85,11 @@ struct DofDamping {
   /// dynamics model does not derive them): a model fitted in them is given
   /// in u, v, w instead.
   std::vector<Term> terms;
+  /// Derivatives from a stored model of this name ("derivatives": {"model":
+  /// NAME}): terms, coefficients, covariance and sign filled from the
+  /// database as for `fit` (a last member: the tests' positional
+  /// initialisers of the members above stay valid).
+  std::string derivative_model;
 };
 
 /// The damping of X, Y, Z, K, M, N in that order.
