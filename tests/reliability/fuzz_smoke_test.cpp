@@ -84,7 +84,9 @@ TEST_P(FuzzSmoke, ReplaysRegressionsAndFuzzesBriefly) {
   const auto at = fuzz.log.find(key);
   ASSERT_NE(at, std::string::npos) << fuzz.log;
   const long executed = std::strtol(fuzz.log.c_str() + at + key.size(), nullptr, 10);
-  EXPECT_EQ(executed, kFuzzRuns) << fuzz.log;
+  // -runs counts the mutated inputs; the corpus's own files are run first,
+  // and libFuzzer counts some of them too.
+  EXPECT_GE(executed, kFuzzRuns) << fuzz.log;
 }
 
 const std::vector<std::string> kTargets = {"cfdpost_export_fuzz",
