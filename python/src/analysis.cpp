@@ -39,7 +39,7 @@ void add_documents(py::class_<Result>& type) {
       .def("json", &Result::json, "What the hydrocoef CLI prints with --json (a JSON text).");
 }
 
-std::string optional_text(const py::object& value) { return value.is_none() ? "" : value.cast<std::string>(); }
+std::string text_or_empty(const py::object& value) { return value.is_none() ? "" : value.cast<std::string>(); }
 
 void bind_gci(py::module_& m) {
   py::class_<hydrocoef::GciComponent>(m, "GciComponent", py::is_final(), made_by_the_module_only(kMadeBy),
@@ -248,7 +248,7 @@ store_pmm(db, analysis) stores it.)doc");
       "pmm_runs",
       [](py::handle db, const py::object& body) {
         const auto& database = database_of(db);
-        const std::string name = optional_text(body);
+        const std::string name = text_or_empty(body);
         const py::gil_scoped_release release;
         return hydrocoef::pmm_runs(database, name);
       },
@@ -398,7 +398,7 @@ void bind_suggest(py::module_& m) {
         options.surface = surface;
         options.count = count;
         options.bounds = texts(bounds, "bounds");
-        options.output = optional_text(output);
+        options.output = text_or_empty(output);
         options.candidates = candidates;
         options.round = texts(round, "round");
         for (const auto& file : texts(running, "running")) options.running.push_back(file);

@@ -23,6 +23,7 @@
 #include <pybind11/stl.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,27 @@ py::custom_type_setup made_by_the_module_only(std::string made_by);
 
 /// A list of run ids (None: empty).
 std::vector<std::int64_t> run_ids(const py::object& value, const char* what);
+
+/// A number, or NaN for None.
+double or_nan(const py::object& value);
+
+/// A str or a path as text, or nullopt for None.
+std::optional<std::string> optional_text(const py::object& value);
+
+/// The reference values `derivatives show` and `derivatives export` take
+/// (None: not given, NaN), into options with those fields.
+template <class Options>
+void set_reference_values(Options& options, const py::object& length, const py::object& speed,
+                          const py::object& density, const py::object& draft, const py::object& mass,
+                          const py::object& volume, double gravity) {
+  options.length = or_nan(length);
+  options.speed = or_nan(speed);
+  options.density = or_nan(density);
+  options.draft = or_nan(draft);
+  options.mass = or_nan(mass);
+  options.volume = or_nan(volume);
+  options.gravity = gravity;
+}
 
 /// A str or a list of str (None: empty).
 std::vector<std::string> texts(const py::object& value, const char* what);

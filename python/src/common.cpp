@@ -2,6 +2,7 @@
 // (python/src/bindings.hpp): classes whose objects only the module makes, and
 // the arguments given as a list of run ids or of names.
 #include <cstring>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -42,6 +43,15 @@ py::custom_type_setup made_by_the_module_only(std::string made_by) {
     made_by_of_type()[&heap_type->ht_type] = made_by;
     heap_type->ht_type.tp_new = refuse_new;
   });
+}
+
+double or_nan(const py::object& value) {
+  return value.is_none() ? std::numeric_limits<double>::quiet_NaN() : value.cast<double>();
+}
+
+std::optional<std::string> optional_text(const py::object& value) {
+  if (value.is_none()) return std::nullopt;
+  return py::str(value).cast<std::string>();  // a str or a path
 }
 
 std::vector<std::int64_t> run_ids(const py::object& value, const char* what) {

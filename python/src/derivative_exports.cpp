@@ -19,15 +19,6 @@ namespace {
 
 using namespace pybind11::literals;
 
-double or_nan(const py::object& value) {
-  return value.is_none() ? std::numeric_limits<double>::quiet_NaN() : value.cast<double>();
-}
-
-std::optional<std::string> optional_text(const py::object& value) {
-  if (value.is_none()) return std::nullopt;
-  return py::str(value).cast<std::string>();  // a str or a path
-}
-
 std::vector<double> numbers(const py::object& value) {
   if (value.is_none()) return {};
   return value.cast<std::vector<double>>();
@@ -111,13 +102,7 @@ void register_derivative_exports(py::module_& m) {
         options.format = format;
         options.output = py::str(output).cast<std::string>();
         options.form = form;
-        options.length = or_nan(length);
-        options.speed = or_nan(speed);
-        options.density = or_nan(density);
-        options.draft = or_nan(draft);
-        options.mass = or_nan(mass);
-        options.volume = or_nan(volume);
-        options.gravity = gravity;
+        set_reference_values(options, length, speed, density, draft, mass, volume, gravity);
         options.link = optional_text(link);
         options.link_axes = optional_text(link_axes);
         options.drop_unrepresentable = drop_unrepresentable;

@@ -29,10 +29,6 @@ constexpr const char* kMadeBy =
     "hydrocoef's derivative-model functions (fit_derivative_model, list_derivative_models, show_derivative_model, "
     "delete_derivative_model, evaluate_derivative_model)";
 
-double or_nan(const py::object& value) {
-  return value.is_none() ? std::numeric_limits<double>::quiet_NaN() : value.cast<double>();
-}
-
 }  // namespace
 
 void register_derivatives(py::module_& m) {
@@ -142,13 +138,7 @@ void register_derivatives(py::module_& m) {
         hydrocoef::DerivativeShowOptions options;
         options.name = name;
         options.form = form;
-        options.length = or_nan(length);
-        options.speed = or_nan(speed);
-        options.density = or_nan(density);
-        options.draft = or_nan(draft);
-        options.mass = or_nan(mass);
-        options.volume = or_nan(volume);
-        options.gravity = gravity;
+        set_reference_values(options, length, speed, density, draft, mass, volume, gravity);
         const auto& database = database_of(db);
         const py::gil_scoped_release release;
         return hydrocoef::show_derivative_model(database, options);

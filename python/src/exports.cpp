@@ -21,11 +21,6 @@ using hydrocoef::Database;
 /// The calls that make the result classes here.
 constexpr const char* kMadeBy = "Database.export_surface(...) and Database.export_gazebo(...)";
 
-std::optional<std::string> optional_text(const py::object& value) {
-  if (value.is_none()) return std::nullopt;
-  return py::str(value).cast<std::string>();  // a str or a path
-}
-
 std::optional<double> optional_number(const py::object& value) {
   if (value.is_none()) return std::nullopt;
   return value.cast<double>();
