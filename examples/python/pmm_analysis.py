@@ -22,15 +22,10 @@ Run from the repository after a build (scripts/build.sh):
 """
 
 import argparse
-import math
 import pathlib
 
 import hydrocoef
-
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-RUNS = ROOT / "examples" / "openfoam-sphere" / "pmm"
-RHO, RADIUS = 998.2, 0.15
-VOLUME = 4.0 / 3.0 * math.pi * RADIUS ** 3
+from sphere_pmm import RADIUS, RHO, ROOT, VOLUME, analyse_runs
 
 
 def main():
@@ -39,8 +34,7 @@ def main():
     args = parser.parse_args()
     pathlib.Path(args.db).parent.mkdir(parents=True, exist_ok=True)
 
-    analysis = hydrocoef.analyse_pmm([RUNS / "surge-A0.015-T2", RUNS / "surge-A0.045-T2"], body="sphere",
-                                     axes="-x,y,-z", rho=RHO, nu=1.004e-6, volume=VOLUME, size=2 * RADIUS)
+    analysis = analyse_runs("-x,y,-z", nu=1.004e-6, volume=VOLUME, size=2 * RADIUS)
     for run in analysis.runs:
         x = run.components[0]  # X: the surge force of a surge run
         print(f"run {pathlib.Path(run.path).name}: A = {run.amplitude:g} m, T = {run.period:g} s, "

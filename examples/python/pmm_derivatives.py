@@ -21,15 +21,10 @@ Run from the repository after a build (scripts/build.sh):
 """
 
 import argparse
-import math
 import pathlib
 
 import hydrocoef
-
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-RUNS = ROOT / "examples" / "openfoam-sphere" / "pmm"
-RHO, RADIUS = 998.2, 0.15
-VOLUME = 4.0 / 3.0 * math.pi * RADIUS ** 3
+from sphere_pmm import RADIUS, RHO, ROOT, VOLUME, analyse_runs
 
 
 def main():
@@ -38,8 +33,7 @@ def main():
     args = parser.parse_args()
     pathlib.Path(args.db).parent.mkdir(parents=True, exist_ok=True)
 
-    analysis = hydrocoef.analyse_pmm([RUNS / "surge-A0.015-T2", RUNS / "surge-A0.045-T2"], body="sphere",
-                                     axes="y,x,-z", rho=RHO)
+    analysis = analyse_runs("y,x,-z")
     with hydrocoef.Database(args.db, mode="create") as db:
         hydrocoef.store_pmm(db, analysis)
         result = hydrocoef.pmm_derivatives(db, "sphere", length=2 * RADIUS)
