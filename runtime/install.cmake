@@ -1,6 +1,7 @@
 # What `cmake --install` puts under the prefix for libhydrocoef_runtime (included from CMakeLists.txt after
 # cmake/install.cmake, which sets LIBDIR): LIBDIR/libhydrocoef_runtime.so.1 (.so, .a) and
-# include/hydrocoef/runtime.h. A C consumer needs nothing else: -lhydrocoef_runtime, or the .a and -lm.
+# include/hydrocoef/runtime.h (and runtime_frames.h, header only). A C consumer needs nothing else: -lhydrocoef_runtime, or the .a and -lm.
 install(TARGETS hydrocoef_runtime_shared LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS hydrocoef_runtime ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(FILES ${CMAKE_CURRENT_LIST_DIR}/include/hydrocoef/runtime.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hydrocoef)
+install(FILES ${CMAKE_CURRENT_LIST_DIR}/include/hydrocoef/runtime.h
+              ${CMAKE_CURRENT_LIST_DIR}/include/hydrocoef/runtime_frames.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hydrocoef)
