@@ -54,6 +54,7 @@ expected=(
   "$multiarch/libhydrocoef.so.$version" "$multiarch/libhydrocoef.so.0" "$multiarch/libhydrocoef.so"
   "$multiarch/libhydrocoef.a"
   "$multiarch/libhydrocoef_runtime.so.1" "$multiarch/libhydrocoef_runtime.a" include/hydrocoef/runtime.h
+  include/hydrocoef/runtime_frames.h
   "$multiarch/cmake/hydrocoef/hydrocoefConfig.cmake" "$multiarch/cmake/hydrocoef/hydrocoefConfigVersion.cmake"
   "$multiarch/cmake/hydrocoef/hydrocoefTargets.cmake" "$multiarch/cmake/hydrocoef/hydrocoefStaticTargets.cmake"
   "$multiarch/pkgconfig/hydrocoef.pc"
@@ -64,8 +65,9 @@ expected=(
 for file in "${expected[@]}"; do
   [[ -e $prefix/$file ]] || fail "cmake --install did not install $file"
 done
-# Public headers only: include/ holds include/hydrocoef/*.hpp and the runtime library's C header, nothing else.
-extra=$(cd "$prefix/include" && find . -type f ! -path './hydrocoef/*.hpp' ! -path './hydrocoef/runtime.h' | head -3)
+# Public headers only: include/ holds include/hydrocoef/*.hpp and the runtime library's C headers, nothing else.
+extra=$(cd "$prefix/include" && find . -type f ! -path './hydrocoef/*.hpp' ! -path './hydrocoef/runtime.h' \
+  ! -path './hydrocoef/runtime_frames.h' | head -3)
 [[ -z $extra ]] || fail "cmake --install put more than include/hydrocoef/*.hpp under include/: $extra"
 for header in "$prefix"/include/hydrocoef/*.hpp; do
   if grep -Eq '#include +"(src|importers|cli)/' "$header"; then
@@ -165,6 +167,7 @@ cmake -S "$work/wrong-version" -B "$work/wrong-version/build" -DCMAKE_PREFIX_PAT
 cat >"$work/runtime_consumer.c" <<'EOF'
 #include <stdio.h>
 #include <hydrocoef/runtime.h>
+#include <hydrocoef/runtime_frames.h>
 int main(int argc, char** argv) {
   hc_runtime_model* model = NULL;
   char err[256] = "";
@@ -174,6 +177,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (hc_runtime_evaluate(model, 0, &u, &x, NULL, NULL) != HC_RUNTIME_OK) return 1;
+  {
+    const double frd[3] = {1.0, 2.0, 3.0};
+    double flu[3];
+    hc_frames_frd_flu_vector(frd, flu); /* the installed frames header compiles and links as C99 */
+    if (flu[1] != -2.0) return 1;
+  }
   printf("%.17g\n", x);
   hc_runtime_close(model);
   return 0;
