@@ -269,6 +269,16 @@ TEST_F(CliForceCoeffsExport, RefusesWhatItWouldHaveToGuessAndWritesNothing) {
   // Body axes are the case's here: Cd = X / (1/2 rho U^2 A) = -10 / (0.5 * 1025 * 0.5).
   EXPECT_DOUBLE_EQ(last_row(file).at("Cd"), -10.0 / (0.5 * 1025.0 * 0.5));
   EXPECT_DOUBLE_EQ(last_row(file).at("CmYaw"), 0.03 / (0.5 * 1025.0 * 0.5 * 2.0));
+  // With the body's moment point, the moments are about it and CofR is it: N_P = N_O + ((O - P) x F)_z.
+  run({"--db", "rho.db", "body", "set", "hull", "--moment-point", "0.1,0,0"});
+  run({"--db", "rho.db", "export", "--format", "openfoam-forcecoeffs", "-o", "out", "--exclude-run", "2"});
+  EXPECT_DOUBLE_EQ(last_row(file).at("CmYaw"), (0.03 - 0.1 * 0.5) / (0.5 * 1025.0 * 0.5 * 2.0));
+  EXPECT_DOUBLE_EQ(last_row(file).at("CmPitch"), (0.02 + 0.1 * 0.25) / (0.5 * 1025.0 * 0.5 * 2.0));
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(": (1.0000000000000001e-01 0.0000000000000000e+00 0.0000000000000000e+00)\n# hydrocoef"),
+            std::string::npos)
+      << text;
 }
 
 TEST_F(CliForceCoeffsExport, NamesStayOutOfTheFiles) {
