@@ -56,7 +56,9 @@ void add_export_command(CLI::App& app, const GlobalOptions& global) {
       "Write a stored gridded surface for another tool: csv, csv-wide, json, c (C99 header), mat "
       "(MATLAB v5 + Simulink set-up script), jsbsim (XML tables), vtk (ParaView) or daveml (DAVE-ML, "
       "AIAA S-119; with each node's standard deviation when the surface states one) or runtime "
-      "(libhydrocoef_runtime's file: the surfaces as hydrocoef evaluates them, with their standard deviation)");
+      "(libhydrocoef_runtime's file: the surfaces as hydrocoef evaluates them, with their standard deviation); "
+      "or, with no NAME, openfoam-forcecoeffs (the selected runs as OpenFOAM forceCoeffs files, one per run in "
+      "the folder -o, in the case's axes)");
   command->add_option("name", options.name, "Surface name (not with openfoam-forcecoeffs)");
   command->add_option("--format", options.format,
                       "csv, csv-wide, json, c, mat, jsbsim, vtk, daveml, runtime or openfoam-forcecoeffs")
