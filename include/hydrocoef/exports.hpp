@@ -2,7 +2,9 @@
 // file another tool loads), `hydrocoef export-gazebo` (a body's damping-law
 // fits and an added-mass matrix as Gazebo hydrodynamics parameters) and
 // `hydrocoef derivatives export` (stored derivative models as CSV, JSON,
-// gz-sim parameters or a MATLAB function). The CLI commands are these
+// gz-sim parameters or a MATLAB function) and `hydrocoef export --format
+// openfoam-forcecoeffs` (runs as OpenFOAM forceCoeffs files, in the case's
+// axes: the exception to the body axes below). The CLI commands are these
 // functions and print their results' text() or json().
 //
 // Units and frames: SI; body axes x forward, y starboard, z down (FRD); the
@@ -12,6 +14,7 @@
 // touches the database.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -254,6 +257,92 @@ struct DerivativeExportResult {
 /// not an identifier, a mass matrix that is not one, or a path that cannot
 /// be written. Never writes to the database.
 HYDROCOEF_EXPORT DerivativeExportResult export_derivatives(const Database& db, const DerivativeExportOptions& options);
+
+/// What `hydrocoef export --format openfoam-forcecoeffs -o DIR` writes: each
+/// selected run's forces as the coefficient file OpenFOAM's forceCoeffs
+/// function object writes (the v1912 coefficient.dat, its header and columns
+/// to the byte), one per run at
+/// DIR/run-<id>/postProcessing/forceCoeffs/<start time>/coefficient.dat.
+///
+/// Axes and signs: OpenFOAM's. The forces go back from body axes to the
+/// case's axes through the map the run was imported with (import's --axes,
+/// CFD axes to body axes: the one recorded with the import of its forces, or
+/// `axes` here), forces on the body (the fluid's force), moments about CofR.
+/// dragDir, sideDir, liftDir are the case's x, y, z (rollAxis, pitchAxis,
+/// yawAxis too), so Cd = F_x / (1/2 rho U^2 A), Cs = F_y / ..., Cl = F_z / ...,
+/// CmRoll = M_x / (1/2 rho U^2 A L), ... with A the body's reference area
+/// (Aref), L its reference length (lRef), U = |(u, v, w)| (magUInf), rho the
+/// run's density, CofR the body's moment reference point (else the run's own
+/// reference point), in the case's axes. importers/openfoam_forces reads such
+/// a file back into the same body-axis forces (import FILE --rho RHO --axes
+/// MAP with the run's key): the writer is its inverse.
+///
+/// Rows: the run's force history when its stored trace holds every sample
+/// (at most 256; HistoryTrace), else one row at the history's last time
+/// (0 for a run imported without a history) with the run's stored forces.
+struct ForceCoeffsExportOptions {
+  std::string output;                      ///< the folder to write into (-o; made when missing)
+  std::string body;                        ///< --body: "" every body
+  std::vector<std::string> where;          ///< --where selection clauses, as for Database::runs
+  std::vector<std::int64_t> exclude_runs;  ///< --exclude-run
+  std::string area;                        ///< --area NAME: "" the body's default area
+  /// --axes MAP: the case's axes for every run ("-x,y,-z": CFD axes to body
+  /// axes, as import takes it); "" each run's own, as recorded with its import.
+  std::string axes;
+  /// --precision N: digits after the point (OpenFOAM's writePrecision); 16,
+  /// 17 significant digits, reads back to the stored forces (see the result).
+  int precision = 16;
+  bool mean_only = false;  ///< --mean-only: one row with the stored forces, even with a history
+
+  /// InputError, one line, for no output folder, a selection clause that
+  /// does not parse, axes that are not a rotation of x,y,z, or a precision
+  /// outside 1..16.
+  HYDROCOEF_EXPORT void validate() const;
+};
+
+/// One run's file.
+struct ForceCoeffsExportRun {
+  std::int64_t id = 0;
+  std::string body;
+  std::string file;  ///< the file written
+  std::string axes;  ///< the case's axes used ("-x,y,-z": CFD axes to body axes)
+  std::string rows_from;  ///< "history" (the stored trace, every sample) or "stored forces" (one row)
+  std::size_t rows = 0;
+  double rho = 0.0;        ///< [kg/m^3] (give it to import as --rho)
+  double mag_u_inf = 0.0;  ///< magUInf = |(u, v, w)| [m/s]
+  double l_ref = 0.0;      ///< lRef [m]
+  double a_ref = 0.0;      ///< Aref [m^2]
+  std::string area_name;   ///< the body's area used as Aref
+  std::array<double, 3> cofr{};  ///< [m], the case's axes
+  /// Cd, Cs, Cl, CmRoll, CmPitch, CmYaw of the last row, as written.
+  std::array<double, 6> last_coefficients{};
+};
+
+/// What the forceCoeffs export wrote.
+struct ForceCoeffsExportResult {
+  std::string database;
+  std::string directory;
+  int precision = 16;
+  std::vector<ForceCoeffsExportRun> runs;
+  /// Coefficients written (Cd..CmYaw, every row), and of them (precision 16)
+  /// those the reader turns back into the force itself, and those it turns
+  /// into the double next to it (no double coefficient times the reader's
+  /// scale 1/2 rho U^2 A gives the force: the product skips some doubles).
+  std::size_t values = 0, exact = 0, one_ulp = 0;
+  std::vector<std::string> notes;
+
+  HYDROCOEF_EXPORT std::string text() const;  ///< what `export --format openfoam-forcecoeffs` prints
+  HYDROCOEF_EXPORT std::string json() const;  ///< with --json
+};
+
+/// Writes the selected runs' forceCoeffs files (options.validate() first).
+/// InputError, one line, nothing written, for no run selected, a run without
+/// a density, at rest (U = 0) or without one of X..N, a body without a
+/// reference length or area (naming `body set`), an area the body does not
+/// have, a run whose forces came from imports with different axes (naming
+/// --axes), or a folder that cannot be written. Never writes to the database.
+HYDROCOEF_EXPORT ForceCoeffsExportResult export_forcecoeffs(const Database& db,
+                                                            const ForceCoeffsExportOptions& options);
 
 }  // namespace api
 }  // namespace hydrocoef

@@ -20,8 +20,9 @@
 //                              point, with its gradient, or at many points at
 //                              once on every core; tabulated for a controller;
 //                              surface_build, _rebuild, _list, _show, query_surface
-//   hydrocoef/exports.hpp      export_surface, export_gazebo, export_derivatives: a gridded
-//                              surface, a body's fits or derivative models written for another tool
+//   hydrocoef/exports.hpp      export_surface, export_gazebo, export_derivatives,
+//                              export_forcecoeffs: a gridded surface, a body's fits, derivative
+//                              models or runs (OpenFOAM forceCoeffs) written for another tool
 //   hydrocoef/analysis.hpp     mesh studies (grid_convergence), forced oscillation (analyse_pmm,
 //                              added_mass_matrix, ...), where to run CFD next (suggest_runs)
 //   hydrocoef/derivatives.hpp  derivative models of several variables: fit_derivative_model,

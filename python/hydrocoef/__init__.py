@@ -52,6 +52,7 @@ from ._hydrocoef import (PmmDerivative, PmmDerivativeRun, PmmDerivatives, PmmFre
                          pmm_derivatives)
 from ._hydrocoef import (DerivativeExportResult, ResistanceScalingPoint, ResistanceScalingResult, export_derivatives,
                          scale_surge_resistance)
+from ._hydrocoef import ForceCoeffsExportResult, ForceCoeffsExportRun
 
 __all__ = ["Database", "Surface", "Fit", "SurfaceInfo", "ImportSummary", "ImportedFile", "Table", "Simulation",
            "Equilibrium", "simulate", "equilibrium", "InputError", "__version__"]
@@ -72,6 +73,7 @@ __all__ += ["fit_derivative_model", "list_derivative_models", "show_derivative_m
 __all__ += ["pmm_derivatives", "PmmDerivatives", "PmmFrequencyDerivatives", "PmmDerivative", "PmmDerivativeRun"]
 __all__ += ["export_derivatives", "DerivativeExportResult", "scale_surge_resistance", "ResistanceScalingResult",
             "ResistanceScalingPoint"]
+__all__ += ["ForceCoeffsExportResult", "ForceCoeffsExportRun"]
 
 
 class Table(dict):

@@ -306,6 +306,33 @@ class TableExportResult:
     def text(self) -> str: ...
     def json(self) -> str: ...
 
+class ForceCoeffsExportRun:
+    id: int
+    body: str
+    file: str
+    axes: str
+    rows_from: str
+    rows: int
+    rho: float
+    mag_u_inf: float
+    l_ref: float
+    a_ref: float
+    area_name: str
+    cofr: list[float]
+    last_coefficients: list[float]
+
+class ForceCoeffsExportResult:
+    database: str
+    directory: str
+    precision: int
+    runs: list[ForceCoeffsExportRun]
+    values: int
+    exact: int
+    one_ulp: int
+    notes: list[str]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
 class GazeboFitExport:
     dof: str
     variable: str
@@ -432,6 +459,9 @@ class Database:
                       output: str = "-", gradient: bool = False, uncertainty: bool = False) -> SurfaceQueryResult: ...
     def export_surface(self, name: str, *, format: str, output: _Path, single_precision: bool = False,
                        identifier: str = "", surfaces: Sequence[str] = ()) -> TableExportResult: ...
+    def export_forcecoeffs(self, *, output: _Path, body: str = "", where: _Texts = None,
+                           exclude_runs: Iterable[int] | None = None, area: str = "", axes: str = "",
+                           precision: int = 16, mean_only: bool = False) -> ForceCoeffsExportResult: ...
     def export_gazebo(self, body: str, *, flavor: str, output: _Path, fits: _Texts = None,
                       added_mass: Union[str, Sequence[float], None] = None, added_mass_matrix: _Path | None = None,
                       sphere_radius: float | None = None, rho: float | None = None,

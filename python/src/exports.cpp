@@ -1,8 +1,10 @@
 // Exports in Python: Database.export_surface (`hydrocoef export`, a gridded
-// surface for another tool) and Database.export_gazebo (`hydrocoef
-// export-gazebo`), the C++ API's calls of include/hydrocoef/exports.hpp, and
-// their results (TableExportResult, GazeboExportResult) with text() and
-// json(), what the CLI prints.
+// surface for another tool), Database.export_forcecoeffs (`hydrocoef export
+// --format openfoam-forcecoeffs`, runs as OpenFOAM forceCoeffs files) and
+// Database.export_gazebo (`hydrocoef export-gazebo`), the C++ API's calls of
+// include/hydrocoef/exports.hpp, and their results (TableExportResult,
+// ForceCoeffsExportResult, GazeboExportResult) with text() and json(), what
+// the CLI prints.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -19,7 +21,8 @@ using namespace pybind11::literals;
 using hydrocoef::Database;
 
 /// The calls that make the result classes here.
-constexpr const char* kMadeBy = "Database.export_surface(...) and Database.export_gazebo(...)";
+constexpr const char* kMadeBy =
+    "Database.export_surface(...), Database.export_gazebo(...) and Database.export_forcecoeffs(...)";
 
 std::optional<double> optional_number(const py::object& value) {
   if (value.is_none()) return std::nullopt;
@@ -54,6 +57,35 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("notes", &hydrocoef::TableExportResult::notes)
       .def("text", &hydrocoef::TableExportResult::text)
       .def("json", &hydrocoef::TableExportResult::json);
+  py::class_<hydrocoef::ForceCoeffsExportRun>(m, "ForceCoeffsExportRun", py::is_final(),
+                                              made_by_the_module_only(kMadeBy), "One run's forceCoeffs file.")
+      .def_readonly("id", &hydrocoef::ForceCoeffsExportRun::id)
+      .def_readonly("body", &hydrocoef::ForceCoeffsExportRun::body)
+      .def_readonly("file", &hydrocoef::ForceCoeffsExportRun::file)
+      .def_readonly("axes", &hydrocoef::ForceCoeffsExportRun::axes)
+      .def_readonly("rows_from", &hydrocoef::ForceCoeffsExportRun::rows_from)
+      .def_readonly("rows", &hydrocoef::ForceCoeffsExportRun::rows)
+      .def_readonly("rho", &hydrocoef::ForceCoeffsExportRun::rho)
+      .def_readonly("mag_u_inf", &hydrocoef::ForceCoeffsExportRun::mag_u_inf)
+      .def_readonly("l_ref", &hydrocoef::ForceCoeffsExportRun::l_ref)
+      .def_readonly("a_ref", &hydrocoef::ForceCoeffsExportRun::a_ref)
+      .def_readonly("area_name", &hydrocoef::ForceCoeffsExportRun::area_name)
+      .def_readonly("cofr", &hydrocoef::ForceCoeffsExportRun::cofr)
+      .def_readonly("last_coefficients", &hydrocoef::ForceCoeffsExportRun::last_coefficients,
+                    "Cd, Cs, Cl, CmRoll, CmPitch, CmYaw of the last row, as written.");
+  py::class_<hydrocoef::ForceCoeffsExportResult>(m, "ForceCoeffsExportResult", py::is_final(),
+                                                 made_by_the_module_only(kMadeBy),
+                                                 "What `hydrocoef export --format openfoam-forcecoeffs` wrote.")
+      .def_readonly("database", &hydrocoef::ForceCoeffsExportResult::database)
+      .def_readonly("directory", &hydrocoef::ForceCoeffsExportResult::directory)
+      .def_readonly("precision", &hydrocoef::ForceCoeffsExportResult::precision)
+      .def_readonly("runs", &hydrocoef::ForceCoeffsExportResult::runs)
+      .def_readonly("values", &hydrocoef::ForceCoeffsExportResult::values)
+      .def_readonly("exact", &hydrocoef::ForceCoeffsExportResult::exact)
+      .def_readonly("one_ulp", &hydrocoef::ForceCoeffsExportResult::one_ulp)
+      .def_readonly("notes", &hydrocoef::ForceCoeffsExportResult::notes)
+      .def("text", &hydrocoef::ForceCoeffsExportResult::text)
+      .def("json", &hydrocoef::ForceCoeffsExportResult::json);
   py::class_<hydrocoef::GazeboFitExport>(m, "GazeboFitExport", py::is_final(), made_by_the_module_only(kMadeBy))
       .def_readonly("dof", &hydrocoef::GazeboFitExport::dof)
       .def_readonly("variable", &hydrocoef::GazeboFitExport::variable)
@@ -112,6 +144,32 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
 json, c (single_precision, identifier: the C header's), mat, jsbsim, vtk, daveml or runtime (surfaces:
 further surfaces of the same body in the runtime file); output the file.
 Returns a TableExportResult; InputError (nothing written) for a surface that is not gridded.)doc")
+      .def(
+          "export_forcecoeffs",
+          [](py::handle self, const py::object& output, const std::string& body, const py::object& where,
+             const py::object& exclude_runs, const std::string& area, const std::string& axes, int precision,
+             bool mean_only) {
+            hydrocoef::ForceCoeffsExportOptions options;
+            options.output = py::str(output).cast<std::string>();
+            options.body = body;
+            options.where = texts(where, "where");
+            options.exclude_runs = run_ids(exclude_runs, "exclude_runs");
+            options.area = area;
+            options.axes = axes;
+            options.precision = precision;
+            options.mean_only = mean_only;
+            Database& d = database_of(self);
+            py::gil_scoped_release release;
+            return hydrocoef::export_forcecoeffs(d, options);
+          },
+          py::kw_only(), "output"_a, "body"_a = "", "where"_a = py::none(), "exclude_runs"_a = py::none(),
+          "area"_a = "", "axes"_a = "", "precision"_a = 16, "mean_only"_a = false,
+          R"doc(Writes the selected runs as OpenFOAM forceCoeffs files (v1912 coefficient.dat), one per run under
+the folder output, as `hydrocoef export --format openfoam-forcecoeffs`: body, where, exclude_runs select the
+runs; area the body's area used as Aref; axes the case's axes ("-x,y,-z", CFD to body; default each run's, as
+imported); precision digits after the point (16: exact); mean_only one row of the stored forces.
+Returns a ForceCoeffsExportResult; InputError (nothing written) for a run without density, speed or one of
+X..N, or a body without reference length or area.)doc")
       .def(
           "export_gazebo",
           [](py::handle self, const std::string& body, const std::string& flavor, const py::object& output,
