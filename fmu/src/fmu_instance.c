@@ -73,18 +73,16 @@ static int live_remove(const void* c) {
 
 /* ---- memory and logging ------------------------------------------------- */
 
+/* The FMU allocates with calloc and free (modelDescription.xml:
+ * canNotUseMemoryManagementFunctions="true"), as the runtime library does. */
 void* fmu_calloc(const fmu_instance* fmu, size_t count, size_t size) {
-  if (count == 0) count = 1;
-  if (fmu != NULL && fmu->allocate != NULL && fmu->free_memory != NULL) return fmu->allocate(count, size);
-  return calloc(count, size);
+  (void)fmu;
+  return calloc(count == 0 ? 1 : count, size);
 }
 
 void fmu_free(const fmu_instance* fmu, void* pointer) {
-  if (pointer == NULL) return;
-  if (fmu != NULL && fmu->allocate != NULL && fmu->free_memory != NULL)
-    fmu->free_memory(pointer);
-  else
-    free(pointer);
+  (void)fmu;
+  free(pointer);
 }
 
 int fmu_allocate_reals(fmu_instance* fmu, size_t n) {
@@ -264,8 +262,6 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
   fmu_instance scratch;
   memset(&scratch, 0, sizeof scratch);
   scratch.logger = functions->logger;
-  scratch.allocate = functions->allocateMemory;
-  scratch.free_memory = functions->freeMemory;
   scratch.environment = functions->componentEnvironment;
   scratch.name = (char*)(instanceName != NULL ? instanceName : "");
   if (instanceName == NULL || instanceName[0] == '\0') {

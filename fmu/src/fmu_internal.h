@@ -58,8 +58,6 @@ struct fmu_instance {
   unsigned state;
   char* name; /* instanceName, owned */
   fmi2CallbackLogger logger;
-  fmi2CallbackAllocateMemory allocate;
-  fmi2CallbackFreeMemory free_memory;
   fmi2ComponentEnvironment environment;
   int logging_on;
   hc_runtime_model* model;
