@@ -135,8 +135,9 @@ TEST_F(FmuCalls, UnknownValueReferencesAreRefused) {
   expect_refused(host_->raw().SetReal(host_->component(), &vr, 1, &value), {"unknown value reference 99"});
   ASSERT_EQ(host_->raw().Reset(host_->component()), fmi2OK);
   host_->clear_log();
-  int integer = 0;
-  expect_refused(host_->raw().GetInteger(host_->component(), &kU, 1, &integer), {"Real variables only"});
+  const int integer = 0;
+  expect_refused(host_->raw().SetInteger(host_->component(), &kU, 1, &integer),
+                 {"fmi2SetInteger: unknown value reference 0; this FMU has Real variables only"});
 }
 
 TEST_F(FmuCalls, NullArraysAreRefused) {
@@ -151,6 +152,7 @@ TEST_F(FmuCalls, NullArraysAreRefused) {
   expect_refused(host_->raw().GetRealStatus(host_->component(), fmi2LastSuccessfulTime, nullptr),
                  {"fmi2GetRealStatus is not allowed in state instantiated"});
   // nvr = 0 with NULL arrays is a call that does nothing.
+  ASSERT_EQ(host_->raw().Reset(host_->component()), fmi2OK);
   EXPECT_EQ(host_->raw().SetReal(host_->component(), nullptr, 0, nullptr), fmi2OK);
 }
 

@@ -11,8 +11,10 @@
 // instantiation. The host's XML and zip readers refuse malformed input.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <regex>
 
+#include "hydrocoef/error.hpp"
 #include "hydrocoef/runtime.h"
 #include "src/export/fmu_model_description.hpp"
 #include "src/export/zip_writer.hpp"
@@ -32,8 +34,8 @@ class FmuDescription : public ::testing::Test {
   void SetUp() override {
     test::make_fmu_database(dir_);
     // The grid surface again, under a hostile name, of a hostile body.
-    test::write_fmu_grid_csv(dir_ / "grid.csv");
-    auto imported = test::run_cli({"import", (dir_ / "grid.csv").string(), "--body", "b<\"&'>"}, dir_.path());
+    test::write_fmu_grid_csv(dir_ / "hostile.csv", 0.25);
+    auto imported = test::run_cli({"import", (dir_ / "hostile.csv").string(), "--body", "b<\"&'>"}, dir_.path());
     ASSERT_EQ(imported.exit_code, 0) << imported.err;
     const auto built = test::run_cli({"surface", "build", kHostile, "--body", "b<\"&'>", "--outputs", "X,Y", "--axes",
                                       "u,v", "--method", "linear", "--extrapolate", "clamp"},
@@ -140,11 +142,11 @@ TEST_F(FmuDescription, HostileNamesAreEscapedAndComeBackExactly) {
 
 TEST_F(FmuDescription, TheModelDescriptionOfAnotherExportIsRefusedAtInstantiate) {
   test::export_fmu_file(dir_, "asr-v", "surge", "one.fmu");
-  test::export_fmu_file(dir_, "asr-v", "surge", "two.fmu");
+  test::export_fmu_file(dir_, "asr-v", "surge-strict", "two.fmu");
   TempDir a, b;
   FmiHost one(dir_ / "one.fmu", a.path());
   FmiHost two(dir_ / "two.fmu", b.path());
-  // Each export states its own creation time: two GUIDs.
+  // Two models, two GUIDs.
   ASSERT_NE(one.model().guid, two.model().guid);
   // one's binary and description with two's resources.
   EXPECT_EQ(one.instantiate("mixed", std::nullopt, two.resource_uri()), fmi2Error);

@@ -16,13 +16,14 @@
 
 namespace hydrocoef::test {
 
-inline void write_fmu_grid_csv(const std::filesystem::path& path) {
+/// The grid's runs; `offset` added to X (another file's content).
+inline void write_fmu_grid_csv(const std::filesystem::path& path, double offset = 0.0) {
   std::ofstream out(path);
   out << "u [m s^-1],v [m s^-1],X [N],Y [N]\n";
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 5; ++j) {
       const double u = 0.1 * i, v = 0.1 * (j - 2);
-      out << u << "," << v << "," << -3.0 * u * std::abs(u) - 0.4 * v * v + 0.01 * i * j << ","
+      out << u << "," << v << "," << offset - 3.0 * u * std::abs(u) - 0.4 * v * v + 0.01 * i * j << ","
           << -2.0 * v * std::abs(v) + 0.3 * u * v - 0.02 * (i + j) << "\n";
     }
 }
