@@ -8,7 +8,7 @@
 #include "src/api/runtime_file.hpp"
 
 #include <algorithm>
-#include <cstring>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "hydrocoef/fmu.hpp"

@@ -38,6 +38,8 @@ struct Case {
   std::vector<std::pair<double, double>> ranges;  // per axis: random inputs drawn here
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.body << "/" << c.surface; }
+
 class FmuSurface : public ::testing::TestWithParam<Case> {};
 
 TEST_P(FmuSurface, StepsGiveTheRuntimeLibrarysAndQuerysNumbersBitForBit) {
