@@ -8,6 +8,7 @@
 // reset instance gives the same numbers again.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <memory>
@@ -91,6 +92,12 @@ TEST_P(FmuSurface, StepsGiveTheRuntimeLibrarysAndQuerysNumbersBitForBit) {
     EXPECT_TRUE(same_bits(got[m + k], sigma[k]));
   }
   ASSERT_EQ(host.exit_initialization_mode(), fmi2OK);
+  // Each start value is 0 clamped into its axis's breakpoints.
+  for (std::size_t a = 0; a < n; ++a) {
+    std::size_t count = 0;
+    const double* breakpoints = hc_runtime_axis_breakpoints(opened, 0, a, &count);
+    EXPECT_EQ(start[a], std::min(std::max(0.0, breakpoints[0]), breakpoints[count - 1])) << a;
+  }
 
   std::mt19937_64 random(371);
   std::vector<std::uniform_real_distribution<double>> draw;
@@ -156,8 +163,13 @@ TEST_P(FmuSurface, StepsGiveTheRuntimeLibrarysAndQuerysNumbersBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, FmuSurface,
                          ::testing::Values(Case{"asr-v", "surge", {{-0.3, 0.8}}},
-                                           Case{"grid", "grid", {{-0.1, 0.6}, {-0.3, 0.3}}}),
-                         [](const auto& info) { return info.param.surface; });
+                                           Case{"grid", "grid", {{-0.1, 0.6}, {-0.3, 0.3}}},
+                                           Case{"grid", "grid-high", {{0.0, 0.7}, {-0.3, 0.3}}}),
+                         [](const auto& info) {
+                           std::string name = info.param.surface;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace hydrocoef

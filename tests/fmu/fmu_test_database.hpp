@@ -1,7 +1,7 @@
 // The database the FMU tests export from: the ASR-V surge runs (one axis, u)
 // with a pchip surface extrapolating linearly and one refusing values outside
-// its axis, and a two-axis grid (u, v; outputs X, Y) built with pchip; each
-// states a standard deviation. Built through the CLI, as a user would.
+// its axis, and a two-axis grid (u, v; outputs X, Y) built with pchip and,
+// from part of its runs, with linear; each states a standard deviation. Built through the CLI, as a user would.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -29,8 +29,9 @@ inline void write_fmu_grid_csv(const std::filesystem::path& path, double offset 
 }
 
 /// Makes hydrocoef.db in `dir`: surfaces "surge" (pchip, linear outside),
-/// "surge-strict" (linear, error outside) of body asr-v and "grid" (pchip,
-/// u and v clamped) of body grid.
+/// "surge-strict" (linear, error outside) of body asr-v, "grid" (pchip,
+/// u and v clamped) and "grid-high" (linear, linear outside, on u >= 0.2 and
+/// v >= 0.1 only: ranges without 0) of body grid.
 inline void make_fmu_database(const TempDir& dir) {
   const std::string surge = HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-surge-damping.csv";
   auto imported = run_cli({"import", surge, "--body", "asr-v", "--sign", "opposing", "--rho", "998.2"}, dir.path());
@@ -44,7 +45,9 @@ inline void make_fmu_database(const TempDir& dir) {
            {"surface", "build", "surge-strict", "--body", "asr-v", "--outputs", "X", "--axes", "u", "--method",
             "linear", "--extrapolate", "error"},
            {"surface", "build", "grid", "--body", "grid", "--outputs", "X,Y", "--axes", "u,v", "--method", "pchip",
-            "--extrapolate", "clamp"}}) {
+            "--extrapolate", "clamp"},
+           {"surface", "build", "grid-high", "--body", "grid", "--outputs", "X,Y", "--axes", "u,v", "--method",
+            "linear", "--extrapolate", "linear", "--where", "u>=0.2", "--where", "v>=0.05"}}) {
     const auto built = run_cli(args, dir.path());
     ASSERT_EQ(built.exit_code, 0) << built.err;
   }
