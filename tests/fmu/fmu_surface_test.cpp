@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 #include <span>
+#include <thread>
 
 #include "hydrocoef/runtime.h"
 #include "src/store/database.hpp"
@@ -159,6 +160,56 @@ TEST_P(FmuSurface, StepsGiveTheRuntimeLibrarysAndQuerysNumbersBitForBit) {
   ASSERT_EQ(host.terminate(), fmi2OK);
   host.free_instance();
   for (const auto& entry : host.log()) EXPECT_NE(entry.status, fmi2Error) << entry.message;
+}
+
+// Instances are independent: four, each stepped in a thread of its own at
+// inputs of its own, give the runtime library's numbers bit for bit (the
+// live-instance list is shared and locked; nothing else is).
+TEST(FmuSurfaceThreads, InstancesSteppedInThreadsAtOnceGiveTheirOwnNumbers) {
+  TempDir dir;
+  test::make_fmu_database(dir);
+  test::export_fmu_file(dir, "grid", "grid", "grid.fmu");
+  std::filesystem::create_directory(dir / "unzipped");
+  FmiHost host(dir / "grid.fmu", dir / "unzipped");
+  hc_runtime_model* opened = nullptr;
+  char err[512] = "";
+  ASSERT_EQ(hc_runtime_open((dir / "unzipped/resources/model.hcr").c_str(), &opened, err, sizeof err), HC_RUNTIME_OK)
+      << err;
+  const std::unique_ptr<hc_runtime_model, ModelCloser> runtime(opened);
+  const auto& f = host.raw();
+  const std::string uri = host.resource_uri(), guid = host.model().guid;
+  std::vector<int> mismatches(4, -1);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 4; ++k) {
+    threads.emplace_back([&, k] {
+      const std::string name = "thread" + std::to_string(k);
+      const fmi2Component c =
+          f.Instantiate(name.c_str(), fmi2CoSimulation, guid.c_str(), uri.c_str(), host.callbacks(), fmi2False, fmi2False);
+      if (c == nullptr || f.EnterInitializationMode(c) != fmi2OK || f.ExitInitializationMode(c) != fmi2OK) return;
+      std::mt19937_64 random(1000 + k);
+      std::uniform_real_distribution<double> u_of(-0.1, 0.6), v_of(-0.3, 0.3);
+      const fmi2ValueReference in[2] = {0, 1}, out[4] = {2, 3, 4, 5};
+      int bad = 0;
+      double t = 0.0;
+      for (int i = 0; i < 300; ++i) {
+        const double x[2] = {u_of(random), v_of(random)};
+        double got[4], values[2], sigma[2];
+        if (f.SetReal(c, in, 2, x) != fmi2OK || f.DoStep(c, t, 0.01, fmi2True) != fmi2OK ||
+            f.GetReal(c, out, 4, got) != fmi2OK ||
+            hc_runtime_evaluate(opened, 0, x, values, nullptr, sigma) != HC_RUNTIME_OK) {
+          ++bad;
+          break;
+        }
+        t += 0.01;
+        for (int o = 0; o < 2; ++o) bad += !same_bits(got[o], values[o]) + !same_bits(got[2 + o], sigma[o]);
+      }
+      f.FreeInstance(c);
+      mismatches[k] = bad;
+    });
+  }
+  for (auto& thread : threads) thread.join();
+  EXPECT_EQ(mismatches, std::vector<int>(4, 0));
+  EXPECT_TRUE(host.log().empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, FmuSurface,
