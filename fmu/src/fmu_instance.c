@@ -20,10 +20,11 @@
 
 #include "fmu_internal.h"
 
-#define FMU_ANY_BUT_START                                                                                          \
-  (FMU_INSTANTIATED | FMU_INITIALIZATION | FMU_STEP_COMPLETE | FMU_STEP_IN_PROGRESS | FMU_STEP_FAILED |           \
+#define FMU_ANY_BUT_START                                                                               \
+  (FMU_INSTANTIATED | FMU_INITIALIZATION | FMU_STEP_COMPLETE | FMU_STEP_IN_PROGRESS | FMU_STEP_FAILED | \
    FMU_STEP_CANCELED | FMU_TERMINATED | FMU_ERROR)
-#define FMU_GETTABLE (FMU_INITIALIZATION | FMU_STEP_COMPLETE | FMU_STEP_FAILED | FMU_STEP_CANCELED | FMU_TERMINATED | FMU_ERROR)
+#define FMU_GETTABLE \
+  (FMU_INITIALIZATION | FMU_STEP_COMPLETE | FMU_STEP_FAILED | FMU_STEP_CANCELED | FMU_TERMINATED | FMU_ERROR)
 
 /* ---- the live instances ------------------------------------------------- */
 
@@ -49,8 +50,7 @@ static int live_add(fmu_instance* fmu) {
 static int live_has(const void* c) {
   int found = 0;
   pthread_mutex_lock(&live_lock);
-  for (const fmu_live* entry = live_list; entry != NULL && !found; entry = entry->next)
-    found = entry->instance == c;
+  for (const fmu_live* entry = live_list; entry != NULL && !found; entry = entry->next) found = entry->instance == c;
   pthread_mutex_unlock(&live_lock);
   return found;
 }
@@ -172,8 +172,7 @@ static fmu_instance* enter(fmi2Component c, const char* function, unsigned allow
   if ((fmu->state & allowed) == 0) {
     char states[256];
     state_list(allowed, states, sizeof states);
-    fail(fmu, "%s is not allowed in state %s; the standard allows it in: %s", function, state_name(fmu->state),
-         states);
+    fail(fmu, "%s is not allowed in state %s; the standard allows it in: %s", function, state_name(fmu->state), states);
     return NULL;
   }
   fmu_log(fmu, fmi2OK, "logCalls", "%s", function);
@@ -195,8 +194,10 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
     const char* category = categories[i];
     if (category == NULL || (strcmp(category, "logStatusError") != 0 && strcmp(category, "logStatusWarning") != 0 &&
                              strcmp(category, "logCalls") != 0))
-      return fail(fmu, "fmi2SetDebugLogging: unknown category '%.100s'; expected logStatusError, logStatusWarning or "
-                  "logCalls", category == NULL ? "(NULL)" : category);
+      return fail(fmu,
+                  "fmi2SetDebugLogging: unknown category '%.100s'; expected logStatusError, logStatusWarning or "
+                  "logCalls",
+                  category == NULL ? "(NULL)" : category);
   }
   fmu->logging_on = loggingOn != fmi2False;
   return fmi2OK;
@@ -276,7 +277,8 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     return NULL;
   }
   if (fmuGUID == NULL) {
-    fmu_log(&scratch, fmi2Error, "logStatusError", "fmi2Instantiate: fmuGUID is NULL; expected the GUID of "
+    fmu_log(&scratch, fmi2Error, "logStatusError",
+            "fmi2Instantiate: fmuGUID is NULL; expected the GUID of "
             "modelDescription.xml");
     return NULL;
   }
@@ -312,8 +314,8 @@ void fmi2FreeInstance(fmi2Component c) {
 
 /* ---- set-up, initialisation, termination -------------------------------- */
 
-fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
-                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance, fmi2Real startTime,
+                               fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
   (void)toleranceDefined;
   (void)tolerance;
   fmu_instance* fmu = enter(c, "fmi2SetupExperiment", FMU_INSTANTIATED);
@@ -383,8 +385,8 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
   if (fmu == NULL || check_arrays(fmu, "fmi2GetReal", vr, nvr, value) != fmi2OK) return fmi2Error;
   for (size_t i = 0; i < nvr; ++i)
     if (vr[i] >= fmu->n_reals)
-      return fail(fmu, "fmi2GetReal: unknown value reference %u (element %zu); this FMU's Reals are 0 to %zu", vr[i],
-                  i, fmu->n_reals - 1);
+      return fail(fmu, "fmi2GetReal: unknown value reference %u (element %zu); this FMU's Reals are 0 to %zu", vr[i], i,
+                  fmu->n_reals - 1);
   if (fmu->state == FMU_INITIALIZATION && update_outputs(fmu, "fmi2GetReal") != fmi2OK) return fmi2Error;
   for (size_t i = 0; i < nvr; ++i) value[i] = fmu->reals[vr[i]];
   return fmi2OK;
@@ -395,8 +397,8 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
   if (fmu == NULL || check_arrays(fmu, "fmi2SetReal", vr, nvr, value) != fmi2OK) return fmi2Error;
   for (size_t i = 0; i < nvr; ++i) {
     if (vr[i] >= fmu->n_reals)
-      return fail(fmu, "fmi2SetReal: unknown value reference %u (element %zu); this FMU's Reals are 0 to %zu", vr[i],
-                  i, fmu->n_reals - 1);
+      return fail(fmu, "fmi2SetReal: unknown value reference %u (element %zu); this FMU's Reals are 0 to %zu", vr[i], i,
+                  fmu->n_reals - 1);
     if (fmu->role[vr[i]] == FMU_VAR_OUTPUT)
       return fail(fmu, "fmi2SetReal: value reference %u is an output; only inputs and parameters can be set", vr[i]);
     if (fmu->role[vr[i]] == FMU_VAR_PARAMETER && fmu->state == FMU_STEP_COMPLETE)
@@ -477,8 +479,8 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
   return not_provided(c, "fmi2DeSerializeFMUstate", FMU_STATE_STATES, "canSerializeFMUstate");
 }
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
-                                        const fmi2ValueReference vKnown_ref[], size_t nKnown,
-                                        const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
+                                        const fmi2ValueReference vKnown_ref[], size_t nKnown, const fmi2Real dvKnown[],
+                                        fmi2Real dvUnknown[]) {
   (void)vUnknown_ref;
   (void)nUnknown;
   (void)vKnown_ref;
@@ -518,8 +520,10 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
                 currentCommunicationPoint, communicationStepSize);
   const double slack = 1e-9 * fmax(1.0, fabs(fmu->time));
   if (fabs(currentCommunicationPoint - fmu->time) > slack)
-    return fail(fmu, "fmi2DoStep: currentCommunicationPoint %.17g is not the instance's time %.17g (the end of the "
-                "last step)", currentCommunicationPoint, fmu->time);
+    return fail(fmu,
+                "fmi2DoStep: currentCommunicationPoint %.17g is not the instance's time %.17g (the end of the "
+                "last step)",
+                currentCommunicationPoint, fmu->time);
   char err[1024];
   if (fmu->kind->step(fmu, currentCommunicationPoint, communicationStepSize, err, sizeof err) != 0)
     return fail(fmu, "fmi2DoStep at t = %.17g: %s", currentCommunicationPoint, err);
@@ -534,7 +538,8 @@ fmi2Status fmi2CancelStep(fmi2Component c) {
   return fmu == NULL ? fmi2Error : fmi2OK;
 }
 
-#define FMU_STATUS_STATES (FMU_STEP_COMPLETE | FMU_STEP_IN_PROGRESS | FMU_STEP_FAILED | FMU_STEP_CANCELED | FMU_TERMINATED)
+#define FMU_STATUS_STATES \
+  (FMU_STEP_COMPLETE | FMU_STEP_IN_PROGRESS | FMU_STEP_FAILED | FMU_STEP_CANCELED | FMU_TERMINATED)
 static fmi2Status status_pointer(fmu_instance* fmu, const char* function, const void* value) {
   if (value == NULL) return fail(fmu, "%s: value is NULL", function);
   return fmi2OK;

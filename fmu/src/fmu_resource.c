@@ -81,15 +81,14 @@ int fmu_resource_path(const char* uri, const char* file, char* out, size_t outle
       }
       c = (char)(high * 16 + low);
       if (c == '\0') {
-        snprintf(err, errlen, "fmuResourceLocation '%.200s' encodes a NUL byte (%%00) at byte %zu; expected none",
-                 uri, (size_t)(p - uri));
+        snprintf(err, errlen, "fmuResourceLocation '%.200s' encodes a NUL byte (%%00) at byte %zu; expected none", uri,
+                 (size_t)(p - uri));
         return -1;
       }
       p += 2;
     }
     if (written + 1 >= FMU_MAX_PATH || written + 1 >= outlen) {
-      snprintf(err, errlen, "fmuResourceLocation's path is longer than %d bytes; expected a shorter one",
-               FMU_MAX_PATH);
+      snprintf(err, errlen, "fmuResourceLocation's path is longer than %d bytes; expected a shorter one", FMU_MAX_PATH);
       return -1;
     }
     out[written++] = c;

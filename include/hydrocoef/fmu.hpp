@@ -48,10 +48,10 @@ struct FmuVariable {
 struct FmuExportResult {
   std::string body;
   std::string surface;
-  std::string kind;              ///< the FMU's model kind: "surface"
-  std::string model_identifier;  ///< "hc_" + the surface name, [A-Za-z0-9_] kept, others '_' (64 bytes at most)
-  std::string guid;              ///< "hcrt-xxh64-" + the runtime file's content hash (16 hex digits)
-  std::string file;              ///< the .fmu written
+  std::string kind;                      ///< the FMU's model kind: "surface"
+  std::string model_identifier;          ///< "hc_" + the surface name, [A-Za-z0-9_] kept, others '_' (64 bytes at most)
+  std::string guid;                      ///< "hcrt-xxh64-" + the runtime file's content hash (16 hex digits)
+  std::string file;                      ///< the .fmu written
   std::uint64_t runtime_file_bytes = 0;  ///< resources/model.hcr
   std::uint64_t binary_bytes = 0;        ///< binaries/linux64/<modelIdentifier>.so
   std::uint64_t fmu_bytes = 0;           ///< the zip

@@ -121,8 +121,10 @@ FmuExportResult export_fmu(const Database& db, const FmuExportOptions& options) 
   out.binary_bytes = binary.size();
   out.fmu_bytes = zip.size();
   if (s.record.stale)
-    out.notes.push_back("the body's forces changed since this surface was built; rebuild it with hydrocoef surface "
-                        "rebuild " + s.record.name);
+    out.notes.push_back(
+        "the body's forces changed since this surface was built; rebuild it with hydrocoef surface "
+        "rebuild " +
+        s.record.name);
   return out;
 }
 

@@ -21,12 +21,19 @@ std::string attr(const std::string& text) { return escape::xml_text(text); }
 // The SI base-unit exponents of the unit texts hydrocoef writes (FMI 2.0
 // BaseUnit attributes, and factor for degrees); "" for a unit not known.
 std::string base_unit(const std::string& unit) {
-  static const std::map<std::string, std::string> known = {
-      {"m/s", R"(m="1" s="-1")"},          {"rad/s", R"(s="-1" rad="1")"},  {"rad", R"(rad="1")"},
-      {"m", R"(m="1")"},                   {"s", R"(s="1")"},               {"N", R"(kg="1" m="1" s="-2")"},
-      {"N m", R"(kg="1" m="2" s="-2")"},   {"N*m", R"(kg="1" m="2" s="-2")"}, {"kg", R"(kg="1")"},
-      {"m/s^2", R"(m="1" s="-2")"},        {"rad/s^2", R"(s="-2" rad="1")"}, {"1", ""},
-      {"deg", R"(rad="1" factor="0.017453292519943295")"}};
+  static const std::map<std::string, std::string> known = {{"m/s", R"(m="1" s="-1")"},
+                                                           {"rad/s", R"(s="-1" rad="1")"},
+                                                           {"rad", R"(rad="1")"},
+                                                           {"m", R"(m="1")"},
+                                                           {"s", R"(s="1")"},
+                                                           {"N", R"(kg="1" m="1" s="-2")"},
+                                                           {"N m", R"(kg="1" m="2" s="-2")"},
+                                                           {"N*m", R"(kg="1" m="2" s="-2")"},
+                                                           {"kg", R"(kg="1")"},
+                                                           {"m/s^2", R"(m="1" s="-2")"},
+                                                           {"rad/s^2", R"(s="-2" rad="1")"},
+                                                           {"1", ""},
+                                                           {"deg", R"(rad="1" factor="0.017453292519943295")"}};
   const auto found = known.find(unit);
   return found == known.end() ? std::string() : found->second;
 }
@@ -110,8 +117,10 @@ std::string fmu_model_description(const FmuModelSpec& model) {
     unknowns << "\"/>\n";
   }
   if (!unknowns.str().empty())
-    out << "    <Outputs>\n" << unknowns.str() << "    </Outputs>\n"
-        << "    <InitialUnknowns>\n" << unknowns.str() << "    </InitialUnknowns>\n";
+    out << "    <Outputs>\n"
+        << unknowns.str() << "    </Outputs>\n"
+        << "    <InitialUnknowns>\n"
+        << unknowns.str() << "    </InitialUnknowns>\n";
   out << "  </ModelStructure>\n</fmiModelDescription>\n";
   return out.str();
 }

@@ -19,8 +19,8 @@ struct FmuVariableSpec {
   std::string variability;  ///< continuous, fixed, ...
   std::string unit;         ///< "" for none
   std::string description;
-  std::optional<double> start;             ///< inputs and parameters
-  std::vector<std::uint32_t> dependencies; ///< outputs: the value references of the inputs they depend on
+  std::optional<double> start;              ///< inputs and parameters
+  std::vector<std::uint32_t> dependencies;  ///< outputs: the value references of the inputs they depend on
 };
 
 struct FmuModelSpec {
@@ -29,7 +29,7 @@ struct FmuModelSpec {
   std::string guid;
   std::string description;
   std::string generation_tool;
-  std::string generation_time;  ///< UTC, ISO 8601
+  std::string generation_time;             ///< UTC, ISO 8601
   std::vector<FmuVariableSpec> variables;  ///< in value-reference order
 };
 

@@ -55,9 +55,9 @@ std::string zip_stored(const std::vector<ZipEntry>& entries) {
     const auto name_length = static_cast<std::uint32_t>(entry.name.size());
     // Local file header.
     put32(out, 0x04034b50u);
-    put16(out, 20);  // version needed: 2.0
+    put16(out, 20);      // version needed: 2.0
     put16(out, 0x0800);  // flags: UTF-8 names
-    put16(out, 0);   // method: stored
+    put16(out, 0);       // method: stored
     put16(out, kDosTime);
     put16(out, kDosDate);
     put32(out, crc);

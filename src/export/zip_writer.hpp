@@ -12,9 +12,9 @@
 namespace hydrocoef {
 
 struct ZipEntry {
-  std::string name;        ///< path inside the archive, '/'-separated
-  std::string_view bytes;  ///< the content (not owned)
-  bool executable = false; ///< Unix mode 0755 instead of 0644
+  std::string name;         ///< path inside the archive, '/'-separated
+  std::string_view bytes;   ///< the content (not owned)
+  bool executable = false;  ///< Unix mode 0755 instead of 0644
 };
 
 /// The archive's bytes. InputError when an entry's name is empty, absolute,

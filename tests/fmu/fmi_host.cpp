@@ -146,16 +146,21 @@ class XmlReader {
       const auto semicolon = s_.find(';', at_);
       if (semicolon == std::string::npos || semicolon - at_ > 12) fail("an unterminated entity");
       const std::string entity = s_.substr(at_ + 1, semicolon - at_ - 1);
-      if (entity == "lt") out += '<';
-      else if (entity == "gt") out += '>';
-      else if (entity == "amp") out += '&';
-      else if (entity == "quot") out += '"';
-      else if (entity == "apos") out += '\'';
+      if (entity == "lt")
+        out += '<';
+      else if (entity == "gt")
+        out += '>';
+      else if (entity == "amp")
+        out += '&';
+      else if (entity == "quot")
+        out += '"';
+      else if (entity == "apos")
+        out += '\'';
       else if (entity.size() > 1 && entity[0] == '#') {
         const bool hex = entity[1] == 'x';
         const std::string digits = entity.substr(hex ? 2 : 1);
-        if (digits.empty() || digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") !=
-                                  std::string::npos)
+        if (digits.empty() ||
+            digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") != std::string::npos)
           fail("a malformed character reference &" + entity + ";");
         const unsigned long code = std::stoul(digits, nullptr, hex ? 16 : 10);
         if (code == 0 || code > 0x10ffff || (code < 0x20 && code != 9 && code != 10 && code != 13))
@@ -296,8 +301,7 @@ std::map<std::string, std::string> unzip_stored(const std::string& bytes) {
 
 const std::string& XmlElement::at(const std::string& attribute) const {
   const auto found = attributes.find(attribute);
-  if (found == attributes.end())
-    throw std::runtime_error("XML: <" + name + "> has no attribute " + attribute);
+  if (found == attributes.end()) throw std::runtime_error("XML: <" + name + "> has no attribute " + attribute);
   return found->second;
 }
 
@@ -422,8 +426,7 @@ FmiHost::FmiHost(const std::filesystem::path& fmu, const std::filesystem::path& 
   resolve(f.GetBooleanStatus, "fmi2GetBooleanStatus");
   resolve(f.GetStringStatus, "fmi2GetStringStatus");
   if (std::strcmp(f.GetVersion(), fmi2Version) != 0 || std::strcmp(f.GetTypesPlatform(), fmi2TypesPlatform) != 0)
-    throw std::runtime_error(std::string("the binary is FMI ") + f.GetVersion() + ", platform " +
-                             f.GetTypesPlatform());
+    throw std::runtime_error(std::string("the binary is FMI ") + f.GetVersion() + ", platform " + f.GetTypesPlatform());
 }
 
 FmiHost::~FmiHost() {
@@ -431,8 +434,8 @@ FmiHost::~FmiHost() {
   if (library_ != nullptr) dlclose(library_);
 }
 
-void FmiHost::logger(fmi2ComponentEnvironment environment, fmi2String instance, fmi2Status status,
-                     fmi2String category, fmi2String message, ...) {
+void FmiHost::logger(fmi2ComponentEnvironment environment, fmi2String instance, fmi2Status status, fmi2String category,
+                     fmi2String message, ...) {
   auto* host = static_cast<FmiHost*>(environment);
   char text[4096];
   va_list arguments;
@@ -443,11 +446,16 @@ void FmiHost::logger(fmi2ComponentEnvironment environment, fmi2String instance, 
 }
 
 std::string FmiHost::state() const {
-  static const std::map<unsigned, std::string> names = {
-      {kStartAndEnd, "startAndEnd"},      {kInstantiated, "instantiated"}, {kInitialization, "initializationMode"},
-      {kStepComplete, "stepComplete"},    {kStepInProgress, "stepInProgress"}, {kStepFailed, "stepFailed"},
-      {kStepCanceled, "stepCanceled"},    {kTerminated, "terminated"},     {kError, "error"},
-      {kFatal, "fatal"}};
+  static const std::map<unsigned, std::string> names = {{kStartAndEnd, "startAndEnd"},
+                                                        {kInstantiated, "instantiated"},
+                                                        {kInitialization, "initializationMode"},
+                                                        {kStepComplete, "stepComplete"},
+                                                        {kStepInProgress, "stepInProgress"},
+                                                        {kStepFailed, "stepFailed"},
+                                                        {kStepCanceled, "stepCanceled"},
+                                                        {kTerminated, "terminated"},
+                                                        {kError, "error"},
+                                                        {kFatal, "fatal"}};
   return names.at(state_);
 }
 
@@ -535,14 +543,14 @@ fmi2Status FmiHost::terminate() {
 }
 
 fmi2Status FmiHost::reset() {
-  allow("fmi2Reset", kInstantiated | kInitialization | kStepComplete | kStepFailed | kStepCanceled | kTerminated |
-                         kError);
+  allow("fmi2Reset",
+        kInstantiated | kInitialization | kStepComplete | kStepFailed | kStepCanceled | kTerminated | kError);
   return after(functions_.Reset(component_), kInstantiated);
 }
 
 void FmiHost::free_instance() {
-  allow("fmi2FreeInstance", kInstantiated | kInitialization | kStepComplete | kStepFailed | kStepCanceled |
-                                kTerminated | kError);
+  allow("fmi2FreeInstance",
+        kInstantiated | kInitialization | kStepComplete | kStepFailed | kStepCanceled | kTerminated | kError);
   functions_.FreeInstance(component_);
   component_ = nullptr;
   state_ = kStartAndEnd;

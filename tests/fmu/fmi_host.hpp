@@ -157,8 +157,8 @@ class FmiHost {
   enum State : unsigned;
   void allow(const char* function, unsigned allowed) const;
   fmi2Status after(fmi2Status status, unsigned next);
-  static void logger(fmi2ComponentEnvironment environment, fmi2String instance, fmi2Status status,
-                     fmi2String category, fmi2String message, ...);
+  static void logger(fmi2ComponentEnvironment environment, fmi2String instance, fmi2Status status, fmi2String category,
+                     fmi2String message, ...);
 
   std::filesystem::path dir_;
   ModelDescription model_;

@@ -71,15 +71,40 @@ TEST(FmuBinary, NeedsLibcAndLibmOnlyAndExportsTheFmiFunctionsAlone) {
     libc = libc || needed == "libc.so.6";
   }
   EXPECT_TRUE(libc);
-  const std::set<std::string> expected = {
-      "fmi2GetTypesPlatform", "fmi2GetVersion", "fmi2SetDebugLogging", "fmi2Instantiate", "fmi2FreeInstance",
-      "fmi2SetupExperiment", "fmi2EnterInitializationMode", "fmi2ExitInitializationMode", "fmi2Terminate",
-      "fmi2Reset", "fmi2GetReal", "fmi2GetInteger", "fmi2GetBoolean", "fmi2GetString", "fmi2SetReal",
-      "fmi2SetInteger", "fmi2SetBoolean", "fmi2SetString", "fmi2GetFMUstate", "fmi2SetFMUstate",
-      "fmi2FreeFMUstate", "fmi2SerializedFMUstateSize", "fmi2SerializeFMUstate", "fmi2DeSerializeFMUstate",
-      "fmi2GetDirectionalDerivative", "fmi2SetRealInputDerivatives", "fmi2GetRealOutputDerivatives", "fmi2DoStep",
-      "fmi2CancelStep", "fmi2GetStatus", "fmi2GetRealStatus", "fmi2GetIntegerStatus", "fmi2GetBooleanStatus",
-      "fmi2GetStringStatus"};
+  const std::set<std::string> expected = {"fmi2GetTypesPlatform",
+                                          "fmi2GetVersion",
+                                          "fmi2SetDebugLogging",
+                                          "fmi2Instantiate",
+                                          "fmi2FreeInstance",
+                                          "fmi2SetupExperiment",
+                                          "fmi2EnterInitializationMode",
+                                          "fmi2ExitInitializationMode",
+                                          "fmi2Terminate",
+                                          "fmi2Reset",
+                                          "fmi2GetReal",
+                                          "fmi2GetInteger",
+                                          "fmi2GetBoolean",
+                                          "fmi2GetString",
+                                          "fmi2SetReal",
+                                          "fmi2SetInteger",
+                                          "fmi2SetBoolean",
+                                          "fmi2SetString",
+                                          "fmi2GetFMUstate",
+                                          "fmi2SetFMUstate",
+                                          "fmi2FreeFMUstate",
+                                          "fmi2SerializedFMUstateSize",
+                                          "fmi2SerializeFMUstate",
+                                          "fmi2DeSerializeFMUstate",
+                                          "fmi2GetDirectionalDerivative",
+                                          "fmi2SetRealInputDerivatives",
+                                          "fmi2GetRealOutputDerivatives",
+                                          "fmi2DoStep",
+                                          "fmi2CancelStep",
+                                          "fmi2GetStatus",
+                                          "fmi2GetRealStatus",
+                                          "fmi2GetIntegerStatus",
+                                          "fmi2GetBooleanStatus",
+                                          "fmi2GetStringStatus"};
   EXPECT_EQ(expected.size(), 34u);
   EXPECT_EQ(dynamic.defined, expected);
   for (const std::string& symbol : dynamic.undefined) {

@@ -80,8 +80,7 @@ TEST_F(FmuCalls, DoStepBeforeInitialisationIsRefused) {
 TEST_F(FmuCalls, DoStepInInitialisationModeIsRefused) {
   ASSERT_EQ(host_->instantiate(), fmi2OK);
   ASSERT_EQ(host_->enter_initialization_mode(), fmi2OK);
-  expect_refused(host_->raw().DoStep(host_->component(), 0.0, 0.1, fmi2True),
-                 {"fmi2DoStep", "initializationMode"});
+  expect_refused(host_->raw().DoStep(host_->component(), 0.0, 0.1, fmi2True), {"fmi2DoStep", "initializationMode"});
 }
 
 TEST_F(FmuCalls, SettingAnOutputIsRefused) {

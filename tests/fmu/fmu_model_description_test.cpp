@@ -168,7 +168,8 @@ TEST(FmuModelIdentifier, IsACIdentifierDerivedFromTheName) {
 
 TEST(FmuModelDescription, RefusesVariablesSharingAName) {
   FmuModelSpec spec;
-  spec.variables = {{"X", 0, "input", "continuous", "N", "", 0.0, {}}, {"X", 1, "output", "continuous", "N", "", {}, {0}}};
+  spec.variables = {{"X", 0, "input", "continuous", "N", "", 0.0, {}},
+                    {"X", 1, "output", "continuous", "N", "", {}, {0}}};
   EXPECT_THROW(fmu_model_description(spec), InputError);
 }
 
@@ -198,8 +199,7 @@ TEST(FmuHostReaders, DamagedZipsAreRefused) {
       // A change the reader accepts (time, attributes, version) leaves the content intact.
       ASSERT_EQ(files.size(), 1u) << at;
       EXPECT_EQ(files.begin()->second, "hello") << at;
-    } catch (const std::runtime_error&) {
-    }
+    } catch (const std::runtime_error&) {}
   }
   EXPECT_THROW(zip_stored({{"../x", content}}), InputError);
   EXPECT_THROW(zip_stored({{"/x", content}}), InputError);

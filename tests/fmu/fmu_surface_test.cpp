@@ -183,8 +183,8 @@ TEST(FmuSurfaceThreads, InstancesSteppedInThreadsAtOnceGiveTheirOwnNumbers) {
   for (int k = 0; k < 4; ++k) {
     threads.emplace_back([&, k] {
       const std::string name = "thread" + std::to_string(k);
-      const fmi2Component c =
-          f.Instantiate(name.c_str(), fmi2CoSimulation, guid.c_str(), uri.c_str(), host.callbacks(), fmi2False, fmi2False);
+      const fmi2Component c = f.Instantiate(name.c_str(), fmi2CoSimulation, guid.c_str(), uri.c_str(), host.callbacks(),
+                                            fmi2False, fmi2False);
       if (c == nullptr || f.EnterInitializationMode(c) != fmi2OK || f.ExitInitializationMode(c) != fmi2OK) return;
       std::mt19937_64 random(1000 + k);
       std::uniform_real_distribution<double> u_of(-0.1, 0.6), v_of(-0.3, 0.3);
