@@ -32,6 +32,7 @@ void add_surface_command(CLI::App& app, const GlobalOptions& global);
 void add_query_command(CLI::App& app, const GlobalOptions& global);
 void add_export_command(CLI::App& app, const GlobalOptions& global);
 void add_export_gazebo_command(CLI::App& app, const GlobalOptions& global);
+void add_export_fmu_command(CLI::App& app, const GlobalOptions& global);
 void add_plot_command(CLI::App& app, const GlobalOptions& global);
 void add_report_command(CLI::App& app, const GlobalOptions& global);
 void add_suggest_command(CLI::App& app, const GlobalOptions& global);

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   cli::add_scale_command(app, global);
   cli::add_export_command(app, global);
   cli::add_export_gazebo_command(app, global);
+  cli::add_export_fmu_command(app, global);
   cli::add_plot_command(app, global);
   cli::add_report_command(app, global);
 

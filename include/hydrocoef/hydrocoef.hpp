@@ -23,6 +23,7 @@
 //   hydrocoef/exports.hpp      export_surface, export_gazebo, export_derivatives,
 //                              export_forcecoeffs: a gridded surface, a body's fits, derivative
 //                              models or runs (OpenFOAM forceCoeffs) written for another tool
+//   hydrocoef/fmu.hpp          export_fmu: a gridded surface as an FMI 2.0 Co-Simulation FMU
 //   hydrocoef/analysis.hpp     mesh studies (grid_convergence), forced oscillation (analyse_pmm,
 //                              added_mass_matrix, ...), where to run CFD next (suggest_runs)
 //   hydrocoef/derivatives.hpp  derivative models of several variables: fit_derivative_model,
@@ -56,6 +57,7 @@
 #include "hydrocoef/derivatives.hpp"
 #include "hydrocoef/error.hpp"
 #include "hydrocoef/exports.hpp"
+#include "hydrocoef/fmu.hpp"
 #include "hydrocoef/integrate.hpp"
 #include "hydrocoef/plot.hpp"
 #include "hydrocoef/pmm_derivatives.hpp"

@@ -974,6 +974,31 @@ class PmmDerivatives:
 def pmm_derivatives(database: Database, body: str, *, runs: Sequence[int] | None = None, speed: float | None = None,
                     length: float | None = None, density: float | None = None,
                     prime: bool = False) -> PmmDerivatives: ...
+# ---- FMUs (hydrocoef export-fmu) ----
+class FmuVariable:
+    value_reference: int
+    name: str
+    causality: str
+    unit: str
+    start: float | None
+    description: str
+
+class FmuExportResult:
+    body: str
+    surface: str
+    kind: str
+    model_identifier: str
+    guid: str
+    file: str
+    runtime_file_bytes: int
+    binary_bytes: int
+    fmu_bytes: int
+    variables: list[FmuVariable]
+    notes: list[str]
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+
+def export_fmu(database: Database, body: str, *, surface: str, output: str) -> FmuExportResult: ...
 # ---- derivative exports (hydrocoef derivatives export) and scaling (hydrocoef scale) ----
 class DerivativeExportResult:
     database: str

@@ -47,6 +47,7 @@ void register_reference(py::module_& m);
 void register_derivatives(py::module_& m);
 void register_pmm_derivatives(py::module_& m);
 void register_derivative_exports(py::module_& m);
+void register_fmu(py::module_& m);
 
 /// The Database of a method's self. pybind11 would run a method on an
 /// instance whose C++ object was never made on uninitialised memory; this

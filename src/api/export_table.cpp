@@ -2,6 +2,7 @@
 // gridded surface written for another tool (src/export/), and what the
 // command prints about it.
 #include "src/api/internal.hpp"
+#include "src/api/runtime_file.hpp"
 #include "src/api/surface_report.hpp"
 
 #include <sstream>
@@ -63,10 +64,10 @@ std::string runtime_source(const SurfaceRecord& record) {
   return "the stored grid table, as hydrocoef evaluates it";
 }
 
-// The runtime file: `name` and options.surfaces, all of one body.
-void write_runtime_file(const Database& db, const TableExportOptions& options, std::vector<StoredSurface>& stored) {
-  std::vector<std::string> names{options.name};
-  names.insert(names.end(), options.surfaces.begin(), options.surfaces.end());
+}  // namespace
+
+std::string runtime_file_of(const Database& db, const std::vector<std::string>& names, const RuntimeTexts& extra,
+                            std::vector<StoredSurface>& stored) {
   {
     auto& impl = Database::Access::impl(db);
     const std::lock_guard lock(impl.mutex);
@@ -92,11 +93,21 @@ void write_runtime_file(const Database& db, const TableExportOptions& options, s
                                                       : "none"}}));
     listed += (listed.empty() ? "" : ",") + s.record.name;
   }
-  const RuntimeTexts model = runtime_model_texts({{"database", location_without_credentials(db.path())},
-                                                  {"body", stored.front().record.body},
-                                                  {"created_at", utc_timestamp_now()},
-                                                  {"surfaces", listed}});
-  write_file_atomically(options.output, runtime_file_bytes(model, surfaces));
+  RuntimeTexts given = {{"database", location_without_credentials(db.path())},
+                        {"body", stored.front().record.body},
+                        {"created_at", utc_timestamp_now()},
+                        {"surfaces", listed}};
+  given.insert(given.end(), extra.begin(), extra.end());
+  return runtime_file_bytes(runtime_model_texts(std::move(given)), surfaces);
+}
+
+namespace {
+
+// The runtime file: `name` and options.surfaces, all of one body.
+void write_runtime_file(const Database& db, const TableExportOptions& options, std::vector<StoredSurface>& stored) {
+  std::vector<std::string> names{options.name};
+  names.insert(names.end(), options.surfaces.begin(), options.surfaces.end());
+  write_file_atomically(options.output, runtime_file_of(db, names, {}, stored));
 }
 
 }  // namespace
