@@ -34,8 +34,12 @@ case "$kind" in
   # -O2: what Debian builds its packages with (the .deb is made from this
   # build), and an eighth less compile time than CMake's Release -O3.
   # --as-needed: the CLI loads only the shared libraries it uses.
+  # Clang: with the library's precompiled header (Clang only) it compiles the
+  # library in two thirds of GCC's CPU time (433 s against 660 s here), and
+  # the heavy tests run as fast.
   heavy)   dir="$root/build/heavy"; flags=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG"
                                            "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG" -DCMAKE_EXE_LINKER_FLAGS=-Wl,--as-needed
+                                           -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
                                            -DHYDROCOEF_BUILD_BENCH=OFF
                                            -DHYDROCOEF_TEST_SET=heavy) ;;
   *) echo "usage: scripts/build.sh [release|test|heavy]" >&2; exit 2 ;;
@@ -50,9 +54,13 @@ if command -v ccache >/dev/null 2>&1; then
   flags+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(dirname "$root")} CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
 fi
-# A test build configured before it was a Clang build with the fuzz targets
-# is made again (a build cannot change its compiler).
+# A test build configured before it was a Clang build with the fuzz targets,
+# or a heavy build configured before it was a Clang build, is made again (a
+# build cannot change its compiler).
 if [[ $kind == test && -f "$dir/CMakeCache.txt" ]] && ! grep -q '^HYDROCOEF_FUZZ_SMOKE:BOOL=ON' "$dir/CMakeCache.txt"; then
+  rm -rf "$dir"
+fi
+if [[ $kind == heavy && -f "$dir/CMakeCache.txt" ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++$' "$dir/CMakeCache.txt"; then
   rm -rf "$dir"
 fi
 if [[ ! -f "$dir/CMakeCache.txt" ]]; then
