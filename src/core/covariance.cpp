@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/dense_decompositions.hpp"
+
 namespace hydrocoef {
 
 std::optional<std::string> covariance_problem(std::span<const double> covariance, std::size_t k) {
@@ -23,7 +25,7 @@ std::optional<std::string> covariance_problem(std::span<const double> covariance
                std::to_string(i) + "] that differ, expected a symmetric matrix";
   const Eigen::Map<const Eigen::MatrixXd> c(covariance.data(), static_cast<Eigen::Index>(k),
                                             static_cast<Eigen::Index>(k));
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(c, Eigen::EigenvaluesOnly);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen = symmetric_eigen(c, Eigen::EigenvaluesOnly);
   if (k > 0 && eigen.eigenvalues().minCoeff() < -1e-9 * std::max(largest, 1e-300))
     return "found the eigenvalue " + std::to_string(eigen.eigenvalues().minCoeff()) +
            ", expected a positive semi-definite matrix (variances cannot be negative)";

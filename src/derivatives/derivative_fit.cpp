@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/surface/gp_surface.hpp"
@@ -137,7 +138,7 @@ DerivativeFit fit_derivatives(std::string_view output, const std::vector<Term>& 
                               const std::vector<DerivativeRun>& runs, const DerivativeFitOptions& options) {
   DesignMatrix design = make_design(output, terms, runs, options.use_uncertainties);
   const std::size_t n = runs.size(), m = terms.size();
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(design.scaled, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd = jacobi_svd(design.scaled, Eigen::ComputeThinU | Eigen::ComputeThinV);
   refuse_dependent_terms(output, terms, runs, svd);
 
   const Eigen::VectorXd& s = svd.singularValues();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/text.hpp"
@@ -392,7 +393,7 @@ ScaledLaw scale_damping_law(const DampingLawSpec& spec, std::span<const double> 
   Eigen::VectorXd norms = design.colwise().norm().transpose();
   for (Eigen::Index k = 0; k < cols; ++k)
     if (norms(k) > 0.0) design.col(k) /= norms(k);
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr = col_piv_householder_qr(design);
   qr.setThreshold(1e-10);
   if (qr.rank() < cols)
     throw InputError("scaling a law: the " + std::to_string(runs.size()) + " sample speeds cannot tell the terms " +

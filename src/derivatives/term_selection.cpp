@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 
 namespace hydrocoef {
@@ -48,7 +49,7 @@ std::optional<Eigen::VectorXd> solve(const Eigen::MatrixXd& A, const Eigen::Vect
   const Eigen::VectorXd norms = A.colwise().norm().transpose();
   if ((norms.array() == 0.0).any() || A.rows() < A.cols()) return std::nullopt;
   const Eigen::MatrixXd unit = A * norms.cwiseInverse().asDiagonal();
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(unit, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd = jacobi_svd(unit, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd& s = svd.singularValues();
   if (!(s(s.size() - 1) > kRankTolerance * s(0))) return std::nullopt;
   const Eigen::VectorXd x = svd.matrixV() * (svd.matrixU().transpose() * b).cwiseQuotient(s);
@@ -58,7 +59,7 @@ std::optional<Eigen::VectorXd> solve(const Eigen::MatrixXd& A, const Eigen::Vect
 // Leave-one-out from one fit: the prediction error of run i left out is
 // e_i / (1 - h_ii), h_ii = ||U_i||^2 with U the thin left singular vectors.
 CvScore leave_one_out(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd = jacobi_svd(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd& s = svd.singularValues();
   if (!(s(s.size() - 1) > kRankTolerance * s(0))) return {};
   const Eigen::VectorXd x = svd.matrixV() * (svd.matrixU().transpose() * b).cwiseQuotient(s);
@@ -129,7 +130,7 @@ TermSelection select_terms(std::string_view output, const std::vector<Term>& can
                            const std::vector<DerivativeRun>& runs, const TermSelectionOptions& options) {
   const DesignMatrix design = make_design(output, candidates, runs, options.use_uncertainties);
   refuse_dependent_terms(output, candidates, runs,
-                         Eigen::JacobiSVD<Eigen::MatrixXd>(design.scaled, Eigen::ComputeThinU | Eigen::ComputeThinV));
+                         jacobi_svd(design.scaled, Eigen::ComputeThinU | Eigen::ComputeThinV));
   const std::size_t n = runs.size(), m = candidates.size();
   const std::string law = "the law for " + printable_text(output, 40);
   if (options.folds == 0 && n < m + 1)

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/dynamics/json_input.hpp"
@@ -23,7 +24,7 @@ std::string notes_text(const Json& value, const std::string& file) {
 }
 
 std::string smallest_eigenvalue_text(const Eigen::MatrixXd& m) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (m + m.transpose()));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver = symmetric_eigen(0.5 * (m + m.transpose()));
   return std::to_string(solver.eigenvalues().minCoeff());
 }
 

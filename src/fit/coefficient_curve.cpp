@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/surface/pchip.hpp"
@@ -61,7 +62,7 @@ std::vector<double> fit_polynomial(const std::vector<double>& levels, const std:
   const Eigen::VectorXd column_norm = design.colwise().norm().transpose();
   const Eigen::VectorXd column_scale = (column_norm.array() > 0.0).select(column_norm, 1.0);
   const Eigen::MatrixXd scaled = design * column_scale.cwiseInverse().asDiagonal();
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(scaled);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr = col_piv_householder_qr(scaled);
   qr.setThreshold(1e-12);
   if (qr.rank() < cols)
     throw InputError("coefficient curve '" + term + "': a degree-" + std::to_string(degree) +

@@ -13,6 +13,7 @@
 #include <string>
 #include <utility>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/text.hpp"
@@ -160,7 +161,7 @@ ScaledSolution solve(const Eigen::MatrixXd& scaled_design, std::span<const doubl
 // Terms that take part in a (near) null vector of the scaled design matrix;
 // empty when the columns are independent.
 std::vector<std::size_t> dependent_terms(const Eigen::MatrixXd& scaled_design) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled_design, Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd = jacobi_svd(scaled_design, Eigen::ComputeFullV);
   const Eigen::VectorXd& sigma = svd.singularValues();
   const Eigen::Index k = scaled_design.cols();
   std::vector<std::size_t> which;

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/pmm/imposed_motion.hpp"
@@ -248,7 +249,7 @@ AddedMassAssembly assemble_added_mass(const std::string& body, const std::vector
     for (std::size_t a = 0; a < dofs.size(); ++a)
       for (std::size_t b = 0; b < dofs.size(); ++b)
         sub(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = out.added_mass(dofs[a], dofs[b]);
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(sub, Eigen::EigenvaluesOnly);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen = symmetric_eigen(sub, Eigen::EigenvaluesOnly);
     out.smallest_eigenvalue = eigen.eigenvalues().minCoeff();
     const Eigen::SelfAdjointEigenSolver<Matrix6> whole(out.added_mass, Eigen::EigenvaluesOnly);
     const double scale = out.added_mass.cwiseAbs().maxCoeff();

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/run.hpp"
@@ -274,7 +275,7 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
     const WindowFit basis_only = fit_window(t, phases, {}, options.harmonics, boundary(k0), boundary(k_end), false);
     const Eigen::MatrixXd normal = basis_only.normal / basis_only.normal(0, 0);
     const double smallest =
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(normal, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+        symmetric_eigen(normal, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
     if (!(smallest >= 0.25))
       throw InputError("forced oscillation: the samples do not resolve " + std::to_string(options.harmonics) +
                        (options.harmonics == 1 ? " harmonic" : " harmonics") + " of the period " +
@@ -388,7 +389,7 @@ QuadraticDamping fit_quadratic_damping(std::span<const double> amplitudes, doubl
     X(static_cast<Eigen::Index>(i), 1) = w * factor * amplitudes[i];
     y(static_cast<Eigen::Index>(i)) = w * equivalent_damping[i];
   }
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr = col_piv_householder_qr(X);
   if (qr.rank() < 2) throw InputError("quadratic damping: the amplitudes must differ");
   const Eigen::Vector2d beta = qr.solve(y);
   QuadraticDamping out;

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "src/core/dense_decompositions.hpp"
 #include "src/core/error.hpp"
 #include "src/core/numbers.hpp"
 #include "src/core/text.hpp"
@@ -141,7 +142,7 @@ Eigen::MatrixXd polynomial_matrix(const std::vector<double>& centers, std::size_
     for (std::size_t j = 0; j < terms; ++j)
       polynomial(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = p[j];
   }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(polynomial);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd = jacobi_svd(polynomial);
   const Eigen::VectorXd& sigma = svd.singularValues();
   std::size_t rank = 0;
   for (Eigen::Index j = 0; j < sigma.size(); ++j)
