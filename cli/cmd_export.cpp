@@ -21,8 +21,8 @@ struct ExportArgs {
 void run_export(ExportArgs& args, const GlobalOptions& global) {
   const bool runs = args.options.format == "openfoam-forcecoeffs";
   const auto& r = args.runs;
-  if (!runs && (!r.body.empty() || !r.where.empty() || !r.exclude_runs.empty() || !r.area.empty() ||
-                !r.axes.empty() || r.precision != 16 || r.mean_only))
+  if (!runs && (!r.body.empty() || !r.where.empty() || !r.exclude_runs.empty() || !r.area.empty() || !r.axes.empty() ||
+                r.precision != 16 || r.mean_only))
     throw hydrocoef::InputError(
         "--body, --where, --exclude-run, --area, --axes, --precision and --mean-only apply to --format "
         "openfoam-forcecoeffs only (got --format " +
@@ -60,11 +60,13 @@ void add_export_command(CLI::App& app, const GlobalOptions& global) {
       "or, with no NAME, openfoam-forcecoeffs (the selected runs as OpenFOAM forceCoeffs files, one per run in "
       "the folder -o, in the case's axes)");
   command->add_option("name", options.name, "Surface name (not with openfoam-forcecoeffs)");
-  command->add_option("--format", options.format,
-                      "csv, csv-wide, json, c, mat, jsbsim, vtk, daveml, runtime or openfoam-forcecoeffs")
+  command
+      ->add_option("--format", options.format,
+                   "csv, csv-wide, json, c, mat, jsbsim, vtk, daveml, runtime or openfoam-forcecoeffs")
       ->required();
-  command->add_option("-o,--output", options.output,
-                      "File to write (written whole or not at all); openfoam-forcecoeffs: the folder")
+  command
+      ->add_option("-o,--output", options.output,
+                   "File to write (written whole or not at all); openfoam-forcecoeffs: the folder")
       ->required();
   command->add_flag("--float", options.single_precision, "C header: float tables and arithmetic (microcontrollers)");
   command->add_option("--identifier", options.identifier,

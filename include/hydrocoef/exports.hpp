@@ -304,15 +304,15 @@ struct ForceCoeffsExportOptions {
 struct ForceCoeffsExportRun {
   std::int64_t id = 0;
   std::string body;
-  std::string file;  ///< the file written
-  std::string axes;  ///< the case's axes used ("-x,y,-z": CFD axes to body axes)
+  std::string file;       ///< the file written
+  std::string axes;       ///< the case's axes used ("-x,y,-z": CFD axes to body axes)
   std::string rows_from;  ///< "history" (the stored trace, every sample) or "stored forces" (one row)
   std::size_t rows = 0;
-  double rho = 0.0;        ///< [kg/m^3] (give it to import as --rho)
-  double mag_u_inf = 0.0;  ///< magUInf = |(u, v, w)| [m/s]
-  double l_ref = 0.0;      ///< lRef [m]
-  double a_ref = 0.0;      ///< Aref [m^2]
-  std::string area_name;   ///< the body's area used as Aref
+  double rho = 0.0;              ///< [kg/m^3] (give it to import as --rho)
+  double mag_u_inf = 0.0;        ///< magUInf = |(u, v, w)| [m/s]
+  double l_ref = 0.0;            ///< lRef [m]
+  double a_ref = 0.0;            ///< Aref [m^2]
+  std::string area_name;         ///< the body's area used as Aref
   std::array<double, 3> cofr{};  ///< [m], the case's axes
   /// Cd, Cs, Cl, CmRoll, CmPitch, CmYaw of the last row, as written.
   std::array<double, 6> last_coefficients{};

@@ -102,8 +102,8 @@ Reference reference_of(const std::string& body, const std::map<std::string, Body
                                 "--length L' (and a reference area with --area NAME=A)");
   const BodyReferenceRecord& record = found->second;
   if (record.areas.empty())
-    throw InputError(where, "body " + quoted(body) + " has no reference area (forceCoeffs' Aref)" + fix +
-                                "--area NAME=A'");
+    throw InputError(where,
+                     "body " + quoted(body) + " has no reference area (forceCoeffs' Aref)" + fix + "--area NAME=A'");
   const std::string name = area.empty() ? record.default_area : area;
   std::string names;
   for (const auto& [n, value] : record.areas) names += (names.empty() ? "" : ", ") + quoted(n);
@@ -112,8 +112,8 @@ Reference reference_of(const std::string& body, const std::map<std::string, Body
                                 ") and no default; choose one with --area NAME");
   const auto a = record.areas.find(name);
   if (a == record.areas.end())
-    throw InputError(where, "--area " + quoted(name) + ": body " + quoted(body) + " has no such area (areas: " +
-                                names + ")");
+    throw InputError(where,
+                     "--area " + quoted(name) + ": body " + quoted(body) + " has no such area (areas: " + names + ")");
   return {name, a->second, *record.length, record.moment_point_b};
 }
 
@@ -150,8 +150,9 @@ ForceCoeffsExportResult export_forcecoeffs(const Database& db, const ForceCoeffs
     const Reference ref = reference_of(run.key.body, records, options.area, where);
     const double rho = run.fluid.density_kg_m3.value_or(kNaN);
     if (!std::isfinite(rho))
-      throw InputError(where, run_name(run.id) + " has no density, and forceCoeffs' coefficients need it; import "
-                                                 "the run with --rho RHO (or rho in its settings)");
+      throw InputError(where, run_name(run.id) +
+                                  " has no density, and forceCoeffs' coefficients need it; import "
+                                  "the run with --rho RHO (or rho in its settings)");
     const double speed = speed_through_water(run.key.nu_b);
     if (!(speed > 0.0))
       throw InputError(where, run_name(run.id) +
@@ -187,8 +188,7 @@ ForceCoeffsExportResult export_forcecoeffs(const Database& db, const ForceCoeffs
       else if (run.tau_b[0]->statistics)
         end = run.tau_b[0]->statistics->window_last;
       time = {end};
-      for (std::size_t c = 0; c < 6; ++c)
-        body[c] = {to_on_body(run.tau_b[c]->value.total, run.tau_b[c]->sign)};
+      for (std::size_t c = 0; c < 6; ++c) body[c] = {to_on_body(run.tau_b[c]->value.total, run.tau_b[c]->sign)};
     }
 
     ForceCoeffsInput input;
@@ -213,11 +213,10 @@ ForceCoeffsExportResult export_forcecoeffs(const Database& db, const ForceCoeffs
       }
     }
     const std::string axes = frame.axes_text();
-    input.comments = {
-        "hydrocoef " + run_name(run.id) + " in the case's axes (body x, y, z = " + axes +
-            " of them), forces on the body, moments about CofR",
-        "C = F / (0.5 rho magUInf^2 Aref), Cm = M / (0.5 rho magUInf^2 Aref lRef), rho " + shortest_number(rho) +
-            " kg/m^3 (import with --rho " + shortest_number(rho) + ")"};
+    input.comments = {"hydrocoef " + run_name(run.id) + " in the case's axes (body x, y, z = " + axes +
+                          " of them), forces on the body, moments about CofR",
+                      "C = F / (0.5 rho magUInf^2 Aref), Cm = M / (0.5 rho magUInf^2 Aref lRef), rho " +
+                          shortest_number(rho) + " kg/m^3 (import with --rho " + shortest_number(rho) + ")"};
     ForceCoeffsText text;
     try {
       text = openfoam_forcecoeffs(input);
@@ -285,11 +284,12 @@ std::string ForceCoeffsExportResult::text() const {
       << "coefficient.dat, precision " << precision << ") into " << escape::one_line(directory) << '\n';
   for (const auto& r : runs) {
     out << "run " << r.id << " (body '" << escape::one_line(r.body) << "'): " << escape::one_line(r.file) << ", "
-        << r.rows << (r.rows == 1 ? " row" : " rows") << " from its " << r.rows_from << "; axes " << r.axes
-        << ", rho " << shortest_number(r.rho) << " kg/m^3, magUInf " << shortest_number(r.mag_u_inf)
-        << " m/s, Aref '" << escape::one_line(r.area_name) << "' " << shortest_number(r.a_ref) << " m^2, lRef "
+        << r.rows << (r.rows == 1 ? " row" : " rows") << " from its " << r.rows_from << "; axes " << r.axes << ", rho "
+        << shortest_number(r.rho) << " kg/m^3, magUInf " << shortest_number(r.mag_u_inf) << " m/s, Aref '"
+        << escape::one_line(r.area_name) << "' " << shortest_number(r.a_ref) << " m^2, lRef "
         << shortest_number(r.l_ref) << " m; last row";
-    for (std::size_t k = 0; k < 6; ++k) out << ' ' << kCoefficientNames[k] << ' ' << significant(r.last_coefficients[k], 8);
+    for (std::size_t k = 0; k < 6; ++k)
+      out << ' ' << kCoefficientNames[k] << ' ' << significant(r.last_coefficients[k], 8);
     out << '\n';
   }
   out << kConvention << '\n';

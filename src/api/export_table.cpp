@@ -18,8 +18,9 @@ inline namespace api {
 
 void TableExportOptions::validate() const {
   if (name.empty())
-    throw InputError("export: no surface named; expected 'hydrocoef export NAME --format F -o FILE' (runs are "
-                     "written with --format openfoam-forcecoeffs)");
+    throw InputError(
+        "export: no surface named; expected 'hydrocoef export NAME --format F -o FILE' (runs are "
+        "written with --format openfoam-forcecoeffs)");
   const ExportFormat parsed = parse_export_format(format);
   if (single_precision && parsed != ExportFormat::CHeader)
     throw InputError("--float applies to --format c only; expected it with c (got --format " + format + ")");

@@ -36,7 +36,8 @@ std::string padded(const std::string& text, std::size_t width) {
 std::string commented(const std::string& label, std::size_t width) { return "# " + padded(label, width - 2); }
 
 std::string vector_text(const std::array<double, 3>& v, int precision) {
-  return "(" + scientific(v[0], precision) + " " + scientific(v[1], precision) + " " + scientific(v[2], precision) + ")";
+  return "(" + scientific(v[0], precision) + " " + scientific(v[1], precision) + " " + scientific(v[2], precision) +
+         ")";
 }
 
 void check_positive(double value, const char* name) {

@@ -61,9 +61,9 @@ struct ForceCoeffsInput {
 
 struct ForceCoeffsText {
   std::string text;
-  std::size_t values = 0;         ///< coefficients of Cd..CmYaw written
-  std::size_t exact = 0;          ///< of them, read back (F = C * scale) as the force itself
-  std::size_t one_ulp = 0;        ///< read back as the double next to the force
+  std::size_t values = 0;                          ///< coefficients of Cd..CmYaw written
+  std::size_t exact = 0;                           ///< of them, read back (F = C * scale) as the force itself
+  std::size_t one_ulp = 0;                         ///< read back as the double next to the force
   std::array<std::vector<double>, 6> coefficient;  ///< Cd, Cs, Cl, CmRoll, CmPitch, CmYaw as written (parsed back)
 };
 

@@ -274,8 +274,7 @@ HarmonicAnalysis analyse_forced_oscillation(std::span<const double> t,
   {
     const WindowFit basis_only = fit_window(t, phases, {}, options.harmonics, boundary(k0), boundary(k_end), false);
     const Eigen::MatrixXd normal = basis_only.normal / basis_only.normal(0, 0);
-    const double smallest =
-        symmetric_eigen(normal, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+    const double smallest = symmetric_eigen(normal, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
     if (!(smallest >= 0.25))
       throw InputError("forced oscillation: the samples do not resolve " + std::to_string(options.harmonics) +
                        (options.harmonics == 1 ? " harmonic" : " harmonics") + " of the period " +

@@ -104,14 +104,14 @@ TEST_F(ForceCoeffsExportApiTest, ImportedAgainGivesTheStoredForcesBack) {
   {
     auto again = Database::open(again_path, OpenMode::Create);
     for (std::size_t i = 0; i < result.runs.size(); ++i) {
-    const json& run = original[i];
-    ASSERT_EQ(run["id"].get<std::int64_t>(), result.runs[i].id);
-    hydrocoef::ImportOptions import;
-    import.body = "sphere";
-    import.rho = result.runs[i].rho;
-    import.axes = result.runs[i].axes;
-    import.set = {"u=" + run["u"].dump(), "v=" + run["v"].dump()};
-    again.import_files({result.runs[i].file}, import);
+      const json& run = original[i];
+      ASSERT_EQ(run["id"].get<std::int64_t>(), result.runs[i].id);
+      hydrocoef::ImportOptions import;
+      import.body = "sphere";
+      import.rho = result.runs[i].rho;
+      import.axes = result.runs[i].axes;
+      import.set = {"u=" + run["u"].dump(), "v=" + run["v"].dump()};
+      again.import_files({result.runs[i].file}, import);
     }
   }
   const json back = json::parse(run_cli({"--db", again_path, "runs", "--json"}, dir_.path()).out);
@@ -127,7 +127,8 @@ TEST_F(ForceCoeffsExportApiTest, ImportedAgainGivesTheStoredForcesBack) {
       if (read == stored)
         ++exact;
       else
-        EXPECT_EQ(std::nextafter(stored, read), read) << "run " << i << " " << name << ": " << read << " for " << stored;
+        EXPECT_EQ(std::nextafter(stored, read), read)
+            << "run " << i << " " << name << ": " << read << " for " << stored;
     }
   }
   EXPECT_EQ(values, result.values);

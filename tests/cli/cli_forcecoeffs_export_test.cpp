@@ -89,8 +89,7 @@ class CliForceCoeffsExport : public ::testing::Test {
 
 TEST_F(CliForceCoeffsExport, GivesOpenFoamsOwnCoefficientsForTheSameRun) {
   import_sphere();
-  const json result =
-      run({"export", "--format", "openfoam-forcecoeffs", "-o", "out", "--precision", "10", "--json"});
+  const json result = run({"export", "--format", "openfoam-forcecoeffs", "-o", "out", "--precision", "10", "--json"});
   ASSERT_EQ(result["runs"].size(), 1u);
   const auto& r = result["runs"][0];
   EXPECT_EQ(r["axes"], "-x,y,-z");  // as the run was imported
@@ -217,8 +216,8 @@ TEST_F(CliForceCoeffsExport, HistoryRowsAreTheSolversOwnForces) {
   EXPECT_EQ(exact, result["exact"].get<std::size_t>());
   EXPECT_EQ(next, result["one_ulp"].get<std::size_t>());
   // Imported again over a window, the history gives the case's own means over that window.
-  run({"--db", "case.db", "import", kCase.string(), "--body", "quarter-sphere", "--axes=-x,y,-z", "--window",
-       "100:199", "--quiet"});
+  run({"--db", "case.db", "import", kCase.string(), "--body", "quarter-sphere", "--axes=-x,y,-z", "--window", "100:199",
+       "--quiet"});
   run({"--db", "again.db", "import", file, "--body", "quarter-sphere", "--rho", "998.2", "--axes=-x,y,-z", "--set",
        "u=0.1", "--window", "100:199", "--quiet"});
   const auto [id1, expected] = stored_forces(run({"--db", "case.db", "runs", "--json"}));
@@ -259,8 +258,8 @@ TEST_F(CliForceCoeffsExport, RefusesWhatItWouldHaveToGuessAndWritesNothing) {
   refused({"--db", "rho.db", "export", "--format", "openfoam-forcecoeffs", "-o", "out"},
           {"run 2 is at rest", "--exclude-run 2"});
   // Without the run at rest it writes; the table's run has no history: one row, time 0.
-  const json result = run({"--db", "rho.db", "export", "--format", "openfoam-forcecoeffs", "-o", "out",
-                           "--exclude-run", "2", "--json"});
+  const json result = run(
+      {"--db", "rho.db", "export", "--format", "openfoam-forcecoeffs", "-o", "out", "--exclude-run", "2", "--json"});
   ASSERT_EQ(result["runs"].size(), 1u);
   EXPECT_EQ(result["runs"][0]["rows_from"], "stored forces");
   EXPECT_EQ(result["runs"][0]["axes"], "x,y,z");

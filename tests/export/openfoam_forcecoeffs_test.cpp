@@ -70,8 +70,7 @@ TEST(OpenFoamForceCoeffs, WritesOpenFoamsOwnFileAgainByteForByte) {
   ASSERT_EQ(coefficients[1], 0.81263458211);
   coefficients[1] = 0.8126345821055;
   const double q = 0.5 * input.rho * input.mag_u_inf * input.mag_u_inf;
-  for (std::size_t k = 0; k < 6; ++k)
-    input.load[k] = {coefficients[k] * q * input.a_ref * (k < 3 ? 1.0 : input.l_ref)};
+  for (std::size_t k = 0; k < 6; ++k) input.load[k] = {coefficients[k] * q * input.a_ref * (k < 3 ? 1.0 : input.l_ref)};
   const auto written = openfoam_forcecoeffs(input);
   EXPECT_EQ(written.text, theirs);
   EXPECT_EQ(written.values, 6u);

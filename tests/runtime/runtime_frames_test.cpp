@@ -44,9 +44,9 @@ TEST(RuntimeFrames, VectorChangesAreTheMatricesAndTheirOwnInverses) {
   double enu[3], back[3];
   hc_frames_ned_enu_vector(ned, enu);
   EXPECT_EQ(Vector3(enu[0], enu[1], enu[2]), kNedToEnu * Vector3(1.5, -2.0, 3.25));
-  EXPECT_EQ(enu[0], -2.0);  // east
-  EXPECT_EQ(enu[1], 1.5);   // north
-  EXPECT_EQ(enu[2], -3.25); // up = -down
+  EXPECT_EQ(enu[0], -2.0);   // east
+  EXPECT_EQ(enu[1], 1.5);    // north
+  EXPECT_EQ(enu[2], -3.25);  // up = -down
   hc_frames_ned_enu_vector(enu, back);
   EXPECT_EQ(Vector3(back[0], back[1], back[2]), Vector3(1.5, -2.0, 3.25));
 
@@ -128,11 +128,10 @@ TEST(RuntimeFrames, TheHeaderIsPedanticC99) {
                "  return w[0] == -2.0 ? 0 : 1;\n"
                "}\n";
   }
-  const std::string command = test::shell_quote(HYDROCOEF_C_COMPILER) +
-                              " -std=c99 -pedantic -Wall -Wextra -Werror -fsyntax-only -I" +
-                              test::shell_quote(std::string(HYDROCOEF_SOURCE_DIR) + "/runtime/include") + " " +
-                              test::shell_quote((dir / "frames.c").string()) + " 2>" +
-                              test::shell_quote((dir / "log").string());
+  const std::string command =
+      test::shell_quote(HYDROCOEF_C_COMPILER) + " -std=c99 -pedantic -Wall -Wextra -Werror -fsyntax-only -I" +
+      test::shell_quote(std::string(HYDROCOEF_SOURCE_DIR) + "/runtime/include") + " " +
+      test::shell_quote((dir / "frames.c").string()) + " 2>" + test::shell_quote((dir / "log").string());
   EXPECT_EQ(std::system(command.c_str()), 0) << test::read_text(dir / "log");
 }
 
