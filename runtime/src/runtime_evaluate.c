@@ -167,6 +167,16 @@ static int locate(const hc_runtime_surface* s, const hc_kernel_axis* axes, const
   return HC_KERNEL_OK;
 }
 
+int hc_runtime_surface_values(const hc_runtime_surface* s, const double* x, double* values, size_t* failed_axis) {
+  double w[4 * HC_KERNEL_MAX_AXES], dw[4 * HC_KERNEL_MAX_AXES];
+  size_t base = 0;
+  const int status = locate(s, s->axes, x, 0, w, dw, &base, failed_axis);
+  if (status != HC_KERNEL_OK) return status;
+  sum(s->axis_count, s->terms_per_axis, w, HC_KERNEL_MAX_AXES, NULL, s->term_offsets, s->data + base * s->node_block,
+      s->output_count, values, 1);
+  return HC_KERNEL_OK;
+}
+
 int hc_runtime_evaluate(const hc_runtime_model* model, size_t surface, const double* x, double* values,
                         double* gradients, double* sigma) {
   const hc_runtime_surface* s = surface_at(model, surface);
