@@ -42,6 +42,9 @@ void add_export_command(CLI::App& app, const GlobalOptions& global) {
                       "C header: prefix of its names (default from the surface name)");
   command->add_option("--surface", options.surfaces,
                       "runtime: a further surface of the same body in the file (repeat for more)");
+  command->add_option("--vehicle", options.vehicle,
+                      "runtime: a vehicle file (as simulate's); NAME is then its body, and the file holds its "
+                      "whole dynamics model and the surfaces its damping reads");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_export(*args, global); });
 }

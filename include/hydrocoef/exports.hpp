@@ -42,8 +42,15 @@ struct TableExportOptions {
   /// runtime: further surfaces in the same file (--surface, repeated), of
   /// the same body as `name`; the file holds `name` first, then these.
   std::vector<std::string> surfaces;
+  /// runtime: a vehicle file (or its JSON text; src/dynamics/vehicle.hpp,
+  /// `hydrocoef simulate --vehicle`) whose whole dynamics model the file
+  /// holds too (format version 2), its stored fits, derivative models and
+  /// surfaces read from this database as simulate reads them; `name` is then
+  /// the body, and the file holds the surfaces the vehicle's damping reads,
+  /// then `surfaces` (--vehicle).
+  std::string vehicle;
   /// InputError for an unknown format, --float / --identifier with a format
-  /// other than c, or --surface with a format other than runtime.
+  /// other than c, or --surface or --vehicle with a format other than runtime.
   HYDROCOEF_EXPORT void validate() const;
 };
 
@@ -69,6 +76,10 @@ struct TableExportResult {
   std::vector<std::string> files;  ///< the files written
   /// runtime: every surface in the file, `surface` first ({surface} otherwise).
   std::vector<std::string> surfaces;
+  /// runtime with a vehicle: its name ("" otherwise); `surface` and the
+  /// table's fields are then those of the file's first surface, empty when
+  /// its damping reads none.
+  std::string vehicle;
   std::vector<TableExportAxis> axes;
   std::vector<std::string> outputs;
   std::vector<std::string> output_units;

@@ -299,6 +299,7 @@ class TableExportResult:
     nodes: int
     files: list[str]
     surfaces: list[str]
+    vehicle: str
     axes: list[TableExportAxis]
     outputs: list[str]
     output_units: list[str]
@@ -431,7 +432,8 @@ class Database:
     def query_surface(self, name: str, point: Mapping[str, float] | None = None, *, input: _Path | None = None,
                       output: str = "-", gradient: bool = False, uncertainty: bool = False) -> SurfaceQueryResult: ...
     def export_surface(self, name: str, *, format: str, output: _Path, single_precision: bool = False,
-                       identifier: str = "", surfaces: Sequence[str] = ()) -> TableExportResult: ...
+                       identifier: str = "", surfaces: Sequence[str] = (),
+                       vehicle: _Path | None = None) -> TableExportResult: ...
     def export_gazebo(self, body: str, *, flavor: str, output: _Path, fits: _Texts = None,
                       added_mass: Union[str, Sequence[float], None] = None, added_mass_matrix: _Path | None = None,
                       sphere_radius: float | None = None, rho: float | None = None,

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <span>
@@ -19,6 +20,7 @@
 
 #include "hydrocoef/exports.hpp"
 #include "hydrocoef/runtime.h"
+#include "src/api/vehicle_inputs.hpp"
 #include "src/store/database.hpp"
 #include "src/surface/stored_surface.hpp"
 #include "tests/support/run_cli.hpp"
@@ -204,6 +206,91 @@ TEST(RuntimeCli, RefusalsAreOneLineAndWriteNothing) {
       run_cli({"export", "surge", "--format", "csv", "-o", "m.csv", "--surface", "surge_linear"}, dir.path());
   EXPECT_EQ(wrong_format.exit_code, 2);
   EXPECT_NE(wrong_format.err.find("--surface applies to --format runtime only"), std::string::npos) << wrong_format.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.csv"));
+}
+
+// `export BODY --format runtime --vehicle VEHICLE.json`: the ASR-V vehicle
+// with its surge damping from the stored surface "surge" (the others laws)
+// resolved through the database as simulate resolves it; the runtime's
+// derivative equals the model simulate builds, bit for bit. A vehicle file
+// the library refuses, or --vehicle with another format, is refused in one
+// line, exit 2, nothing written.
+TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
+  TempDir dir;
+  make_database(dir);
+  std::ifstream in(HYDROCOEF_SOURCE_DIR "/examples/asr-v/vehicle.json");
+  std::string vehicle((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string law = R"("X": {"law": {"u": -0.0155, "u|u|": -11.0365}, "sign": "on-body"})";
+  const auto at = vehicle.find(law);
+  ASSERT_NE(at, std::string::npos);
+  vehicle.replace(at, law.size(), R"("X": {"surface": "surge", "output": "X", "sign": "on-body"})");
+  std::ofstream(dir / "vehicle.json") << vehicle;
+
+  const auto exported = run_cli(
+      {"export", "asr-v", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "asr-v.hcrt", "--json"}, dir.path());
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  const auto report = nlohmann::json::parse(exported.out);
+  EXPECT_EQ(report.at("surfaces"), nlohmann::json({"surge"}));
+  EXPECT_EQ(report.at("vehicle"), "asr-v");
+  hc_runtime_model* opened = nullptr;
+  char err[512] = "";
+  ASSERT_EQ(hc_runtime_open((dir / "asr-v.hcrt").c_str(), &opened, err, sizeof err), HC_RUNTIME_OK) << err;
+  const std::unique_ptr<hc_runtime_model, ModelCloser> model(opened);
+  ASSERT_EQ(hc_runtime_has_vehicle(opened), 1);
+  EXPECT_STREQ(hc_runtime_metadata(opened, "body"), "asr-v");
+  EXPECT_STREQ(hc_runtime_vehicle_metadata(opened, "file"), "vehicle.json");
+
+  const VehicleModel library =
+      load_vehicle_model((dir / "vehicle.json").string(), (dir / "hydrocoef.db").string());
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t mismatches = 0;
+  for (int n = 0; n < 2000; ++n) {
+    Vector6 nu;
+    for (int i = 0; i < 6; ++i) nu[i] = 0.3 * unit(random);
+    const StateVector x = make_state(Vector3::Zero(), Quaternion4(1.0, 0.1 * unit(random), 0.1 * unit(random), unit(random)), nu);
+    ModelInputs inputs;
+    inputs.tau_b[5] = 0.003 * unit(random);
+    inputs.current_n = Vector3(0.05 * unit(random), 0.05 * unit(random), 0.0);
+    StateVector expected;
+    library.derivative(x, inputs, expected);
+    double x_dot[13];
+    ASSERT_EQ(hc_runtime_vehicle_derivative(opened, x.data(), inputs.tau_b.data(), inputs.current_n.data(), nullptr,
+                                            x_dot, err, sizeof err),
+              HC_RUNTIME_OK)
+        << err;
+    for (int i = 0; i < 13; ++i) mismatches += !same_bits(x_dot[i], expected[i]);
+  }
+  EXPECT_EQ(mismatches, 0u);
+
+  // A vehicle file the library refuses: its one line, exit 2, nothing written.
+  std::ofstream(dir / "bad.json") << R"({"mass": -1, "inertia": [1, 1, 1], "center_of_gravity": [0, 0, 0]})";
+  const auto bad = run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "bad.json", "-o", "bad.hcrt"},
+                           dir.path());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bad.json"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
+  // A surface the database lacks.
+  std::string missing = vehicle;
+  missing.replace(missing.find("\"surge\""), 7, "\"nosuch\"");
+  std::ofstream(dir / "missing.json") << missing;
+  const auto unknown = run_cli(
+      {"export", "asr-v", "--format", "runtime", "--vehicle", "missing.json", "-o", "bad.hcrt"}, dir.path());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("nosuch"), std::string::npos) << unknown.err;
+  EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1) << unknown.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
+  // A surface of another body than the one named.
+  const auto other = run_cli(
+      {"export", "sphere", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "bad.hcrt"}, dir.path());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("expected surfaces of body 'sphere'"), std::string::npos) << other.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
+  const auto wrong_format =
+      run_cli({"export", "asr-v", "--format", "csv", "-o", "m.csv", "--vehicle", "vehicle.json"}, dir.path());
+  EXPECT_EQ(wrong_format.exit_code, 2);
+  EXPECT_NE(wrong_format.err.find("--vehicle applies to --format runtime only"), std::string::npos) << wrong_format.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "m.csv"));
 }
 
