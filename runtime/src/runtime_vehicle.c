@@ -111,7 +111,12 @@ static void shortest_number(double value, char* out, size_t size) {
     }
   }
   fixed[f] = '\0';
-  snprintf(out, size, "%s", strlen(fixed) <= strlen(sci) ? fixed : sci);
+  /* The shorter is at most the scientific form's 24 characters. */
+  const char* chosen = strlen(fixed) <= strlen(sci) ? fixed : sci;
+  size_t length = strlen(chosen);
+  if (length >= size) length = size - 1;
+  memcpy(out, chosen, length);
+  out[length] = '\0';
 }
 
 /* GridTable's refusal of a point (its throw_outside), in err. */
