@@ -21,8 +21,10 @@
 #include "hydrocoef/exports.hpp"
 #include "hydrocoef/runtime.h"
 #include "src/api/vehicle_inputs.hpp"
+#include "src/dynamics/scenario.hpp"
 #include "src/store/database.hpp"
 #include "src/surface/stored_surface.hpp"
+#include "tests/runtime/runtime_stepping.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -292,6 +294,43 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
   EXPECT_EQ(wrong_format.exit_code, 2);
   EXPECT_NE(wrong_format.err.find("--vehicle applies to --format runtime only"), std::string::npos) << wrong_format.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "m.csv"));
+}
+
+// The ASR-V example as examples/asr-v/run.sh makes it: both tables imported,
+// the surfaces asr-v-surge and asr-v-yaw built, and vehicle-surfaces.json
+// exported with them; its pool test (a constant yaw torque, RK4 at 1 ms)
+// stepped through the C API is simulate's trajectory bit for bit.
+TEST(RuntimeCli, TheAsrVPoolTestWithItsSurfacesStepsAsSimulate) {
+  TempDir dir;
+  for (const auto& [file, sign] : std::vector<std::pair<std::string, std::string>>{
+           {kSurge, "opposing"}, {HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-yaw-damping.csv", "on-body"}}) {
+    const auto imported =
+        run_cli({"import", file, "--body", "asr-v", "--sign", sign, "--rho", "998.2", "--nu", "1.004e-6"}, dir.path());
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  }
+  for (const auto& [name, output, axis] : std::vector<std::array<std::string, 3>>{{"asr-v-surge", "X", "u"},
+                                                                                 {"asr-v-yaw", "N", "r"}}) {
+    const auto built = run_cli({"surface", "build", name, "--body", "asr-v", "--outputs", output, "--axes", axis,
+                                "--method", "pchip", "--extrapolate", "linear"},
+                               dir.path());
+    ASSERT_EQ(built.exit_code, 0) << built.err;
+  }
+  const std::string vehicle = HYDROCOEF_SOURCE_DIR "/examples/asr-v/vehicle-surfaces.json";
+  const auto exported =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", vehicle, "-o", "asr-v.hcrt"}, dir.path());
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  EXPECT_NE(exported.out.find("exported vehicle asr-v (damping from lookup surfaces) of body asr-v (2 surfaces)"),
+            std::string::npos)
+      << exported.out;
+  hc_runtime_model* opened = nullptr;
+  char err[512] = "";
+  ASSERT_EQ(hc_runtime_open((dir / "asr-v.hcrt").c_str(), &opened, err, sizeof err), HC_RUNTIME_OK) << err;
+  const std::unique_ptr<hc_runtime_model, ModelCloser> model(opened);
+  EXPECT_STREQ(hc_runtime_metadata(opened, "surfaces"), "asr-v-surge,asr-v-yaw");
+  const VehicleModel library = load_vehicle_model(vehicle, (dir / "hydrocoef.db").string());
+  Scenario scenario = load_scenario(HYDROCOEF_SOURCE_DIR "/examples/asr-v/scenario-yaw-0.0027.json");
+  scenario.duration_s = 10.0;
+  expect_simulate_bit_for_bit(library, opened, scenario);
 }
 
 }  // namespace
