@@ -33,7 +33,7 @@ void add_export_command(CLI::App& app, const GlobalOptions& global) {
       "(MATLAB v5 + Simulink set-up script), jsbsim (XML tables), vtk (ParaView) or daveml (DAVE-ML, "
       "AIAA S-119; with each node's standard deviation when the surface states one) or runtime "
       "(libhydrocoef_runtime's file: the surfaces as hydrocoef evaluates them, with their standard deviation)");
-  command->add_option("name", options.name, "Surface name")->required();
+  command->add_option("name", options.name, "Surface name (with --vehicle: the body)")->required();
   command->add_option("--format", options.format, "csv, csv-wide, json, c, mat, jsbsim, vtk, daveml or runtime")
       ->required();
   command->add_option("-o,--output", options.output, "File to write (written whole or not at all)")->required();

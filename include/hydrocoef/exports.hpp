@@ -29,7 +29,7 @@ inline namespace api {
 /// What `hydrocoef export` writes: a stored gridded surface (a table, or an
 /// RBF resampled with --resample) in one of the formats.
 struct TableExportOptions {
-  std::string name;  ///< the stored surface
+  std::string name;  ///< the stored surface (with `vehicle`: the body)
   /// csv, csv-wide, json, c (C99 header), mat (MATLAB v5 + Simulink set-up
   /// script), jsbsim, vtk, daveml (with each node's standard deviation when
   /// the surface states one) or runtime (libhydrocoef_runtime's file,

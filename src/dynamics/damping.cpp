@@ -12,6 +12,14 @@
 namespace hydrocoef {
 namespace {
 
+// The shared kernel's law codes are DampingTerm's values.
+static_assert(static_cast<int>(DampingTerm::Constant) == HC_DAMPING_CONSTANT &&
+              static_cast<int>(DampingTerm::Linear) == HC_DAMPING_LINEAR &&
+              static_cast<int>(DampingTerm::SignedQuadratic) == HC_DAMPING_SIGNED_QUADRATIC &&
+              static_cast<int>(DampingTerm::Quadratic) == HC_DAMPING_QUADRATIC &&
+              static_cast<int>(DampingTerm::Cubic) == HC_DAMPING_CUBIC &&
+              static_cast<int>(DampingTerm::AbsLinear) == HC_DAMPING_ABS_LINEAR);
+
 std::string dof_context(std::size_t dof) { return "damping of " + std::string(kForceNames[dof]); }
 
 // The source name bound to each axis of a surface: the explicit binding or
