@@ -1,7 +1,8 @@
 /* The damping arithmetic of the dynamics model, ONE source for the C++
  * library (src/dynamics/damping.cpp, DampingModel) and libhydrocoef_runtime
  * (runtime_vehicle.c): a damping law's value (terms of one relative
- * velocity component) and a derivative model's value (terms that are
+ * velocity component; damping_law_kernel.h, which the library also
+ * instantiates for the Monte Carlo lanes) and a derivative model's value (terms that are
  * products of factors |x|^power, signed when odd, over the relative velocity
  * and disturbance parameters). Static inline C11, in the common subset of C
  * and C++; both libraries compile it with -ffp-contract=off, so their
@@ -28,15 +29,8 @@ enum {
   HC_DAMPING_TERM_CODES = 6
 };
 
-/* sum_k coefficients[k] basis_{terms[k]}(x), in term order from 0; every
- * code below HC_DAMPING_TERM_CODES (the callers check). */
-static inline double hc_damping_law_value(const int* terms, const double* coefficients, size_t count, double x) {
-  const double magnitude = fabs(x);
-  const double basis[HC_DAMPING_TERM_CODES] = {1.0, x, x * magnitude, x * x, x * x * x, magnitude};
-  double value = 0.0;
-  for (size_t k = 0; k < count; ++k) value += coefficients[k] * basis[terms[k]];
-  return value;
-}
+/* A law's value, hc_damping_law_value (damping_law_kernel.h), for double. */
+#include "damping_law_kernel.h"
 
 /* One name's factor of a derivative model's term: |x|^power, negated when
  * odd and x < 0; x is nu_r[source] for source < 6, else

@@ -144,7 +144,7 @@ static int add_damping(const hc_runtime_model* model, const double* nu_r, const 
   for (size_t dof = 0; dof < 6; ++dof) {
     const hc_runtime_dof* d = &v->dofs[dof];
     if (d->kind == HC_DOF_LAW)
-      tau[dof] += hc_damping_law_value(d->codes, d->coefficients, d->count, nu_r[d->variable]);
+      tau[dof] += hc_damping_law_value(d->codes, d->coefficients, d->count, &nu_r[d->variable]);
   }
   for (size_t dof = 0; dof < 6; ++dof) {
     const hc_runtime_dof* d = &v->dofs[dof];

@@ -275,7 +275,7 @@ Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> di
 void DampingModel::add(const double* nu_r_b, std::span<const double> disturbances, double* tau) const {
   // The shared kernel's law (runtime/src/damping_kernel.h): damping_law_value's arithmetic.
   for (const Law& law : laws_)
-    tau[law.dof] += hc_damping_law_value(law.codes.data(), law.coefficients.data(), law.count, nu_r_b[law.variable]);
+    tau[law.dof] += hc_damping_law_value(law.codes.data(), law.coefficients.data(), law.count, &nu_r_b[law.variable]);
   for (const Derivatives& m : derivatives_) tau[m.dof] += m.value(nu_r_b, disturbances);
   std::array<double, kMaxOutputs> out;  // written before it is read (hot path)
   for (const Lookup& l : lookups_) {
