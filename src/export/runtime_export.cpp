@@ -161,8 +161,20 @@ std::string vehicle_section(const RuntimeVehicle& vehicle, const std::vector<Run
   const VehicleModel& model = *vehicle.model;
   const VehicleDescription& d = model.description();
   const std::vector<std::string>& disturbances = model.disturbance_names();
+  // The frames, units and signs of the state and inputs, stated in the file.
+  RuntimeTexts texts = vehicle.metadata;
+  texts.emplace_back("state",
+                     "13 numbers: p_n, the body origin in NED [m] (3); q_nb, the body-to-NED quaternion, scalar "
+                     "first (4); nu_b, the body velocity over ground u, v, w [m/s], p, q, r [rad/s], body axes x "
+                     "forward, y starboard, z down (6)");
+  texts.emplace_back("inputs",
+                     "tau_b, the control force and moment on the body about its origin [N, N m] (6); current_n, "
+                     "the water velocity in NED [m/s] (3); the disturbances [SI], in the file's order");
+  texts.emplace_back("equation",
+                     "M_RB nu' + C_RB(nu) nu + M_A nu_r' + C_A(nu_r) nu_r + D(nu_r) nu_r + g(eta) = tau, nu_r = nu - "
+                     "nu_c (Fossen 2011, eq. 6.1 with current); damping and forces on the body (SNAME signs)");
   Writer out;
-  out.texts(vehicle.metadata, "runtime export of the vehicle: metadata");
+  out.texts(texts, "runtime export of the vehicle: metadata");
   out.u32(static_cast<std::uint32_t>(disturbances.size()));
   out.u32(static_cast<std::uint32_t>(d.thrusters.size()));
   matrix(out, model.rigid_body_mass(), "M_RB");

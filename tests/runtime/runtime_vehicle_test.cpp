@@ -210,6 +210,11 @@ TEST(RuntimeVehicle, DerivativeAndForcesAreTheLibrarysBitForBit) {
     for (std::size_t i = 0; i < names.size(); ++i)
       EXPECT_EQ(hc_runtime_vehicle_disturbance_name(runtime.get(), i), names[i]);
     EXPECT_STREQ(hc_runtime_vehicle_metadata(runtime.get(), "name"), "test vehicle");
+    for (const auto& [key, fragment] : std::vector<std::pair<std::string, std::string>>{
+             {"state", "quaternion, scalar first"}, {"inputs", "current_n, the water velocity in NED"},
+             {"equation", "forces on the body"}})
+      EXPECT_NE(std::string(hc_runtime_vehicle_metadata(runtime.get(), key.c_str())).find(fragment), std::string::npos)
+          << key;
     std::size_t mismatches = 0, refused = 0;
     for (int n = 0; n < 10000; ++n) {
       const StateVector x = random_state(random);

@@ -185,7 +185,8 @@ HC_RUNTIME_API int hc_runtime_check_point(const hc_runtime_model* model, size_t 
 
 /* 1 when the file holds a vehicle, else 0. */
 HC_RUNTIME_API int hc_runtime_has_vehicle(const hc_runtime_model* model);
-/* The vehicle's text by key ("name", "file"); NULL when absent. */
+/* The vehicle's text by key ("name", "file", and "state", "inputs",
+ * "equation": the frames, units and signs above); NULL when absent. */
 HC_RUNTIME_API const char* hc_runtime_vehicle_metadata(const hc_runtime_model* model, const char* key);
 /* The disturbance parameters the damping reads, in the order the inputs give them. */
 HC_RUNTIME_API size_t hc_runtime_vehicle_disturbance_count(const hc_runtime_model* model);
