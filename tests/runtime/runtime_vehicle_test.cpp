@@ -22,6 +22,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "hydrocoef/runtime.h"
@@ -263,6 +264,42 @@ TEST(RuntimeVehicle, DerivativeAndForcesAreTheLibrarysBitForBit) {
     // Only the surface of policy "error" (q beyond 4 rad/s) refuses, and the random states stay inside.
     EXPECT_EQ(refused, 0u);
   }
+}
+
+// One model, four threads at once: each thread's derivatives are the
+// library's (the model is read-only; the suite runs under ASan).
+TEST(RuntimeVehicle, ThreadsShareOneModel) {
+  const Vehicle& v = vehicles()[3];
+  const VehicleModel model = vehicle_model(v);
+  const Model runtime = open_bytes(file_bytes(model, v.surfaces));
+  std::vector<StateVector> states;
+  std::vector<StateVector> expected;
+  std::mt19937_64 random(11);
+  const std::vector<double> disturbances(model.disturbance_names().size(), 0.2);
+  ModelInputs inputs;
+  inputs.current_n = Vector3(0.1, -0.2, 0.0);
+  inputs.disturbances = disturbances;
+  for (int n = 0; n < 2000; ++n) {
+    states.push_back(random_state(random));
+    expected.emplace_back();
+    model.derivative(states.back(), inputs, expected.back());
+  }
+  std::array<std::size_t, 4> mismatches{};
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < mismatches.size(); ++t)
+    threads.emplace_back([&, t] {
+      for (std::size_t n = t; n < states.size(); n += 1 + t % 2) {
+        double x_dot[13];
+        if (hc_runtime_vehicle_derivative(runtime.get(), states[n].data(), inputs.tau_b.data(), inputs.current_n.data(),
+                                          disturbances.data(), x_dot, nullptr, 0) != HC_RUNTIME_OK) {
+          ++mismatches[t];
+          continue;
+        }
+        for (int i = 0; i < 13; ++i) mismatches[t] += !same_bits(x_dot[i], expected[n][i]);
+      }
+    });
+  for (std::thread& thread : threads) thread.join();
+  for (const std::size_t m : mismatches) EXPECT_EQ(m, 0u);
 }
 
 TEST(RuntimeVehicle, ThrustersAreTheLibrarys) {
