@@ -242,6 +242,47 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
   EXPECT_STREQ(hc_runtime_metadata(opened, "body"), "asr-v");
   EXPECT_STREQ(hc_runtime_vehicle_metadata(opened, "file"), "vehicle.json");
 
+  // The API writes the same vehicle section (the model section's created_at aside) and validates as the CLI.
+  {
+    const auto db = Database::open((dir / "hydrocoef.db").string(), OpenMode::ReadOnly);
+    TableExportOptions options;
+    options.name = "asr-v";
+    options.format = "runtime";
+    options.output = (dir / "api.hcrt").string();
+    options.vehicle = (dir / "vehicle.json").string();
+    const TableExportResult result = export_surface(db, options);
+    EXPECT_EQ(result.vehicle, "asr-v");
+    EXPECT_EQ(result.surfaces, std::vector<std::string>{"surge"});
+    const auto read = [](const std::filesystem::path& path) {
+      std::ifstream file(path, std::ios::binary);
+      return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    };
+    const auto u32 = [](const std::string& bytes, std::size_t at) {
+      std::uint32_t value = 0;
+      for (int i = 3; i >= 0; --i) value = value << 8 | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
+      return value;
+    };
+    // The vehicle section past its texts (the vehicle file's path differs: relative for the CLI).
+    const auto vehicle_numbers = [&](const std::string& bytes) {
+      const std::size_t entry = 64 + 24 * (u32(bytes, 32) - 1);
+      std::size_t at = u32(bytes, entry + 8) | static_cast<std::size_t>(u32(bytes, entry + 12)) << 32;
+      const std::uint32_t pairs = u32(bytes, at);
+      at += 8;
+      for (std::uint32_t i = 0; i < 2 * pairs; ++i) at += (4 + u32(bytes, at) + 1 + 7) / 8 * 8;
+      return bytes.substr(at);
+    };
+    const std::string from_cli = read(dir / "asr-v.hcrt"), from_api = read(options.output);
+    EXPECT_GT(vehicle_numbers(from_cli).size(), 4 * 36 * 8u);
+    EXPECT_EQ(vehicle_numbers(from_cli), vehicle_numbers(from_api));
+    options.format = "csv";
+    try {
+      options.validate();
+      FAIL() << "--vehicle with csv was accepted";
+    } catch (const InputError& error) {
+      EXPECT_EQ(std::string(error.what()),
+                "--vehicle applies to --format runtime only; expected it with runtime (got --format csv)");
+    }
+  }
   const VehicleModel library =
       load_vehicle_model((dir / "vehicle.json").string(), (dir / "hydrocoef.db").string());
   std::mt19937_64 random(7);
