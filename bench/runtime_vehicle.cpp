@@ -36,7 +36,8 @@ CoefficientSurface damping_surface(const std::string& x, const std::string& y, c
                              {y, breakpoints(velocity_limit(y)), Extrapolation::Clamp}};
   std::vector<double> values;
   for (const double b : axes[1].breakpoints)
-    for (const double a : axes[0].breakpoints) values.push_back(-(0.5 * a + 10.0 * a * std::abs(a)) * (1.0 + 0.3 * b * b));
+    for (const double a : axes[0].breakpoints)
+      values.push_back(-(0.5 * a + 10.0 * a * std::abs(a)) * (1.0 + 0.3 * b * b));
   return CoefficientSurface(GridTable(axes, {output}, values, method));
 }
 

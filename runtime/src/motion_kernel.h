@@ -138,9 +138,9 @@ static inline void hc_motion_quaternion_rate(const HC_MOTION_T* q, const HC_MOTI
  * there is a current, 0 when nu_r = nu. The caller then adds the damping
  * force at nu_r to damping, and calls hc_motion_finish. */
 static inline int hc_motion_begin(const HC_MOTION_T* x, double weight_N, double buoyancy_N, const double* r_g,
-                                  const double* r_b, const double* current_n, HC_MOTION_T* rotation,
-                                  HC_MOTION_T* nu_r, HC_MOTION_T* hydrostatic, HC_MOTION_T* damping,
-                                  HC_MOTION_T* coriolis, HC_MOTION_T* current_b) {
+                                  const double* r_b, const double* current_n, HC_MOTION_T* rotation, HC_MOTION_T* nu_r,
+                                  HC_MOTION_T* hydrostatic, HC_MOTION_T* damping, HC_MOTION_T* coriolis,
+                                  HC_MOTION_T* current_b) {
   const HC_MOTION_T* nu = x + 7;
   hc_motion_rotation_any_norm(x + 3, rotation);
   for (int i = 0; i < 6; ++i) {

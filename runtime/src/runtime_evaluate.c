@@ -170,22 +170,22 @@ static int locate(const hc_runtime_surface* s, const hc_kernel_axis* axes, const
 /* hc_runtime_evaluate's values alone, with the axis count and the terms per
  * axis constants in each case (the same kernel calls in the same order): the
  * vehicle's hot path. */
-#define HC_VALUES_CASE(N, K)                                                                                        \
-  case (K)*8 + (N): {                                                                                               \
-    size_t base = 0;                                                                                                \
-    for (size_t a = 0; a < (N); ++a) {                                                                              \
-      size_t node = 0;                                                                                              \
-      const int status = hc_kernel_axis_cell(&s->axes[a], s->breakpoints + s->axes[a].offset, (K), 0, x[a],         \
-                                             w + 4 * a, NULL, &node);                                               \
-      if (status != HC_KERNEL_OK) {                                                                                 \
-        *failed_axis = a;                                                                                           \
-        return status;                                                                                              \
-      }                                                                                                             \
-      base += node * s->axes[a].node_stride;                                                                        \
-    }                                                                                                               \
-    hc_kernel_sum((N), (K), w, HC_KERNEL_MAX_AXES, NULL, s->term_offsets, s->data + base * s->node_block,            \
-                  s->output_count, values, 1, inner);                                                               \
-    return HC_KERNEL_OK;                                                                                            \
+#define HC_VALUES_CASE(N, K)                                                                                          \
+  case (K)*8 + (N): {                                                                                                 \
+    size_t base = 0;                                                                                                  \
+    for (size_t a = 0; a < (N); ++a) {                                                                                \
+      size_t node = 0;                                                                                                \
+      const int status =                                                                                              \
+          hc_kernel_axis_cell(&s->axes[a], s->breakpoints + s->axes[a].offset, (K), 0, x[a], w + 4 * a, NULL, &node); \
+      if (status != HC_KERNEL_OK) {                                                                                   \
+        *failed_axis = a;                                                                                             \
+        return status;                                                                                                \
+      }                                                                                                               \
+      base += node * s->axes[a].node_stride;                                                                          \
+    }                                                                                                                 \
+    hc_kernel_sum((N), (K), w, HC_KERNEL_MAX_AXES, NULL, s->term_offsets, s->data + base * s->node_block,             \
+                  s->output_count, values, 1, inner);                                                                 \
+    return HC_KERNEL_OK;                                                                                              \
   }
 
 int hc_runtime_surface_values(const hc_runtime_surface* s, const double* x, double* values, size_t* failed_axis) {

@@ -85,17 +85,18 @@ int hc_read_text(reader* r, const char* what, const char** text) {
   if (status != HC_RUNTIME_OK) return status;
   const size_t available = r->end - r->pos;
   if (length >= available)
-    return hc_fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s has length %u; expected at most %zu (the rest of the section)", what,
-                   (unsigned)length, available == 0 ? (size_t)0 : available - 1);
+    return hc_fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s has length %u; expected at most %zu (the rest of the section)",
+                      what, (unsigned)length, available == 0 ? (size_t)0 : available - 1);
   const unsigned char* bytes = r->base + r->pos;
   if (memchr(bytes, 0, length) != NULL)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s holds a NUL byte; expected text", what);
   const size_t padded = (4 + (size_t)length + 1 + 7) / 8 * 8 - 4; /* bytes after the length */
-  if (padded > available) return hc_fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s's padding runs past the section's end", what);
+  if (padded > available)
+    return hc_fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s's padding runs past the section's end", what);
   for (size_t i = length; i < padded; ++i) {
     if (bytes[i] != 0)
       return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos + i, "%s's padding byte is %u; expected 0", what,
-                     (unsigned)bytes[i]);
+                        (unsigned)bytes[i]);
   }
   *text = (const char*)bytes;
   r->pos += padded;
@@ -108,7 +109,7 @@ int hc_read_doubles(reader* r, const char* what, uint64_t count, const double** 
   const size_t available = (r->end - r->pos) / 8;
   if (count > available)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "%s: %llu numbers; only %zu fit in the rest of the section", what,
-                   (unsigned long long)count, available);
+                      (unsigned long long)count, available);
   unsigned char* bytes = r->base + r->pos;
   if (!host_is_little_endian()) {
     for (size_t i = 0; i < (size_t)count; ++i) {
@@ -129,7 +130,7 @@ int hc_check_finite(reader* r, const char* what, const double* values, size_t co
   for (size_t i = 0; i < count; ++i) {
     if (!isfinite(values[i]))
       return hc_fail_at(r, HC_RUNTIME_E_FORMAT, first_byte + 8 * i,
-                     "%s number %zu is not finite; expected a finite number", what, i);
+                        "%s number %zu is not finite; expected a finite number", what, i);
   }
   return HC_RUNTIME_OK;
 }
@@ -143,12 +144,13 @@ int hc_read_pairs(reader* r, const char* what, hc_text_pair** pairs, size_t* cou
   if (status != HC_RUNTIME_OK) return status;
   if ((size_t)n > (r->end - r->pos) / 16)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, at, "%s count %u does not fit in the rest of the section", what,
-                   (unsigned)n);
+                      (unsigned)n);
   *pairs = NULL;
   *count = 0;
   if (n == 0) return HC_RUNTIME_OK;
   *pairs = (hc_text_pair*)calloc(n, sizeof(hc_text_pair));
-  if (*pairs == NULL) return hc_fail_at(r, HC_RUNTIME_E_MEMORY, at, "out of memory for %u metadata entries", (unsigned)n);
+  if (*pairs == NULL)
+    return hc_fail_at(r, HC_RUNTIME_E_MEMORY, at, "out of memory for %u metadata entries", (unsigned)n);
   *count = n;
   for (size_t i = 0; i < n; ++i) {
     status = hc_read_text(r, "a metadata key", &(*pairs)[i].key);
@@ -171,14 +173,14 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
   if (status != HC_RUNTIME_OK) return status;
   if (axes < 1 || axes > HC_RUNTIME_MAX_AXES)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, start, "axis count %u; expected 1 to %d", (unsigned)axes,
-                   HC_RUNTIME_MAX_AXES);
+                      HC_RUNTIME_MAX_AXES);
   if (outputs < 1 || outputs > HC_RUNTIME_MAX_OUTPUTS)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, start + 4, "output count %u; expected 1 to %d", (unsigned)outputs,
-                   HC_RUNTIME_MAX_OUTPUTS);
+                      HC_RUNTIME_MAX_OUTPUTS);
   if (method > HC_KERNEL_NATURAL_SPLINE)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, start + 8,
-                   "method code %u; expected 0 (nearest), 1 (linear), 2 (pchip), 3 (makima) or 4 (natural-spline)",
-                   (unsigned)method);
+                      "method code %u; expected 0 (nearest), 1 (linear), 2 (pchip), 3 (makima) or 4 (natural-spline)",
+                      (unsigned)method);
   if ((flags & ~(uint32_t)SURFACE_FLAG_SIGMA) != 0)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, start + 12, "flags 0x%x; expected 0 or 1 (sigma)", (unsigned)flags);
   s->axis_count = axes;
@@ -190,12 +192,13 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
   const size_t expected_block = (cubic ? (size_t)1 << axes : 1u) * outputs;
   if (block != expected_block)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, start + 24, "%llu numbers per node; expected %zu for %u axes, %u outputs",
-                   (unsigned long long)block, expected_block, (unsigned)axes, (unsigned)outputs);
+                      (unsigned long long)block, expected_block, (unsigned)axes, (unsigned)outputs);
   s->node_block = expected_block;
 
   status = hc_read_text(r, "the surface name", &s->name);
   if (status != HC_RUNTIME_OK) return status;
-  if (s->name[0] == '\0') return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "the surface name is empty; expected a name");
+  if (s->name[0] == '\0')
+    return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "the surface name is empty; expected a name");
   status = hc_read_pairs(r, "surface metadata", &s->metadata, &s->metadata_count);
   if (status != HC_RUNTIME_OK) return status;
 
@@ -212,8 +215,8 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     if (info->name[0] == '\0') return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "axis %zu's name is empty", a);
     for (size_t b = 0; b < a; ++b) {
       if (strcmp(s->axis_info[b].name, info->name) == 0)
-        return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "axes %zu and %zu are both named '%s'; expected unique names", b,
-                       a, info->name);
+        return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "axes %zu and %zu are both named '%s'; expected unique names",
+                          b, a, info->name);
     }
     const size_t policy_at = r->pos;
     uint32_t policy = 0;
@@ -224,12 +227,12 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     if (status != HC_RUNTIME_OK) return status;
     if (policy > HC_KERNEL_METHOD)
       return hc_fail_at(r, HC_RUNTIME_E_FORMAT, policy_at,
-                     "axis '%s': extrapolation code %u; expected 0 (error), 1 (clamp), 2 (linear) or 3 (method)",
-                     info->name, (unsigned)policy);
+                        "axis '%s': extrapolation code %u; expected 0 (error), 1 (clamp), 2 (linear) or 3 (method)",
+                        info->name, (unsigned)policy);
     const uint64_t least = cubic ? 3 : 2;
     if (count < least)
       return hc_fail_at(r, HC_RUNTIME_E_FORMAT, policy_at + 8, "axis '%s' has %llu breakpoints; expected at least %llu",
-                     info->name, (unsigned long long)count, (unsigned long long)least);
+                        info->name, (unsigned long long)count, (unsigned long long)least);
     const size_t points_at = r->pos;
     status = hc_read_doubles(r, "breakpoints", count, &axis_points[a]);
     if (status != HC_RUNTIME_OK) return status;
@@ -237,12 +240,12 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     for (size_t i = 0; i < (size_t)count; ++i) {
       if (!isfinite(x[i]))
         return hc_fail_at(r, HC_RUNTIME_E_FORMAT, points_at + 8 * i,
-                       "axis '%s' breakpoint %zu is not finite; expected a finite number", info->name, i);
+                          "axis '%s' breakpoint %zu is not finite; expected a finite number", info->name, i);
       if (i > 0 && !(x[i] > x[i - 1]))
         return hc_fail_at(r, HC_RUNTIME_E_FORMAT, points_at + 8 * i,
-                       "axis '%s' breakpoint %zu (%.17g) is not greater than breakpoint %zu (%.17g); expected "
-                       "strictly increasing breakpoints",
-                       info->name, i, x[i], i - 1, x[i - 1]);
+                          "axis '%s' breakpoint %zu (%.17g) is not greater than breakpoint %zu (%.17g); expected "
+                          "strictly increasing breakpoints",
+                          info->name, i, x[i], i - 1, x[i - 1]);
     }
     hc_kernel_axis* axis = &s->axes[a];
     hc_kernel_axis_setup(x, (size_t)count, axis);
@@ -255,9 +258,9 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
   }
   if (nodes != product)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, start + 16,
-                   "node count %llu; expected %zu (the product of the axes' "
-                   "breakpoint counts)",
-                   (unsigned long long)nodes, product);
+                      "node count %llu; expected %zu (the product of the axes' "
+                      "breakpoint counts)",
+                      (unsigned long long)nodes, product);
   s->node_count = product;
 
   s->output_names = (const char**)calloc(outputs, sizeof(const char*));
@@ -268,11 +271,12 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     status = hc_read_text(r, "an output name", &s->output_names[k]);
     if (status == HC_RUNTIME_OK) status = hc_read_text(r, "an output unit", &s->output_units[k]);
     if (status != HC_RUNTIME_OK) return status;
-    if (s->output_names[k][0] == '\0') return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "output %zu's name is empty", k);
+    if (s->output_names[k][0] == '\0')
+      return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "output %zu's name is empty", k);
     for (size_t j = 0; j < k; ++j) {
       if (strcmp(s->output_names[j], s->output_names[k]) == 0)
-        return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "outputs %zu and %zu are both named '%s'; expected unique names",
-                       j, k, s->output_names[k]);
+        return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos,
+                          "outputs %zu and %zu are both named '%s'; expected unique names", j, k, s->output_names[k]);
     }
   }
 
@@ -280,8 +284,8 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
    * section's size by division first. */
   if (s->node_count > (r->end - r->pos) / 8 / s->node_block)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos,
-                   "the table of %zu nodes x %zu numbers does not fit in the rest of the section (%zu bytes)",
-                   s->node_count, s->node_block, r->end - r->pos);
+                      "the table of %zu nodes x %zu numbers does not fit in the rest of the section (%zu bytes)",
+                      s->node_count, s->node_block, r->end - r->pos);
   const size_t numbers = s->node_count * s->node_block;
   size_t at = r->pos;
   status = hc_read_doubles(r, "the table", numbers, &s->data);
@@ -294,8 +298,8 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
     for (size_t k = 0; k < outputs; ++k) {
       if (!isfinite(s->loo[k]) || s->loo[k] < 0.0)
         return hc_fail_at(r, HC_RUNTIME_E_FORMAT, at + 8 * k,
-                       "output '%s' leave-one-out standard deviation %.17g; expected a finite number >= 0",
-                       s->output_names[k], s->loo[k]);
+                          "output '%s' leave-one-out standard deviation %.17g; expected a finite number >= 0",
+                          s->output_names[k], s->loo[k]);
     }
     at = r->pos;
     status = hc_read_doubles(r, "the runs' sigma table", numbers, &s->sigma_data);
@@ -304,7 +308,7 @@ static int read_surface(reader* r, hc_runtime_surface* s) {
   }
   if (r->pos != r->end)
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, r->pos, "%zu bytes after the surface's last table; expected none",
-                   r->end - r->pos);
+                      r->end - r->pos);
 
   /* Breakpoint offsets relative to the first axis's array (pointers into one file). */
   s->breakpoints = axis_points[0];
@@ -349,12 +353,12 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
   r.errlen = errlen;
   if (model->size < HEADER_SIZE)
     return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 0, "the file has %zu bytes; a runtime file has at least %d", model->size,
-                   HEADER_SIZE);
+                      HEADER_SIZE);
   const unsigned char* h = model->bytes;
   if (memcmp(h, kMagic, sizeof kMagic) != 0)
     return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 0,
-                   "not a hydrocoef runtime file (its first 8 bytes are not the magic "
-                   "number 89 48 43 52 54 0d 0a 1a)");
+                      "not a hydrocoef runtime file (its first 8 bytes are not the magic "
+                      "number 89 48 43 52 54 0d 0a 1a)");
   /* Version 1: the model and surfaces; version 2: and a vehicle, the last section. */
   const uint32_t version = hc_get_u32(h + 8);
   if (version < 1 || version > HC_RUNTIME_FILE_VERSION)
@@ -362,37 +366,40 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
                       (unsigned)version, HC_RUNTIME_FILE_VERSION);
   const int has_vehicle = version == 2;
   if (hc_get_u32(h + 12) != HEADER_SIZE)
-    return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 12, "header size %u; expected %d", (unsigned)hc_get_u32(h + 12), HEADER_SIZE);
+    return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 12, "header size %u; expected %d", (unsigned)hc_get_u32(h + 12),
+                      HEADER_SIZE);
   const uint64_t file_size = hc_get_u64(h + 16);
   if (file_size != (uint64_t)model->size)
     return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 16,
-                   "the header states %llu bytes; the file has %zu (truncated or "
-                   "extended)",
-                   (unsigned long long)file_size, model->size);
+                      "the header states %llu bytes; the file has %zu (truncated or "
+                      "extended)",
+                      (unsigned long long)file_size, model->size);
   const uint64_t stored_hash = hc_get_u64(h + 24);
   const uint32_t section_count = hc_get_u32(h + 32);
   const uint32_t flags = hc_get_u32(h + 36);
   const uint64_t table_offset = hc_get_u64(h + 40);
   if (flags != 0) return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 36, "header flags 0x%x; expected 0", (unsigned)flags);
   for (size_t i = 48; i < HEADER_SIZE; ++i) {
-    if (h[i] != 0) return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, i, "reserved header byte is %u; expected 0", (unsigned)h[i]);
+    if (h[i] != 0)
+      return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, i, "reserved header byte is %u; expected 0", (unsigned)h[i]);
   }
   const uint64_t hash = hc_xxh64(h + HEADER_SIZE, model->size - HEADER_SIZE, 0);
   if (hash != stored_hash)
     return hc_fail_at(&r, HC_RUNTIME_E_HASH, 24,
-                   "content hash %016llx; the content hashes to %016llx (the file was "
-                   "changed or damaged after it was written)",
-                   (unsigned long long)stored_hash, (unsigned long long)hash);
+                      "content hash %016llx; the content hashes to %016llx (the file was "
+                      "changed or damaged after it was written)",
+                      (unsigned long long)stored_hash, (unsigned long long)hash);
   model->hash = hash;
   if (table_offset != HEADER_SIZE)
     return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 40, "section table at byte %llu; expected %d (right after the header)",
-                   (unsigned long long)table_offset, HEADER_SIZE);
-  if (section_count < 1u + (unsigned)has_vehicle || section_count > HC_RUNTIME_MAX_SURFACES + 1u + (unsigned)has_vehicle)
+                      (unsigned long long)table_offset, HEADER_SIZE);
+  if (section_count < 1u + (unsigned)has_vehicle ||
+      section_count > HC_RUNTIME_MAX_SURFACES + 1u + (unsigned)has_vehicle)
     return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 32, "%u sections; expected %d to %d", (unsigned)section_count,
                       1 + has_vehicle, HC_RUNTIME_MAX_SURFACES + 1 + has_vehicle);
   if ((uint64_t)section_count > (model->size - HEADER_SIZE) / SECTION_ENTRY_SIZE)
     return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, 32, "%u sections do not fit in the file's %zu bytes",
-                   (unsigned)section_count, model->size);
+                      (unsigned)section_count, model->size);
   const size_t sections_end = HEADER_SIZE + (size_t)section_count * SECTION_ENTRY_SIZE;
   model->surface_count = section_count - 1 - (size_t)has_vehicle;
   if (model->surface_count > 0) {
@@ -419,17 +426,17 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
                                           : "a surface");
     if (reserved != 0)
       return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 4, "section %zu's reserved word is %u; expected 0", i,
-                     (unsigned)reserved);
+                        (unsigned)reserved);
     if (offset != previous_end || offset % 8 != 0)
       return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 8,
-                     "section %zu starts at byte %llu; expected %zu (sections "
-                     "follow one another, 8-byte aligned)",
-                     i, (unsigned long long)offset, previous_end);
+                        "section %zu starts at byte %llu; expected %zu (sections "
+                        "follow one another, 8-byte aligned)",
+                        i, (unsigned long long)offset, previous_end);
     if (size > (uint64_t)(model->size - (size_t)offset) || size % 8 != 0)
       return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, entry + 16,
-                     "section %zu has %llu bytes from byte %llu; the file has "
-                     "%zu bytes (and sections are multiples of 8 bytes)",
-                     i, (unsigned long long)size, (unsigned long long)offset, model->size);
+                        "section %zu has %llu bytes from byte %llu; the file has "
+                        "%zu bytes (and sections are multiples of 8 bytes)",
+                        i, (unsigned long long)size, (unsigned long long)offset, model->size);
     r.pos = (size_t)offset;
     r.end = (size_t)(offset + size);
     previous_end = r.end;
@@ -439,7 +446,7 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
       status = hc_read_pairs(&r, "model metadata", &model->metadata, &model->metadata_count);
       if (status == HC_RUNTIME_OK && r.pos != r.end)
         status = hc_fail_at(&r, HC_RUNTIME_E_FORMAT, r.pos, "%zu bytes after the model's metadata; expected none",
-                         r.end - r.pos);
+                            r.end - r.pos);
     } else if (vehicle_section) {
       r.section = "vehicle section";
       status = hc_read_vehicle(&r, model);
@@ -451,9 +458,9 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
       for (size_t j = 0; status == HC_RUNTIME_OK && j + 1 < i; ++j) {
         if (strcmp(model->surfaces[j].name, s->name) == 0)
           status = hc_fail_at(&r, HC_RUNTIME_E_FORMAT, (size_t)offset,
-                           "surface '%s' is also surface %zu; expected "
-                           "unique surface names",
-                           s->name, j + 1);
+                              "surface '%s' is also surface %zu; expected "
+                              "unique surface names",
+                              s->name, j + 1);
       }
     }
     if (status != HC_RUNTIME_OK) return status;
@@ -461,7 +468,7 @@ static int parse(hc_runtime_model* model, char* err, size_t errlen) {
   if (previous_end != model->size) {
     r.section = "file end";
     return hc_fail_at(&r, HC_RUNTIME_E_FORMAT, previous_end, "%zu bytes after the last section; expected none",
-                   model->size - previous_end);
+                      model->size - previous_end);
   }
   return HC_RUNTIME_OK;
 }

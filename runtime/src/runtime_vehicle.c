@@ -94,8 +94,8 @@ static void shortest_number(double value, char* out, size_t size) {
   while (n > 1 && digits[n - 1] == '0') --n;
   digits[n] = '\0';
   char sci[48], fixed[400];
-  snprintf(sci, sizeof sci, "%s%c%s%s%se%c%02d", negative ? "-" : "", digits[0], n > 1 ? "." : "", n > 1 ? digits + 1 : "",
-           "", exponent < 0 ? '-' : '+', exponent < 0 ? -exponent : exponent);
+  snprintf(sci, sizeof sci, "%s%c%s%s%se%c%02d", negative ? "-" : "", digits[0], n > 1 ? "." : "",
+           n > 1 ? digits + 1 : "", "", exponent < 0 ? '-' : '+', exponent < 0 ? -exponent : exponent);
   size_t f = 0;
   if (negative) fixed[f++] = '-';
   if (exponent < 0) {
@@ -130,7 +130,8 @@ static int surface_refusal(const hc_runtime_surface* s, size_t axis, double valu
     } else {
       shortest_number(s->axes[axis].lo, lo, sizeof lo);
       shortest_number(s->axes[axis].hi, hi, sizeof hi);
-      snprintf(err, errlen, "axis '%s' = %s is outside [%s, %s]; expected a value in range (or an extrapolation policy)",
+      snprintf(err, errlen,
+               "axis '%s' = %s is outside [%s, %s]; expected a value in range (or an extrapolation policy)",
                s->axis_info[axis].name, number, lo, hi);
     }
   }
@@ -167,8 +168,8 @@ static int add_damping(const hc_runtime_model* model, const double* nu_r, const 
 }
 
 /* The checks every vehicle call makes. */
-static int check_call(const hc_runtime_model* model, const double* x, const double* tau_b,
-                      const double* disturbances, const void* out, char* err, size_t errlen) {
+static int check_call(const hc_runtime_model* model, const double* x, const double* tau_b, const double* disturbances,
+                      const void* out, char* err, size_t errlen) {
   if (err != NULL && errlen > 0) err[0] = '\0';
   if (model == NULL || x == NULL || tau_b == NULL || out == NULL) {
     if (err != NULL && errlen > 0) snprintf(err, errlen, "hc_runtime_vehicle: a NULL model, state, tau_b or output");
@@ -195,9 +196,9 @@ static int motion_terms(const hc_runtime_model* model, const double* x, const do
                         const double* disturbances, terms* t, char* err, size_t errlen) {
   static const double kNoCurrent[3] = {0.0, 0.0, 0.0};
   const hc_runtime_vehicle* v = model->vehicle;
-  const int current = hc_motion_begin(x, v->weight_N, v->buoyancy_N, v->r_g, v->r_b,
-                                      current_n != NULL ? current_n : kNoCurrent, t->rotation, t->nu_r,
-                                      t->hydrostatic, t->damping, t->coriolis, t->current_b);
+  const int current =
+      hc_motion_begin(x, v->weight_N, v->buoyancy_N, v->r_g, v->r_b, current_n != NULL ? current_n : kNoCurrent,
+                      t->rotation, t->nu_r, t->hydrostatic, t->damping, t->coriolis, t->current_b);
   const int status = add_damping(model, t->nu_r, disturbances, t->damping, err, errlen);
   if (status != HC_RUNTIME_OK) return status;
   hc_motion_finish(x, current, v->m, v->m_rb, v->m_a, t->nu_r, t->current_b, t->coriolis);

@@ -104,8 +104,9 @@ static int read_derivatives(reader* r, hc_runtime_dof* d, const char* dof, uint3
   size_t total = 0;
   for (size_t k = 0; k < terms; ++k) {
     if (per_term[k] > HC_VEHICLE_MAX_FACTORS)
-      return hc_fail_at(r, HC_RUNTIME_E_FORMAT, counts_at + 4 * k, "damping of %s: term %zu has %u factors; expected at most %d",
-                        dof, k, (unsigned)per_term[k], HC_VEHICLE_MAX_FACTORS);
+      return hc_fail_at(r, HC_RUNTIME_E_FORMAT, counts_at + 4 * k,
+                        "damping of %s: term %zu has %u factors; expected at most %d", dof, k, (unsigned)per_term[k],
+                        HC_VEHICLE_MAX_FACTORS);
     d->begin[k] = total;
     total += per_term[k];
   }
@@ -219,8 +220,9 @@ int hc_read_vehicle(reader* r, hc_runtime_model* model) {
     return hc_fail_at(r, HC_RUNTIME_E_FORMAT, counts_at, "%u disturbances; expected at most %d that fit in the section",
                       (unsigned)disturbances, HC_VEHICLE_MAX_DISTURBANCES);
   if (thrusters > HC_VEHICLE_MAX_THRUSTERS || thrusters > (r->end - r->pos) / 72)
-    return hc_fail_at(r, HC_RUNTIME_E_FORMAT, counts_at + 4, "%u thrusters; expected at most %d that fit in the section",
-                      (unsigned)thrusters, HC_VEHICLE_MAX_THRUSTERS);
+    return hc_fail_at(r, HC_RUNTIME_E_FORMAT, counts_at + 4,
+                      "%u thrusters; expected at most %d that fit in the section", (unsigned)thrusters,
+                      HC_VEHICLE_MAX_THRUSTERS);
   status = read_matrix(r, "M_RB", v->m_rb);
   if (status == HC_RUNTIME_OK) status = read_matrix(r, "M_A", v->m_a);
   const size_t m_at = r->pos;

@@ -94,8 +94,8 @@ void write_runtime_file(const Database& db, const TableExportOptions& options, s
   std::string listed;
   for (const StoredSurface& s : stored) {
     if (vehicle && s.record.body != body)
-      throw InputError("surface '" + s.record.name + "' belongs to body '" + s.record.body + "'; expected surfaces of body '" +
-                       body + "' (the body named with --vehicle)");
+      throw InputError("surface '" + s.record.name + "' belongs to body '" + s.record.body +
+                       "'; expected surfaces of body '" + body + "' (the body named with --vehicle)");
     if (s.record.body != stored.front().record.body)
       throw InputError("surface '" + s.record.name + "' belongs to body '" + s.record.body + "', surface '" +
                        stored.front().record.name + "' to body '" + stored.front().record.body +
@@ -123,7 +123,8 @@ void write_runtime_file(const Database& db, const TableExportOptions& options, s
     return;
   }
   const std::string& file = vehicle->description().file;
-  const RuntimeVehicle runtime_vehicle{&*vehicle, {{"name", vehicle_name}, {"file", file.empty() ? "JSON text" : file}}};
+  const RuntimeVehicle runtime_vehicle{&*vehicle,
+                                       {{"name", vehicle_name}, {"file", file.empty() ? "JSON text" : file}}};
   write_file_atomically(options.output, runtime_file_bytes(model, surfaces, &runtime_vehicle));
 }
 
@@ -211,8 +212,9 @@ std::string TableExportResult::json() const {
 
 std::string TableExportResult::text() const {
   std::ostringstream out;
-  if (!vehicle.empty()) out << "exported vehicle " << escape::one_line(vehicle) << " of body " << escape::one_line(body)
-                            << " (" << surfaces.size() << " surfaces) as runtime\n";
+  if (!vehicle.empty())
+    out << "exported vehicle " << escape::one_line(vehicle) << " of body " << escape::one_line(body) << " ("
+        << surfaces.size() << " surfaces) as runtime\n";
   if (surface.empty()) {
     for (const auto& file : files) out << "  wrote " << escape::one_line(file) << '\n';
     return out.str();

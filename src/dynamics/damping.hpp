@@ -166,7 +166,7 @@ class DampingModel {
   };
   struct Lookup {
     CoefficientSurface surface;
-    std::string key;  // surface name + bindings: DOFs with equal keys share the lookup
+    std::string key;   // surface name + bindings: DOFs with equal keys share the lookup
     std::string name;  // the surface's name
     std::size_t axis_count = 0;
     std::array<std::size_t, kMaxAxes> source{};  // 0..5: nu_r component; 6 + k: disturbance k
@@ -176,7 +176,7 @@ class DampingModel {
     std::array<double, 6> sign{};
   };
 
-public:
+ public:
   /// What the model evaluates, as plain data (for the runtime file,
   /// src/export/runtime_export.hpp): per DOF its kind and numbers, with the
   /// signs folded in as evaluate() uses them.

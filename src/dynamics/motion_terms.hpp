@@ -19,9 +19,9 @@
 // Frames and signs as in vehicle_model.hpp: body axes, forces on the body.
 #pragma once
 
+#include <math.h>
 #include <Eigen/Core>
 #include <cmath>
-#include <math.h>
 #include <type_traits>
 
 namespace hydrocoef::motion {

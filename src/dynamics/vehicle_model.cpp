@@ -87,10 +87,10 @@ void VehicleModel::motion_terms(const T* x, const ModelInputs& inputs, AddDampin
                                 motion::Terms<T>& terms) const {
   // The shared kernel's derivative (runtime/src/motion_kernel.h), the
   // damping added between its parts at the velocity relative to the water.
-  const int current = motion::kernel::hc_motion_begin(
-      x, weight_N_, description_.buoyancy_N, description_.r_g_b.data(), description_.r_b_b.data(),
-      inputs.current_n.data(), terms.rotation, terms.nu_r, terms.hydrostatic, terms.damping, terms.coriolis,
-      terms.current_b);
+  const int current =
+      motion::kernel::hc_motion_begin(x, weight_N_, description_.buoyancy_N, description_.r_g_b.data(),
+                                      description_.r_b_b.data(), inputs.current_n.data(), terms.rotation, terms.nu_r,
+                                      terms.hydrostatic, terms.damping, terms.coriolis, terms.current_b);
   add_damping(static_cast<const T*>(terms.nu_r), terms.damping);
   motion::kernel::hc_motion_finish(x, current, m_.data(), m_rb_.data(), m_a_.data(), terms.nu_r, terms.current_b,
                                    terms.coriolis);

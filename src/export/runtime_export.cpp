@@ -327,7 +327,9 @@ std::string runtime_file_bytes(const RuntimeTexts& model, const std::vector<Runt
   std::size_t offset = kHeaderSize + sections.size() * kSectionEntrySize;
   offset = (offset + 7) / 8 * 8;
   for (std::size_t i = 0; i < sections.size(); ++i) {
-    file.u32(i == 0 ? kSectionModel : vehicle != nullptr && i + 1 == sections.size() ? kSectionVehicle : kSectionSurface);
+    file.u32(i == 0                                           ? kSectionModel
+             : vehicle != nullptr && i + 1 == sections.size() ? kSectionVehicle
+                                                              : kSectionSurface);
     file.u32(0);
     file.u64(offset);
     file.u64(sections[i].size());

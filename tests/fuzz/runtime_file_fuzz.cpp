@@ -58,7 +58,8 @@ void exercise_vehicle(const hc_runtime_model* model) {
   if (!hc_runtime_has_vehicle(model)) return;
   const std::size_t disturbances = hc_runtime_vehicle_disturbance_count(model);
   for (std::size_t i = 0; i < disturbances; ++i)
-    if (hc_runtime_vehicle_disturbance_name(model, i) == nullptr) hydrocoef::fuzz::finding("a disturbance without a name");
+    if (hc_runtime_vehicle_disturbance_name(model, i) == nullptr)
+      hydrocoef::fuzz::finding("a disturbance without a name");
   std::vector<double> values(disturbances + 1, 0.25), thrust(hc_runtime_vehicle_thruster_count(model) + 1, 0.5);
   double tau[6] = {0.1, 0.0, 0.0, 0.0, 0.0, 0.01}, x_dot[13], breakdown[30];
   (void)hc_runtime_vehicle_thrust_force(model, thrust.data(), tau);
@@ -69,7 +70,8 @@ void exercise_vehicle(const hc_runtime_model* model) {
     (void)hc_runtime_vehicle_derivative(model, x, tau, current, values.data(), x_dot, err, sizeof err);
     (void)hc_runtime_vehicle_forces(model, x, tau, nullptr, values.data(), breakdown, err, sizeof err);
     const int status = hc_runtime_vehicle_step_rk4(model, x, tau, current, values.data(), 0.01, err, sizeof err);
-    if (status != HC_RUNTIME_OK && strnlen(err, sizeof err) == 0) hydrocoef::fuzz::finding("a refused step without a message");
+    if (status != HC_RUNTIME_OK && strnlen(err, sizeof err) == 0)
+      hydrocoef::fuzz::finding("a refused step without a message");
   }
 }
 

@@ -228,8 +228,9 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
   vehicle.replace(at, law.size(), R"("X": {"surface": "surge", "output": "X", "sign": "on-body"})");
   std::ofstream(dir / "vehicle.json") << vehicle;
 
-  const auto exported = run_cli(
-      {"export", "asr-v", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "asr-v.hcrt", "--json"}, dir.path());
+  const auto exported =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "asr-v.hcrt", "--json"},
+              dir.path());
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   const auto report = nlohmann::json::parse(exported.out);
   EXPECT_EQ(report.at("surfaces"), nlohmann::json({"surge"}));
@@ -259,7 +260,8 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
     };
     const auto u32 = [](const std::string& bytes, std::size_t at) {
       std::uint32_t value = 0;
-      for (int i = 3; i >= 0; --i) value = value << 8 | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
+      for (int i = 3; i >= 0; --i)
+        value = value << 8 | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
       return value;
     };
     // The vehicle section past its texts (the vehicle file's path differs: relative for the CLI).
@@ -283,15 +285,15 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
                 "--vehicle applies to --format runtime only; expected it with runtime (got --format csv)");
     }
   }
-  const VehicleModel library =
-      load_vehicle_model((dir / "vehicle.json").string(), (dir / "hydrocoef.db").string());
+  const VehicleModel library = load_vehicle_model((dir / "vehicle.json").string(), (dir / "hydrocoef.db").string());
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::size_t mismatches = 0;
   for (int n = 0; n < 2000; ++n) {
     Vector6 nu;
     for (int i = 0; i < 6; ++i) nu[i] = 0.3 * unit(random);
-    const StateVector x = make_state(Vector3::Zero(), Quaternion4(1.0, 0.1 * unit(random), 0.1 * unit(random), unit(random)), nu);
+    const StateVector x =
+        make_state(Vector3::Zero(), Quaternion4(1.0, 0.1 * unit(random), 0.1 * unit(random), unit(random)), nu);
     ModelInputs inputs;
     inputs.tau_b[5] = 0.003 * unit(random);
     inputs.current_n = Vector3(0.05 * unit(random), 0.05 * unit(random), 0.0);
@@ -308,8 +310,8 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
 
   // A vehicle file the library refuses: its one line, exit 2, nothing written.
   std::ofstream(dir / "bad.json") << R"({"mass": -1, "inertia": [1, 1, 1], "center_of_gravity": [0, 0, 0]})";
-  const auto bad = run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "bad.json", "-o", "bad.hcrt"},
-                           dir.path());
+  const auto bad =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "bad.json", "-o", "bad.hcrt"}, dir.path());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("bad.json"), std::string::npos) << bad.err;
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
@@ -318,15 +320,15 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
   std::string missing = vehicle;
   missing.replace(missing.find("\"surge\""), 7, "\"nosuch\"");
   std::ofstream(dir / "missing.json") << missing;
-  const auto unknown = run_cli(
-      {"export", "asr-v", "--format", "runtime", "--vehicle", "missing.json", "-o", "bad.hcrt"}, dir.path());
+  const auto unknown =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "missing.json", "-o", "bad.hcrt"}, dir.path());
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.err.find("nosuch"), std::string::npos) << unknown.err;
   EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1) << unknown.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
   // A surface of another body than the one named.
-  const auto other = run_cli(
-      {"export", "sphere", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "bad.hcrt"}, dir.path());
+  const auto other =
+      run_cli({"export", "sphere", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "bad.hcrt"}, dir.path());
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("expected surfaces of body 'sphere'"), std::string::npos) << other.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
@@ -349,8 +351,8 @@ TEST(RuntimeCli, TheAsrVPoolTestWithItsSurfacesStepsAsSimulate) {
         run_cli({"import", file, "--body", "asr-v", "--sign", sign, "--rho", "998.2", "--nu", "1.004e-6"}, dir.path());
     ASSERT_EQ(imported.exit_code, 0) << imported.err;
   }
-  for (const auto& [name, output, axis] : std::vector<std::array<std::string, 3>>{{"asr-v-surge", "X", "u"},
-                                                                                 {"asr-v-yaw", "N", "r"}}) {
+  for (const auto& [name, output, axis] :
+       std::vector<std::array<std::string, 3>>{{"asr-v-surge", "X", "u"}, {"asr-v-yaw", "N", "r"}}) {
     const auto built = run_cli({"surface", "build", name, "--body", "asr-v", "--outputs", output, "--axes", axis,
                                 "--method", "pchip", "--extrapolate", "linear"},
                                dir.path());

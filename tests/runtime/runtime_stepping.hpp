@@ -26,19 +26,22 @@ inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(
 // its inputs held; the output events at k / rate, each span in equal RK4
 // steps of at most the scenario's step) and compares every output state and
 // the final state with simulate_model's, bit for bit.
-inline void expect_simulate_bit_for_bit(const VehicleModel& model, const hc_runtime_model* runtime, const Scenario& scenario) {
+inline void expect_simulate_bit_for_bit(const VehicleModel& model, const hc_runtime_model* runtime,
+                                        const Scenario& scenario) {
   ASSERT_EQ(scenario.segments.size(), 1u);
   const SimulationResult result = simulate_model(model, scenario);
   const SegmentInputs inputs = segment_inputs(model, scenario, 0);
   StateVector x =
       make_state(scenario.initial_position_n, quaternion_from_euler(scenario.initial_euler_rad), scenario.initial_nu_b);
-  const auto outputs = static_cast<std::size_t>(std::floor(scenario.duration_s * scenario.output_rate_Hz * (1.0 + 1e-12)));
+  const auto outputs =
+      static_cast<std::size_t>(std::floor(scenario.duration_s * scenario.output_rate_Hz * (1.0 + 1e-12)));
   ASSERT_EQ(result.samples.size(), outputs + 1);  // the duration is a multiple of the output interval
   double t = 0.0;
   std::size_t mismatches = 0, steps = 0;
   for (std::size_t k = 1; k <= outputs; ++k) {
     const double event = static_cast<double>(k) / scenario.output_rate_Hz;
-    const auto count = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((event - t) / scenario.integrator.step_s - 1e-9)));
+    const auto count =
+        std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((event - t) / scenario.integrator.step_s - 1e-9)));
     const double h = (event - t) / static_cast<double>(count);
     for (std::size_t s = 0; s < count; ++s) {
       char err[256] = "";

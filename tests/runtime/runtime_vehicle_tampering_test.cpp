@@ -12,9 +12,9 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
-#include <utility>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hydrocoef/runtime.h"
@@ -82,8 +82,8 @@ Opened open_bytes(const std::string& bytes) {
 // The vehicle: a law (X), a derivative model with a disturbance (Y), two
 // surfaces (M: 1-D; N: 2-D with an axis bound to the disturbance), one thruster.
 struct Original {
-  CoefficientSurface sm{GridTable({{"q", {-1.0, 0.0, 1.0}, Extrapolation::Clamp}}, {"M"}, {0.5, 0.0, -0.5},
-                                  Interpolation::Linear)};
+  CoefficientSurface sm{
+      GridTable({{"q", {-1.0, 0.0, 1.0}, Extrapolation::Clamp}}, {"M"}, {0.5, 0.0, -0.5}, Interpolation::Linear)};
   CoefficientSurface sn{GridTable({{"r", {-1.0, 1.0}, Extrapolation::Linear}, {"h", {0.0, 1.0}, Extrapolation::Clamp}},
                                   {"N", "K"}, {0.1, 0.0, -0.1, 0.0, 0.2, 0.0, -0.2, 0.0}, Interpolation::Linear)};
   VehicleModel model{parse_vehicle(R"({"name": "t", "mass": 2.0, "inertia": [0.1, 0.1, 0.1],
@@ -155,22 +155,30 @@ std::vector<Variant> variants() {
     out.push_back({std::move(name), rehashed(bytes), status, std::move(fragment)});
   };
   const std::size_t law = o.dof[0], derivatives = o.dof[1], sm = o.dof[4], sn = o.dof[5];
-  add("disturbance count", [&](std::string& b) { put_u32(b, o.counts, 2); }, HC_RUNTIME_E_FORMAT, "vehicle section");
-  add("huge disturbance count", [&](std::string& b) { put_u32(b, o.counts, 0xffffffffu); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "disturbance count", [&](std::string& b) { put_u32(b, o.counts, 2); }, HC_RUNTIME_E_FORMAT, "vehicle section");
+  add(
+      "huge disturbance count", [&](std::string& b) { put_u32(b, o.counts, 0xffffffffu); }, HC_RUNTIME_E_FORMAT,
       "disturbances");
-  add("huge thruster count", [&](std::string& b) { put_u32(b, o.counts + 4, 1u << 30); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "huge thruster count", [&](std::string& b) { put_u32(b, o.counts + 4, 1u << 30); }, HC_RUNTIME_E_FORMAT,
       "thrusters");
-  add("no thruster", [&](std::string& b) { put_u32(b, o.counts + 4, 0); }, HC_RUNTIME_E_FORMAT, "vehicle section");
-  add("NaN in M_RB", [&](std::string& b) { put_double(b, o.m_rb + 8, std::nan("")); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "no thruster", [&](std::string& b) { put_u32(b, o.counts + 4, 0); }, HC_RUNTIME_E_FORMAT, "vehicle section");
+  add(
+      "NaN in M_RB", [&](std::string& b) { put_double(b, o.m_rb + 8, std::nan("")); }, HC_RUNTIME_E_FORMAT,
       "not finite");
-  add("NaN in M^-1", [&](std::string& b) { put_double(b, o.m_inv + 8 * 14, std::nan("")); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "NaN in M^-1", [&](std::string& b) { put_double(b, o.m_inv + 8 * 14, std::nan("")); }, HC_RUNTIME_E_FORMAT,
       "M^-1 number 14 is not finite");
-  add("infinite M", [&](std::string& b) { put_double(b, o.m, std::numeric_limits<double>::infinity()); },
+  add(
+      "infinite M", [&](std::string& b) { put_double(b, o.m, std::numeric_limits<double>::infinity()); },
       HC_RUNTIME_E_FORMAT, "M number 0 is not finite");
-  add("M not M_RB + M_A", [&](std::string& b) { put_double(b, o.m + 8 * 7, 123.0); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "M not M_RB + M_A", [&](std::string& b) { put_double(b, o.m + 8 * 7, 123.0); }, HC_RUNTIME_E_FORMAT,
       "expected M_RB + M_A");
-  add("NaN weight", [&](std::string& b) { put_double(b, o.scalars, std::nan("")); }, HC_RUNTIME_E_FORMAT,
-      "not finite");
+  add(
+      "NaN weight", [&](std::string& b) { put_double(b, o.scalars, std::nan("")); }, HC_RUNTIME_E_FORMAT, "not finite");
   add(
       "velocity named disturbance",
       [&](std::string& b) {
@@ -185,62 +193,96 @@ std::vector<Variant> variants() {
         b.replace(o.names + 4, 4, std::string(4, '\0'));
       },
       HC_RUNTIME_E_FORMAT, "name is empty");
-  add("thruster limits", [&](std::string& b) { put_double(b, o.thruster + 48, 2.0); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "thruster limits", [&](std::string& b) { put_double(b, o.thruster + 48, 2.0); }, HC_RUNTIME_E_FORMAT,
       "above max");
-  add("thruster NaN", [&](std::string& b) { put_double(b, o.thruster + 8, std::nan("")); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "thruster NaN", [&](std::string& b) { put_double(b, o.thruster + 8, std::nan("")); }, HC_RUNTIME_E_FORMAT,
       "not finite");
-  add("DOF kind", [&](std::string& b) { put_u32(b, law, 7); }, HC_RUNTIME_E_FORMAT, "damping of X: kind 7");
-  add("none with counts", [&](std::string& b) { put_u32(b, o.dof[2] + 4, 1); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "DOF kind", [&](std::string& b) { put_u32(b, law, 7); }, HC_RUNTIME_E_FORMAT, "damping of X: kind 7");
+  add(
+      "none with counts", [&](std::string& b) { put_u32(b, o.dof[2] + 4, 1); }, HC_RUNTIME_E_FORMAT,
       "damping of Z: none");
-  add("law term code", [&](std::string& b) { put_u32(b, law + 16, 9); }, HC_RUNTIME_E_FORMAT, "term code 9");
-  add("law of no terms", [&](std::string& b) { put_u32(b, law + 4, 0); }, HC_RUNTIME_E_FORMAT, "a law of 0 terms");
-  add("law of 7 terms", [&](std::string& b) { put_u32(b, law + 4, 7); }, HC_RUNTIME_E_FORMAT, "a law of 7 terms");
-  add("law of 3 terms", [&](std::string& b) { put_u32(b, law + 4, 3); }, HC_RUNTIME_E_FORMAT, "vehicle section");
-  add("law variable", [&](std::string& b) { put_u32(b, law + 8, 6); }, HC_RUNTIME_E_FORMAT, "law variable 6");
-  add("law reserved", [&](std::string& b) { put_u32(b, law + 12, 1); }, HC_RUNTIME_E_FORMAT, "reserved word 1");
-  add("law coefficient NaN", [&](std::string& b) { put_double(b, law + 24, std::nan("")); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "law term code", [&](std::string& b) { put_u32(b, law + 16, 9); }, HC_RUNTIME_E_FORMAT, "term code 9");
+  add(
+      "law of no terms", [&](std::string& b) { put_u32(b, law + 4, 0); }, HC_RUNTIME_E_FORMAT, "a law of 0 terms");
+  add(
+      "law of 7 terms", [&](std::string& b) { put_u32(b, law + 4, 7); }, HC_RUNTIME_E_FORMAT, "a law of 7 terms");
+  add(
+      "law of 3 terms", [&](std::string& b) { put_u32(b, law + 4, 3); }, HC_RUNTIME_E_FORMAT, "vehicle section");
+  add(
+      "law variable", [&](std::string& b) { put_u32(b, law + 8, 6); }, HC_RUNTIME_E_FORMAT, "law variable 6");
+  add(
+      "law reserved", [&](std::string& b) { put_u32(b, law + 12, 1); }, HC_RUNTIME_E_FORMAT, "reserved word 1");
+  add(
+      "law coefficient NaN", [&](std::string& b) { put_double(b, law + 24, std::nan("")); }, HC_RUNTIME_E_FORMAT,
       "not finite");
   // Y: terms v, u*v, wave: 3 factor counts (1, 2, 1) and a padding word, 4 factors.
   const std::size_t factors = derivatives + 16 + 16;
-  add("derivative terms 0", [&](std::string& b) { put_u32(b, derivatives + 4, 0); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "derivative terms 0", [&](std::string& b) { put_u32(b, derivatives + 4, 0); }, HC_RUNTIME_E_FORMAT,
       "0 derivative terms");
-  add("derivative factor count", [&](std::string& b) { put_u32(b, derivatives + 8, 5); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "derivative factor count", [&](std::string& b) { put_u32(b, derivatives + 8, 5); }, HC_RUNTIME_E_FORMAT,
       "add up to 4");
-  add("term's factor count", [&](std::string& b) { put_u32(b, derivatives + 16, 99); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "term's factor count", [&](std::string& b) { put_u32(b, derivatives + 16, 99); }, HC_RUNTIME_E_FORMAT,
       "has 99 factors");
-  add("factor source", [&](std::string& b) { put_u32(b, factors + 48, 7); }, HC_RUNTIME_E_FORMAT, "source 7");
-  add("factor power", [&](std::string& b) { put_u32(b, factors + 4, 5); }, HC_RUNTIME_E_FORMAT, "factor power 5");
-  add("factor power 0", [&](std::string& b) { put_u32(b, factors + 4, 0); }, HC_RUNTIME_E_FORMAT, "factor power 0");
-  add("factor odd", [&](std::string& b) { put_u32(b, factors + 8, 2); }, HC_RUNTIME_E_FORMAT, "odd flag 2");
-  add("factor reserved", [&](std::string& b) { put_u32(b, factors + 12, 2); }, HC_RUNTIME_E_FORMAT, "reserved");
-  add("padding word", [&](std::string& b) { put_u32(b, derivatives + 28, 1); }, HC_RUNTIME_E_FORMAT, "padding word");
-  add("surface beyond the file", [&](std::string& b) { put_u32(b, sm + 4, 2); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "factor source", [&](std::string& b) { put_u32(b, factors + 48, 7); }, HC_RUNTIME_E_FORMAT, "source 7");
+  add(
+      "factor power", [&](std::string& b) { put_u32(b, factors + 4, 5); }, HC_RUNTIME_E_FORMAT, "factor power 5");
+  add(
+      "factor power 0", [&](std::string& b) { put_u32(b, factors + 4, 0); }, HC_RUNTIME_E_FORMAT, "factor power 0");
+  add(
+      "factor odd", [&](std::string& b) { put_u32(b, factors + 8, 2); }, HC_RUNTIME_E_FORMAT, "odd flag 2");
+  add(
+      "factor reserved", [&](std::string& b) { put_u32(b, factors + 12, 2); }, HC_RUNTIME_E_FORMAT, "reserved");
+  add(
+      "padding word", [&](std::string& b) { put_u32(b, derivatives + 28, 1); }, HC_RUNTIME_E_FORMAT, "padding word");
+  add(
+      "surface beyond the file", [&](std::string& b) { put_u32(b, sm + 4, 2); }, HC_RUNTIME_E_FORMAT,
       "surface index 2; the file has 2 surfaces");
-  add("huge surface index", [&](std::string& b) { put_u32(b, sn + 4, 0xffffffffu); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "huge surface index", [&](std::string& b) { put_u32(b, sn + 4, 0xffffffffu); }, HC_RUNTIME_E_FORMAT,
       "surface index 4294967295");
-  add("output index", [&](std::string& b) { put_u32(b, sn + 8, 2); }, HC_RUNTIME_E_FORMAT, "output 2 of surface 'sn'");
-  add("axis source count", [&](std::string& b) { put_u32(b, sn + 12, 1); }, HC_RUNTIME_E_FORMAT, "1 axis sources");
-  add("axis source", [&](std::string& b) { put_u32(b, sn + 28, 8); }, HC_RUNTIME_E_FORMAT, "source 8");
-  add("surface sign", [&](std::string& b) { put_double(b, sm + 16, 0.5); }, HC_RUNTIME_E_FORMAT, "sign 0.5");
-  add("surface sign NaN", [&](std::string& b) { put_double(b, sm + 16, std::nan("")); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "output index", [&](std::string& b) { put_u32(b, sn + 8, 2); }, HC_RUNTIME_E_FORMAT, "output 2 of surface 'sn'");
+  add(
+      "axis source count", [&](std::string& b) { put_u32(b, sn + 12, 1); }, HC_RUNTIME_E_FORMAT, "1 axis sources");
+  add(
+      "axis source", [&](std::string& b) { put_u32(b, sn + 28, 8); }, HC_RUNTIME_E_FORMAT, "source 8");
+  add(
+      "surface sign", [&](std::string& b) { put_double(b, sm + 16, 0.5); }, HC_RUNTIME_E_FORMAT, "sign 0.5");
+  add(
+      "surface sign NaN", [&](std::string& b) { put_double(b, sm + 16, std::nan("")); }, HC_RUNTIME_E_FORMAT,
       "expected 1 or -1");
-  add("trailing bytes", [&](std::string& b) {
+  add(
+      "trailing bytes",
+      [&](std::string& b) {
         b += std::string(8, '\0');
         const std::size_t entry = 64 + 24 * (o.sections - 1);
         put_u64(b, entry + 16, get_u64(b, entry + 16) + 8);
       },
       HC_RUNTIME_E_FORMAT, "after the vehicle's last DOF");
-  add("cut short", [&](std::string& b) {
+  add(
+      "cut short",
+      [&](std::string& b) {
         b.resize(b.size() - 8);
         const std::size_t entry = 64 + 24 * (o.sections - 1);
         put_u64(b, entry + 16, get_u64(b, entry + 16) - 8);
       },
       HC_RUNTIME_E_FORMAT, "vehicle section");
-  add("version 1 with a vehicle", [&](std::string& b) { put_u32(b, 8, 1); }, HC_RUNTIME_E_FORMAT,
+  add(
+      "version 1 with a vehicle", [&](std::string& b) { put_u32(b, 8, 1); }, HC_RUNTIME_E_FORMAT,
       "has kind 3; expected 2");
-  add("vehicle kind in version 2 swapped", [&](std::string& b) { put_u32(b, 64 + 24 * (o.sections - 1), 2); },
+  add(
+      "vehicle kind in version 2 swapped", [&](std::string& b) { put_u32(b, 64 + 24 * (o.sections - 1), 2); },
       HC_RUNTIME_E_FORMAT, "vehicle section comes last");
-  add("version 3", [&](std::string& b) { put_u32(b, 8, 3); }, HC_RUNTIME_E_VERSION, "format version 3");
+  add(
+      "version 3", [&](std::string& b) { put_u32(b, 8, 3); }, HC_RUNTIME_E_VERSION, "format version 3");
   return out;
 }
 
@@ -284,16 +326,17 @@ TEST(RuntimeVehicleTampering, SweepsNeverCrash) {
 // --gtest_also_run_disabled_tests --gtest_filter=*WriteFuzzSeeds.
 TEST(RuntimeVehicleTampering, DISABLED_WriteFuzzSeeds) {
   const Original o;
-  const VehicleModel laws(parse_vehicle(R"({"mass": 1.5, "inertia": [0.02, 0.03, 0.04], "center_of_gravity": [0, 0, 0.01],
+  const VehicleModel laws(
+      parse_vehicle(R"({"mass": 1.5, "inertia": [0.02, 0.03, 0.04], "center_of_gravity": [0, 0, 0.01],
       "buoyancy_force": 14.0, "added_mass": {"diagonal": [0.5, 0.6, 0.7, 0.01, 0.02, 0.03]},
       "damping": {"X": {"law": {"1": 0.01, "u": -0.1, "u|u|": -2.0, "u^3": -0.5}, "sign": "on-body"},
                   "N": {"derivatives": {"terms": "r, r*|r|, u*r, gust^2", "coefficients": [0.1, 1.0, 0.2, 0.01]},
                         "sign": "opposing"}}})",
-                                        "laws.json"));
+                    "laws.json"));
   const RuntimeVehicle vehicle{&laws, {{"name", "laws"}}};
   const std::string laws_bytes = runtime_file_bytes(runtime_model_texts({}, true), {}, &vehicle);
-  for (const auto& [name, bytes] : {std::pair{"runtime-vehicle-surfaces.bin", o.bytes},
-                                    std::pair{"runtime-vehicle-laws.bin", laws_bytes}}) {
+  for (const auto& [name, bytes] :
+       {std::pair{"runtime-vehicle-surfaces.bin", o.bytes}, std::pair{"runtime-vehicle-laws.bin", laws_bytes}}) {
     ASSERT_LE(bytes.size(), 4096u) << name;
     std::ofstream(std::string(HYDROCOEF_SOURCE_DIR "/tests/data/fuzz-seeds/") + name, std::ios::binary) << bytes;
   }

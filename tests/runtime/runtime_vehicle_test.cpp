@@ -141,7 +141,8 @@ const std::vector<Vehicle>& vehicles() {
 // nearest; policies clamp, linear, method and error (on a wide range).
 const Surfaces& surfaces() {
   static const Surfaces all = {
-      {"sx", surface({{"u", 1.5, Extrapolation::Linear}, {"v", 0.8, Extrapolation::Clamp}}, {"X"}, Interpolation::Linear)},
+      {"sx",
+       surface({{"u", 1.5, Extrapolation::Linear}, {"v", 0.8, Extrapolation::Clamp}}, {"X"}, Interpolation::Linear)},
       {"syn", surface({{"v", 1.0, Extrapolation::Method}, {"r", 1.5, Extrapolation::Linear}}, {"Y", "N", "K"},
                       Interpolation::Pchip)},
       {"sz", surface({{"w", 1.0, Extrapolation::Linear}}, {"Z"}, Interpolation::Pchip)},
@@ -149,7 +150,8 @@ const Surfaces& surfaces() {
        surface({{"p", 2.0, Extrapolation::Clamp}, {"c", 0.5, Extrapolation::Clamp}, {"h", 1.0, Extrapolation::Linear}},
                {"K"}, Interpolation::NaturalSpline)},
       {"sm", surface({{"q", 4.0, Extrapolation::Error}}, {"M"}, Interpolation::Nearest)},
-      {"sn", surface({{"r", 1.5, Extrapolation::Method}, {"u", 1.0, Extrapolation::Clamp}}, {"N"}, Interpolation::Akima)},
+      {"sn",
+       surface({{"r", 1.5, Extrapolation::Method}, {"u", 1.0, Extrapolation::Clamp}}, {"N"}, Interpolation::Akima)},
   };
   return all;
 }
@@ -211,9 +213,10 @@ TEST(RuntimeVehicle, DerivativeAndForcesAreTheLibrarysBitForBit) {
     for (std::size_t i = 0; i < names.size(); ++i)
       EXPECT_EQ(hc_runtime_vehicle_disturbance_name(runtime.get(), i), names[i]);
     EXPECT_STREQ(hc_runtime_vehicle_metadata(runtime.get(), "name"), "test vehicle");
-    for (const auto& [key, fragment] : std::vector<std::pair<std::string, std::string>>{
-             {"state", "quaternion, scalar first"}, {"inputs", "current_n, the water velocity in NED"},
-             {"equation", "forces on the body"}})
+    for (const auto& [key, fragment] :
+         std::vector<std::pair<std::string, std::string>>{{"state", "quaternion, scalar first"},
+                                                          {"inputs", "current_n, the water velocity in NED"},
+                                                          {"equation", "forces on the body"}})
       EXPECT_NE(std::string(hc_runtime_vehicle_metadata(runtime.get(), key.c_str())).find(fragment), std::string::npos)
           << key;
     std::size_t mismatches = 0, refused = 0;
@@ -361,7 +364,8 @@ TEST(RuntimeVehicle, ARefusedStateGivesTheLibrarysMessage) {
   EXPECT_NE(std::string(err).find("disturbances"), std::string::npos) << err;
   EXPECT_EQ(hc_runtime_vehicle_derivative(nullptr, x, tau, nullptr, nullptr, x_dot, err, sizeof err),
             HC_RUNTIME_E_ARGUMENT);
-  const std::string plain = runtime_file_bytes(runtime_model_texts({}), {runtime_surface("sm", surfaces().at("sm"), {})});
+  const std::string plain =
+      runtime_file_bytes(runtime_model_texts({}), {runtime_surface("sm", surfaces().at("sm"), {})});
   const Model surfaces_only = open_bytes(plain);
   EXPECT_EQ(hc_runtime_has_vehicle(surfaces_only.get()), 0);
   EXPECT_EQ(hc_runtime_vehicle_derivative(surfaces_only.get(), x, tau, nullptr, nullptr, x_dot, err, sizeof err),
