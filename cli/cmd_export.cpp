@@ -28,8 +28,10 @@ void run_export(ExportArgs& args, const GlobalOptions& global) {
         "openfoam-forcecoeffs only (got --format " +
         args.options.format + ")");
   if (runs) {
-    if (args.options.single_precision || !args.options.identifier.empty() || !args.options.surfaces.empty())
-      throw hydrocoef::InputError("--float, --identifier and --surface do not apply to --format openfoam-forcecoeffs");
+    if (args.options.single_precision || !args.options.identifier.empty() || !args.options.surfaces.empty() ||
+        !args.options.vehicle.empty())
+      throw hydrocoef::InputError(
+          "--float, --identifier, --surface and --vehicle do not apply to --format openfoam-forcecoeffs");
     if (!args.options.name.empty())
       throw hydrocoef::InputError(
           "--format openfoam-forcecoeffs writes runs, not a surface, and takes no NAME; select runs with --body, "
@@ -59,7 +61,7 @@ void add_export_command(CLI::App& app, const GlobalOptions& global) {
       "(libhydrocoef_runtime's file: the surfaces as hydrocoef evaluates them, with their standard deviation); "
       "or, with no NAME, openfoam-forcecoeffs (the selected runs as OpenFOAM forceCoeffs files, one per run in "
       "the folder -o, in the case's axes)");
-  command->add_option("name", options.name, "Surface name (not with openfoam-forcecoeffs)");
+  command->add_option("name", options.name, "Surface name (with --vehicle: the body; none with openfoam-forcecoeffs)");
   command
       ->add_option("--format", options.format,
                    "csv, csv-wide, json, c, mat, jsbsim, vtk, daveml, runtime or openfoam-forcecoeffs")
@@ -84,6 +86,9 @@ void add_export_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--precision", runs.precision,
                       "openfoam-forcecoeffs: digits after the point (16: exact; OpenFOAM's writePrecision)");
   command->add_flag("--mean-only", runs.mean_only, "openfoam-forcecoeffs: one row of the stored forces per run");
+  command->add_option("--vehicle", options.vehicle,
+                      "runtime: a vehicle file (as simulate's); NAME is then its body, and the file holds its "
+                      "whole dynamics model and the surfaces its damping reads");
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_export(*args, global); });
 }

@@ -32,7 +32,7 @@ inline namespace api {
 /// What `hydrocoef export` writes: a stored gridded surface (a table, or an
 /// RBF resampled with --resample) in one of the formats.
 struct TableExportOptions {
-  std::string name;  ///< the stored surface
+  std::string name;  ///< the stored surface (with `vehicle`: the body)
   /// csv, csv-wide, json, c (C99 header), mat (MATLAB v5 + Simulink set-up
   /// script), jsbsim, vtk, daveml (with each node's standard deviation when
   /// the surface states one) or runtime (libhydrocoef_runtime's file,
@@ -45,8 +45,15 @@ struct TableExportOptions {
   /// runtime: further surfaces in the same file (--surface, repeated), of
   /// the same body as `name`; the file holds `name` first, then these.
   std::vector<std::string> surfaces;
+  /// runtime: a vehicle file (or its JSON text; src/dynamics/vehicle.hpp,
+  /// `hydrocoef simulate --vehicle`) whose whole dynamics model the file
+  /// holds too (format version 2), its stored fits, derivative models and
+  /// surfaces read from this database as simulate reads them; `name` is then
+  /// the body, and the file holds the surfaces the vehicle's damping reads,
+  /// then `surfaces` (--vehicle).
+  std::string vehicle;
   /// InputError for an unknown format, --float / --identifier with a format
-  /// other than c, or --surface with a format other than runtime.
+  /// other than c, or --surface or --vehicle with a format other than runtime.
   HYDROCOEF_EXPORT void validate() const;
 };
 
@@ -72,6 +79,10 @@ struct TableExportResult {
   std::vector<std::string> files;  ///< the files written
   /// runtime: every surface in the file, `surface` first ({surface} otherwise).
   std::vector<std::string> surfaces;
+  /// runtime with a vehicle: its name ("" otherwise); `surface` and the
+  /// table's fields are then those of the file's first surface, empty when
+  /// its damping reads none.
+  std::string vehicle;
   std::vector<TableExportAxis> axes;
   std::vector<std::string> outputs;
   std::vector<std::string> output_units;

@@ -299,6 +299,7 @@ class TableExportResult:
     nodes: int
     files: list[str]
     surfaces: list[str]
+    vehicle: str
     axes: list[TableExportAxis]
     outputs: list[str]
     output_units: list[str]
@@ -458,7 +459,8 @@ class Database:
     def query_surface(self, name: str, point: Mapping[str, float] | None = None, *, input: _Path | None = None,
                       output: str = "-", gradient: bool = False, uncertainty: bool = False) -> SurfaceQueryResult: ...
     def export_surface(self, name: str, *, format: str, output: _Path, single_precision: bool = False,
-                       identifier: str = "", surfaces: Sequence[str] = ()) -> TableExportResult: ...
+                       identifier: str = "", surfaces: Sequence[str] = (),
+                       vehicle: _Path | None = None) -> TableExportResult: ...
     def export_forcecoeffs(self, *, output: _Path, body: str = "", where: _Texts = None,
                            exclude_runs: Iterable[int] | None = None, area: str = "", axes: str = "",
                            precision: int = 16, mean_only: bool = False) -> ForceCoeffsExportResult: ...

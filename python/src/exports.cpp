@@ -51,6 +51,7 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("nodes", &hydrocoef::TableExportResult::nodes)
       .def_readonly("files", &hydrocoef::TableExportResult::files)
       .def_readonly("surfaces", &hydrocoef::TableExportResult::surfaces)
+      .def_readonly("vehicle", &hydrocoef::TableExportResult::vehicle)
       .def_readonly("axes", &hydrocoef::TableExportResult::axes)
       .def_readonly("outputs", &hydrocoef::TableExportResult::outputs)
       .def_readonly("output_units", &hydrocoef::TableExportResult::output_units)
@@ -126,7 +127,8 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def(
           "export_surface",
           [](py::handle self, const std::string& name, const std::string& format, const py::object& output,
-             bool single_precision, const std::string& identifier, const std::vector<std::string>& surfaces) {
+             bool single_precision, const std::string& identifier, const std::vector<std::string>& surfaces,
+             const py::object& vehicle) {
             hydrocoef::TableExportOptions options;
             options.name = name;
             options.format = format;
@@ -134,15 +136,17 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
             options.single_precision = single_precision;
             options.identifier = identifier;
             options.surfaces = surfaces;
+            if (!vehicle.is_none()) options.vehicle = py::str(vehicle).cast<std::string>();
             Database& d = database_of(self);
             py::gil_scoped_release release;
             return hydrocoef::export_surface(d, options);
           },
           "name"_a, py::kw_only(), "format"_a, "output"_a, "single_precision"_a = false, "identifier"_a = "",
-          "surfaces"_a = std::vector<std::string>{},
+          "surfaces"_a = std::vector<std::string>{}, "vehicle"_a = py::none(),
           R"doc(Writes a stored gridded surface for another tool, as `hydrocoef export`: format csv, csv-wide,
 json, c (single_precision, identifier: the C header's), mat, jsbsim, vtk, daveml or runtime (surfaces:
-further surfaces of the same body in the runtime file); output the file.
+further surfaces of the same body in the runtime file; vehicle: a vehicle file whose whole dynamics model the
+runtime file holds too, name then being its body); output the file.
 Returns a TableExportResult; InputError (nothing written) for a surface that is not gridded.)doc")
       .def(
           "export_forcecoeffs",

@@ -167,6 +167,54 @@ static int locate(const hc_runtime_surface* s, const hc_kernel_axis* axes, const
   return HC_KERNEL_OK;
 }
 
+/* hc_runtime_evaluate's values alone, with the axis count and the terms per
+ * axis constants in each case (the same kernel calls in the same order): the
+ * vehicle's hot path. */
+#define HC_VALUES_CASE(N, K)                                                                                          \
+  case (K)*8 + (N): {                                                                                                 \
+    size_t base = 0;                                                                                                  \
+    for (size_t a = 0; a < (N); ++a) {                                                                                \
+      size_t node = 0;                                                                                                \
+      const int status =                                                                                              \
+          hc_kernel_axis_cell(&s->axes[a], s->breakpoints + s->axes[a].offset, (K), 0, x[a], w + 4 * a, NULL, &node); \
+      if (status != HC_KERNEL_OK) {                                                                                   \
+        *failed_axis = a;                                                                                             \
+        return status;                                                                                                \
+      }                                                                                                               \
+      base += node * s->axes[a].node_stride;                                                                          \
+    }                                                                                                                 \
+    hc_kernel_sum((N), (K), w, HC_KERNEL_MAX_AXES, NULL, s->term_offsets, s->data + base * s->node_block,             \
+                  s->output_count, values, 1, inner);                                                                 \
+    return HC_KERNEL_OK;                                                                                              \
+  }
+
+int hc_runtime_surface_values(const hc_runtime_surface* s, const double* x, double* values, size_t* failed_axis) {
+  double w[4 * HC_KERNEL_MAX_AXES];
+  double inner[1024]; /* K^(n-1) <= 4^5 */
+  switch (s->terms_per_axis * 8 + s->axis_count) {
+    HC_VALUES_CASE(1, 1)
+    HC_VALUES_CASE(2, 1)
+    HC_VALUES_CASE(3, 1)
+    HC_VALUES_CASE(4, 1)
+    HC_VALUES_CASE(5, 1)
+    HC_VALUES_CASE(6, 1)
+    HC_VALUES_CASE(1, 2)
+    HC_VALUES_CASE(2, 2)
+    HC_VALUES_CASE(3, 2)
+    HC_VALUES_CASE(4, 2)
+    HC_VALUES_CASE(5, 2)
+    HC_VALUES_CASE(6, 2)
+    HC_VALUES_CASE(1, 4)
+    HC_VALUES_CASE(2, 4)
+    HC_VALUES_CASE(3, 4)
+    HC_VALUES_CASE(4, 4)
+    HC_VALUES_CASE(5, 4)
+    HC_VALUES_CASE(6, 4)
+    default: break;
+  }
+  return HC_KERNEL_OK;
+}
+
 int hc_runtime_evaluate(const hc_runtime_model* model, size_t surface, const double* x, double* values,
                         double* gradients, double* sigma) {
   const hc_runtime_surface* s = surface_at(model, surface);

@@ -5,8 +5,11 @@
 #include "src/api/runtime_file.hpp"
 #include "src/api/surface_report.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <sstream>
 
+#include "src/api/vehicle_inputs.hpp"
 #include "src/core/escape.hpp"
 #include "src/core/numbers.hpp"
 #include "src/export/export.hpp"
@@ -28,6 +31,9 @@ void TableExportOptions::validate() const {
     throw InputError("--identifier applies to --format c only; expected it with c (got --format " + format + ")");
   if (!surfaces.empty() && parsed != ExportFormat::Runtime)
     throw InputError("--surface applies to --format runtime only; expected it with runtime (got --format " + format +
+                     ")");
+  if (!vehicle.empty() && parsed != ExportFormat::Runtime)
+    throw InputError("--vehicle applies to --format runtime only; expected it with runtime (got --format " + format +
                      ")");
 }
 
@@ -68,15 +74,20 @@ std::string runtime_source(const SurfaceRecord& record) {
 }  // namespace
 
 std::string runtime_file_of(const Database& db, const std::vector<std::string>& names, const RuntimeTexts& extra,
-                            std::vector<StoredSurface>& stored) {
+                            std::vector<StoredSurface>& stored, const RuntimeVehicle* vehicle,
+                            const std::string& vehicle_body) {
   {
     auto& impl = Database::Access::impl(db);
     const std::lock_guard lock(impl.mutex);
     for (const std::string& name : names) stored.push_back(load_surface(impl.open_store(), name));
   }
+  const std::string body = vehicle ? vehicle_body : stored.front().record.body;
   std::vector<RuntimeSurface> surfaces;
   std::string listed;
   for (const StoredSurface& s : stored) {
+    if (vehicle && s.record.body != body)
+      throw InputError("surface '" + s.record.name + "' belongs to body '" + s.record.body +
+                       "'; expected surfaces of body '" + body + "' (the body named with --vehicle)");
     if (s.record.body != stored.front().record.body)
       throw InputError("surface '" + s.record.name + "' belongs to body '" + s.record.body + "', surface '" +
                        stored.front().record.name + "' to body '" + stored.front().record.body +
@@ -95,20 +106,41 @@ std::string runtime_file_of(const Database& db, const std::vector<std::string>& 
     listed += (listed.empty() ? "" : ",") + s.record.name;
   }
   RuntimeTexts given = {{"database", location_without_credentials(db.path())},
-                        {"body", stored.front().record.body},
+                        {"body", body},
                         {"created_at", utc_timestamp_now()},
                         {"surfaces", listed}};
   given.insert(given.end(), extra.begin(), extra.end());
-  return runtime_file_bytes(runtime_model_texts(std::move(given)), surfaces);
+  return runtime_file_bytes(runtime_model_texts(std::move(given), vehicle != nullptr), surfaces, vehicle);
 }
 
 namespace {
 
-// The runtime file: `name` and options.surfaces, all of one body.
-void write_runtime_file(const Database& db, const TableExportOptions& options, std::vector<StoredSurface>& stored) {
-  std::vector<std::string> names{options.name};
-  names.insert(names.end(), options.surfaces.begin(), options.surfaces.end());
-  write_file_atomically(options.output, runtime_file_of(db, names, {}, stored));
+// The runtime file: `name` and options.surfaces, all of one body; with a
+// vehicle, the surfaces its damping reads and options.surfaces, all of body
+// `name`, and the vehicle (resolved through the database as simulate does).
+void write_runtime_file(const Database& db, const TableExportOptions& options, std::vector<StoredSurface>& stored,
+                        std::string& vehicle_name) {
+  std::optional<VehicleModel> vehicle;
+  std::vector<std::string> names;
+  if (options.vehicle.empty()) {
+    names.push_back(options.name);
+  } else {
+    vehicle.emplace(load_vehicle_model(options.vehicle, db.path()));
+    for (const DofDamping& d : vehicle->description().damping)
+      if (d.kind == DofDamping::Kind::Surface && std::find(names.begin(), names.end(), d.surface) == names.end())
+        names.push_back(d.surface);
+    vehicle_name = vehicle->description().name.empty() ? options.name : vehicle->description().name;
+  }
+  for (const std::string& name : options.surfaces)
+    if (std::find(names.begin(), names.end(), name) == names.end() || options.vehicle.empty()) names.push_back(name);
+  if (!vehicle) {
+    write_file_atomically(options.output, runtime_file_of(db, names, {}, stored));
+    return;
+  }
+  const std::string& file = vehicle->description().file;
+  const RuntimeVehicle runtime_vehicle{&*vehicle,
+                                       {{"name", vehicle_name}, {"file", file.empty() ? "JSON text" : file}}};
+  write_file_atomically(options.output, runtime_file_of(db, names, {}, stored, &runtime_vehicle, options.name));
 }
 
 }  // namespace
@@ -119,8 +151,13 @@ TableExportResult export_surface(const Database& db, const TableExportOptions& o
   std::vector<StoredSurface> all;
   TableExportResult out;
   if (format == ExportFormat::Runtime) {
-    write_runtime_file(db, options, all);
+    write_runtime_file(db, options, all, out.vehicle);
     out.files.push_back(options.output);
+    if (all.empty()) {  // a vehicle whose damping reads no surface
+      out.body = options.name;
+      out.format = std::string(export_format_name(format));
+      return out;
+    }
   } else {
     auto& impl = Database::Access::impl(db);
     const std::lock_guard lock(impl.mutex);
@@ -175,6 +212,7 @@ std::string TableExportResult::json() const {
                         {"nodes", nodes}};
   out["files"] = files;
   out["surfaces"] = surfaces;
+  if (!vehicle.empty()) out["vehicle"] = vehicle;
   for (const auto& axis : axes)
     out["axes"].push_back({{"name", axis.name},
                            {"unit", axis.unit},
@@ -189,6 +227,13 @@ std::string TableExportResult::json() const {
 
 std::string TableExportResult::text() const {
   std::ostringstream out;
+  if (!vehicle.empty())
+    out << "exported vehicle " << escape::one_line(vehicle) << " of body " << escape::one_line(body) << " ("
+        << surfaces.size() << " surfaces) as runtime\n";
+  if (surface.empty()) {
+    for (const auto& file : files) out << "  wrote " << escape::one_line(file) << '\n';
+    return out.str();
+  }
   out << "exported surface " << escape::one_line(surface) << " (" << method << ", " << nodes << " nodes) as " << format
       << "\n";
   for (const auto& axis : axes)

@@ -16,8 +16,12 @@ inline namespace api {
 /// The bytes of the runtime file holding the stored surfaces `names` (in
 /// order; all of one body, InputError otherwise), with the model texts
 /// `extra` after the standard ones; `stored` receives the surfaces loaded.
+/// With a `vehicle`, the file holds it too (runtime file version 2), the
+/// file's body is `vehicle_body` and every surface must be that body's (a
+/// vehicle may read none).
 std::string runtime_file_of(const Database& db, const std::vector<std::string>& names, const RuntimeTexts& extra,
-                            std::vector<StoredSurface>& stored);
+                            std::vector<StoredSurface>& stored, const RuntimeVehicle* vehicle = nullptr,
+                            const std::string& vehicle_body = {});
 
 }  // namespace api
 }  // namespace hydrocoef

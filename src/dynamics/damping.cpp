@@ -12,6 +12,14 @@
 namespace hydrocoef {
 namespace {
 
+// The shared kernel's law codes are DampingTerm's values.
+static_assert(static_cast<int>(DampingTerm::Constant) == HC_DAMPING_CONSTANT &&
+              static_cast<int>(DampingTerm::Linear) == HC_DAMPING_LINEAR &&
+              static_cast<int>(DampingTerm::SignedQuadratic) == HC_DAMPING_SIGNED_QUADRATIC &&
+              static_cast<int>(DampingTerm::Quadratic) == HC_DAMPING_QUADRATIC &&
+              static_cast<int>(DampingTerm::Cubic) == HC_DAMPING_CUBIC &&
+              static_cast<int>(DampingTerm::AbsLinear) == HC_DAMPING_ABS_LINEAR);
+
 std::string dof_context(std::size_t dof) { return "damping of " + std::string(kForceNames[dof]); }
 
 // The source name bound to each axis of a surface: the explicit binding or
@@ -62,12 +70,7 @@ void check_derivatives(const DofDamping& d, std::size_t dof) {
 // The value of a factor |x|^power (negated when odd and x < 0) and its
 // derivative power |x|^(power - 1) (times sign(x) when even; 0 for |x| at
 // x = 0, its mean slope there).
-double factor_value(int power, bool odd, double x) {
-  const double magnitude = std::abs(x);
-  double out = magnitude;
-  for (int k = 1; k < power; ++k) out *= magnitude;
-  return odd && x < 0.0 ? -out : out;
-}
+double factor_value(int power, bool odd, double x) { return hc_damping_factor_value(power, odd ? 1 : 0, x); }
 double factor_slope(int power, bool odd, double x) {
   const double magnitude = std::abs(x);
   double out = static_cast<double>(power);
@@ -79,16 +82,9 @@ double factor_slope(int power, bool odd, double x) {
 }  // namespace
 
 double DampingModel::Derivatives::value(const double* nu_r_b, std::span<const double> disturbances) const {
-  double sum = 0.0;
-  for (std::size_t k = 0; k < coefficients.size(); ++k) {
-    double term = 1.0;
-    for (std::size_t i = begin[k]; i < begin[k + 1]; ++i) {
-      const Factor& f = factors[i];
-      term *= factor_value(f.power, f.odd, f.source < 6 ? nu_r_b[f.source] : disturbances[f.source - 6]);
-    }
-    sum += coefficients[k] * term;
-  }
-  return sum;
+  // The shared kernel (runtime/src/damping_kernel.h).
+  return hc_damping_derivatives_value(coefficients.data(), coefficients.size(), begin.data(), factors.data(), nu_r_b,
+                                      disturbances.data());
 }
 
 DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resolver) {
@@ -125,6 +121,7 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
         for (std::size_t k = 0; k < law.count; ++k) {
           law.terms[k] = d.law.terms[k];
           law.coefficients[k] = to_on_body(d.coefficients[k], d.sign);
+          law.codes[k] = static_cast<int>(law.terms[k]);
         }
         laws_.push_back(law);
         damped_[dof] = true;
@@ -196,7 +193,7 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
     m.begin.push_back(0);
     for (std::size_t k = 0; k < d.terms.size(); ++k) {
       m.coefficients.push_back(to_on_body(d.coefficients[k], d.sign));
-      for (const auto& f : d.terms[k].factors()) m.factors.push_back({source_of(f.variable), f.power, f.odd});
+      for (const auto& f : d.terms[k].factors()) m.factors.push_back({source_of(f.variable), f.power, f.odd ? 1 : 0});
       m.begin.push_back(m.factors.size());
     }
     derivatives_.push_back(std::move(m));
@@ -209,7 +206,7 @@ DampingModel::DampingModel(const DampingSpec& spec, const SurfaceResolver& resol
     for (const auto& b : p.bindings) key += "|" + b;
     auto lookup = std::find_if(lookups_.begin(), lookups_.end(), [&](const Lookup& l) { return l.key == key; });
     if (lookup == lookups_.end()) {
-      Lookup l{p.surface, key};
+      Lookup l{p.surface, key, d.surface};
       l.axis_count = p.bindings.size();
       for (std::size_t a = 0; a < p.bindings.size(); ++a) l.source[a] = source_of(p.bindings[a]);
       lookups_.push_back(std::move(l));
@@ -241,6 +238,34 @@ void DampingModel::look_up(const Lookup& l, const double* nu_r_b, std::span<cons
                        std::span<double>(out, l.surface.output_count()));
 }
 
+std::array<DampingModel::DofLayout, 6> DampingModel::layout() const {
+  std::array<DofLayout, 6> out;
+  for (const Law& law : laws_) {
+    DofLayout& d = out[law.dof];
+    d.kind = DofDamping::Kind::Law;
+    d.variable = law.variable;
+    d.codes.assign(law.codes.begin(), law.codes.begin() + static_cast<std::ptrdiff_t>(law.count));
+    d.coefficients.assign(law.coefficients.begin(), law.coefficients.begin() + static_cast<std::ptrdiff_t>(law.count));
+  }
+  for (const Derivatives& m : derivatives_) {
+    DofLayout& d = out[m.dof];
+    d.kind = DofDamping::Kind::Derivatives;
+    d.coefficients = m.coefficients;
+    d.begin = m.begin;
+    d.factors = m.factors;
+  }
+  for (const Lookup& l : lookups_)
+    for (std::size_t k = 0; k < l.used; ++k) {
+      DofLayout& d = out[l.dof[k]];
+      d.kind = DofDamping::Kind::Surface;
+      d.surface = l.name;
+      d.output = l.output[k];
+      d.sign = l.sign[k];
+      d.sources.assign(l.source.begin(), l.source.begin() + static_cast<std::ptrdiff_t>(l.axis_count));
+    }
+  return out;
+}
+
 Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> disturbances) const {
   Vector6 tau = Vector6::Zero();
   add(nu_r_b.data(), disturbances, tau.data());
@@ -248,11 +273,9 @@ Vector6 DampingModel::evaluate(const Vector6& nu_r_b, std::span<const double> di
 }
 
 void DampingModel::add(const double* nu_r_b, std::span<const double> disturbances, double* tau) const {
-  for (const Law& law : laws_) {
-    const double x = nu_r_b[law.variable];
-    tau[law.dof] +=
-        damping_law_value(std::span(law.terms.data(), law.count), std::span(law.coefficients.data(), law.count), x);
-  }
+  // The shared kernel's law (runtime/src/damping_kernel.h): damping_law_value's arithmetic.
+  for (const Law& law : laws_)
+    tau[law.dof] += hc_damping_law_value(law.codes.data(), law.coefficients.data(), law.count, &nu_r_b[law.variable]);
   for (const Derivatives& m : derivatives_) tau[m.dof] += m.value(nu_r_b, disturbances);
   std::array<double, kMaxOutputs> out;  // written before it is read (hot path)
   for (const Lookup& l : lookups_) {

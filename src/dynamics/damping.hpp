@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/src/damping_kernel.h"
 #include "src/core/covariance.hpp"
 #include "src/core/damping_terms.hpp"
 #include "src/core/matrix6.hpp"
@@ -148,14 +149,12 @@ class DampingModel {
     std::size_t count = 0;
     std::array<DampingTerm, 6> terms{};
     std::array<double, 6> coefficients{};  // sign folded in: force on the body
+    std::array<int, 6> codes{};            // the terms as the shared kernel's codes (HC_DAMPING_*)
   };
   /// One name's factor of a derivative term: |x|^power, negated when odd
-  /// and x < 0 (TermFactor with its name resolved).
-  struct Factor {
-    std::size_t source = 0;  // 0..5: nu_r component; 6 + k: disturbance k
-    int power = 1;
-    bool odd = true;
-  };
+  /// and x < 0 (TermFactor with its name resolved): source 0..5 a nu_r
+  /// component, 6 + k disturbance k (runtime/src/damping_kernel.h).
+  using Factor = hc_damping_factor;
   struct Derivatives {
     std::size_t dof = 0;
     std::string text;                  // the terms' canonical list, for messages
@@ -167,7 +166,8 @@ class DampingModel {
   };
   struct Lookup {
     CoefficientSurface surface;
-    std::string key;  // surface name + bindings: DOFs with equal keys share the lookup
+    std::string key;   // surface name + bindings: DOFs with equal keys share the lookup
+    std::string name;  // the surface's name
     std::size_t axis_count = 0;
     std::array<std::size_t, kMaxAxes> source{};  // 0..5: nu_r component; 6 + k: disturbance k
     std::size_t used = 0;                        // outputs read
@@ -176,6 +176,25 @@ class DampingModel {
     std::array<double, 6> sign{};
   };
 
+ public:
+  /// What the model evaluates, as plain data (for the runtime file,
+  /// src/export/runtime_export.hpp): per DOF its kind and numbers, with the
+  /// signs folded in as evaluate() uses them.
+  struct DofLayout {
+    DofDamping::Kind kind = DofDamping::Kind::None;
+    std::size_t variable = 0;                // Law: the nu_r component
+    std::vector<int> codes;                  // Law: term codes (HC_DAMPING_*)
+    std::vector<double> coefficients;        // Law, Derivatives: on the body
+    std::vector<std::size_t> begin;          // Derivatives: term k's factors [begin[k], begin[k + 1])
+    std::vector<hc_damping_factor> factors;  // Derivatives
+    std::string surface;                     // Surface: its name
+    std::size_t output = 0;                  // Surface: the output read
+    double sign = 1.0;                       // Surface: +1 or -1 (to forces on the body)
+    std::vector<std::size_t> sources;        // Surface: per axis, 0..5 nu_r, 6 + k disturbance k
+  };
+  std::array<DofLayout, 6> layout() const;
+
+ private:
   /// Surface l's outputs at nu_r_b (6) and the disturbances into out.
   static void look_up(const Lookup& l, const double* nu_r_b, std::span<const double> disturbances, double* out);
 

@@ -7,6 +7,15 @@ namespace hydrocoef {
 using motion::kLanes;
 using motion::Lanes;
 
+namespace lanes_kernel {
+// The shared kernel's law (runtime/src/damping_law_kernel.h) for the lanes:
+// DampingModel's arithmetic in every lane.
+#define HC_DAMPING_T ::hydrocoef::motion::Lanes
+#define HC_DAMPING_SPLAT(v) ::hydrocoef::motion::Lanes::Constant(v)
+#define HC_DAMPING_ABS(x) (x).abs()
+#include "runtime/src/damping_law_kernel.h"
+}  // namespace lanes_kernel
+
 DampingLanes::DampingLanes(const std::array<const DampingModel*, kLanes>& models) : models_(models) {
   for (const DampingModel* m : models_)
     if (!m || m->disturbance_names() != models_[0]->disturbance_names())
@@ -70,11 +79,8 @@ void DampingLanes::add(const Lanes* nu_r, std::span<const double> disturbances, 
   for (Lanes& t : tau) t.setZero();
   for (std::size_t i = 0; i < first.laws_.size(); ++i) {
     const auto& law = first.laws_[i];
-    const std::array<Lanes, 6> basis = basis_values(nu_r[law.variable]);
-    Lanes value = Lanes::Zero();
-    for (std::size_t k = 0; k < law.count; ++k)
-      value += law_coefficients_[i][k] * basis[static_cast<std::size_t>(law.terms[k])];
-    tau[law.dof] += value;
+    tau[law.dof] += lanes_kernel::hc_damping_law_value(law.codes.data(), law_coefficients_[i].data(), law.count,
+                                                       &nu_r[law.variable]);
   }
   // Derivative models, lane by lane: DampingModel::add's numbers.
   for (std::size_t i = 0; i < first.derivatives_.size(); ++i)

@@ -4,6 +4,12 @@
 // ensemble), integrated in lock-step so that each operation serves every lane
 // (SIMD) and the lanes' independent chains of operations overlap.
 //
+// The arithmetic itself is runtime/src/motion_kernel.h, the one source that
+// libhydrocoef_runtime (C11) compiles too: included here for double and for
+// Lanes (its number type and its two operations given as macros), so that
+// the C runtime's vehicle derivative is the library's bit for bit. The
+// templates below name those functions as the library calls them.
+//
 // Element by element over plain arrays: the integrators' hot path, where
 // Eigen's 3-element halves of 6-vectors and 4-element segments of the 13-
 // element state made the compiler store and reload sums in pieces. Each lane
@@ -13,6 +19,7 @@
 // Frames and signs as in vehicle_model.hpp: body axes, forces on the body.
 #pragma once
 
+#include <math.h>
 #include <Eigen/Core>
 #include <cmath>
 #include <type_traits>
@@ -23,6 +30,18 @@ namespace hydrocoef::motion {
 inline constexpr int kLanes = 8;
 /// One number per lane.
 using Lanes = Eigen::Array<double, kLanes, 1>;
+
+/// The shared kernel's functions, overloaded for double and Lanes.
+namespace kernel {
+#define HC_MOTION_T double
+#define HC_MOTION_SPLAT(v) (v)
+#define HC_MOTION_SQRT(x) std::sqrt(x)
+#include "runtime/src/motion_kernel.h"
+#define HC_MOTION_T ::hydrocoef::motion::Lanes
+#define HC_MOTION_SPLAT(v) ::hydrocoef::motion::Lanes::Constant(v)
+#define HC_MOTION_SQRT(x) (x).sqrt()
+#include "runtime/src/motion_kernel.h"
+}  // namespace kernel
 
 /// v in every lane of T.
 template <class T>
@@ -43,6 +62,7 @@ struct Terms {
   T hydrostatic[6];  ///< -g(eta)
   T damping[6];      ///< -D(nu_r) nu_r
   T coriolis[6];     ///< -C_RB(nu) nu - C_A(nu_r) nu_r + M_A nu_c'
+  T current_b[3];    ///< the current in body axes (when there is one)
 };
 
 /// Body-to-NED rotation R (row-major, 9 numbers) of the quaternion q =
@@ -50,39 +70,25 @@ struct Terms {
 /// (kinematics.hpp, rotation_body_to_ned_any_norm).
 template <class T>
 inline void rotation_any_norm(const T* q, T* r) {
-  const T e = q[0], x = q[1], y = q[2], z = q[3];
-  const T s = 2.0 / (e * e + x * x + y * y + z * z);
-  r[0] = 1.0 - s * (y * y + z * z);
-  r[1] = s * (x * y - z * e);
-  r[2] = s * (x * z + y * e);
-  r[3] = s * (x * y + z * e);
-  r[4] = 1.0 - s * (x * x + z * z);
-  r[5] = s * (y * z - x * e);
-  r[6] = s * (x * z - y * e);
-  r[7] = s * (y * z + x * e);
-  r[8] = 1.0 - s * (x * x + y * y);
+  kernel::hc_motion_rotation_any_norm(q, r);
 }
 
 /// out = R v (3 numbers each; R row-major).
 template <class T>
 inline void rotate(const T* r, const T* v, T* out) {
-  for (int i = 0; i < 3; ++i) out[i] = r[3 * i] * v[0] + r[3 * i + 1] * v[1] + r[3 * i + 2] * v[2];
+  kernel::hc_motion_rotate(r, v, out);
 }
 
 /// out = R^T v.
 template <class T>
 inline void rotate_back(const T* r, const T* v, T* out) {
-  for (int i = 0; i < 3; ++i) out[i] = r[i] * v[0] + r[3 + i] * v[1] + r[6 + i] * v[2];
+  kernel::hc_motion_rotate_back(r, v, out);
 }
 
 /// out (6) = A v (6).
 template <class T>
 inline void multiply(const Eigen::Matrix<double, 6, 6>& a, const T* v, T* out) {
-  for (int i = 0; i < 6; ++i) {
-    T sum = a(i, 0) * v[0];
-    for (int j = 1; j < 6; ++j) sum += a(i, j) * v[j];
-    out[i] = sum;
-  }
+  kernel::hc_motion_multiply(a.data(), v, out);
 }
 
 /// out (6) = A (v, 0, 0, 0) for v (3): multiply() of a vector whose angular
@@ -90,7 +96,7 @@ inline void multiply(const Eigen::Matrix<double, 6, 6>& a, const T* v, T* out) {
 /// numbers, but for the sign of a zero sum).
 template <class T>
 inline void multiply_linear(const Eigen::Matrix<double, 6, 6>& a, const T* v, T* out) {
-  for (int i = 0; i < 6; ++i) out[i] = (a(i, 0) * v[0] + a(i, 1) * v[1]) + a(i, 2) * v[2];
+  kernel::hc_motion_multiply_linear(a.data(), v, out);
 }
 
 /// tau (6) += -g(eta): weight W [N] down at the CG r_g, buoyancy B [N] up at
@@ -99,53 +105,27 @@ inline void multiply_linear(const Eigen::Matrix<double, 6, 6>& a, const T* v, T*
 template <class T>
 inline void add_hydrostatic(const T* r, double weight_N, double buoyancy_N, const double* r_g, const double* r_b,
                             T* tau) {
-  const T wx = weight_N * r[6], wy = weight_N * r[7], wz = weight_N * r[8];
-  const T bx = -buoyancy_N * r[6], by = -buoyancy_N * r[7], bz = -buoyancy_N * r[8];
-  tau[0] += wx + bx;
-  tau[1] += wy + by;
-  tau[2] += wz + bz;
-  tau[3] += (r_g[1] * wz - r_g[2] * wy) + (r_b[1] * bz - r_b[2] * by);
-  tau[4] += (r_g[2] * wx - r_g[0] * wz) + (r_b[2] * bx - r_b[0] * bz);
-  tau[5] += (r_g[0] * wy - r_g[1] * wx) + (r_b[0] * by - r_b[1] * bx);
+  kernel::hc_motion_add_hydrostatic(r, weight_N, buoyancy_N, r_g, r_b, tau);
 }
 
 /// out (6) -= C(nu) nu for a symmetric mass matrix M, without forming C
 /// (rigid_body.hpp): with (a, b) = M nu, C(nu) nu = (-a x nu2, -a x nu1 - b x nu2).
 template <class T>
 inline void subtract_coriolis(const Eigen::Matrix<double, 6, 6>& mass, const T* nu, T* out) {
-  T m[6];
-  multiply(mass, nu, m);
-  out[0] -= m[2] * nu[4] - m[1] * nu[5];
-  out[1] -= m[0] * nu[5] - m[2] * nu[3];
-  out[2] -= m[1] * nu[3] - m[0] * nu[4];
-  out[3] -= (m[2] * nu[1] - m[1] * nu[2]) + (m[5] * nu[4] - m[4] * nu[5]);
-  out[4] -= (m[0] * nu[2] - m[2] * nu[0]) + (m[3] * nu[5] - m[5] * nu[3]);
-  out[5] -= (m[1] * nu[0] - m[0] * nu[1]) + (m[4] * nu[3] - m[3] * nu[4]);
+  kernel::hc_motion_subtract_coriolis(mass.data(), nu, out);
 }
 
 /// q (4) /= |q|: the attitude projected back onto the unit sphere.
 template <class T>
 inline void normalize(T* q) {
-  const T squared = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-  T norm;
-  if constexpr (std::is_same_v<T, double>)
-    norm = std::sqrt(squared);
-  else
-    norm = squared.sqrt();
-  for (int i = 0; i < 4; ++i) q[i] /= norm;
+  kernel::hc_motion_normalize(q);
 }
 
 /// Fossen eq. 2.82 with the norm feedback of eq. 2.93 (kinematics.hpp):
 /// q' (4) = 1/2 T(q) omega_b + gain/2 (1 - q^T q) q.
 template <class T>
 inline void quaternion_rate(const T* q, const T* omega_b, double gain, T* q_dot) {
-  const T e = q[0], x = q[1], y = q[2], z = q[3];
-  const T p = omega_b[0], qq = omega_b[1], r = omega_b[2];
-  const T k = 0.5 * gain * (1.0 - (e * e + x * x + y * y + z * z));
-  q_dot[0] = 0.5 * (-x * p - y * qq - z * r) + k * e;
-  q_dot[1] = 0.5 * (e * p - z * qq + y * r) + k * x;
-  q_dot[2] = 0.5 * (z * p + e * qq - x * r) + k * y;
-  q_dot[3] = 0.5 * (-y * p + x * qq + e * r) + k * z;
+  kernel::hc_motion_quaternion_rate(q, omega_b, gain, q_dot);
 }
 
 }  // namespace hydrocoef::motion

@@ -85,47 +85,21 @@ Vector6 VehicleModel::hydrostatic_force(const Quaternion4& q_nb) const {
 template <class T, class AddDamping>
 void VehicleModel::motion_terms(const T* x, const ModelInputs& inputs, AddDamping&& add_damping,
                                 motion::Terms<T>& terms) const {
-  const T* nu = x + state_index::kVelocity;
-  motion::rotation_any_norm(x + state_index::kAttitude, terms.rotation);
-  for (int i = 0; i < 6; ++i) {
-    terms.nu_r[i] = nu[i];
-    terms.hydrostatic[i] = terms.damping[i] = terms.coriolis[i] = motion::splat<T>(0.0);
-  }
-  motion::add_hydrostatic(terms.rotation, weight_N_, description_.buoyancy_N, description_.r_g_b.data(),
-                          description_.r_b_b.data(), terms.hydrostatic);
-  if (inputs.current_n.isZero()) {
-    // nu_r = nu: C(nu) is linear in M, so C_RB(nu) nu + C_A(nu) nu = C(M) nu.
-    add_damping(nu, terms.damping);
-    motion::subtract_coriolis(m_, nu, terms.coriolis);
-    return;
-  }
-  // The current in body axes, R^T v_c, and nu_c' = (-nu2 x R^T v_c, 0) for a
-  // current constant in NED.
-  const T current_n[3] = {motion::splat<T>(inputs.current_n[0]), motion::splat<T>(inputs.current_n[1]),
-                          motion::splat<T>(inputs.current_n[2])};
-  T current_b[3];
-  motion::rotate_back(terms.rotation, current_n, current_b);
-  for (int i = 0; i < 3; ++i) terms.nu_r[i] -= current_b[i];
-  add_damping(terms.nu_r, terms.damping);
-  // The current's rate has no angular part.
-  const T current_rate_b[3] = {-(nu[4] * current_b[2] - nu[5] * current_b[1]),
-                               -(nu[5] * current_b[0] - nu[3] * current_b[2]),
-                               -(nu[3] * current_b[1] - nu[4] * current_b[0])};
-  T added[6];
-  motion::multiply_linear(m_a_, current_rate_b, added);
-  motion::subtract_coriolis(m_rb_, nu, terms.coriolis);
-  motion::subtract_coriolis(m_a_, terms.nu_r, terms.coriolis);
-  for (int i = 0; i < 6; ++i) terms.coriolis[i] += added[i];
+  // The shared kernel's derivative (runtime/src/motion_kernel.h), the
+  // damping added between its parts at the velocity relative to the water.
+  const int current =
+      motion::kernel::hc_motion_begin(x, weight_N_, description_.buoyancy_N, description_.r_g_b.data(),
+                                      description_.r_b_b.data(), inputs.current_n.data(), terms.rotation, terms.nu_r,
+                                      terms.hydrostatic, terms.damping, terms.coriolis, terms.current_b);
+  add_damping(static_cast<const T*>(terms.nu_r), terms.damping);
+  motion::kernel::hc_motion_finish(x, current, m_.data(), m_rb_.data(), m_a_.data(), terms.nu_r, terms.current_b,
+                                   terms.coriolis);
 }
 
 template <class T>
 void VehicleModel::rates(const T* x, const Vector6& tau_b, const motion::Terms<T>& terms, T* x_dot) const {
-  const T* nu = x + state_index::kVelocity;
-  T total[6];
-  for (int i = 0; i < 6; ++i) total[i] = ((tau_b[i] + terms.hydrostatic[i]) + terms.damping[i]) + terms.coriolis[i];
-  motion::rotate(terms.rotation, nu, x_dot + state_index::kPosition);
-  motion::quaternion_rate(x + state_index::kAttitude, nu + 3, kQuaternionNormGain, x_dot + state_index::kAttitude);
-  motion::multiply(m_inv_, total, x_dot + state_index::kVelocity);
+  motion::kernel::hc_motion_rates(x, tau_b.data(), kQuaternionNormGain, m_inv_.data(), terms.rotation,
+                                  terms.hydrostatic, terms.damping, terms.coriolis, x_dot);
 }
 
 ForceBreakdown VehicleModel::forces(const StateVector& x, const ModelInputs& inputs) const {

@@ -1,5 +1,6 @@
 #include "src/export/runtime_export.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -8,17 +9,23 @@
 #include "runtime/src/xxh64.h"
 #include "src/core/error.hpp"
 #include "src/core/version.hpp"
+#include "src/dynamics/vehicle_model.hpp"
 
 namespace hydrocoef {
 
 namespace {
 
 // The layout constants of docs/runtime.md (runtime/src/runtime_file.c reads them).
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 1;         // the model and surfaces
+constexpr std::uint32_t kVehicleFormatVersion = 2;  // and a vehicle, the last section
 constexpr std::size_t kHeaderSize = 64;
 constexpr std::size_t kSectionEntrySize = 24;
 constexpr std::uint32_t kSectionModel = 1;
 constexpr std::uint32_t kSectionSurface = 2;
+constexpr std::uint32_t kSectionVehicle = 3;
+// The runtime's limits on what a vehicle's damping reads (runtime_internal.h).
+constexpr std::size_t kMaxVehicleAxes = 6;
+constexpr std::size_t kMaxVehicleOutputs = 32;
 constexpr std::uint32_t kFlagSigma = 1;
 constexpr std::size_t kMaxSurfaces = 4096;
 constexpr std::size_t kMaxOutputs = 4096;
@@ -135,6 +142,118 @@ std::string surface_section(const RuntimeSurface& surface) {
   return std::move(out.bytes());
 }
 
+// A matrix row by row.
+void matrix(Writer& out, const Matrix6& m, const std::string& what) {
+  for (Eigen::Index i = 0; i < 6; ++i)
+    for (Eigen::Index j = 0; j < 6; ++j) {
+      if (!std::isfinite(m(i, j))) throw InputError("runtime export of the vehicle: " + what + " is not finite");
+      out.number(m(i, j));
+    }
+}
+
+// u32 words, then a zero word when their count is odd (to 8 bytes).
+void words(Writer& out, const std::vector<std::uint32_t>& values) {
+  for (const std::uint32_t v : values) out.u32(v);
+  if (values.size() % 2 == 1) out.u32(0);
+}
+
+std::string vehicle_section(const RuntimeVehicle& vehicle, const std::vector<RuntimeSurface>& surfaces) {
+  const VehicleModel& model = *vehicle.model;
+  const VehicleDescription& d = model.description();
+  const std::vector<std::string>& disturbances = model.disturbance_names();
+  // The frames, units and signs of the state and inputs, stated in the file.
+  RuntimeTexts texts = vehicle.metadata;
+  texts.emplace_back("state",
+                     "13 numbers: p_n, the body origin in NED [m] (3); q_nb, the body-to-NED quaternion, scalar "
+                     "first (4); nu_b, the body velocity over ground u, v, w [m/s], p, q, r [rad/s], body axes x "
+                     "forward, y starboard, z down (6)");
+  texts.emplace_back("inputs",
+                     "tau_b, the control force and moment on the body about its origin [N, N m] (6); current_n, "
+                     "the water velocity in NED [m/s] (3); the disturbances [SI], in the file's order");
+  texts.emplace_back("equation",
+                     "M_RB nu' + C_RB(nu) nu + M_A nu_r' + C_A(nu_r) nu_r + D(nu_r) nu_r + g(eta) = tau, nu_r = nu - "
+                     "nu_c (Fossen 2011, eq. 6.1 with current); damping and forces on the body (SNAME signs)");
+  Writer out;
+  out.texts(texts, "runtime export of the vehicle: metadata");
+  out.u32(static_cast<std::uint32_t>(disturbances.size()));
+  out.u32(static_cast<std::uint32_t>(d.thrusters.size()));
+  matrix(out, model.rigid_body_mass(), "M_RB");
+  matrix(out, model.added_mass(), "M_A");
+  matrix(out, model.mass_matrix(), "M");
+  matrix(out, model.mass_matrix_inverse(), "M^-1");
+  out.number(model.weight_N());
+  out.number(model.buoyancy_N());
+  out.numbers(d.r_g_b.data(), 3);
+  out.numbers(d.r_b_b.data(), 3);
+  out.number(VehicleModel::kQuaternionNormGain);
+  for (const std::string& name : disturbances) out.text(name, "runtime export of the vehicle: a disturbance name");
+  for (const Thruster& t : d.thrusters) {
+    out.text(t.name, "runtime export of the vehicle: a thruster name");
+    // VehicleModel's allocation column: (d, r x d).
+    const Vector3 moment = t.position_b.cross(t.direction_b);
+    out.numbers(t.direction_b.data(), 3);
+    out.numbers(moment.data(), 3);
+    out.number(t.min_thrust_N);
+    out.number(t.max_thrust_N);
+  }
+  const auto layout = model.damping().layout();
+  for (std::size_t dof = 0; dof < 6; ++dof) {
+    const DampingModel::DofLayout& l = layout[dof];
+    const std::string what = "runtime export of the vehicle: damping of " + std::string(kForceNames[dof]);
+    switch (l.kind) {
+      case DofDamping::Kind::None:
+        for (int i = 0; i < 4; ++i) out.u32(0);
+        break;
+      case DofDamping::Kind::Law: {
+        out.u32(1);
+        out.u32(static_cast<std::uint32_t>(l.codes.size()));
+        out.u32(static_cast<std::uint32_t>(l.variable));
+        out.u32(0);
+        words(out, std::vector<std::uint32_t>(l.codes.begin(), l.codes.end()));
+        out.numbers(l.coefficients.data(), l.coefficients.size());
+        break;
+      }
+      case DofDamping::Kind::Derivatives: {
+        out.u32(2);
+        out.u32(static_cast<std::uint32_t>(l.coefficients.size()));
+        out.u32(static_cast<std::uint32_t>(l.factors.size()));
+        out.u32(0);
+        std::vector<std::uint32_t> per_term;
+        for (std::size_t k = 0; k + 1 < l.begin.size(); ++k)
+          per_term.push_back(static_cast<std::uint32_t>(l.begin[k + 1] - l.begin[k]));
+        words(out, per_term);
+        for (const hc_damping_factor& f : l.factors) {
+          out.u32(static_cast<std::uint32_t>(f.source));
+          out.u32(static_cast<std::uint32_t>(f.power));
+          out.u32(static_cast<std::uint32_t>(f.odd));
+          out.u32(0);
+        }
+        out.numbers(l.coefficients.data(), l.coefficients.size());
+        break;
+      }
+      case DofDamping::Kind::Surface: {
+        const auto found = std::find_if(surfaces.begin(), surfaces.end(),
+                                        [&](const RuntimeSurface& s) { return s.name == l.surface; });
+        if (found == surfaces.end())
+          throw InputError(what + ": surface '" + l.surface + "' is not among the file's surfaces; expected it there");
+        const GridTable& table = *found->table;
+        if (table.axis_count() > kMaxVehicleAxes || table.output_count() > kMaxVehicleOutputs)
+          throw InputError(what + ": surface '" + l.surface + "' has " + std::to_string(table.axis_count()) +
+                           " axes and " + std::to_string(table.output_count()) +
+                           " outputs; the runtime evaluates a vehicle's surfaces of at most 6 axes and 32 outputs");
+        out.u32(3);
+        out.u32(static_cast<std::uint32_t>(found - surfaces.begin()));
+        out.u32(static_cast<std::uint32_t>(l.output));
+        out.u32(static_cast<std::uint32_t>(l.sources.size()));
+        out.number(l.sign);
+        words(out, std::vector<std::uint32_t>(l.sources.begin(), l.sources.end()));
+        break;
+      }
+    }
+  }
+  return std::move(out.bytes());
+}
+
 }  // namespace
 
 RuntimeSurface runtime_surface(const std::string& name, const CoefficientSurface& surface, RuntimeTexts metadata) {
@@ -165,8 +284,9 @@ RuntimeSurface runtime_surface(const std::string& name, const CoefficientSurface
   return out;
 }
 
-RuntimeTexts runtime_model_texts(RuntimeTexts given) {
-  given.emplace_back("format", "hydrocoef runtime file, version 1 (docs/runtime.md)");
+RuntimeTexts runtime_model_texts(RuntimeTexts given, bool vehicle) {
+  given.emplace_back("format", vehicle ? "hydrocoef runtime file, version 2: surfaces and a vehicle (docs/runtime.md)"
+                                       : "hydrocoef runtime file, version 1 (docs/runtime.md)");
   given.emplace_back("hydrocoef_version", kVersion);
   given.emplace_back("frame", "body axes: x forward, y starboard, z down (FRD), origin at the body's reference point");
   given.emplace_back("units",
@@ -177,7 +297,8 @@ RuntimeTexts runtime_model_texts(RuntimeTexts given) {
   return given;
 }
 
-std::string runtime_file_bytes(const RuntimeTexts& model, const std::vector<RuntimeSurface>& surfaces) {
+std::string runtime_file_bytes(const RuntimeTexts& model, const std::vector<RuntimeSurface>& surfaces,
+                               const RuntimeVehicle* vehicle) {
   if (surfaces.size() > kMaxSurfaces)
     throw InputError("a runtime file holds at most 4096 surfaces; expected fewer than " +
                      std::to_string(surfaces.size()));
@@ -190,11 +311,12 @@ std::string runtime_file_bytes(const RuntimeTexts& model, const std::vector<Runt
   model_section.texts(model, "runtime export: model metadata");
   sections.push_back(std::move(model_section.bytes()));
   for (const RuntimeSurface& surface : surfaces) sections.push_back(surface_section(surface));
+  if (vehicle != nullptr) sections.push_back(vehicle_section(*vehicle, surfaces));
 
   Writer file;
   std::string& bytes = file.bytes();
   bytes.append(reinterpret_cast<const char*>(kMagic), sizeof kMagic);
-  file.u32(kFormatVersion);
+  file.u32(vehicle != nullptr ? kVehicleFormatVersion : kFormatVersion);
   file.u32(static_cast<std::uint32_t>(kHeaderSize));
   file.u64(0);  // file size, below
   file.u64(0);  // content hash, below
@@ -205,7 +327,9 @@ std::string runtime_file_bytes(const RuntimeTexts& model, const std::vector<Runt
   std::size_t offset = kHeaderSize + sections.size() * kSectionEntrySize;
   offset = (offset + 7) / 8 * 8;
   for (std::size_t i = 0; i < sections.size(); ++i) {
-    file.u32(i == 0 ? kSectionModel : kSectionSurface);
+    file.u32(i == 0                                           ? kSectionModel
+             : vehicle != nullptr && i + 1 == sections.size() ? kSectionVehicle
+                                                              : kSectionSurface);
     file.u32(0);
     file.u64(offset);
     file.u64(sections[i].size());

@@ -3,7 +3,8 @@
 // content hash answer first) and again with its header's size and hash made
 // right (so the sections' own checks answer). Opening must give a code and a
 // one-line message, or a model whose every surface evaluates (inside, at,
-// beyond the axes, NaN) without a sanitizer report.
+// beyond the axes, NaN) and whose vehicle, if it holds one, steps without a
+// sanitizer report.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -51,6 +52,29 @@ void exercise(const hc_runtime_model* model) {
   }
 }
 
+// A vehicle: its derivative, forces and an RK4 step at rest and moving, in a
+// current, give a status and (on an error) a message, never a sanitizer report.
+void exercise_vehicle(const hc_runtime_model* model) {
+  if (!hc_runtime_has_vehicle(model)) return;
+  const std::size_t disturbances = hc_runtime_vehicle_disturbance_count(model);
+  for (std::size_t i = 0; i < disturbances; ++i)
+    if (hc_runtime_vehicle_disturbance_name(model, i) == nullptr)
+      hydrocoef::fuzz::finding("a disturbance without a name");
+  std::vector<double> values(disturbances + 1, 0.25), thrust(hc_runtime_vehicle_thruster_count(model) + 1, 0.5);
+  double tau[6] = {0.1, 0.0, 0.0, 0.0, 0.0, 0.01}, x_dot[13], breakdown[30];
+  (void)hc_runtime_vehicle_thrust_force(model, thrust.data(), tau);
+  const double current[3] = {0.1, -0.05, 0.0};
+  for (const double speed : {0.0, 0.3, std::numeric_limits<double>::quiet_NaN()}) {
+    double x[13] = {0, 0, 0, 1, 0, 0, 0, speed, speed, speed, speed, speed, speed};
+    char err[256];
+    (void)hc_runtime_vehicle_derivative(model, x, tau, current, values.data(), x_dot, err, sizeof err);
+    (void)hc_runtime_vehicle_forces(model, x, tau, nullptr, values.data(), breakdown, err, sizeof err);
+    const int status = hc_runtime_vehicle_step_rk4(model, x, tau, current, values.data(), 0.01, err, sizeof err);
+    if (status != HC_RUNTIME_OK && strnlen(err, sizeof err) == 0)
+      hydrocoef::fuzz::finding("a refused step without a message");
+  }
+}
+
 void open_and_check(const std::string& bytes) {
   hc_runtime_model* model = nullptr;
   char err[512];
@@ -59,6 +83,7 @@ void open_and_check(const std::string& bytes) {
   if (status == HC_RUNTIME_OK) {
     if (model == nullptr) hydrocoef::fuzz::finding("HC_RUNTIME_OK without a model");
     exercise(model);
+    exercise_vehicle(model);
     hc_runtime_close(model);
     return;
   }

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <span>
@@ -19,8 +20,11 @@
 
 #include "hydrocoef/exports.hpp"
 #include "hydrocoef/runtime.h"
+#include "src/api/vehicle_inputs.hpp"
+#include "src/dynamics/scenario.hpp"
 #include "src/store/database.hpp"
 #include "src/surface/stored_surface.hpp"
+#include "tests/runtime/runtime_stepping.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -205,6 +209,171 @@ TEST(RuntimeCli, RefusalsAreOneLineAndWriteNothing) {
   EXPECT_EQ(wrong_format.exit_code, 2);
   EXPECT_NE(wrong_format.err.find("--surface applies to --format runtime only"), std::string::npos) << wrong_format.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "m.csv"));
+}
+
+// `export BODY --format runtime --vehicle VEHICLE.json`: the ASR-V vehicle
+// with its surge damping from the stored surface "surge" (the others laws)
+// resolved through the database as simulate resolves it; the runtime's
+// derivative equals the model simulate builds, bit for bit. A vehicle file
+// the library refuses, or --vehicle with another format, is refused in one
+// line, exit 2, nothing written.
+TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
+  TempDir dir;
+  make_database(dir);
+  std::ifstream in(HYDROCOEF_SOURCE_DIR "/examples/asr-v/vehicle.json");
+  std::string vehicle((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string law = R"("X": {"law": {"u": -0.0155, "u|u|": -11.0365}, "sign": "on-body"})";
+  const auto at = vehicle.find(law);
+  ASSERT_NE(at, std::string::npos);
+  vehicle.replace(at, law.size(), R"("X": {"surface": "surge", "output": "X", "sign": "on-body"})");
+  std::ofstream(dir / "vehicle.json") << vehicle;
+
+  const auto exported =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "asr-v.hcrt", "--json"},
+              dir.path());
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  const auto report = nlohmann::json::parse(exported.out);
+  EXPECT_EQ(report.at("surfaces"), nlohmann::json({"surge"}));
+  EXPECT_EQ(report.at("vehicle"), "asr-v");
+  hc_runtime_model* opened = nullptr;
+  char err[512] = "";
+  ASSERT_EQ(hc_runtime_open((dir / "asr-v.hcrt").c_str(), &opened, err, sizeof err), HC_RUNTIME_OK) << err;
+  const std::unique_ptr<hc_runtime_model, ModelCloser> model(opened);
+  ASSERT_EQ(hc_runtime_has_vehicle(opened), 1);
+  EXPECT_STREQ(hc_runtime_metadata(opened, "body"), "asr-v");
+  EXPECT_STREQ(hc_runtime_vehicle_metadata(opened, "file"), "vehicle.json");
+
+  // The API writes the same vehicle section (the model section's created_at aside) and validates as the CLI.
+  {
+    const auto db = Database::open((dir / "hydrocoef.db").string(), OpenMode::ReadOnly);
+    TableExportOptions options;
+    options.name = "asr-v";
+    options.format = "runtime";
+    options.output = (dir / "api.hcrt").string();
+    options.vehicle = (dir / "vehicle.json").string();
+    const TableExportResult result = export_surface(db, options);
+    EXPECT_EQ(result.vehicle, "asr-v");
+    EXPECT_EQ(result.surfaces, std::vector<std::string>{"surge"});
+    const auto read = [](const std::filesystem::path& path) {
+      std::ifstream file(path, std::ios::binary);
+      return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    };
+    const auto u32 = [](const std::string& bytes, std::size_t at) {
+      std::uint32_t value = 0;
+      for (int i = 3; i >= 0; --i)
+        value = value << 8 | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
+      return value;
+    };
+    // The vehicle section past its texts (the vehicle file's path differs: relative for the CLI).
+    const auto vehicle_numbers = [&](const std::string& bytes) {
+      const std::size_t entry = 64 + 24 * (u32(bytes, 32) - 1);
+      std::size_t at = u32(bytes, entry + 8) | static_cast<std::size_t>(u32(bytes, entry + 12)) << 32;
+      const std::uint32_t pairs = u32(bytes, at);
+      at += 8;
+      for (std::uint32_t i = 0; i < 2 * pairs; ++i) at += (4 + u32(bytes, at) + 1 + 7) / 8 * 8;
+      return bytes.substr(at);
+    };
+    const std::string from_cli = read(dir / "asr-v.hcrt"), from_api = read(options.output);
+    EXPECT_GT(vehicle_numbers(from_cli).size(), 4 * 36 * 8u);
+    EXPECT_EQ(vehicle_numbers(from_cli), vehicle_numbers(from_api));
+    options.format = "csv";
+    try {
+      options.validate();
+      FAIL() << "--vehicle with csv was accepted";
+    } catch (const InputError& error) {
+      EXPECT_EQ(std::string(error.what()),
+                "--vehicle applies to --format runtime only; expected it with runtime (got --format csv)");
+    }
+  }
+  const VehicleModel library = load_vehicle_model((dir / "vehicle.json").string(), (dir / "hydrocoef.db").string());
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t mismatches = 0;
+  for (int n = 0; n < 2000; ++n) {
+    Vector6 nu;
+    for (int i = 0; i < 6; ++i) nu[i] = 0.3 * unit(random);
+    const StateVector x =
+        make_state(Vector3::Zero(), Quaternion4(1.0, 0.1 * unit(random), 0.1 * unit(random), unit(random)), nu);
+    ModelInputs inputs;
+    inputs.tau_b[5] = 0.003 * unit(random);
+    inputs.current_n = Vector3(0.05 * unit(random), 0.05 * unit(random), 0.0);
+    StateVector expected;
+    library.derivative(x, inputs, expected);
+    double x_dot[13];
+    ASSERT_EQ(hc_runtime_vehicle_derivative(opened, x.data(), inputs.tau_b.data(), inputs.current_n.data(), nullptr,
+                                            x_dot, err, sizeof err),
+              HC_RUNTIME_OK)
+        << err;
+    for (int i = 0; i < 13; ++i) mismatches += !same_bits(x_dot[i], expected[i]);
+  }
+  EXPECT_EQ(mismatches, 0u);
+
+  // A vehicle file the library refuses: its one line, exit 2, nothing written.
+  std::ofstream(dir / "bad.json") << R"({"mass": -1, "inertia": [1, 1, 1], "center_of_gravity": [0, 0, 0]})";
+  const auto bad =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "bad.json", "-o", "bad.hcrt"}, dir.path());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bad.json"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
+  // A surface the database lacks.
+  std::string missing = vehicle;
+  missing.replace(missing.find("\"surge\""), 7, "\"nosuch\"");
+  std::ofstream(dir / "missing.json") << missing;
+  const auto unknown =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", "missing.json", "-o", "bad.hcrt"}, dir.path());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("nosuch"), std::string::npos) << unknown.err;
+  EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1) << unknown.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
+  // A surface of another body than the one named.
+  const auto other =
+      run_cli({"export", "sphere", "--format", "runtime", "--vehicle", "vehicle.json", "-o", "bad.hcrt"}, dir.path());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("expected surfaces of body 'sphere'"), std::string::npos) << other.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.hcrt"));
+  const auto wrong_format =
+      run_cli({"export", "asr-v", "--format", "csv", "-o", "m.csv", "--vehicle", "vehicle.json"}, dir.path());
+  EXPECT_EQ(wrong_format.exit_code, 2);
+  EXPECT_NE(wrong_format.err.find("--vehicle applies to --format runtime only"), std::string::npos) << wrong_format.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.csv"));
+}
+
+// The ASR-V example as examples/asr-v/run.sh makes it: both tables imported,
+// the surfaces asr-v-surge and asr-v-yaw built, and vehicle-surfaces.json
+// exported with them; its pool test (a constant yaw torque, RK4 at 1 ms)
+// stepped through the C API is simulate's trajectory bit for bit.
+TEST(RuntimeCli, TheAsrVPoolTestWithItsSurfacesStepsAsSimulate) {
+  TempDir dir;
+  for (const auto& [file, sign] : std::vector<std::pair<std::string, std::string>>{
+           {kSurge, "opposing"}, {HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-yaw-damping.csv", "on-body"}}) {
+    const auto imported =
+        run_cli({"import", file, "--body", "asr-v", "--sign", sign, "--rho", "998.2", "--nu", "1.004e-6"}, dir.path());
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  }
+  for (const auto& [name, output, axis] :
+       std::vector<std::array<std::string, 3>>{{"asr-v-surge", "X", "u"}, {"asr-v-yaw", "N", "r"}}) {
+    const auto built = run_cli({"surface", "build", name, "--body", "asr-v", "--outputs", output, "--axes", axis,
+                                "--method", "pchip", "--extrapolate", "linear"},
+                               dir.path());
+    ASSERT_EQ(built.exit_code, 0) << built.err;
+  }
+  const std::string vehicle = HYDROCOEF_SOURCE_DIR "/examples/asr-v/vehicle-surfaces.json";
+  const auto exported =
+      run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", vehicle, "-o", "asr-v.hcrt"}, dir.path());
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  EXPECT_NE(exported.out.find("exported vehicle asr-v (damping from lookup surfaces) of body asr-v (2 surfaces)"),
+            std::string::npos)
+      << exported.out;
+  hc_runtime_model* opened = nullptr;
+  char err[512] = "";
+  ASSERT_EQ(hc_runtime_open((dir / "asr-v.hcrt").c_str(), &opened, err, sizeof err), HC_RUNTIME_OK) << err;
+  const std::unique_ptr<hc_runtime_model, ModelCloser> model(opened);
+  EXPECT_STREQ(hc_runtime_metadata(opened, "surfaces"), "asr-v-surge,asr-v-yaw");
+  const VehicleModel library = load_vehicle_model(vehicle, (dir / "hydrocoef.db").string());
+  Scenario scenario = load_scenario(HYDROCOEF_SOURCE_DIR "/examples/asr-v/scenario-yaw-0.0027.json");
+  scenario.duration_s = 10.0;
+  expect_simulate_bit_for_bit(library, opened, scenario);
 }
 
 }  // namespace

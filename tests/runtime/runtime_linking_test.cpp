@@ -1,6 +1,7 @@
 // libhydrocoef_runtime as a dependency-free library: the shared library
 // needs libc and libm only (its ELF DT_NEEDED entries), exports the C API
-// under the version node HYDROCOEF_RUNTIME_1 and nothing else of its own;
+// under the version nodes HYDROCOEF_RUNTIME_1 (surfaces) and _2 (the
+// vehicle) and nothing else of its own;
 // a C99 program compiled with -std=c99 -pedantic -Werror links it
 // statically and dynamically and evaluates a surface to the library's bits.
 #include <elf.h>
@@ -89,12 +90,18 @@ TEST(RuntimeLinking, SharedLibraryNeedsLibcAndLibmOnlyAndExportsTheCApi) {
   EXPECT_TRUE(libc);
   EXPECT_TRUE(dynamic.symbols.count("hc_runtime_open"));
   EXPECT_TRUE(dynamic.symbols.count("hc_runtime_evaluate"));
+  EXPECT_TRUE(dynamic.symbols.count("hc_runtime_vehicle_step_rk4"));
   for (const std::string& symbol : dynamic.symbols) {
-    // The C API, and the version node's own symbol.
-    EXPECT_TRUE(symbol.rfind("hc_runtime_", 0) == 0 || symbol == "HYDROCOEF_RUNTIME_1") << symbol;
+    // The C API, and the version nodes' own symbols; no kernel or reader helper.
+    EXPECT_TRUE(symbol.rfind("hc_runtime_", 0) == 0 || symbol == "HYDROCOEF_RUNTIME_1" ||
+                symbol == "HYDROCOEF_RUNTIME_2")
+        << symbol;
     EXPECT_EQ(symbol.find("hc_kernel"), std::string::npos) << symbol;
+    EXPECT_EQ(symbol.find("hc_read"), std::string::npos) << symbol;
+    EXPECT_EQ(symbol.find("hc_motion"), std::string::npos) << symbol;
   }
   EXPECT_NE(bytes.find("HYDROCOEF_RUNTIME_1"), std::string::npos) << "no symbol version node";
+  EXPECT_NE(bytes.find("HYDROCOEF_RUNTIME_2"), std::string::npos) << "no vehicle version node";
 }
 
 constexpr const char* kProgram = R"(/* A C99 consumer of libhydrocoef_runtime. */

@@ -120,13 +120,21 @@ std::vector<Variant> variants() {
     add("truncated at " + std::to_string(length), good.substr(0, length), HC_RUNTIME_E_FORMAT, "truncated");
   add("extended", good + std::string(8, '\0'), HC_RUNTIME_E_FORMAT, "truncated or extended");
   add(
-      "version 2",
+      "version 3",
+      [&] {
+        std::string b = good;
+        put_u32(b, 8, 3);
+        return b;
+      }(),
+      HC_RUNTIME_E_VERSION, "format version 3");
+  add(
+      "version 2 without a vehicle",
       [&] {
         std::string b = good;
         put_u32(b, 8, 2);
         return b;
       }(),
-      HC_RUNTIME_E_VERSION, "format version 2");
+      HC_RUNTIME_E_FORMAT, "vehicle section comes last");
   add(
       "header size",
       [&] {

@@ -32,10 +32,17 @@
  * concurrently with other calls on the same model. Evaluation allocates
  * nothing and takes no lock.
  *
- * ABI: the exported symbols carry the version node HYDROCOEF_RUNTIME_1
+ * A file written with `--vehicle VEHICLE.json` also holds a vehicle: the
+ * whole 6-DOF model of hydrocoef's dynamics (mass matrices, hydrostatics,
+ * every DOF's damping: laws, derivative models or the file's surfaces), whose
+ * derivative hc_runtime_vehicle_derivative computes with hydrocoef's own
+ * arithmetic (the two libraries share it), so that a simulator's or a
+ * controller's integration of it is `hydrocoef simulate`'s bit for bit.
+ *
+ * ABI: the exported symbols carry the version nodes HYDROCOEF_RUNTIME_1 (the
+ * surfaces) and HYDROCOEF_RUNTIME_2 (the vehicle)
  * (runtime/hydrocoef_runtime.map); HC_RUNTIME_ABI_VERSION changes when a
- * declaration here changes incompatibly; hc_runtime_abi_version() reports
- * the library's. */
+ * declaration here changes; hc_runtime_abi_version() reports the library's. */
 #ifndef HYDROCOEF_RUNTIME_H
 #define HYDROCOEF_RUNTIME_H
 
@@ -53,9 +60,10 @@ extern "C" {
 #endif
 
 /* The ABI this header declares; compare with hc_runtime_abi_version(). */
-#define HC_RUNTIME_ABI_VERSION 1
-/* The runtime file format version this library reads (and the writer writes). */
-#define HC_RUNTIME_FILE_VERSION 1
+#define HC_RUNTIME_ABI_VERSION 2
+/* The newest runtime file format version this library reads: 1 (surfaces)
+ * and 2 (surfaces and a vehicle). */
+#define HC_RUNTIME_FILE_VERSION 2
 /* Limits: axes per surface, outputs per surface, surfaces per file. */
 #define HC_RUNTIME_MAX_AXES 6
 #define HC_RUNTIME_MAX_OUTPUTS 4096
@@ -72,7 +80,8 @@ typedef enum hc_runtime_status {
   HC_RUNTIME_E_OUTSIDE = 7,    /* a coordinate outside an axis whose policy is "error" */
   HC_RUNTIME_E_NOT_FINITE = 8, /* a coordinate is NaN or infinite */
   HC_RUNTIME_E_NO_SIGMA = 9,   /* sigma asked of a surface that states none */
-  HC_RUNTIME_E_NOT_FOUND = 10  /* no surface of that name */
+  HC_RUNTIME_E_NOT_FOUND = 10, /* no surface of that name */
+  HC_RUNTIME_E_NO_VEHICLE = 11 /* a vehicle function on a file that holds no vehicle */
 } hc_runtime_status;
 
 /* An opened runtime file (opaque). */
@@ -145,6 +154,71 @@ HC_RUNTIME_API int hc_runtime_evaluate(const hc_runtime_model* model, size_t sur
  * and a message in err naming the axis, the value and the valid range. */
 HC_RUNTIME_API int hc_runtime_check_point(const hc_runtime_model* model, size_t surface, const double* x, char* err,
                                           size_t errlen);
+
+/* ---- The vehicle (ABI 2; files written with --vehicle) ----
+ *
+ * The state x is 13 numbers: the position of the body origin CO in NED
+ * (x_n, y_n, z_n [m]); the body-to-NED attitude quaternion, scalar first
+ * (eta, eps1, eps2, eps3; any non-zero norm, the rotation of x/|x| is used);
+ * the body velocity over ground (u, v, w [m/s], p, q, r [rad/s], body axes x
+ * forward, y starboard, z down). The inputs, held over a step: tau_b (6) the
+ * control force and moment on the body about CO [N, N m] (commanded, plus
+ * thrusters: hc_runtime_vehicle_thrust_force); current_n (3) the water
+ * velocity in NED [m/s] (NULL: none); disturbances the values of the
+ * disturbance parameters the damping reads [SI], in
+ * hc_runtime_vehicle_disturbance_name order (NULL when there are none).
+ *
+ * The equation (Fossen 2011, eq. 6.1 with current) is hydrocoef's
+ * (docs/dynamics.md): M_RB nu' + C_RB(nu) nu + M_A nu_r' + C_A(nu_r) nu_r +
+ * D(nu_r) nu_r + g(eta) = tau, nu_r = nu - nu_c; p_n' = R nu1; q' = 1/2 T(q)
+ * nu2 + gain/2 (1 - |q|^2) q.
+ *
+ * Errors: HC_RUNTIME_E_NO_VEHICLE for a file without a vehicle,
+ * HC_RUNTIME_E_ARGUMENT for a NULL pointer (x, tau_b, x_dot; disturbances
+ * when the vehicle reads some), and a surface's refusal of a relative
+ * velocity or disturbance outside an axis whose policy is "error"
+ * (HC_RUNTIME_E_OUTSIDE) or not finite (HC_RUNTIME_E_NOT_FINITE), with
+ * hydrocoef's own message in err (e.g. "axis 'r' = 0.5 is outside [-0.3,
+ * 0.3]; expected a value in range (or an extrapolation policy)"); nothing
+ * is written then. err may be NULL. Allocation-free and thread-safe on one
+ * model. */
+
+/* 1 when the file holds a vehicle, else 0. */
+HC_RUNTIME_API int hc_runtime_has_vehicle(const hc_runtime_model* model);
+/* The vehicle's text by key ("name", "file", and "state", "inputs",
+ * "equation": the frames, units and signs above); NULL when absent. */
+HC_RUNTIME_API const char* hc_runtime_vehicle_metadata(const hc_runtime_model* model, const char* key);
+/* The disturbance parameters the damping reads, in the order the inputs give them. */
+HC_RUNTIME_API size_t hc_runtime_vehicle_disturbance_count(const hc_runtime_model* model);
+HC_RUNTIME_API const char* hc_runtime_vehicle_disturbance_name(const hc_runtime_model* model, size_t index);
+/* Thrusters: count, name, limits [N]. */
+HC_RUNTIME_API size_t hc_runtime_vehicle_thruster_count(const hc_runtime_model* model);
+HC_RUNTIME_API const char* hc_runtime_vehicle_thruster_name(const hc_runtime_model* model, size_t thruster);
+HC_RUNTIME_API int hc_runtime_vehicle_thruster_limits(const hc_runtime_model* model, size_t thruster, double* min_N,
+                                                      double* max_N);
+/* tau_b (6) = the generalized force of the thrusts thrust_N (one per
+ * thruster [N], used as given: clamp them to the limits first, as
+ * `hydrocoef simulate` does). */
+HC_RUNTIME_API int hc_runtime_vehicle_thrust_force(const hc_runtime_model* model, const double* thrust_N,
+                                                   double* tau_b);
+/* x_dot (13) = x' at state x (13). */
+HC_RUNTIME_API int hc_runtime_vehicle_derivative(const hc_runtime_model* model, const double* x, const double* tau_b,
+                                                 const double* current_n, const double* disturbances, double* x_dot,
+                                                 char* err, size_t errlen);
+/* The terms of the equation at x, each a generalized force on the body [N,
+ * N m], M nu' = control + damping + hydrostatic + coriolis: breakdown (30) =
+ * control (6), damping -D(nu_r) nu_r (6), hydrostatic -g(eta) (6), coriolis
+ * -C_RB(nu) nu - C_A(nu_r) nu_r + M_A nu_c' (6), then nu_r (6). */
+HC_RUNTIME_API int hc_runtime_vehicle_forces(const hc_runtime_model* model, const double* x, const double* tau_b,
+                                             const double* current_n, const double* disturbances, double* breakdown,
+                                             char* err, size_t errlen);
+/* One classical Runge-Kutta 4 step of size dt [s] from x (13), replaced by
+ * the state at t + dt with its attitude normalised: `hydrocoef simulate`'s
+ * RK4 step (src/dynamics/integrators.hpp), bit for bit. On an error x is
+ * left as it was. */
+HC_RUNTIME_API int hc_runtime_vehicle_step_rk4(const hc_runtime_model* model, double* x, const double* tau_b,
+                                               const double* current_n, const double* disturbances, double dt,
+                                               char* err, size_t errlen);
 
 #ifdef __cplusplus
 }
