@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/six_surface_vehicle.hpp"
 #include "src/dynamics/integrators.hpp"
 #include "src/dynamics/rigid_body.hpp"
 #include "src/dynamics/vehicle_model.hpp"
@@ -18,64 +19,8 @@
 namespace hydrocoef {
 namespace {
 
-std::vector<double> breakpoints(double limit) {
-  std::vector<double> b;
-  for (int i = 0; i < 20; ++i) b.push_back(-limit + 2.0 * limit * i / 19.0);
-  return b;
-}
-
-double velocity_limit(const std::string& name) { return name == "u" || name == "v" || name == "w" ? 1.0 : 2.0; }
-
-// Damping on the body of DOF `dof` over (own velocity x, cross velocity y):
-// -(k1 x + k2 x|x|)(1 + 0.3 y^2), outputs as many as `outputs` (all the same law).
-CoefficientSurface damping_surface(const std::string& x, const std::string& y, std::vector<std::string> outputs,
-                                   Interpolation method) {
-  std::vector<GridAxis> axes{{x, breakpoints(velocity_limit(x)), Extrapolation::Clamp},
-                             {y, breakpoints(velocity_limit(y)), Extrapolation::Clamp}};
-  std::vector<double> values;
-  for (const double b : axes[1].breakpoints)
-    for (const double a : axes[0].breakpoints)
-      for (std::size_t k = 0; k < outputs.size(); ++k)
-        values.push_back(-(0.5 * a + 10.0 * a * std::abs(a)) * (1.0 + 0.3 * b * b) / static_cast<double>(k + 1));
-  return CoefficientSurface(GridTable(axes, std::move(outputs), values, method));
-}
-
-VehicleDescription asr_v_like() {
-  VehicleDescription v;
-  v.mass_kg = 6.7;
-  v.inertia_cg_b = Matrix3::Identity() * 0.0603;
-  v.r_g_b = Vector3(0.0, 0.0, 0.02);
-  v.buoyancy_N = v.mass_kg * v.gravity_m_s2;
-  v.added_mass_b = sphere_added_mass(v.rho_kg_m3, 0.15);
-  return v;
-}
-
-// (own axis, cross axis) for X..N.
-constexpr std::array<std::array<const char*, 2>, 6> kAxes{
-    {{"u", "v"}, {"v", "u"}, {"w", "u"}, {"p", "v"}, {"q", "w"}, {"r", "u"}}};
-
-VehicleModel six_surface_model(Interpolation method) {
-  VehicleDescription v = asr_v_like();
-  std::vector<std::pair<std::string, CoefficientSurface>> surfaces;
-  for (std::size_t dof = 0; dof < 6; ++dof) {
-    const std::string name = std::string("s") + kAxes[dof][0];
-    surfaces.emplace_back(name, damping_surface(kAxes[dof][0], kAxes[dof][1], {std::string(kForceNames[dof])}, method));
-    v.damping[dof] = {DofDamping::Kind::Surface, {}, {}, name, std::string(kForceNames[dof]), {},
-                      SignConvention::OnBody};
-  }
-  return VehicleModel(v, [surfaces](const std::string& name) {
-    for (const auto& [n, s] : surfaces)
-      if (n == name) return s;
-    throw std::runtime_error("no surface " + name);
-  });
-}
-
-ModelInputs turning_inputs() {
-  ModelInputs in;
-  in.tau_b << 0.5, 0.1, 0.0, 0.0, 0.0, 0.003;
-  in.current_n = Vector3(0.05, 0.02, 0.0);
-  return in;
-}
+using bench::six_surface_model;
+using bench::turning_inputs;
 
 void run_rk4(benchmark::State& state, const VehicleModel& model) {
   const ModelInputs inputs = turning_inputs();
