@@ -25,9 +25,7 @@ inline std::vector<double> breakpoints(double limit) {
   return b;
 }
 
-inline double velocity_limit(const std::string& name) {
-  return name == "u" || name == "v" || name == "w" ? 1.0 : 2.0;
-}
+inline double velocity_limit(const std::string& name) { return name == "u" || name == "v" || name == "w" ? 1.0 : 2.0; }
 
 // Damping on the body of DOF `dof` over (own velocity x, cross velocity y):
 // -(k1 x + k2 x|x|)(1 + 0.3 y^2), outputs as many as `outputs` (output k

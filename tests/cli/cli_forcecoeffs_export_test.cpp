@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/coefficient_dat.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -43,25 +44,7 @@ const fs::path kCase = fs::path(HYDROCOEF_SOURCE_DIR) / "data/openfoam-sphere/fo
 const std::string kQuarterFrontal = "0.01767145867644259";
 
 /// Column name -> value of the last data row of a coefficient.dat.
-std::map<std::string, double> last_row(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<std::string> names;
-  std::vector<double> values;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("# Time", 0) == 0) {
-      std::istringstream words(line.substr(1));
-      names.clear();
-      for (std::string word; words >> word;) names.push_back(word);
-    } else if (!line.empty() && line[0] != '#') {
-      std::istringstream words(line);
-      values.clear();
-      for (double value; words >> value;) values.push_back(value);
-    }
-  }
-  std::map<std::string, double> out;
-  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) out[names[i]] = values[i];
-  return out;
-}
+std::map<std::string, double> last_row(const fs::path& file) { return test::last_coefficient_row(file); }
 
 std::size_t data_rows(const fs::path& file) {
   std::ifstream in(file);

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/coefficient_dat.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -34,23 +35,7 @@ std::map<std::string, double> last_coefficients() {
   fs::path file;
   for (const auto& entry : fs::recursive_directory_iterator(kCase / "postProcessing" / "forceCoeffs"))
     if (entry.path().filename().string().rfind("coefficient", 0) == 0) file = entry.path();
-  std::ifstream in(file);
-  std::vector<std::string> names;
-  std::vector<double> values;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("# Time", 0) == 0) {
-      std::istringstream words(line.substr(1));
-      names.clear();
-      for (std::string word; words >> word;) names.push_back(word);
-    } else if (!line.empty() && line[0] != '#') {
-      std::istringstream words(line);
-      values.clear();
-      for (double value; words >> value;) values.push_back(value);
-    }
-  }
-  std::map<std::string, double> out;
-  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) out[names[i]] = values[i];
-  return out;
+  return test::last_coefficient_row(file);
 }
 
 TEST(CliForceCoeffs, CoefficientsAreOpenFoamsForTheSameRun) {
