@@ -84,7 +84,7 @@ std::uint32_t vr_of(const FmiHost& host, const std::string& name) {
   return 0;
 }
 
-struct Run {
+struct Scenario {
   double duration, rate, step;
   std::vector<double> tau;        // X..N
   std::vector<double> current;    // NED
@@ -102,7 +102,7 @@ const std::vector<std::pair<std::size_t, std::string>> kCompared = {
 // Steps the FMU from each of simulate's output times to the next and
 // compares every compared output with the CSV row, bit for bit.
 void expect_fmu_is_simulate(const TempDir& dir, const std::string& fmu, const std::filesystem::path& csv,
-                            const Run& run) {
+                            const Scenario& run) {
   const auto rows = read_csv(csv);
   const auto outputs = static_cast<std::size_t>(std::llround(run.duration * run.rate));
   ASSERT_EQ(rows.size(), outputs + 1);
@@ -153,7 +153,7 @@ void expect_fmu_is_simulate(const TempDir& dir, const std::string& fmu, const st
   host.free_instance();
 }
 
-std::string scenario_json(const Run& run) {
+std::string scenario_json(const Scenario& run) {
   std::ostringstream out;
   out.precision(17);
   out << R"({"duration": )" << run.duration << R"(, "output_rate": )" << run.rate
@@ -189,13 +189,13 @@ TEST(FmuVehicle, TheSurfaceDampedAsrVInACurrentIsSimulateBitForBit) {
   const auto exported = run_cli(
       {"export-fmu", "asr-v", "--vehicle", kExample + "vehicle-surfaces.json", "-o", "surfaces.fmu"}, dir.path());
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
-  const Run run{8.0,
-                5.0,
-                0.004,
-                {0.05, 0.02, 0.0, 0.0, 0.0, 0.004},
-                {0.1, -0.05, 0.01},
-                {0.05, -0.03, 0.4},
-                {0.1, 0.02, 0.0, 0.0, 0.01, 0.05}};
+  const Scenario run{8.0,
+                     5.0,
+                     0.004,
+                     {0.05, 0.02, 0.0, 0.0, 0.0, 0.004},
+                     {0.1, -0.05, 0.01},
+                     {0.05, -0.03, 0.4},
+                     {0.1, 0.02, 0.0, 0.0, 0.01, 0.05}};
   std::ofstream(dir / "current.json") << scenario_json(run);
   const auto simulated = run_cli({"simulate", "--vehicle", kExample + "vehicle-surfaces.json", "--scenario",
                                   (dir / "current.json").string(), "--out", "current.csv"},

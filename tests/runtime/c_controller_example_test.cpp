@@ -49,7 +49,7 @@ std::vector<std::vector<double>> rows_of(const std::string& text, char separator
   return rows;
 }
 
-struct Run {
+struct Outcome {
   int status = 0;
   std::string out, err;
 };
@@ -83,7 +83,7 @@ class CController : public ::testing::Test {
     delete dir_;
     dir_ = nullptr;
   }
-  static Run controller(const std::vector<std::string>& args) {
+  static Outcome controller(const std::vector<std::string>& args) {
     std::string command = shell_quote((*dir_ / "controller").string());
     for (const auto& a : args) command += " " + shell_quote(a);
     const std::string out = (*dir_ / "run.out").string(), err = (*dir_ / "run.err").string();
@@ -100,7 +100,7 @@ TEST_F(CController, WithoutGainsItIsSimulateOfThePoolTestBitForBit) {
                                  dir_->path());
   ASSERT_EQ(simulated.exit_code, 0) << simulated.err;
   const auto expected = rows_of(test::read_text((*dir_ / "pool.csv").string()), ',');
-  const Run run = controller({(*dir_ / "asr-v.hcrt").string(), "--seconds", "60", "--torque", "0.0027"});
+  const Outcome run = controller({(*dir_ / "asr-v.hcrt").string(), "--seconds", "60", "--torque", "0.0027"});
   ASSERT_EQ(run.status, 0) << run.err;
   const auto logged = rows_of(run.out, ' ');
   ASSERT_EQ(logged.size(), 601u);
@@ -122,7 +122,7 @@ TEST_F(CController, WithoutGainsItIsSimulateOfThePoolTestBitForBit) {
 }
 
 TEST_F(CController, ItsGainsHoldTheHeadingSetPoint) {
-  const Run run = controller(
+  const Outcome run = controller(
       {(*dir_ / "asr-v.hcrt").string(), "--seconds", "30", "--heading", "0.5", "--kp", "0.02", "--kd", "0.05"});
   ASSERT_EQ(run.status, 0) << run.err;
   const auto logged = rows_of(run.out, ' ');
@@ -137,14 +137,14 @@ TEST_F(CController, ItsGainsHoldTheHeadingSetPoint) {
 }
 
 TEST_F(CController, TheRuntimesErrorsEndItWithTheirMessage) {
-  const Run missing = controller({(*dir_ / "no-such.hcrt").string()});
+  const Outcome missing = controller({(*dir_ / "no-such.hcrt").string()});
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.err.find("no-such.hcrt"), std::string::npos) << missing.err;
   EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
-  const Run surfaces = controller({(*dir_ / "surge.hcrt").string()});
+  const Outcome surfaces = controller({(*dir_ / "surge.hcrt").string()});
   EXPECT_EQ(surfaces.status, 1);
   EXPECT_NE(surfaces.err.find("holds no vehicle"), std::string::npos) << surfaces.err;
-  const Run bad = controller({(*dir_ / "asr-v.hcrt").string(), "--kp", "fast"});
+  const Outcome bad = controller({(*dir_ / "asr-v.hcrt").string(), "--kp", "fast"});
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--kp 'fast' is not a finite number"), std::string::npos) << bad.err;
 }
