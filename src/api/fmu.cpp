@@ -161,8 +161,19 @@ FmuExportResult export_vehicle_fmu(const Database& db, const FmuExportOptions& o
   for (int i = 0; i < 6; ++i)
     model.variables.push_back(real(vr++, std::string(nu[i]) + "0", "parameter", i < 3 ? "m/s" : "rad/s",
                                    "initial body velocity over ground"));
+  std::vector<std::uint32_t> initial_state;  // the parameters x_n0 .. r0
   for (auto& v : model.variables)
-    if (v.causality == "parameter" && !v.start) v.start = 0.0;
+    if (v.causality == "parameter" && !v.start) {
+      v.start = 0.0;
+      initial_state.push_back(v.value_reference);
+    }
+  // In initialisation the outputs are those of the initial state: they depend on its parameters too.
+  for (auto& v : model.variables)
+    if (v.causality == "output") {
+      std::vector<std::uint32_t> at_start = v.dependencies;
+      at_start.insert(at_start.end(), initial_state.begin(), initial_state.end());
+      v.initial_dependencies = at_start;
+    }
   write_fmu(model, runtime, options, out);
   return out;
 }

@@ -346,6 +346,16 @@ TEST_F(FmuVehicleCalls, TheModelDescriptionStatesTheVehiclesVariables) {
   EXPECT_EQ(model.outputs.at(index("N_damping")),
             (std::vector<std::size_t>{index("current_north"), index("current_east"), index("current_down")}));
   EXPECT_TRUE(model.outputs.at(index("x_n")).empty());
+  // In initialisation they are those of the initial state: InitialUnknowns add its parameters.
+  std::ifstream in(unzipped_->path() / "modelDescription.xml");
+  const auto root = test::parse_xml(std::string(std::istreambuf_iterator<char>(in), {}));
+  std::string initial_x;
+  for (const auto* structure : root.all("ModelStructure"))
+    for (const auto* unknowns : structure->all("InitialUnknowns"))
+      for (const auto* unknown : unknowns->all("Unknown"))
+        if (unknown->at("index") == std::to_string(index("x_n"))) initial_x = unknown->at("dependencies");
+  EXPECT_NE((" " + initial_x + " ").find(" " + std::to_string(index("x_n0")) + " "), std::string::npos) << initial_x;
+  EXPECT_EQ((" " + initial_x + " ").find(" " + std::to_string(index("step")) + " "), std::string::npos) << initial_x;
   EXPECT_NE(model.guid.find("hcrt-xxh64-"), std::string::npos);
 }
 
