@@ -1,5 +1,5 @@
-// hydrocoef export-fmu: a stored gridded surface as an FMI 2.0
-// Co-Simulation FMU (docs/fmu.md). The work and the printing are the
+// hydrocoef export-fmu: a stored gridded surface, or a vehicle, as an FMI
+// 2.0 Co-Simulation FMU (docs/fmu.md). The work and the printing are the
 // library's (hydrocoef::export_fmu).
 #include <iostream>
 #include <memory>
@@ -29,12 +29,16 @@ void add_export_fmu_command(CLI::App& app, const GlobalOptions& global) {
   auto& o = args->options;
   auto* command = app.add_subcommand(
       "export-fmu",
-      "Write a stored gridded surface as an FMI 2.0 Co-Simulation FMU (modelDescription.xml, binaries/linux64 "
-      "built on libhydrocoef_runtime, resources/model.hcr): inputs the surface's axes, outputs its outputs and "
-      "their standard deviations, as hydrocoef query evaluates them; SI, FRD body axes, on-body signs; a refused "
-      "export writes nothing");
-  command->add_option("body", o.body, "Body whose surface the FMU evaluates")->required();
-  command->add_option("--surface", o.surface, "The stored gridded surface (of BODY)")->required();
+      "Write a stored gridded surface (--surface) or a vehicle (--vehicle) as an FMI 2.0 Co-Simulation FMU "
+      "(modelDescription.xml, binaries/linux64 built on libhydrocoef_runtime, resources/model.hcr): a surface's "
+      "inputs are its axes, its outputs its outputs and their standard deviations, as hydrocoef query evaluates "
+      "them; a vehicle's inputs are tau_b, the current and the disturbances, its outputs the pose, velocities and "
+      "damping, stepped as hydrocoef simulate steps (RK4); SI, FRD body axes, NED, on-body signs; a refused export "
+      "writes nothing");
+  command->add_option("body", o.body, "Body whose surface (or vehicle) the FMU evaluates")->required();
+  command->add_option("--surface", o.surface, "The stored gridded surface (of BODY)");
+  command->add_option("--vehicle", o.vehicle,
+                      "A vehicle file (JSON, as hydrocoef simulate --vehicle) whose damping surfaces are BODY's");
   command->add_option("-o,--output", o.output, "The .fmu file to write (written whole or not at all)")->required();
   command->add_flag("--json", args->json, "Print JSON");
   command->callback([args, &global] { run_export_fmu(*args, global); });

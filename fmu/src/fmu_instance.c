@@ -243,7 +243,7 @@ static int load(fmu_instance* fmu, fmi2String guid, fmi2String resources) {
   if (fmu->kind == NULL) {
     fmu_log(fmu, fmi2Error, "logStatusError",
             "fmi2Instantiate: the resource file %s states model kind '%.100s'; expected one this FMU binary runs "
-            "(surface)",
+            "(surface or vehicle)",
             path, kind == NULL ? "(none)" : kind);
     return -1;
   }

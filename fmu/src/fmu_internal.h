@@ -2,9 +2,10 @@
  * instance type, the standard's state machine, the logger, the resource
  * file; and the model kinds that give an instance its variables and its
  * step. A model kind is chosen by the runtime file's model text "fmu_model"
- * (written by `hydrocoef export-fmu`): "surface" today (fmu_surface.c); a
- * vehicle kind is one more entry of fmu_kinds (fmu_kinds.c) with its own
- * bind and step functions, on the same instance, state machine and logger. */
+ * (written by `hydrocoef export-fmu`): "surface" (fmu_surface.c) or
+ * "vehicle" (fmu_vehicle.c), entries of fmu_kinds (fmu_kinds.c) with their
+ * own bind and step functions, on the same instance, state machine and
+ * logger. */
 #ifndef HYDROCOEF_FMU_INTERNAL_H
 #define HYDROCOEF_FMU_INTERNAL_H
 
@@ -80,6 +81,7 @@ struct fmu_instance {
 /* The known kinds (fmu_kinds.c), NULL-terminated. */
 extern const fmu_kind* const fmu_kinds[];
 extern const fmu_kind fmu_surface_kind;
+extern const fmu_kind fmu_vehicle_kind;
 
 /* Allocates n reals, their start values and roles (zeroed); 0 or -1. */
 int fmu_allocate_reals(fmu_instance* fmu, size_t n);

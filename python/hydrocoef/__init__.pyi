@@ -988,6 +988,7 @@ class FmuVariable:
 class FmuExportResult:
     body: str
     surface: str
+    vehicle: str
     kind: str
     model_identifier: str
     guid: str
@@ -1000,7 +1001,9 @@ class FmuExportResult:
     def text(self) -> str: ...
     def json(self) -> str: ...
 
-def export_fmu(database: Database, body: str, *, surface: str, output: str) -> FmuExportResult: ...
+def export_fmu(
+    database: Database, body: str, *, surface: str = "", output: str, vehicle: str = ""
+) -> FmuExportResult: ...
 # ---- derivative exports (hydrocoef derivatives export) and scaling (hydrocoef scale) ----
 class DerivativeExportResult:
     database: str

@@ -107,20 +107,24 @@ std::string fmu_model_description(const FmuModelSpec& model) {
     out << "/>\n    </ScalarVariable>\n";
   }
   out << "  </ModelVariables>\n  <ModelStructure>\n";
-  std::ostringstream unknowns;
+  std::ostringstream unknowns, initial;
   for (std::size_t i = 0; i < model.variables.size(); ++i) {
     const auto& variable = model.variables[i];
     if (variable.causality != "output") continue;
-    unknowns << "      <Unknown index=\"" << i + 1 << "\" dependencies=\"";
-    for (std::size_t d = 0; d < variable.dependencies.size(); ++d)
-      unknowns << (d ? " " : "") << index_of.at(variable.dependencies[d]);
-    unknowns << "\"/>\n";
+    const auto& at_start = variable.initial_dependencies.value_or(variable.dependencies);
+    for (const auto& [stream, dependencies] :
+         {std::pair{&unknowns, &variable.dependencies}, std::pair{&initial, &at_start}}) {
+      *stream << "      <Unknown index=\"" << i + 1 << "\" dependencies=\"";
+      for (std::size_t d = 0; d < dependencies->size(); ++d)
+        *stream << (d ? " " : "") << index_of.at((*dependencies)[d]);
+      *stream << "\"/>\n";
+    }
   }
   if (!unknowns.str().empty())
     out << "    <Outputs>\n"
         << unknowns.str() << "    </Outputs>\n"
         << "    <InitialUnknowns>\n"
-        << unknowns.str() << "    </InitialUnknowns>\n";
+        << initial.str() << "    </InitialUnknowns>\n";
   out << "  </ModelStructure>\n</fmiModelDescription>\n";
   return out.str();
 }

@@ -21,6 +21,9 @@ struct FmuVariableSpec {
   std::string description;
   std::optional<double> start;              ///< inputs and parameters
   std::vector<std::uint32_t> dependencies;  ///< outputs: the value references of the inputs they depend on
+  /// outputs: what they depend on in initialisation mode (InitialUnknowns), when more than `dependencies`
+  /// (a state's initial value set by parameters)
+  std::optional<std::vector<std::uint32_t>> initial_dependencies;
 };
 
 struct FmuModelSpec {

@@ -518,10 +518,16 @@ fmi2Status FmiHost::exit_initialization_mode() {
 fmi2Status FmiHost::set_real(const std::vector<fmi2ValueReference>& vr, const std::vector<double>& values) {
   allow("fmi2SetReal", kInstantiated | kInitialization | kStepComplete);
   if (vr.size() != values.size()) throw HostRefusal("host: fmi2SetReal with as many values as references");
+  // Inputs at any of these states; fixed parameters before initialisation ends (FMI 2.0.x section 4.2.4).
+  const bool parameters_settable = state_ == kInstantiated || state_ == kInitialization;
   for (const fmi2ValueReference r : vr) {
-    bool input = false;
-    for (const auto& v : model_.variables) input = input || (v.value_reference == r && v.causality == "input");
-    if (!input) throw HostRefusal("host: value reference " + std::to_string(r) + " is not an input");
+    bool settable = false;
+    for (const auto& v : model_.variables)
+      settable = settable || (v.value_reference == r &&
+                              (v.causality == "input" || (v.causality == "parameter" && parameters_settable)));
+    if (!settable)
+      throw HostRefusal("host: value reference " + std::to_string(r) +
+                        (parameters_settable ? " is not an input or a parameter" : " is not an input"));
   }
   return after(functions_.SetReal(component_, vr.data(), vr.size(), values.data()), state_);
 }

@@ -8,7 +8,7 @@ import zipfile
 import pytest
 
 import hydrocoef
-from conftest import cli_error, cli_json
+from conftest import ASR_V, cli_error, cli_json
 
 
 def test_export_fmu_is_the_cli_one(db, db_path, tmp_path):
@@ -27,6 +27,18 @@ def test_export_fmu_is_the_cli_one(db, db_path, tmp_path):
                                               "resources/model.hcr"]
         assert f'guid="{result.guid}"' in archive.read("modelDescription.xml").decode()
     assert result.fmu_bytes == (tmp_path / "python.fmu").stat().st_size
+
+
+def test_export_vehicle_fmu_is_the_cli_one(db, db_path, tmp_path):
+    vehicle = str(ASR_V / "vehicle.json")
+    result = hydrocoef.export_fmu(db, "asr-v", vehicle=vehicle, output=str(tmp_path / "python.fmu"))
+    document = cli_json(db_path, "export-fmu", "asr-v", "--vehicle", vehicle, "-o", str(tmp_path / "cli.fmu"))
+    ours = json.loads(result.json())
+    for key in ("body", "vehicle", "kind", "model_identifier", "binary_bytes", "variables"):
+        assert ours[key] == document[key], key
+    assert result.kind == "vehicle"
+    assert [v.causality for v in result.variables].count("parameter") == 13
+    assert [v.start for v in result.variables if v.name == "step"] == [0.001]
 
 
 def test_export_fmu_refuses_what_the_cli_refuses(db, db_path, tmp_path):
