@@ -23,6 +23,7 @@
 #include <vector>
 
 #define HYDROCOEF_FMI2_HOST
+#include "bench/six_surface_vehicle.hpp"
 #include "hydrocoef/fmi2_interface.h"
 #include "src/dynamics/rigid_body.hpp"
 #include "src/dynamics/vehicle_model.hpp"
@@ -32,49 +33,11 @@
 namespace hydrocoef {
 namespace {
 
-std::vector<double> breakpoints(double limit) {
-  std::vector<double> b;
-  for (int i = 0; i < 20; ++i) b.push_back(-limit + 2.0 * limit * i / 19.0);
-  return b;
-}
-
-double velocity_limit(const std::string& name) { return name == "u" || name == "v" || name == "w" ? 1.0 : 2.0; }
-
-// Damping on the body over (own velocity x, cross velocity y): -(k1 x + k2 x|x|)(1 + 0.3 y^2).
-CoefficientSurface damping_surface(const std::string& x, const std::string& y, const std::string& output,
-                                   Interpolation method) {
-  std::vector<GridAxis> axes{{x, breakpoints(velocity_limit(x)), Extrapolation::Clamp},
-                             {y, breakpoints(velocity_limit(y)), Extrapolation::Clamp}};
-  std::vector<double> values;
-  for (const double b : axes[1].breakpoints)
-    for (const double a : axes[0].breakpoints)
-      values.push_back(-(0.5 * a + 10.0 * a * std::abs(a)) * (1.0 + 0.3 * b * b));
-  return CoefficientSurface(GridTable(axes, {output}, values, method));
-}
-
-constexpr std::array<std::array<const char*, 2>, 6> kAxes{
-    {{"u", "v"}, {"v", "u"}, {"w", "u"}, {"p", "v"}, {"q", "w"}, {"r", "u"}}};
-
 // bench_simulate's six-surface ASR-V-like vehicle as the vehicle FMU's runtime file (fmu_model = vehicle).
 std::string six_surface_runtime_file(Interpolation method) {
-  VehicleDescription v;
-  v.mass_kg = 6.7;
-  v.inertia_cg_b = Matrix3::Identity() * 0.0603;
-  v.r_g_b = Vector3(0.0, 0.0, 0.02);
-  v.buoyancy_N = v.mass_kg * v.gravity_m_s2;
-  v.added_mass_b = sphere_added_mass(v.rho_kg_m3, 0.15);
-  std::vector<std::pair<std::string, CoefficientSurface>> surfaces;
-  for (std::size_t dof = 0; dof < 6; ++dof) {
-    const std::string name = std::string("s") + kAxes[dof][0];
-    surfaces.emplace_back(name, damping_surface(kAxes[dof][0], kAxes[dof][1], std::string(kForceNames[dof]), method));
-    v.damping[dof] = {DofDamping::Kind::Surface, {}, {}, name, std::string(kForceNames[dof]), {},
-                      SignConvention::OnBody};
-  }
-  const VehicleModel model(v, [surfaces](const std::string& name) {
-    for (const auto& [n, s] : surfaces)
-      if (n == name) return s;
-    throw std::runtime_error("no surface " + name);
-  });
+  const bench::SixSurfaceVehicle vehicle_and_surfaces = bench::six_surface_vehicle(method);
+  const VehicleModel model = bench::six_surface_model(vehicle_and_surfaces);
+  const auto& surfaces = vehicle_and_surfaces.surfaces;
   std::vector<RuntimeSurface> runtime;
   for (const auto& [name, surface] : surfaces) runtime.push_back(runtime_surface(name, surface, {}));
   const RuntimeVehicle vehicle{&model, {{"name", "bench"}}};
