@@ -11,60 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/elf_dynamic.hpp"
 #include "tests/support/run_cli.hpp"
 
 namespace hydrocoef {
 namespace {
 
-template <typename T>
-T read_at(const std::string& bytes, std::size_t offset) {
-  T value;
-  if (offset > bytes.size() || bytes.size() - offset < sizeof(T)) throw std::runtime_error("ELF read out of range");
-  std::memcpy(&value, bytes.data() + offset, sizeof(T));
-  return value;
-}
-
-struct Dynamic {
-  std::vector<std::string> needed;
-  std::set<std::string> defined;    // global, defined
-  std::set<std::string> undefined;  // what it takes from the libraries
-};
-
-Dynamic dynamic_of(const std::string& bytes) {
-  const auto header = read_at<Elf64_Ehdr>(bytes, 0);
-  if (std::memcmp(header.e_ident, ELFMAG, SELFMAG) != 0 || header.e_ident[EI_CLASS] != ELFCLASS64)
-    throw std::runtime_error("not a 64-bit ELF file");
-  std::vector<Elf64_Shdr> sections;
-  for (std::size_t i = 0; i < header.e_shnum; ++i)
-    sections.push_back(read_at<Elf64_Shdr>(bytes, header.e_shoff + i * header.e_shentsize));
-  Dynamic out;
-  for (const Elf64_Shdr& section : sections) {
-    const Elf64_Shdr& strings = sections.at(section.sh_link);
-    if (section.sh_type == SHT_DYNAMIC) {
-      for (std::size_t at = section.sh_offset; at + sizeof(Elf64_Dyn) <= section.sh_offset + section.sh_size;
-           at += sizeof(Elf64_Dyn)) {
-        const auto entry = read_at<Elf64_Dyn>(bytes, at);
-        if (entry.d_tag == DT_NULL) break;
-        if (entry.d_tag == DT_NEEDED) out.needed.emplace_back(bytes.c_str() + strings.sh_offset + entry.d_un.d_val);
-      }
-    }
-    if (section.sh_type == SHT_DYNSYM) {
-      for (std::size_t at = section.sh_offset; at + sizeof(Elf64_Sym) <= section.sh_offset + section.sh_size;
-           at += sizeof(Elf64_Sym)) {
-        const auto symbol = read_at<Elf64_Sym>(bytes, at);
-        const std::string name = bytes.c_str() + strings.sh_offset + symbol.st_name;
-        if (name.empty() || ELF64_ST_BIND(symbol.st_info) == STB_LOCAL) continue;
-        (symbol.st_shndx == SHN_UNDEF ? out.undefined : out.defined).insert(name);
-      }
-    }
-  }
-  return out;
-}
-
 TEST(FmuBinary, NeedsLibcAndLibmOnlyAndExportsTheFmiFunctionsAlone) {
   const std::string bytes = test::read_text(HYDROCOEF_FMU_BINARY);
   ASSERT_FALSE(bytes.empty()) << HYDROCOEF_FMU_BINARY;
-  const Dynamic dynamic = dynamic_of(bytes);
+  const test::ElfDynamic dynamic = test::elf_dynamic(bytes);
   bool libc = false;
   for (const std::string& needed : dynamic.needed) {
     EXPECT_TRUE(needed == "libc.so.6" || needed == "libm.so.6") << "the FMU binary needs " << needed;

@@ -17,6 +17,7 @@
 
 #include "src/export/runtime_export.hpp"
 #include "src/surface/coefficient_surface.hpp"
+#include "tests/support/elf_dynamic.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -32,66 +33,20 @@ std::string file_bytes(const std::string& path) {
   return out.str();
 }
 
-template <typename T>
-T read_at(const std::string& bytes, std::size_t offset) {
-  T value;
-  if (offset > bytes.size() || bytes.size() - offset < sizeof(T)) throw std::runtime_error("ELF read out of range");
-  std::memcpy(&value, bytes.data() + offset, sizeof(T));
-  return value;
-}
-
-// The DT_NEEDED entries of a 64-bit ELF shared object, and its dynamic symbol names.
-struct Dynamic {
-  std::vector<std::string> needed;
-  std::set<std::string> symbols;  // defined, global
-};
-
-Dynamic dynamic_of(const std::string& bytes) {
-  const auto header = read_at<Elf64_Ehdr>(bytes, 0);
-  if (std::memcmp(header.e_ident, ELFMAG, SELFMAG) != 0 || header.e_ident[EI_CLASS] != ELFCLASS64)
-    throw std::runtime_error("not a 64-bit ELF file");
-  std::vector<Elf64_Shdr> sections;
-  for (std::size_t i = 0; i < header.e_shnum; ++i)
-    sections.push_back(read_at<Elf64_Shdr>(bytes, header.e_shoff + i * header.e_shentsize));
-  Dynamic out;
-  for (const Elf64_Shdr& section : sections) {
-    if (section.sh_type == SHT_DYNAMIC) {
-      const Elf64_Shdr& strings = sections.at(section.sh_link);
-      for (std::size_t at = section.sh_offset; at + sizeof(Elf64_Dyn) <= section.sh_offset + section.sh_size;
-           at += sizeof(Elf64_Dyn)) {
-        const auto entry = read_at<Elf64_Dyn>(bytes, at);
-        if (entry.d_tag == DT_NULL) break;
-        if (entry.d_tag == DT_NEEDED) out.needed.emplace_back(bytes.c_str() + strings.sh_offset + entry.d_un.d_val);
-      }
-    }
-    if (section.sh_type == SHT_DYNSYM) {
-      const Elf64_Shdr& strings = sections.at(section.sh_link);
-      for (std::size_t at = section.sh_offset; at + sizeof(Elf64_Sym) <= section.sh_offset + section.sh_size;
-           at += sizeof(Elf64_Sym)) {
-        const auto symbol = read_at<Elf64_Sym>(bytes, at);
-        if (symbol.st_shndx == SHN_UNDEF || ELF64_ST_BIND(symbol.st_info) == STB_LOCAL) continue;
-        const std::string name = bytes.c_str() + strings.sh_offset + symbol.st_name;
-        if (!name.empty()) out.symbols.insert(name);
-      }
-    }
-  }
-  return out;
-}
-
 TEST(RuntimeLinking, SharedLibraryNeedsLibcAndLibmOnlyAndExportsTheCApi) {
   const std::string bytes = file_bytes(HYDROCOEF_RUNTIME_SHARED);
   ASSERT_FALSE(bytes.empty()) << HYDROCOEF_RUNTIME_SHARED;
-  const Dynamic dynamic = dynamic_of(bytes);
+  const test::ElfDynamic dynamic = test::elf_dynamic(bytes);
   bool libc = false;
   for (const std::string& needed : dynamic.needed) {
     EXPECT_TRUE(needed == "libc.so.6" || needed == "libm.so.6") << "the runtime library needs " << needed;
     libc = libc || needed == "libc.so.6";
   }
   EXPECT_TRUE(libc);
-  EXPECT_TRUE(dynamic.symbols.count("hc_runtime_open"));
-  EXPECT_TRUE(dynamic.symbols.count("hc_runtime_evaluate"));
-  EXPECT_TRUE(dynamic.symbols.count("hc_runtime_vehicle_step_rk4"));
-  for (const std::string& symbol : dynamic.symbols) {
+  EXPECT_TRUE(dynamic.defined.count("hc_runtime_open"));
+  EXPECT_TRUE(dynamic.defined.count("hc_runtime_evaluate"));
+  EXPECT_TRUE(dynamic.defined.count("hc_runtime_vehicle_step_rk4"));
+  for (const std::string& symbol : dynamic.defined) {
     // The C API, and the version nodes' own symbols; no kernel or reader helper.
     EXPECT_TRUE(symbol.rfind("hc_runtime_", 0) == 0 || symbol == "HYDROCOEF_RUNTIME_1" ||
                 symbol == "HYDROCOEF_RUNTIME_2")
