@@ -74,8 +74,9 @@ void register_runtime(py::module_& m) {
               const std::size_t n = model.axis_count(s), n_out = model.output_count(s);
               std::vector<double> values(n_out), gradients(n * n_out), sigma(model.has_sigma(s) ? n_out : 0);
               model.evaluate(s, point, values, gradients, sigma);
-              py::array_t<double> gradient_array = to_array(gradients);
-              gradient_array.resize({static_cast<py::ssize_t>(n_out), static_cast<py::ssize_t>(n)});
+              const py::array_t<double> gradient_array(
+                  std::vector<py::ssize_t>{static_cast<py::ssize_t>(n_out), static_cast<py::ssize_t>(n)},
+                  gradients.data());
               py::dict result;
               result["values"] = to_array(values);
               result["gradients"] = gradient_array;
