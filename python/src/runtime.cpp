@@ -56,12 +56,18 @@ void register_runtime(py::module_& m) {
            }),
            "path"_a)
       .def_property_readonly("surfaces", &Model::surface_names, "The surfaces' names, in the file's order.")
-      .def("axes", [](const Model& model, const std::string& surface) {
-             return refusing([&] { return model.axis_names(model.surface_index(surface)); });
-           }, "surface"_a, "The axes' names of a surface, in the order evaluate takes them.")
-      .def("outputs", [](const Model& model, const std::string& surface) {
-             return refusing([&] { return model.output_names(model.surface_index(surface)); });
-           }, "surface"_a, "The outputs' names of a surface, in the order evaluate gives them.")
+      .def(
+          "axes",
+          [](const Model& model, const std::string& surface) {
+            return refusing([&] { return model.axis_names(model.surface_index(surface)); });
+          },
+          "surface"_a, "The axes' names of a surface, in the order evaluate takes them.")
+      .def(
+          "outputs",
+          [](const Model& model, const std::string& surface) {
+            return refusing([&] { return model.output_names(model.surface_index(surface)); });
+          },
+          "surface"_a, "The outputs' names of a surface, in the order evaluate gives them.")
       .def_property_readonly("has_vehicle", &Model::has_vehicle, "Whether the file holds a vehicle.")
       .def_property_readonly("disturbances", &Model::disturbance_names,
                              "The disturbance parameters vehicle_step_rk4 takes, in order.")

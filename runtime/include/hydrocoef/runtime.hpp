@@ -91,9 +91,7 @@ class Model {
   bool has_sigma(std::size_t surface) const {
     return hc_runtime_surface_has_sigma(checked_surface(surface), surface) != 0;
   }
-  std::size_t axis_count(std::size_t surface) const {
-    return hc_runtime_axis_count(checked_surface(surface), surface);
-  }
+  std::size_t axis_count(std::size_t surface) const { return hc_runtime_axis_count(checked_surface(surface), surface); }
   std::size_t output_count(std::size_t surface) const {
     return hc_runtime_output_count(checked_surface(surface), surface);
   }
@@ -122,9 +120,9 @@ class Model {
     check_size("values", values.size(), n_out);
     if (!gradients.empty()) check_size("gradients", gradients.size(), n * n_out);
     if (!sigma.empty()) check_size("sigma", sigma.size(), n_out);
-    const int status = hc_runtime_evaluate(model_, surface, x.data(), values.data(),
-                                           gradients.empty() ? nullptr : gradients.data(),
-                                           sigma.empty() ? nullptr : sigma.data());
+    const int status =
+        hc_runtime_evaluate(model_, surface, x.data(), values.data(), gradients.empty() ? nullptr : gradients.data(),
+                            sigma.empty() ? nullptr : sigma.data());
     if (status != HC_RUNTIME_OK) {
       char err[512] = "";
       hc_runtime_check_point(model_, surface, x.data(), err, sizeof err);
@@ -142,9 +140,8 @@ class Model {
 
   /// hc_runtime_vehicle_derivative: x and x_dot 13, tau_b 6, current_n 3 or
   /// empty (none), disturbances one per disturbance_names() entry.
-  void vehicle_derivative(std::span<const double> x, std::span<const double> tau_b,
-                          std::span<const double> current_n, std::span<const double> disturbances,
-                          std::span<double> x_dot) const {
+  void vehicle_derivative(std::span<const double> x, std::span<const double> tau_b, std::span<const double> current_n,
+                          std::span<const double> disturbances, std::span<double> x_dot) const {
     check_vehicle_inputs(x, tau_b, current_n, disturbances);
     check_size("x_dot", x_dot.size(), kStateSize);
     char err[512] = "";
@@ -188,11 +185,9 @@ class Model {
       throw std::invalid_argument(std::string(what) + " has " + std::to_string(found) + " entries; expected " +
                                   std::to_string(expected));
   }
-  static const double* or_null(std::span<const double> values) {
-    return values.empty() ? nullptr : values.data();
-  }
-  void check_vehicle_inputs(std::span<const double> x, std::span<const double> tau_b,
-                            std::span<const double> current_n, std::span<const double> disturbances) const {
+  static const double* or_null(std::span<const double> values) { return values.empty() ? nullptr : values.data(); }
+  void check_vehicle_inputs(std::span<const double> x, std::span<const double> tau_b, std::span<const double> current_n,
+                            std::span<const double> disturbances) const {
     checked();
     check_size("x", x.size(), kStateSize);
     check_size("tau_b", tau_b.size(), 6);
