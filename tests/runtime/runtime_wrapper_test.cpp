@@ -50,13 +50,14 @@ CoefficientSurface make_surface(std::size_t n, Interpolation method, Extrapolati
 
 std::string file_bytes() {
   std::mt19937_64 random(37);
-  std::vector<RuntimeSurface> surfaces;
-  surfaces.push_back(
-      runtime_surface("linear2", make_surface(2, Interpolation::Linear, Extrapolation::Linear, random), {}));
-  surfaces.push_back(
-      runtime_surface("pchip3", make_surface(3, Interpolation::Pchip, Extrapolation::Clamp, random), {}));
-  surfaces.push_back(
-      runtime_surface("spline1", make_surface(1, Interpolation::NaturalSpline, Extrapolation::Error, random), {}));
+  // A RuntimeSurface points into its CoefficientSurface: these outlive runtime_file_bytes.
+  const std::vector<CoefficientSurface> tables = {
+      make_surface(2, Interpolation::Linear, Extrapolation::Linear, random),
+      make_surface(3, Interpolation::Pchip, Extrapolation::Clamp, random),
+      make_surface(1, Interpolation::NaturalSpline, Extrapolation::Error, random)};
+  const std::vector<RuntimeSurface> surfaces = {runtime_surface("linear2", tables[0], {}),
+                                                runtime_surface("pchip3", tables[1], {}),
+                                                runtime_surface("spline1", tables[2], {})};
   return runtime_file_bytes(runtime_model_texts({{"body", "test"}}), surfaces);
 }
 
