@@ -54,7 +54,7 @@ expected=(
   "$multiarch/libhydrocoef.so.$version" "$multiarch/libhydrocoef.so.0" "$multiarch/libhydrocoef.so"
   "$multiarch/libhydrocoef.a"
   "$multiarch/libhydrocoef_runtime.so.1" "$multiarch/libhydrocoef_runtime.a" include/hydrocoef/runtime.h
-  include/hydrocoef/runtime_frames.h
+  include/hydrocoef/runtime_frames.h include/hydrocoef/runtime.hpp
   "$multiarch/cmake/hydrocoef/hydrocoefConfig.cmake" "$multiarch/cmake/hydrocoef/hydrocoefConfigVersion.cmake"
   "$multiarch/cmake/hydrocoef/hydrocoefTargets.cmake" "$multiarch/cmake/hydrocoef/hydrocoefStaticTargets.cmake"
   "$multiarch/pkgconfig/hydrocoef.pc"
@@ -67,7 +67,7 @@ for file in "${expected[@]}"; do
 done
 # Public headers only: include/ holds include/hydrocoef/*.hpp and the runtime library's C headers, nothing else.
 extra=$(cd "$prefix/include" && find . -type f ! -path './hydrocoef/*.hpp' ! -path './hydrocoef/runtime.h' \
-  ! -path './hydrocoef/runtime_frames.h' | head -3)
+  ! -path './hydrocoef/runtime_frames.h' ! -path './hydrocoef/runtime.hpp' | head -3)
 [[ -z $extra ]] || fail "cmake --install put more than include/hydrocoef/*.hpp under include/: $extra"
 for header in "$prefix"/include/hydrocoef/*.hpp; do
   if grep -Eq '#include +"(src|importers|cli)/' "$header"; then

@@ -26,6 +26,7 @@ Reference data and coefficients: set_body_reference (body set), body_references 
 run_coefficients (runs --coefficients).
 Sway and yaw derivatives from forced oscillation: pmm_derivatives (derivatives pmm).
 FMUs: export_fmu (export-fmu), a surface as an FMI 2.0 Co-Simulation FMU.
+Runtime files: RuntimeModel, a runtime file (export --format runtime) loaded through libhydrocoef_runtime.
 """
 
 import json as _json
@@ -52,6 +53,7 @@ from ._hydrocoef import (DerivativeCoefficient, DerivativeDeletion, DerivativeEv
 from ._hydrocoef import (PmmDerivative, PmmDerivativeRun, PmmDerivatives, PmmFrequencyDerivatives,
                          pmm_derivatives)
 from ._hydrocoef import FmuExportResult, FmuVariable, export_fmu
+from ._hydrocoef import RuntimeModel
 from ._hydrocoef import (DerivativeExportResult, ResistanceScalingPoint, ResistanceScalingResult, export_derivatives,
                          scale_surge_resistance)
 from ._hydrocoef import ForceCoeffsExportResult, ForceCoeffsExportRun
@@ -64,6 +66,7 @@ __all__ += ["LevelFit", "LevelFits", "Refits", "FitEvaluation", "RunDetails", "D
             "CopySummary", "MigrationSummary", "ReportSummary"]
 __all__ += ["integrate_surface", "SurfaceIntegration"]
 __all__ += ["export_fmu", "FmuExportResult", "FmuVariable"]
+__all__ += ["RuntimeModel"]
 __all__ += ["plot_fit", "plot_curves", "plot_surface", "plot_history", "plot_simulation", "plot_steady", "PlotFiles",
             "plot_coefficient"]
 __all__ += ["grid_convergence", "GciStudy", "analyse_pmm", "store_pmm", "PmmAnalysis", "pmm_runs", "PmmRunList",

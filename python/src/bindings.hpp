@@ -14,6 +14,7 @@
 //   reference.cpp   set_body_reference, body_references, run_coefficients and their results
 //   derivatives.cpp fit_derivative_model, list/show/delete/evaluate_derivative_model and their results
 //   pmm_derivatives.cpp pmm_derivatives (sway and yaw derivatives from forced oscillation) and its result
+//   runtime.cpp     RuntimeModel: a runtime file through libhydrocoef_runtime (hydrocoef/runtime.hpp)
 //   common.cpp      the helpers below that are not one topic's
 #pragma once
 
@@ -48,6 +49,7 @@ void register_derivatives(py::module_& m);
 void register_pmm_derivatives(py::module_& m);
 void register_derivative_exports(py::module_& m);
 void register_fmu(py::module_& m);
+void register_runtime(py::module_& m);
 
 /// The Database of a method's self. pybind11 would run a method on an
 /// instance whose C++ object was never made on uninitialised memory; this

@@ -46,4 +46,5 @@ PYBIND11_MODULE(_hydrocoef, m) {
   hydrocoef_python::register_pmm_derivatives(m);
   hydrocoef_python::register_derivative_exports(m);
   hydrocoef_python::register_fmu(m);
+  hydrocoef_python::register_runtime(m);
 }

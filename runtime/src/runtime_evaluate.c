@@ -28,6 +28,7 @@ const char* hc_runtime_status_name(int status) {
     case HC_RUNTIME_E_NOT_FINITE: return "HC_RUNTIME_E_NOT_FINITE";
     case HC_RUNTIME_E_NO_SIGMA: return "HC_RUNTIME_E_NO_SIGMA";
     case HC_RUNTIME_E_NOT_FOUND: return "HC_RUNTIME_E_NOT_FOUND";
+    case HC_RUNTIME_E_NO_VEHICLE: return "HC_RUNTIME_E_NO_VEHICLE";
     default: return "unknown status";
   }
 }
