@@ -29,6 +29,7 @@
 #include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
 #include "src/core/parallel.hpp"
+#include "src/core/utf8.hpp"
 #include "src/mesh/duplicate_faces.hpp"
 
 namespace hydrocoef {
@@ -110,26 +111,6 @@ class XmlHeader {
     while (pos_ < in_.size() && is_name_char(in_[pos_])) ++pos_;
     if (pos_ == start) return false;
     name.assign(in_.substr(start, pos_ - start));
-    return true;
-  }
-
-  static bool append_utf8(std::uint32_t code, std::string& out) {
-    if (code == 0 || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff)) return false;
-    if (code < 0x80) {
-      out += static_cast<char>(code);
-    } else if (code < 0x800) {
-      out += static_cast<char>(0xc0 | (code >> 6));
-      out += static_cast<char>(0x80 | (code & 0x3f));
-    } else if (code < 0x10000) {
-      out += static_cast<char>(0xe0 | (code >> 12));
-      out += static_cast<char>(0x80 | ((code >> 6) & 0x3f));
-      out += static_cast<char>(0x80 | (code & 0x3f));
-    } else {
-      out += static_cast<char>(0xf0 | (code >> 18));
-      out += static_cast<char>(0x80 | ((code >> 12) & 0x3f));
-      out += static_cast<char>(0x80 | ((code >> 6) & 0x3f));
-      out += static_cast<char>(0x80 | (code & 0x3f));
-    }
     return true;
   }
 

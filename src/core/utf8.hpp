@@ -1,10 +1,11 @@
-// UTF-8 decoding for the checks that text from files, command lines and
+// UTF-8 decoding (and encoding) for the checks that text from files, command lines and
 // databases must pass before it is used (names, error messages).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace hydrocoef {
@@ -28,5 +29,10 @@ std::optional<Utf8CodePoint> decode_utf8(std::string_view text, std::size_t i);
 /// U+2028/U+2029, the byte-order mark U+FEFF and the noncharacters
 /// U+FFFE/U+FFFF.
 bool is_format_or_control(std::uint32_t code_point);
+
+/// Appends code point `code` to `out` as UTF-8 (a character reference read
+/// from XML, for example). Returns false, appending nothing, for 0, a
+/// surrogate or a value beyond U+10FFFF.
+bool append_utf8(std::uint32_t code, std::string& out);
 
 }  // namespace hydrocoef

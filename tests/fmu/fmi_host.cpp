@@ -14,6 +14,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "src/core/utf8.hpp"
+
 namespace hydrocoef::test {
 namespace {
 
@@ -113,23 +115,6 @@ class XmlReader {
     if (at_ == begin) fail("expected a name");
     return s_.substr(begin, at_ - begin);
   }
-  static void utf8(std::string& out, unsigned long code) {
-    if (code < 0x80) {
-      out += static_cast<char>(code);
-    } else if (code < 0x800) {
-      out += static_cast<char>(0xc0 | (code >> 6));
-      out += static_cast<char>(0x80 | (code & 0x3f));
-    } else if (code < 0x10000) {
-      out += static_cast<char>(0xe0 | (code >> 12));
-      out += static_cast<char>(0x80 | ((code >> 6) & 0x3f));
-      out += static_cast<char>(0x80 | (code & 0x3f));
-    } else {
-      out += static_cast<char>(0xf0 | (code >> 18));
-      out += static_cast<char>(0x80 | ((code >> 12) & 0x3f));
-      out += static_cast<char>(0x80 | ((code >> 6) & 0x3f));
-      out += static_cast<char>(0x80 | (code & 0x3f));
-    }
-  }
   // Text up to `end` (a quote, or '<' for character data), entities decoded.
   std::string text_until(char end) {
     std::string out;
@@ -165,7 +150,7 @@ class XmlReader {
         const unsigned long code = std::stoul(digits, nullptr, hex ? 16 : 10);
         if (code == 0 || code > 0x10ffff || (code < 0x20 && code != 9 && code != 10 && code != 13))
           fail("a character reference to a character XML 1.0 cannot hold");
-        utf8(out, code);
+        if (!append_utf8(static_cast<std::uint32_t>(code), out)) fail("a character reference to a surrogate");
       } else {
         fail("an unknown entity &" + entity + ";");
       }
