@@ -175,9 +175,9 @@ class Model {
   }
   static std::string text(const char* value) { return value == nullptr ? std::string() : std::string(value); }
   std::vector<std::string> texts(std::size_t surface, std::size_t count,
-                                 const char* (*get)(const hc_runtime_model*, std::size_t, std::size_t)) const {
+                                 const char* (*name_of)(const hc_runtime_model*, std::size_t, std::size_t)) const {
     std::vector<std::string> out;
-    for (std::size_t i = 0; i < count; ++i) out.push_back(text(get(model_, surface, i)));
+    for (std::size_t i = 0; i < count; ++i) out.push_back(text(name_of(model_, surface, i)));
     return out;
   }
   static void check_size(const char* what, std::size_t found, std::size_t expected) {
