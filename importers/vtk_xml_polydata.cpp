@@ -29,7 +29,7 @@
 #include "src/core/file_bytes.hpp"
 #include "src/core/huge_pages.hpp"
 #include "src/core/parallel.hpp"
-#include "src/core/utf8.hpp"
+#include "src/core/xml_reference.hpp"
 #include "src/mesh/duplicate_faces.hpp"
 
 namespace hydrocoef {
@@ -125,27 +125,7 @@ class XmlHeader {
       }
       const auto end = raw.find(';', i);
       if (end == npos) return false;
-      const std::string_view entity = raw.substr(i + 1, end - i - 1);
-      if (entity == "lt")
-        out += '<';
-      else if (entity == "gt")
-        out += '>';
-      else if (entity == "amp")
-        out += '&';
-      else if (entity == "quot")
-        out += '"';
-      else if (entity == "apos")
-        out += '\'';
-      else if (entity.size() > 1 && entity[0] == '#') {
-        const bool hex = entity[1] == 'x';
-        const std::string_view digits = entity.substr(hex ? 2 : 1);
-        std::uint32_t code = 0;
-        const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), code, hex ? 16 : 10);
-        if (ec != std::errc() || ptr != digits.data() + digits.size() || digits.empty() || !append_utf8(code, out))
-          return false;
-      } else {
-        return false;
-      }
+      if (append_xml_reference(raw.substr(i + 1, end - i - 1), out) != nullptr) return false;
       i = end;
     }
     return true;

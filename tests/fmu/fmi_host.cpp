@@ -14,7 +14,7 @@
 #include <sstream>
 #include <type_traits>
 
-#include "src/core/utf8.hpp"
+#include "src/core/xml_reference.hpp"
 
 namespace hydrocoef::test {
 namespace {
@@ -131,29 +131,7 @@ class XmlReader {
       const auto semicolon = s_.find(';', at_);
       if (semicolon == std::string::npos || semicolon - at_ > 12) fail("an unterminated entity");
       const std::string entity = s_.substr(at_ + 1, semicolon - at_ - 1);
-      if (entity == "lt")
-        out += '<';
-      else if (entity == "gt")
-        out += '>';
-      else if (entity == "amp")
-        out += '&';
-      else if (entity == "quot")
-        out += '"';
-      else if (entity == "apos")
-        out += '\'';
-      else if (entity.size() > 1 && entity[0] == '#') {
-        const bool hex = entity[1] == 'x';
-        const std::string digits = entity.substr(hex ? 2 : 1);
-        if (digits.empty() ||
-            digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") != std::string::npos)
-          fail("a malformed character reference &" + entity + ";");
-        const unsigned long code = std::stoul(digits, nullptr, hex ? 16 : 10);
-        if (code == 0 || code > 0x10ffff || (code < 0x20 && code != 9 && code != 10 && code != 13))
-          fail("a character reference to a character XML 1.0 cannot hold");
-        if (!append_utf8(static_cast<std::uint32_t>(code), out)) fail("a character reference to a surrogate");
-      } else {
-        fail("an unknown entity &" + entity + ";");
-      }
+      if (const char* wrong = append_xml_reference(entity, out)) fail(std::string(wrong) + " &" + entity + ";");
       at_ = semicolon + 1;
     }
     return out;
