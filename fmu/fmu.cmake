@@ -13,7 +13,7 @@ add_library(hydrocoef_fmu MODULE ${HYDROCOEF_FMU_SOURCES} $<TARGET_OBJECTS:hydro
 set_target_properties(hydrocoef_fmu PROPERTIES PREFIX "" C_STANDARD 11 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF
   C_VISIBILITY_PRESET hidden LINK_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/hydrocoef_fmu.map)
 target_include_directories(hydrocoef_fmu PRIVATE ${CMAKE_CURRENT_LIST_DIR}/include
-  ${PROJECT_SOURCE_DIR}/runtime/include)
+  ${PROJECT_SOURCE_DIR}/runtime/include ${PROJECT_SOURCE_DIR})
 target_compile_options(hydrocoef_fmu PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
   -Werror -fno-math-errno -fno-trapping-math)
 target_link_options(hydrocoef_fmu PRIVATE "LINKER:--version-script=${CMAKE_CURRENT_LIST_DIR}/hydrocoef_fmu.map"

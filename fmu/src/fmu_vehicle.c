@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "fmu_internal.h"
+#include "runtime/src/motion_kernel.h"
 
 enum { V_TAU = 0, V_CURRENT = 6, V_DISTURBANCES = 9, V_OUTPUTS = 22, V_PARAMETERS = 13 };
 /* Offsets inside the outputs and the parameters. */
@@ -83,7 +84,7 @@ static const char* name_of(const fmu_instance* fmu, const vehicle_data* data, si
 
 /* hydrocoef's quaternion_from_euler (src/dynamics/kinematics.cpp): zyx
  * Euler angles to q_nb, scalar first and non-negative, normalised (the
- * squared norm summed in the order Eigen's 4-vector reduction uses). */
+ * shared kernel's hc_motion_normalize, as the library's unit_attitude). */
 static void quaternion_from_euler(const double e[3], double q[4]) {
   const double cp = cos(0.5 * e[0]), sp = sin(0.5 * e[0]);
   const double ct = cos(0.5 * e[1]), st = sin(0.5 * e[1]);
@@ -94,8 +95,7 @@ static void quaternion_from_euler(const double e[3], double q[4]) {
   q[3] = cp * ct * sy - sp * st * cy;
   if (q[0] < 0.0)
     for (int i = 0; i < 4; ++i) q[i] = -q[i];
-  const double norm = sqrt((q[0] * q[0] + q[2] * q[2]) + (q[1] * q[1] + q[3] * q[3]));
-  for (int i = 0; i < 4; ++i) q[i] /= norm;
+  hc_motion_normalize(q);
 }
 
 /* The outputs of state x at the held inputs; 0 or -1 (err). */
@@ -108,11 +108,10 @@ static int write_outputs(fmu_instance* fmu, const vehicle_data* data, const doub
     return -1;
   double* out = fmu->reals + data->outputs;
   for (int i = 0; i < 3; ++i) out[O_POSITION + i] = x[i];
-  /* The attitude normalised once more, as simulate's samples state it (Eigen's normalized()). */
-  const double* s = x + 3;
-  const double norm = sqrt((s[0] * s[0] + s[2] * s[2]) + (s[1] * s[1] + s[3] * s[3]));
-  double q[4];
-  for (int i = 0; i < 4; ++i) q[i] = out[O_QUATERNION + i] = s[i] / norm;
+  /* The attitude normalised once more, as simulate's samples state it (unit_attitude). */
+  double q[4] = {x[3], x[4], x[5], x[6]};
+  hc_motion_normalize(q);
+  for (int i = 0; i < 4; ++i) out[O_QUATERNION + i] = q[i];
   /* hydrocoef's euler_from_quaternion (src/dynamics/kinematics.cpp). */
   const double e = q[0], a = q[1], b = q[2], c = q[3];
   out[O_EULER + 0] = atan2(2.0 * (b * c + a * e), 1.0 - 2.0 * (a * a + b * b));

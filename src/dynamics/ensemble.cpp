@@ -118,7 +118,7 @@ class TrajectoryStore {
   }
   /// Draw i at output time k from its state, as make_sample reports it.
   void put(std::size_t i, std::size_t k, const StateVector& x) {
-    put(i, k, position_n(x), euler_from_quaternion(attitude_nb(x).normalized()), velocity_b(x));
+    put(i, k, position_n(x), euler_from_quaternion(unit_attitude(attitude_nb(x))), velocity_b(x));
   }
   /// Unwraps draw i's Euler angles in time.
   void unwrap(std::size_t i) {

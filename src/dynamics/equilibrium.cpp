@@ -110,7 +110,7 @@ EquilibriumResult solve_equilibrium(const VehicleModel& model, const Equilibrium
   model_inputs.tau_b = inputs.tau_b;
   model_inputs.current_n = inputs.current_n;
   model_inputs.disturbances = disturbances;
-  const Balance balance(model, model_inputs, inputs.q_nb.normalized());
+  const Balance balance(model, model_inputs, unit_attitude(inputs.q_nb));
 
   EquilibriumResult result;
   Solve best = levenberg_marquardt(balance, inputs.initial_guess_b, inputs.max_iterations);

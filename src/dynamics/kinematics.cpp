@@ -23,7 +23,7 @@ Quaternion4 quaternion_from_euler(const Vector3& euler_rad) {
       cp * st * cy + sp * ct * sy,   //
       cp * ct * sy - sp * st * cy;
   if (q[0] < 0.0) q = -q;
-  return q / q.norm();
+  return unit_attitude(q);
 }
 
 }  // namespace hydrocoef

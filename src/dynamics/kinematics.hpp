@@ -48,6 +48,15 @@ inline Quaternion4 quaternion_rate(const Quaternion4& q, const Vector3& omega_b,
   return q_dot;
 }
 
+/// q / |q|: an attitude projected back onto the unit sphere, in the shared
+/// kernel's order of operations (hc_motion_normalize), which the runtime
+/// library and the vehicle FMU use too: every normalised attitude hydrocoef
+/// states (the initial state, the samples, the equilibrium's) is this one.
+inline Quaternion4 unit_attitude(Quaternion4 q) {
+  motion::kernel::hc_motion_normalize(q.data());
+  return q;
+}
+
 /// zyx Euler angles (phi, theta, psi) [rad] of a (normalised) quaternion; phi
 /// and psi in (-pi, pi], theta in [-pi/2, pi/2].
 Vector3 euler_from_quaternion(const Quaternion4& q);

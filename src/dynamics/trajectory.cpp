@@ -27,7 +27,7 @@ TrajectorySample make_sample(const VehicleModel& model, double t_s, const StateV
   TrajectorySample s;
   s.t_s = t_s;
   s.p_n = position_n(x);
-  s.q_nb = attitude_nb(x).normalized();
+  s.q_nb = unit_attitude(attitude_nb(x));
   s.euler_rad = euler_from_quaternion(s.q_nb);
   s.nu_b = velocity_b(x);
   s.forces = model.forces(x, inputs);

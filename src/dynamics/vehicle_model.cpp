@@ -12,7 +12,7 @@ namespace hydrocoef {
 StateVector make_state(const Vector3& p_n, const Quaternion4& q_nb, const Vector6& nu_b) {
   StateVector x;
   x.segment<3>(state_index::kPosition) = p_n;
-  x.segment<4>(state_index::kAttitude) = q_nb / q_nb.norm();
+  x.segment<4>(state_index::kAttitude) = unit_attitude(q_nb);
   x.segment<6>(state_index::kVelocity) = nu_b;
   return x;
 }

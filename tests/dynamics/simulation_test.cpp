@@ -150,7 +150,7 @@ TEST(Simulation, LanesAreEachVehiclesOwnRun) {
       const StateVector x = lanes.states[k].col(static_cast<Eigen::Index>(l));
       for (Eigen::Index i = 0; i < 3; ++i) EXPECT_EQ(x[i], own.samples[k].p_n[i]) << "lane " << l << " at " << k;
       for (Eigen::Index i = 0; i < 4; ++i)
-        EXPECT_EQ(attitude_nb(x).normalized()[i], own.samples[k].q_nb[i]) << "lane " << l << " at " << k;
+        EXPECT_EQ(unit_attitude(attitude_nb(x))[i], own.samples[k].q_nb[i]) << "lane " << l << " at " << k;
       for (Eigen::Index i = 0; i < 6; ++i) EXPECT_EQ(x[7 + i], own.samples[k].nu_b[i]) << "lane " << l << " at " << k;
     }
   }

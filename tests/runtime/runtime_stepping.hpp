@@ -54,8 +54,8 @@ inline void expect_simulate_bit_for_bit(const VehicleModel& model, const hc_runt
     t = event;
     const TrajectorySample& sample = result.samples[k];
     for (int i = 0; i < 3; ++i) mismatches += !test::same_bits(x[i], sample.p_n[i]);
-    // A sample states the attitude normalised once more (make_sample); the state is compared at the end.
-    const Quaternion4 q = attitude_nb(x).normalized();
+    // A sample states the attitude normalised once more (make_sample, unit_attitude); the state is compared at the end.
+    const Quaternion4 q = unit_attitude(attitude_nb(x));
     for (int i = 0; i < 4; ++i) mismatches += !test::same_bits(q[i], sample.q_nb[i]);
     for (int i = 0; i < 6; ++i) mismatches += !test::same_bits(x[7 + i], sample.nu_b[i]);
   }
