@@ -19,8 +19,6 @@ namespace hydrocoef {
 inline namespace api {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 std::string quote_name(const std::string& name) { return "'" + printable_text(name, 80) + "'"; }
 
 bool positive_finite(double value) { return std::isfinite(value) && value > 0.0; }

@@ -3,6 +3,7 @@
 // the fit src/api/fit.cpp; what the CLI prints of them src/api/*_report.cpp.
 #include "src/api/internal.hpp"
 #include "src/api/records_report.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 #include "src/core/text.hpp"
 
@@ -14,8 +15,6 @@
 namespace hydrocoef {
 inline namespace api {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 RunDatabase::OpenMode store_mode(OpenMode mode) {
   switch (mode) {

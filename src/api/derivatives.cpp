@@ -28,8 +28,6 @@ namespace hydrocoef {
 inline namespace api {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 double or_nan(const std::optional<double>& value) { return value.value_or(kNaN); }
 std::optional<double> finite_or_empty(double value) {
   return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;

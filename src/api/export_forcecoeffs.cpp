@@ -44,7 +44,6 @@ void ForceCoeffsExportOptions::validate() const {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string quoted(const std::string& name) { return "'" + printable_text(name, 80) + "'"; }
 

@@ -4,6 +4,7 @@
 // calls (src/pipeline/fit_stored_runs). What they print is src/api/fit_report.cpp.
 #include "src/api/internal.hpp"
 #include "src/api/records_report.hpp"
+#include "src/core/numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +13,6 @@
 namespace hydrocoef {
 inline namespace api {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::optional<std::string> optional_text(const std::string& text) {
   return text.empty() ? std::nullopt : std::optional<std::string>(text);

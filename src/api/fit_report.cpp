@@ -4,6 +4,7 @@
 #include "src/api/records_format.hpp"
 #include "src/api/records_report.hpp"
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/core/sign_convention.hpp"
 
 #include <cmath>
@@ -14,8 +15,6 @@
 namespace hydrocoef {
 namespace records {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 nlohmann::json warnings_json(const std::vector<FitWarning>& warnings) {
   nlohmann::json out = nlohmann::json::array();

@@ -20,7 +20,6 @@ namespace hydrocoef {
 inline namespace api {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::array<const char*, 6> kCoefficientNames = {"C_X", "C_Y", "C_Z", "C_K", "C_M", "C_N"};
 
 std::string quote_name(const std::string& name) { return "'" + printable_text(name, 80) + "'"; }

@@ -16,8 +16,6 @@ namespace hydrocoef {
 namespace records {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 /// A table cell of at least `width` characters that never runs into the next
 /// one: a longer text ("4.94066e-324", a long body name) gets one space after it.
 std::string cell(const std::string& text, std::size_t width) {

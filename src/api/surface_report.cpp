@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "src/core/escape.hpp"
+#include "src/core/numbers.hpp"
 #include "src/export/export.hpp"
 #include "src/surface/gp_design.hpp"
 #include "src/surface/grid_table.hpp"
@@ -23,8 +24,6 @@ inline namespace api {
 namespace surface_text {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string json_number_text(const nlohmann::json& value, int digits) {
   return value.is_number() ? significant(value.get<double>(), digits) : "n/a";

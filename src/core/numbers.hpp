@@ -10,11 +10,16 @@
 // "-inf", "nan" and "-nan" (a NaN with its sign bit set).
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace hydrocoef {
+
+/// The quiet NaN that stands for a number that is not defined (a statistic
+/// of too few runs, a field a record does not have); written "nan".
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The shortest text that reads back as `value` (see the file comment).
 std::string shortest_number(double value);

@@ -16,7 +16,6 @@ namespace hydrocoef {
 namespace {
 
 constexpr Dimension kTime{{0, 0, 1, 0}};
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Linear interpolation of a simulated component at time t (t inside the samples' span).
 double interpolate(const std::vector<TrajectorySample>& samples, std::size_t component, double t) {
