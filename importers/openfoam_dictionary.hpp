@@ -38,6 +38,8 @@ struct FoamValue {
   std::vector<std::string> tokens;
   std::string file;
   std::size_t line = 0;
+  /// "file:line", for messages.
+  std::string where() const { return file + ":" + std::to_string(line); }
 };
 
 /// The bounds of one read: a dictionary file and every file it #includes.

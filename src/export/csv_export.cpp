@@ -17,8 +17,6 @@ std::string column_text(const std::string& name, const std::string& unit) {
 std::string column(const std::string& name, const std::string& unit) {
   return escape::csv_text(column_text(name, unit));
 }
-std::string comment(const std::string& text) { return escape::csv_comment(text); }
-
 std::string axis_names(const GridTable& table) {
   std::string names;
   for (std::size_t a = 0; a < table.axis_count(); ++a) names += (a ? ", " : "") + table.axes()[a].name;
@@ -28,20 +26,20 @@ std::string axis_names(const GridTable& table) {
 }  // namespace
 
 std::string csv_comment_block(const GridTable& table, const ExportMetadata& metadata) {
-  std::string text = "# hydrocoef export of " + comment(provenance_line(metadata)) + "\n";
+  std::string text = "# hydrocoef export of " + escape::csv_comment(provenance_line(metadata)) + "\n";
   text += "# method " + std::string(interpolation_name(table.method())) +
           " (tensor product along the axes); outputs in sign convention " +
           sign_convention_text(metadata.sign_convention) + "\n";
   text += "# body axes x forward, y starboard, z down (SNAME); SI units\n";
   for (std::size_t a = 0; a < table.axis_count(); ++a) {
     const GridAxis& axis = table.axes()[a];
-    text += "# axis " + std::to_string(a) + " " + comment(column_text(axis.name, metadata.axis_units[a])) + ": " +
-            std::to_string(axis.breakpoints.size()) + " breakpoints, valid range [" +
+    text += "# axis " + std::to_string(a) + " " + escape::csv_comment(column_text(axis.name, metadata.axis_units[a])) +
+            ": " + std::to_string(axis.breakpoints.size()) + " breakpoints, valid range [" +
             shortest_number(axis.breakpoints.front()) + ", " + shortest_number(axis.breakpoints.back()) +
             "], out of range: " + std::string(extrapolation_name(axis.extrapolation)) + "\n";
   }
   for (std::size_t k = 0; k < table.output_count(); ++k)
-    text += "# output " + comment(column_text(table.outputs()[k], metadata.output_units[k])) + "\n";
+    text += "# output " + escape::csv_comment(column_text(table.outputs()[k], metadata.output_units[k])) + "\n";
   return text;
 }
 
@@ -76,8 +74,8 @@ std::string csv_wide_text(const GridTable& table, const ExportMetadata& metadata
   const std::vector<double>& x1 = table.axes()[1].breakpoints;
   const std::size_t n_out = table.output_count();
   std::string text = csv_comment_block(table, metadata);
-  text += "# per output, one row per " + comment(table.axes()[0].name) + " breakpoint, one column per " +
-          comment(table.axes()[1].name) + " breakpoint\n";
+  text += "# per output, one row per " + escape::csv_comment(table.axes()[0].name) + " breakpoint, one column per " +
+          escape::csv_comment(table.axes()[1].name) + " breakpoint\n";
   text += "output," + escape::csv_text(column_text(table.axes()[0].name, metadata.axis_units[0]) + " \\ " +
                                        column_text(table.axes()[1].name, metadata.axis_units[1]));
   for (double x : x1) text += "," + shortest_number(x);

@@ -18,12 +18,12 @@ constexpr std::array<char, 6> kVelocity{'U', 'V', 'W', 'P', 'Q', 'R'};
 // FRD -> FLU: y, z and the rotations about them change sign.
 constexpr std::array<double, 6> kFrdToFlu{1.0, -1.0, -1.0, 1.0, -1.0, -1.0};
 
-std::string comment(const std::string& text) { return "<!-- " + escape::xml_comment(text) + " -->\n"; }
+std::string xml_comment_line(const std::string& text) { return "<!-- " + escape::xml_comment(text) + " -->\n"; }
 
 std::string gz_force_unit(std::size_t dof) { return dof < 3 ? "N" : "N m"; }
 std::string gz_velocity_unit(std::size_t j) { return j < 3 ? "m/s" : "rad/s"; }
 
-std::string set_context(const DerivativeSet& set) {
+std::string gz_set_context(const DerivativeSet& set) {
   return "derivative set '" + escape::one_line(set.name) + "' (" + escape::one_line(set.output) + ")";
 }
 
@@ -81,10 +81,10 @@ DerivativeGazeboExport derivative_gazebo(const std::vector<DerivativeSet>& sets,
     check_derivative_set(set);
     const auto dof = force_index(set.output);
     if (!dof)
-      throw InputError(set_context(set) + ": output '" + escape::one_line(set.output) +
+      throw InputError(gz_set_context(set) + ": output '" + escape::one_line(set.output) +
                        "' is not a force or moment of gz-sim; expected X, Y, Z, K, M or N");
     if (seen[*dof])
-      throw InputError(set_context(set) + ": a second set of output " + set.output + "; expected one per output");
+      throw InputError(gz_set_context(set) + ": a second set of output " + set.output + "; expected one per output");
     seen[*dof] = true;
     sources.push_back("'" + set.name + "' (" + set.output + "): terms " + format_terms(set.terms) + ", stated " +
                       std::string(to_string(set.sign)) +
@@ -94,7 +94,7 @@ DerivativeGazeboExport derivative_gazebo(const std::vector<DerivativeSet>& sets,
       const auto parameter = gz_parameter(*dof, set.terms[k], why);
       if (!parameter) {
         if (!options.drop_unrepresentable)
-          throw InputError(set_context(set) + ": term '" + set.terms[k].text() + "' " + why +
+          throw InputError(gz_set_context(set) + ": term '" + set.terms[k].text() + "' " + why +
                            "; refit without it, or drop it explicitly (drop unrepresentable terms)");
         out.dropped.push_back(set.output + ": " + set.terms[k].text() + " (" + why + ")");
         continue;
@@ -143,20 +143,21 @@ DerivativeGazeboExport derivative_gazebo(const std::vector<DerivativeSet>& sets,
 
   std::string& text = out.text;
   text = "<?xml version=\"1.0\"?>\n";
-  text += comment("hydrocoef " + std::string(kVersion) +
-                  ": gz-sim Hydrodynamics system parameters from derivative sets of several variables");
-  text += comment("Frame: the parameters are in the link's axes, " +
-                  std::string(flu ? "FLU (x forward, y left, z up): hydrocoef's FRD derivatives were multiplied by "
-                                    "t_i t_j (t_i t_j t_k for s_j s_k terms), t = (1,-1,-1,1,-1,-1)."
-                                  : "FRD (x forward, y starboard, z down), as hydrocoef's body axes: nothing "
-                                    "converted."));
-  text += comment(
+  text += xml_comment_line("hydrocoef " + std::string(kVersion) +
+                           ": gz-sim Hydrodynamics system parameters from derivative sets of several variables");
+  text += xml_comment_line(
+      "Frame: the parameters are in the link's axes, " +
+      std::string(flu ? "FLU (x forward, y left, z up): hydrocoef's FRD derivatives were multiplied by "
+                        "t_i t_j (t_i t_j t_k for s_j s_k terms), t = (1,-1,-1,1,-1,-1)."
+                      : "FRD (x forward, y starboard, z down), as hydrocoef's body axes: nothing "
+                        "converted."));
+  text += xml_comment_line(
       "Sign convention: SNAME derivatives on the body. F_i = sum_j {f}{J} s_j + sum_jk {f}{J}abs{K} s_j |s_k| + "
       "sum_jk {f}{J}{K} s_j s_k, s the velocity relative to the water; negative for damping. {f}Dot{J} = -Ma. "
       "Every diagonal term is written (older gz-sim defaults are not 0), other terms where the sets have them.");
-  text += comment("Units: SI; each element's unit is in the comment beside it.");
-  for (const auto& s : sources) text += comment("Derivative set " + s);
-  for (const auto& note : out.notes) text += comment("Note: " + note);
+  text += xml_comment_line("Units: SI; each element's unit is in the comment beside it.");
+  for (const auto& s : sources) text += xml_comment_line("Derivative set " + s);
+  for (const auto& note : out.notes) text += xml_comment_line("Note: " + note);
   text += "<plugin filename=\"gz-sim-hydrodynamics-system\" name=\"gz::sim::systems::Hydrodynamics\">\n";
   text += "  <link_name>" + escape::xml_text(options.link_name) + "</link_name>\n";
   for (const GazeboElement& e : out.elements)

@@ -20,7 +20,7 @@ constexpr std::array<std::string_view, 20> kKeywords{
     "break",  "case", "catch",     "classdef", "continue",   "else",   "elseif", "end",    "for", "function",
     "global", "if",   "otherwise", "parfor",   "persistent", "return", "spmd",   "switch", "try", "while"};
 
-std::string comment(const std::string& text) { return "% " + escape::matlab_comment(text) + "\n"; }
+std::string matlab_comment_line(const std::string& text) { return "% " + escape::matlab_comment(text) + "\n"; }
 
 // The MATLAB expression of one factor of a term, its value read by `x`.
 std::string factor_expression(const TermFactor& f, const std::string& x) {
@@ -99,7 +99,7 @@ std::string derivative_matlab(const std::string& function_name, const std::vecto
   } else {
     text += "% ui = inputs, in this order (SI; names other than u..r are taken as angles, rad):\n";
     for (std::size_t k = 0; k < inputs.size(); ++k)
-      text += comment("  ui(" + std::to_string(k + 1) + ") = " + inputs[k]);
+      text += matlab_comment_line("  ui(" + std::to_string(k + 1) + ") = " + inputs[k]);
   }
   text += "%\n";
   text += "% xdot = M \\ tau, tau the sum of the sets' forces and moments on the body (SNAME: the\n";
@@ -107,11 +107,11 @@ std::string derivative_matlab(const std::string& function_name, const std::vecto
   text += "% Only the hydrodynamic terms below are included: add the rigid-body Coriolis and\n";
   text += "% centripetal forces, restoring forces, controls and kinematics for a full model.\n";
   text += "%\n";
-  text += comment("Written by hydrocoef " + std::string(kVersion) + ". Derivative sets:");
+  text += matlab_comment_line("Written by hydrocoef " + std::string(kVersion) + ". Derivative sets:");
   for (const auto& set : sets)
-    text += comment("  " + set.output + ": '" + set.name + "', terms " + format_terms(set.terms) + ", stated " +
-                    std::string(to_string(set.sign)) +
-                    (set.sign == SignConvention::OpposingMotion ? " (negated to on-body here)" : ""));
+    text += matlab_comment_line("  " + set.output + ": '" + set.name + "', terms " + format_terms(set.terms) +
+                                ", stated " + std::string(to_string(set.sign)) +
+                                (set.sign == SignConvention::OpposingMotion ? " (negated to on-body here)" : ""));
   text += "\n";
   text += "if numel(x) ~= 6, error(" + escape::matlab_string("x must have 6 elements: [u v w p q r]'") + "); end\n";
   text += "if numel(ui) ~= " + std::to_string(inputs.size()) + ", error(" +
@@ -125,7 +125,7 @@ std::string derivative_matlab(const std::string& function_name, const std::vecto
   text += "tau = zeros(6, 1);\n";
   for (const auto& set : sets) {
     const std::size_t dof = *force_index(set.output);
-    text += comment(set.output + ": derivative set '" + set.name + "'");
+    text += matlab_comment_line(set.output + ": derivative set '" + set.name + "'");
     text += "tau(" + std::to_string(dof + 1) + ") = ...\n";
     for (std::size_t k = 0; k < set.terms.size(); ++k) {
       std::string term;
@@ -141,7 +141,7 @@ std::string derivative_matlab(const std::string& function_name, const std::vecto
       const double c = to_on_body(set.coefficients[k], set.sign);
       text += "    " + std::string(k ? "+ " : "  ") + "(" + shortest_number(c) + ")" +
               (term.empty() ? "" : " * " + term) + (k + 1 < set.terms.size() ? " ..." : ";") + "  " +
-              comment(set.terms[k].text());
+              matlab_comment_line(set.terms[k].text());
     }
   }
   text += "\nxdot = M \\ tau;\n";

@@ -33,7 +33,7 @@ std::string join_ids(const std::vector<std::int64_t>& ids) {
   return out;
 }
 
-std::string comment(const std::string& text, const std::string& indent = "") {
+std::string sdf_comment(const std::string& text, const std::string& indent = "") {
   return indent + "<!-- " + escape::xml_comment(text) + " -->\n";
 }
 
@@ -399,34 +399,34 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
   const bool uuv = options.flavor == GazeboFlavor::Uuv;
   const bool flu = options.link_axes == GazeboLinkAxes::Flu;
   std::string text = "<?xml version=\"1.0\"?>\n";
-  text += comment("hydrocoef " + std::string(kVersion) + ": " +
-                  (uuv ? "uuv_simulator 'fossen' hydrodynamic model" : "gz-sim Hydrodynamics system parameters") +
-                  " of body '" + c.body + "', from damping-law fits");
+  text += sdf_comment("hydrocoef " + std::string(kVersion) + ": " +
+                      (uuv ? "uuv_simulator 'fossen' hydrodynamic model" : "gz-sim Hydrodynamics system parameters") +
+                      " of body '" + c.body + "', from damping-law fits");
   if (uuv) {
-    text += comment(
+    text += sdf_comment(
         "Paste the <hydrodynamic_model> element inside the <link name=...> element of the "
         "uuv_underwater_object plugin, beside <volume> and <center_of_buoyancy>.");
-    text += comment(
+    text += sdf_comment(
         "Frame: body axes x forward, y starboard, z down (FRD, the NED convention); the plugin turns the "
         "link's FLU velocities into FRD itself, so nothing is converted here.");
-    text += comment(
+    text += sdf_comment(
         "Sign convention: on-body (SNAME), damping is negative. The plugin's damping force is "
         "linear_damping nu + u linear_damping_forward_speed nu + diag(quadratic_damping) |nu| nu; "
         "added_mass is the positive Ma.");
   } else {
-    text += comment("Frame: the parameters are in the link's axes, " +
-                    std::string(flu ? "FLU (x forward, y left, z up): hydrocoef's FRD body-axis matrices M were "
-                                      "written as T M T with T = diag(1,-1,-1,1,-1,-1), so diagonal terms are "
-                                      "unchanged and couplings between (y, z, q, r) and (x, p) change sign."
-                                    : "FRD (x forward, y starboard, z down), as hydrocoef's body axes: nothing "
-                                      "converted."));
-    text += comment(
+    text += sdf_comment("Frame: the parameters are in the link's axes, " +
+                        std::string(flu ? "FLU (x forward, y left, z up): hydrocoef's FRD body-axis matrices M were "
+                                          "written as T M T with T = diag(1,-1,-1,1,-1,-1), so diagonal terms are "
+                                          "unchanged and couplings between (y, z, q, r) and (x, p) change sign."
+                                        : "FRD (x forward, y starboard, z down), as hydrocoef's body axes: nothing "
+                                          "converted."));
+    text += sdf_comment(
         "Sign convention: SNAME derivatives on the body. xU, xUabsU...: force = xU u + xUabsU |u| u, "
         "negative for damping; xDotU... = -Ma (negative). Every diagonal term is written (older gz-sim "
         "defaults are not 0); couplings only where non-zero. gz-sim uses only Ma's diagonal in its "
         "Coriolis term.");
   }
-  text += comment("Units: SI; each element's unit is in the comment beside it.");
+  text += sdf_comment("Units: SI; each element's unit is in the comment beside it.");
   for (const GazeboFitSource& s : c.sources) {
     std::string line = std::string(kForceNames[s.dof]) + " in " + std::string(kVelocityNames[s.variable]) + ": fit '" +
                        s.fit_name + "' (id " + std::to_string(s.fit_id) + ", terms " + s.terms + ", stored " +
@@ -437,11 +437,11 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
                        shortest_number(s.linear) + " " + damping_unit(s.dof, s.variable, false) + ", quadratic " +
                        shortest_number(s.quadratic) + " " + damping_unit(s.dof, s.variable, true) + "; runs [" +
                        join_ids(s.run_ids) + "]";
-    text += comment(line);
+    text += sdf_comment(line);
   }
-  text += comment("Added mass: " + (c.added_mass_source.empty() ? std::string("given") : c.added_mass_source) +
-                  "; symmetric positive semi-definite (checked).");
-  for (const std::string& note : c.notes) text += comment("Note: " + note);
+  text += sdf_comment("Added mass: " + (c.added_mass_source.empty() ? std::string("given") : c.added_mass_source) +
+                      "; symmetric positive semi-definite (checked).");
+  for (const std::string& note : c.notes) text += sdf_comment("Note: " + note);
   if (!uuv) {
     // Gazebo Ionic moved added mass into the link's inertial; offer the same numbers there.
     const std::array<double, 6> t = flu ? kFrdToFlu : std::array<double, 6>{1, 1, 1, 1, 1, 1};
@@ -456,12 +456,12 @@ std::string gazebo_text(const GazeboCoefficients& c, const GazeboWriteOptions& o
         block += "<" + tag + ">" + shortest_number(t[i] * t[j] * c.added_mass_b(i, j) + 0.0) + "</" + tag + ">";
       }
     }
-    text += comment(block + "</fluid_added_mass>");
+    text += sdf_comment(block + "</fluid_added_mass>");
   }
   if (uuv) {
     text += "<hydrodynamic_model>\n  <type>fossen</type>\n";
     for (const GazeboElement& e : elements) {
-      text += comment(e.name + ": " + e.unit, "  ");
+      text += sdf_comment(e.name + ": " + e.unit, "  ");
       text += "  <" + e.name + ">";
       if (e.values.size() == 36) {
         text += "\n";

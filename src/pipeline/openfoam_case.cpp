@@ -14,8 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string where_of(const FoamValue& value) { return value.file + ":" + std::to_string(value.line); }
-
 /// What the dictionary reader read otherwise than written (a stray '}' that
 /// ends a file, as OpenFOAM reads it), as notes.
 void note_warnings(const FoamDictionary& dictionary, OpenFoamCaseSettings& out) {
@@ -53,7 +51,7 @@ std::optional<std::array<double, 3>> uniform_vector(const FoamDictionary& d, con
     rest.tokens.erase(rest.tokens.begin());
     return foam_vector(rest, "patch '" + patch + "' " + key);
   }
-  out.unusable.push_back("patch '" + patch + "' " + key + " '" + t.front() + " ...' (" + where_of(*value) +
+  out.unusable.push_back("patch '" + patch + "' " + key + " '" + t.front() + " ...' (" + value->where() +
                          "): not a uniform vector");
   return std::nullopt;
 }
@@ -71,7 +69,7 @@ VelocityFile read_velocity_file(const fs::path& file) {
       const auto vector = uniform_vector(d, patch, key, out);
       if (!vector || is_zero(*vector)) return;  // walls, outlets, still water
       const FoamValue& value = *d.value(key);
-      FreeStream stream{*vector, where_of(value), patch};
+      FreeStream stream{*vector, value.where(), patch};
       if (slot && slot->value != stream.value)
         throw InputError(SourceLocation{value.file, value.line, 0},
                          "patches '" + slot->patch + "' (" + slot->where + ") and '" + patch +
@@ -125,7 +123,7 @@ std::optional<CoefficientStream> coefficient_stream(const fs::path& control_dict
     if (!speed) continue;
     CoefficientStream out;
     out.speed = foam_scalar(*speed, "magUInf");
-    out.where = where_of(*speed);
+    out.where = speed->where();
     if (!(*out.speed >= 0.0))
       throw InputError(SourceLocation{speed->file, speed->line, 0},
                        "magUInf " + shortest_number(*out.speed) + ": expected a speed >= 0");
@@ -136,7 +134,7 @@ std::optional<CoefficientStream> coefficient_stream(const fs::path& control_dict
         throw InputError(SourceLocation{drag->file, drag->line, 0}, "dragDir (0 0 0): expected a direction");
       for (auto& x : d) x /= norm;
       out.direction = d;
-      out.where += " and " + where_of(*drag);
+      out.where += " and " + drag->where();
     }
     return out;
   }
@@ -201,12 +199,12 @@ void read_forces_function(const fs::path& file, OpenFoamCaseSettings& out) {
       found = true;
       const auto rho = foam_word(f.value("rho"));
       if (const FoamValue* rho_inf = f.value("rhoInf"); rho_inf && (!rho || *rho == "rhoInf"))
-        out.layer.set("rho", foam_scalar(*rho_inf, "rhoInf"), where_of(*rho_inf));
+        out.layer.set("rho", foam_scalar(*rho_inf, "rhoInf"), rho_inf->where());
       const FoamValue* centre = f.value("CofR");
       if (!centre) centre = f.value("origin");
       if (centre) {
         const auto x = foam_vector(*centre, "CofR");
-        out.layer.set("cofr", std::vector<double>(x.begin(), x.end()), where_of(*centre));
+        out.layer.set("cofr", std::vector<double>(x.begin(), x.end()), centre->where());
       }
       break;
     }
@@ -225,7 +223,7 @@ void read_viscosity(const fs::path& case_dir, OpenFoamCaseSettings& out) {
     const FoamDictionary d = FoamDictionary::read(file);
     note_warnings(d, out);
     if (const FoamValue* nu = d.value("nu")) {
-      out.layer.set("nu", foam_scalar(*nu, "nu"), where_of(*nu));
+      out.layer.set("nu", foam_scalar(*nu, "nu"), nu->where());
       return;
     }
   }

@@ -18,8 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string where_of(const FoamValue& value) { return value.file + ":" + std::to_string(value.line); }
-
 /// A residualControl key as alternatives of literal words with ".*"
 /// wildcards, or nullopt for a pattern outside that subset.
 std::optional<std::vector<std::string>> alternatives_of(std::string key) {
@@ -84,7 +82,7 @@ void read_solver_kind(const fs::path& case_dir, ConvergenceEvidence& out) {
           out.solver = SolverKind::Transient;
         }
         if (out.solver != SolverKind::Unknown) {
-          out.solver_source = where_of(*value) + ": ddtSchemes default " + scheme;
+          out.solver_source = value->where() + ": ddtSchemes default " + scheme;
           return;
         }
       }
@@ -100,7 +98,7 @@ void read_solver_kind(const fs::path& case_dir, ConvergenceEvidence& out) {
           a.find("piso") != std::string::npos || a.find("Piso") != std::string::npos || a == "icoFoam" ||
           a == "interFoam")
         out.solver = SolverKind::Transient;
-      if (out.solver != SolverKind::Unknown) out.solver_source = where_of(*d.value("application")) + ": " + a;
+      if (out.solver != SolverKind::Unknown) out.solver_source = d.value("application")->where() + ": " + a;
     }
   }
 }
@@ -133,9 +131,9 @@ ConvergenceEvidence openfoam_convergence_evidence(const fs::path& case_dir, doub
     if (first_line == 0 || value.line < first_line) first_line = value.line;
     if (!alternatives) {
       out.criteria_stated = true;
-      out.criteria_source = where_of(value) + ": SIMPLE residualControl";
+      out.criteria_source = value.where() + ": SIMPLE residualControl";
       out.criteria_missed = "the residualControl pattern " + key + " is not understood by hydrocoef";
-      notes.push_back(where_of(value) + ": residualControl pattern " + key +
+      notes.push_back(value.where() + ": residualControl pattern " + key +
                       " is not understood by hydrocoef (it reads words, (a|b) and .*): the run is not taken as "
                       "converged; give --window to choose the samples");
       return out;

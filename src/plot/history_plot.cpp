@@ -1,21 +1,14 @@
 #include "src/plot/history_plot.hpp"
+#include "src/core/numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "src/core/error.hpp"
 #include "src/core/sign_convention.hpp"
 
 namespace hydrocoef::plot {
 namespace {
-
-std::string short_number(double value, int digits = 4) {
-  std::ostringstream out;
-  out.precision(digits);
-  out << value;
-  return out.str();
-}
 
 /// A y range that shows every drawn value with a margin, never empty (a
 /// component with zero spread, error and drift).
@@ -33,26 +26,26 @@ Panel window_panel(const StoredStatistics& st, double mean, const std::string& u
   panel.y_range = y_range(mean, std::max({v.spread, v.standard_error, std::abs(v.drift) / 2.0}));
   panel.shaded.push_back({w0, w1, std::nullopt, std::nullopt});
   panel.shaded_title = "averaging window (" + std::to_string(st.samples) + " samples)";
-  panel.series.push_back({"stored value ± standard error " + short_number(v.standard_error, 3) + " " + unit,
+  panel.series.push_back({"stored value ± standard error " + significant(v.standard_error, 3) + " " + unit,
                           Series::Style::Band,
                           0,
                           {w0, w1},
                           {mean - v.standard_error, mean - v.standard_error},
                           {mean + v.standard_error, mean + v.standard_error}});
-  panel.series.push_back({"stored value (window mean) " + short_number(mean, 6) + " " + unit,
+  panel.series.push_back({"stored value (window mean) " + significant(mean, 6) + " " + unit,
                           Series::Style::Line,
                           0,
                           {w0, w1},
                           {mean, mean},
                           {}});
-  panel.series.push_back({"± spread (standard deviation) " + short_number(v.spread, 3) + " " + unit,
+  panel.series.push_back({"± spread (standard deviation) " + significant(v.spread, 3) + " " + unit,
                           Series::Style::DashedLine,
                           7,
                           {w0, w1},
                           {mean + v.spread, mean + v.spread},
                           {}});
   panel.series.push_back({"", Series::Style::DashedLine, 7, {w0, w1}, {mean - v.spread, mean - v.spread}, {}});
-  panel.series.push_back({"trend across the window (drift " + short_number(v.drift, 3) + " " + unit + ")",
+  panel.series.push_back({"trend across the window (drift " + significant(v.drift, 3) + " " + unit + ")",
                           Series::Style::DashedLine,
                           1,
                           {w0, w1},
@@ -68,19 +61,19 @@ Panel final_iterate_panel(const StoredStatistics& st, double value, const std::s
   Panel panel;
   panel.x_range = std::array<double, 2>{last - pad, last + pad / 4.0};
   panel.y_range = y_range(value, std::max(v.standard_error, std::abs(v.drift) * pad));
-  panel.series.push_back({"± iterative error " + short_number(v.standard_error, 3) + " " + unit,
+  panel.series.push_back({"± iterative error " + significant(v.standard_error, 3) + " " + unit,
                           Series::Style::Band,
                           0,
                           {last - pad / 2.0, last + pad / 8.0},
                           {value - v.standard_error, value - v.standard_error},
                           {value + v.standard_error, value + v.standard_error}});
-  panel.series.push_back({"change per iteration at the end " + short_number(v.drift, 3) + " " + unit,
+  panel.series.push_back({"change per iteration at the end " + significant(v.drift, 3) + " " + unit,
                           Series::Style::DashedLine,
                           1,
                           {last - pad, last},
                           {value - v.drift * pad, value},
                           {}});
-  panel.series.push_back({"final iterate (stored value) " + short_number(value, 6) + " " + unit,
+  panel.series.push_back({"final iterate (stored value) " + significant(value, 6) + " " + unit,
                           Series::Style::Points,
                           0,
                           {last},
@@ -155,9 +148,9 @@ Figure history_figure(const StoredRun& run, const std::optional<HistoryTrace>& t
     std::string flags;
     for (const auto& flag : st.flags) flags += (flags.empty() ? "" : ", ") + flag;
     panel.title = std::string(kForceNames[i]) + ": " +
-                  (final_iterate ? "final iterate at " + st.abscissa + " " + short_number(st.window_last, 8)
-                                 : "mean over " + st.abscissa + " " + short_number(st.window_first, 8) + " to " +
-                                       short_number(st.window_last, 8) + " (" + st.window_method + ")") +
+                  (final_iterate ? "final iterate at " + st.abscissa + " " + significant(st.window_last, 8)
+                                 : "mean over " + st.abscissa + " " + significant(st.window_first, 8) + " to " +
+                                       significant(st.window_last, 8) + " (" + st.window_method + ")") +
                   (flags.empty() ? std::string() : "; flags: " + flags);
     panel.x_label = st.abscissa == "time" ? "time [s]" : st.abscissa;
     panel.y_label = std::string(kForceNames[i]) + " [" + unit + "] (" + std::string(to_string(force->sign)) + ")";

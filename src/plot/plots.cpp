@@ -1,11 +1,11 @@
 #include "src/plot/plots.hpp"
+#include "src/core/numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "src/core/damping_terms.hpp"
 #include "src/core/error.hpp"
@@ -18,13 +18,6 @@
 
 namespace hydrocoef::plot {
 namespace {
-
-std::string short_number(double value, int digits = 6) {
-  std::ostringstream out;
-  out.precision(digits);
-  out << value;
-  return out.str();
-}
 
 std::string sign_note(SignConvention sign) {
   return sign == SignConvention::OnBody ? "on body: damping negative" : "opposing: positive opposes motion";
@@ -45,7 +38,7 @@ std::string law_text(const FitRecord& fit) {
   for (const auto& c : fit.coefficients) {
     const double v = c.value;
     out += first ? (v < 0 ? " -" : " ") : (v < 0 ? " - " : " + ");
-    out += short_number(std::abs(v), 6);
+    out += significant(std::abs(v), 6);
     if (c.term != "1") out += " " + c.term;
     first = false;
   }
@@ -144,7 +137,7 @@ Figure fit_figure(RunDatabase& database, const std::string& name) {
   std::size_t colour = 0;
   for (const auto& fit : family) {
     const auto level = fit_level(fit.name, name);
-    const std::string tag = level ? level->first + "=" + short_number(level->second) + ": " : "";
+    const std::string tag = level ? level->first + "=" + significant(level->second) + ": " : "";
     Series points;
     points.title = tag + "CFD runs (" + std::to_string(fit.run_ids.size()) + ")";
     points.style = Series::Style::Points;
@@ -165,7 +158,7 @@ Figure fit_figure(RunDatabase& database, const std::string& name) {
       hi += 1.0;
     }
     Series curve;
-    curve.title = tag + law_text(fit) + ", R² = " + (std::isfinite(fit.r2) ? short_number(fit.r2, 8) : "n/a");
+    curve.title = tag + law_text(fit) + ", R² = " + (std::isfinite(fit.r2) ? significant(fit.r2, 8) : "n/a");
     curve.style = Series::Style::Line;
     curve.colour = colour;
     curve.x = linspace(lo, hi, 101);
@@ -220,7 +213,7 @@ Figure curves_figure(RunDatabase& database, const std::string& base, CurveKind k
   for (const auto& curve : curves) {
     Panel panel;
     panel.title = "coefficient of " + curve.term +
-                  (kind == CurveKind::Polynomial ? ", curve RMSE " + short_number(curve.rmse, 3) : std::string());
+                  (kind == CurveKind::Polynomial ? ", curve RMSE " + significant(curve.rmse, 3) : std::string());
     panel.x_label = by;
     std::string unit = dof ? kForceUnits[*dof] : "";
     if (curve.term != "1" && variable) {
@@ -431,7 +424,7 @@ Figure simulation_figure(const std::filesystem::path& trajectory,
   const auto& bands = simulated.bands_b[*index];
   if (bands.size() >= 2) {
     Series band;
-    band.title = "simulated p" + short_number(bands.front().first) + "-p" + short_number(bands.back().first) +
+    band.title = "simulated p" + significant(bands.front().first) + "-p" + significant(bands.back().first) +
                  " over the damping's uncertainty";
     band.style = Series::Style::Band;
     band.colour = 0;
@@ -482,9 +475,9 @@ std::vector<SteadyPoint> steady_curve(const VehicleModel& model, std::size_t dof
     in.initial_guess_b = guess;
     const EquilibriumResult eq = solve_equilibrium(model, in);
     if (!eq.converged)
-      throw InputError("no steady state under " + std::string(kForceNames[dof]) + " = " + short_number(tau) + " " +
+      throw InputError("no steady state under " + std::string(kForceNames[dof]) + " = " + significant(tau) + " " +
                        kForceUnits[dof] + " (the solver's residual stays at " +
-                       short_number(eq.residual_b.cwiseAbs().maxCoeff(), 3) + ")");
+                       significant(eq.residual_b.cwiseAbs().maxCoeff(), 3) + ")");
     guess = eq.nu_b;
     out.push_back({tau, eq.nu_b[static_cast<Eigen::Index>(dof)]});
   }
@@ -507,7 +500,7 @@ Figure steady_figure(const VehicleModel& model, std::size_t dof, const std::vect
     const auto d = static_cast<Eigen::Index>(dof);
     Series band;
     const auto& percentiles = band_options->options.percentiles;
-    band.title = "p" + short_number(percentiles.front()) + "-p" + short_number(percentiles.back()) + " of " +
+    band.title = "p" + significant(percentiles.front()) + "-p" + significant(percentiles.back()) + " of " +
                  std::to_string(band_options->options.samples) + " draws of the damping";
     band.style = Series::Style::Band;
     for (std::size_t i = 0; i < taus.size(); ++i) {
@@ -519,7 +512,7 @@ Figure steady_figure(const VehicleModel& model, std::size_t dof, const std::vect
       in.initial_guess_b = guess;
       const EquilibriumSamples s = solve_equilibrium_samples(model, band_options->draws, in, band_options->options);
       if (s.failures.count > 0)
-        throw InputError("steady band under " + std::string(kForceNames[dof]) + " = " + short_number(taus[i]) + " " +
+        throw InputError("steady band under " + std::string(kForceNames[dof]) + " = " + significant(taus[i]) + " " +
                          kForceUnits[dof] + ": " + std::to_string(s.failures.count) + " draws have no equilibrium; " +
                          s.failures.first.front());
       band.x.push_back(taus[i]);
