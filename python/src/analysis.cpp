@@ -20,7 +20,7 @@ namespace {
 using namespace pybind11::literals;
 
 /// The calls that make the result classes here.
-constexpr const char* kMadeBy =
+constexpr const char* kAnalysisMadeBy =
     "hydrocoef's analysis functions (grid_convergence, analyse_pmm, pmm_runs, delete_pmm_runs, added_mass_matrix, "
     "suggest_runs)";
 
@@ -33,16 +33,10 @@ py::array_t<double> matrix_array(const hydrocoef::Matrix6x6& m) {
   return out;
 }
 
-template <class Result>
-void add_documents(py::class_<Result>& type) {
-  type.def("text", &Result::text, "What the hydrocoef CLI prints.")
-      .def("json", &Result::json, "What the hydrocoef CLI prints with --json (a JSON text).");
-}
-
 std::string text_or_empty(const py::object& value) { return value.is_none() ? "" : value.cast<std::string>(); }
 
 void bind_gci(py::module_& m) {
-  py::class_<hydrocoef::GciComponent>(m, "GciComponent", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::GciComponent>(m, "GciComponent", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                       "One force component of one key's mesh study.")
       .def_readonly("component", &hydrocoef::GciComponent::component)
       .def_readonly("phi", &hydrocoef::GciComponent::phi, "Values fine to coarse [N or N m].")
@@ -60,7 +54,7 @@ void bind_gci(py::module_& m) {
       .def_readonly("values_convergence", &hydrocoef::GciComponent::values_convergence)
       .def_readonly("values_error", &hydrocoef::GciComponent::values_error)
       .def_readonly("note", &hydrocoef::GciComponent::note);
-  py::class_<hydrocoef::GciKey>(m, "GciKey", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::GciKey>(m, "GciKey", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                 "One physical key's mesh study.")
       .def_readonly("body", &hydrocoef::GciKey::body)
       .def_readonly("velocity", &hydrocoef::GciKey::velocity, "u, v, w [m/s], p, q, r [rad/s].")
@@ -72,7 +66,7 @@ void bind_gci(py::module_& m) {
       .def_readonly("cell_size_from", &hydrocoef::GciKey::cell_size_from)
       .def_readonly("components", &hydrocoef::GciKey::components)
       .def_readonly("notes", &hydrocoef::GciKey::notes);
-  py::class_<hydrocoef::GciStudy> study(m, "GciStudy", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::GciStudy> study(m, "GciStudy", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                         "A body's mesh studies (Celik et al. 2008), as `hydrocoef gci`.");
   study.def_readonly("body", &hydrocoef::GciStudy::body)
       .def_readonly("mesh_parameter", &hydrocoef::GciStudy::mesh_parameter)
@@ -84,7 +78,7 @@ void bind_gci(py::module_& m) {
       .def_readonly("stored", &hydrocoef::GciStudy::stored)
       .def_readonly("fits_made_stale", &hydrocoef::GciStudy::fits_made_stale)
       .def_readonly("surfaces_made_stale", &hydrocoef::GciStudy::surfaces_made_stale);
-  add_documents(study);
+  add_text_and_json(study);
 
   m.def(
       "grid_convergence",
@@ -110,7 +104,7 @@ dimension: h = (V/N)^(1/D)) or cell_size (h in m). Returns a GciStudy.)doc");
 }
 
 void bind_pmm(py::module_& m) {
-  py::class_<hydrocoef::PmmComponent>(m, "PmmComponent", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::PmmComponent>(m, "PmmComponent", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                       "One force component of a forced-oscillation run: entry [component][dof].")
       .def_readonly("component", &hydrocoef::PmmComponent::component)
       .def_readonly("mean", &hydrocoef::PmmComponent::mean)
@@ -125,7 +119,7 @@ void bind_pmm(py::module_& m) {
       .def_readonly("added_mass_coefficient", &hydrocoef::PmmComponent::added_mass_coefficient)
       .def_readonly("in_phase_spread", &hydrocoef::PmmComponent::in_phase_spread)
       .def_readonly("quadrature_spread", &hydrocoef::PmmComponent::quadrature_spread);
-  py::class_<hydrocoef::PmmRunResult>(m, "PmmRun", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::PmmRunResult>(m, "PmmRun", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                       "One forced-oscillation run analysed.")
       .def_readonly("path", &hydrocoef::PmmRunResult::path)
       .def_readonly("format", &hydrocoef::PmmRunResult::format)
@@ -154,12 +148,13 @@ void bind_pmm(py::module_& m) {
       .def_readonly("components", &hydrocoef::PmmRunResult::components)
       .def_readonly("stored_id", &hydrocoef::PmmRunResult::stored_id)
       .def_readonly("replaced", &hydrocoef::PmmRunResult::replaced);
-  py::class_<hydrocoef::PmmAnalysis> analysis(m, "PmmAnalysis", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::PmmAnalysis> analysis(m, "PmmAnalysis", py::is_final(),
+                                              made_by_the_module_only(kAnalysisMadeBy),
                                               "Forced-oscillation runs analysed, as `hydrocoef pmm`.");
   analysis.def_readonly("runs", &hydrocoef::PmmAnalysis::runs)
       .def_readonly("stored", &hydrocoef::PmmAnalysis::stored)
       .def_readonly("database", &hydrocoef::PmmAnalysis::database);
-  add_documents(analysis);
+  add_text_and_json(analysis);
 
   m.def(
       "analyse_pmm",
@@ -223,7 +218,7 @@ store_pmm(db, analysis) stores it.)doc");
       "database"_a, "analysis"_a,
       "Stores an analysis's runs in one transaction (as `hydrocoef pmm` does) and notes their ids in it.");
 
-  py::class_<hydrocoef::PmmRunSummary>(m, "PmmRunSummary", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::PmmRunSummary>(m, "PmmRunSummary", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                        "A stored forced-oscillation run, as `hydrocoef pmm-runs` lists it.")
       .def_readonly("id", &hydrocoef::PmmRunSummary::id)
       .def_readonly("body", &hydrocoef::PmmRunSummary::body)
@@ -240,10 +235,10 @@ store_pmm(db, analysis) stores it.)doc");
       .def_readonly("damping_unit", &hydrocoef::PmmRunSummary::damping_unit)
       .def_readonly("source_path", &hydrocoef::PmmRunSummary::source_path)
       .def_readonly("created_at", &hydrocoef::PmmRunSummary::created_at);
-  py::class_<hydrocoef::PmmRunList> list(m, "PmmRunList", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::PmmRunList> list(m, "PmmRunList", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                          "The stored forced-oscillation runs.");
   list.def_readonly("runs", &hydrocoef::PmmRunList::runs);
-  add_documents(list);
+  add_text_and_json(list);
   m.def(
       "pmm_runs",
       [](py::handle db, const py::object& body) {
@@ -255,16 +250,17 @@ store_pmm(db, analysis) stores it.)doc");
       "database"_a, "body"_a = py::none(),
       "The stored forced-oscillation runs (of one body), as `hydrocoef pmm-runs`.");
 
-  py::class_<hydrocoef::PmmDeletedRun>(m, "PmmDeletedRun", py::is_final(), made_by_the_module_only(kMadeBy))
+  py::class_<hydrocoef::PmmDeletedRun>(m, "PmmDeletedRun", py::is_final(), made_by_the_module_only(kAnalysisMadeBy))
       .def_readonly("id", &hydrocoef::PmmDeletedRun::id)
       .def_readonly("body", &hydrocoef::PmmDeletedRun::body)
       .def_readonly("dof", &hydrocoef::PmmDeletedRun::dof)
       .def_readonly("source_path", &hydrocoef::PmmDeletedRun::source_path);
-  py::class_<hydrocoef::PmmDeletion> deletion(m, "PmmDeletion", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::PmmDeletion> deletion(m, "PmmDeletion", py::is_final(),
+                                              made_by_the_module_only(kAnalysisMadeBy),
                                               "What `hydrocoef pmm-runs delete` removed.");
   deletion.def_readonly("database", &hydrocoef::PmmDeletion::database)
       .def_readonly("deleted", &hydrocoef::PmmDeletion::deleted);
-  add_documents(deletion);
+  add_text_and_json(deletion);
   m.def(
       "delete_pmm_runs",
       [](py::handle db, const py::object& ids) {
@@ -278,7 +274,7 @@ store_pmm(db, analysis) stores it.)doc");
 }
 
 void bind_added_mass(py::module_& m) {
-  py::class_<hydrocoef::AddedMassEntry>(m, "AddedMassEntry", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::AddedMassEntry>(m, "AddedMassEntry", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                         "One measured entry of the added-mass matrix, before symmetry.")
       .def_readonly("row", &hydrocoef::AddedMassEntry::row)
       .def_readonly("column", &hydrocoef::AddedMassEntry::column)
@@ -295,7 +291,8 @@ void bind_added_mass(py::module_& m) {
       .def_readonly("kc_min", &hydrocoef::AddedMassEntry::kc_min)
       .def_readonly("kc_max", &hydrocoef::AddedMassEntry::kc_max)
       .def_readonly("pmm_runs", &hydrocoef::AddedMassEntry::pmm_runs);
-  py::class_<hydrocoef::AddedMassFrequency>(m, "AddedMassFrequency", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::AddedMassFrequency>(m, "AddedMassFrequency", py::is_final(),
+                                            made_by_the_module_only(kAnalysisMadeBy),
                                             "The in-line added mass and damping of one DOF at one frequency.")
       .def_readonly("dof", &hydrocoef::AddedMassFrequency::dof)
       .def_readonly("omega", &hydrocoef::AddedMassFrequency::omega)
@@ -308,7 +305,8 @@ void bind_added_mass(py::module_& m) {
       .def_readonly("damping", &hydrocoef::AddedMassFrequency::damping)
       .def_readonly("damping_se", &hydrocoef::AddedMassFrequency::damping_se)
       .def_readonly("used", &hydrocoef::AddedMassFrequency::used);
-  py::class_<hydrocoef::QuadraticDampingFit>(m, "QuadraticDampingFit", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::QuadraticDampingFit>(m, "QuadraticDampingFit", py::is_final(),
+                                             made_by_the_module_only(kAnalysisMadeBy),
                                              "D_eq(A) = linear + quadratic (8/(3 pi)) A omega.")
       .def_readonly("dof", &hydrocoef::QuadraticDampingFit::dof)
       .def_readonly("omega", &hydrocoef::QuadraticDampingFit::omega)
@@ -318,7 +316,7 @@ void bind_added_mass(py::module_& m) {
       .def_readonly("quadratic", &hydrocoef::QuadraticDampingFit::quadratic)
       .def_readonly("quadratic_se", &hydrocoef::QuadraticDampingFit::quadratic_se);
   py::class_<hydrocoef::AddedMassMatrix> matrix(
-      m, "AddedMassMatrix", py::is_final(), made_by_the_module_only(kMadeBy),
+      m, "AddedMassMatrix", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
       "A body's 6x6 added-mass and damping matrices (rows and columns surge..yaw), as `hydrocoef added-mass`.");
   matrix.def_readonly("body", &hydrocoef::AddedMassMatrix::body)
       .def_readonly("omega", &hydrocoef::AddedMassMatrix::omega)
@@ -342,7 +340,7 @@ void bind_added_mass(py::module_& m) {
       .def_readonly("smallest_eigenvalue", &hydrocoef::AddedMassMatrix::smallest_eigenvalue)
       .def_readonly("quadratic_damping", &hydrocoef::AddedMassMatrix::quadratic_damping)
       .def_readonly("by_frequency", &hydrocoef::AddedMassMatrix::by_frequency);
-  add_documents(matrix);
+  add_text_and_json(matrix);
   m.def(
       "added_mass_matrix",
       [](py::handle db, const std::string& body, std::optional<std::map<std::string, std::string>> same,
@@ -366,11 +364,12 @@ Returns an AddedMassMatrix.)doc");
 }
 
 void bind_suggest(py::module_& m) {
-  py::class_<hydrocoef::SuggestedKey>(m, "SuggestedKey", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::SuggestedKey>(m, "SuggestedKey", py::is_final(), made_by_the_module_only(kAnalysisMadeBy),
                                       "A proposed run key and the standard deviation there before it was chosen.")
       .def_readonly("key", &hydrocoef::SuggestedKey::key)
       .def_readonly("sd_before", &hydrocoef::SuggestedKey::sd_before);
-  py::class_<hydrocoef::Suggestion> suggestion(m, "Suggestion", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::Suggestion> suggestion(m, "Suggestion", py::is_final(),
+                                               made_by_the_module_only(kAnalysisMadeBy),
                                                "The next runs of a GP surface, as `hydrocoef suggest`.");
   suggestion.def_readonly("surface", &hydrocoef::Suggestion::surface)
       .def_readonly("output", &hydrocoef::Suggestion::output)
@@ -388,7 +387,7 @@ void bind_suggest(py::module_& m) {
       .def_readonly("runs", &hydrocoef::Suggestion::runs)
       .def_readonly("largest_sd_after", &hydrocoef::Suggestion::largest_sd_after)
       .def_readonly("manifest", &hydrocoef::Suggestion::manifest);
-  add_documents(suggestion);
+  add_text_and_json(suggestion);
   m.def(
       "suggest_runs",
       [](py::handle db, const std::string& surface, std::size_t count, const py::object& bounds,

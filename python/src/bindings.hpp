@@ -69,6 +69,10 @@ std::vector<std::int64_t> run_ids(const py::object& value, const char* what);
 /// A number, or NaN for None.
 double or_nan(const py::object& value);
 
+/// A one-dimensional sequence of numbers (a list, a tuple, a numpy array) as
+/// doubles; None: empty.
+std::vector<double> numbers(const py::object& value);
+
 /// A str or a path as text, or nullopt for None.
 std::optional<std::string> optional_text(const py::object& value);
 
@@ -89,5 +93,15 @@ void set_reference_values(Options& options, const py::object& length, const py::
 
 /// A str or a list of str (None: empty).
 std::vector<std::string> texts(const py::object& value, const char* what);
+
+/// The body velocities' names in the order of the key (u, v, w, p, q, r).
+inline constexpr const char* kVelocityNames[] = {"u", "v", "w", "p", "q", "r"};
+
+/// A result class's text() and json(): what the CLI prints, without and with --json.
+template <class Result>
+void add_text_and_json(py::class_<Result>& type) {
+  type.def("text", &Result::text, "What the hydrocoef CLI prints.")
+      .def("json", &Result::json, "What the hydrocoef CLI prints with --json (a JSON text).");
+}
 
 }  // namespace hydrocoef_python

@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include <pybind11/numpy.h>
+
 #include "python/src/bindings.hpp"
 
 namespace hydrocoef_python {
@@ -47,6 +49,13 @@ py::custom_type_setup made_by_the_module_only(std::string made_by) {
 
 double or_nan(const py::object& value) {
   return value.is_none() ? std::numeric_limits<double>::quiet_NaN() : value.cast<double>();
+}
+
+std::vector<double> numbers(const py::object& value) {
+  if (value.is_none()) return {};
+  const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
+  if (!array || array.ndim() != 1) throw py::type_error("expected a one-dimensional sequence of numbers");
+  return std::vector<double>(array.data(), array.data() + array.size());
 }
 
 std::optional<std::string> optional_text(const py::object& value) {

@@ -67,7 +67,6 @@ hydrocoef::OpenMode parse_mode(const std::string& mode) {
                         "or 'create' (read and write, made when missing)");
 }
 
-constexpr const char* kVelocityNames[] = {"u", "v", "w", "p", "q", "r"};
 constexpr const char* kForceNames[] = {"X", "Y", "Z", "K", "M", "N"};
 
 py::dict runs_dict(hydrocoef::RunTable&& table) {

@@ -19,11 +19,6 @@ namespace {
 
 using namespace pybind11::literals;
 
-std::vector<double> numbers(const py::object& value) {
-  if (value.is_none()) return {};
-  return value.cast<std::vector<double>>();
-}
-
 }  // namespace
 
 void register_derivative_exports(py::module_& m) {

@@ -18,14 +18,8 @@ namespace {
 
 using namespace pybind11::literals;
 
-template <class Result>
-void add_documents(py::class_<Result>& type) {
-  type.def("text", &Result::text, "What the hydrocoef CLI prints.")
-      .def("json", &Result::json, "What the hydrocoef CLI prints with --json (a JSON text).");
-}
-
 /// The calls that make the result classes here.
-constexpr const char* kMadeBy =
+constexpr const char* kDerivativesMadeBy =
     "hydrocoef's derivative-model functions (fit_derivative_model, list_derivative_models, show_derivative_model, "
     "delete_derivative_model, evaluate_derivative_model)";
 
@@ -34,7 +28,8 @@ constexpr const char* kMadeBy =
 void register_derivatives(py::module_& m) {
   using hydrocoef::DerivativeCoefficient;
   using hydrocoef::DerivativeModel;
-  py::class_<DerivativeCoefficient>(m, "DerivativeCoefficient", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<DerivativeCoefficient>(m, "DerivativeCoefficient", py::is_final(),
+                                    made_by_the_module_only(kDerivativesMadeBy),
                                     "One coefficient of a derivative model (the derivative by its term).")
       .def_readonly("term", &DerivativeCoefficient::term)
       .def_readonly("unit", &DerivativeCoefficient::unit)
@@ -44,7 +39,7 @@ void register_derivatives(py::module_& m) {
       .def_readonly("interval_high", &DerivativeCoefficient::interval_high)
       .def_readonly("vif", &DerivativeCoefficient::vif)
       .def_readonly("normalisation", &DerivativeCoefficient::normalisation);
-  py::class_<DerivativeModel> model(m, "DerivativeModel", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<DerivativeModel> model(m, "DerivativeModel", py::is_final(), made_by_the_module_only(kDerivativesMadeBy),
                                     "A derivative model of several variables, fitted or stored.");
   model.def_readonly("name", &DerivativeModel::name)
       .def_readonly("body", &DerivativeModel::body)
@@ -71,18 +66,18 @@ void register_derivatives(py::module_& m) {
       .def_readonly("id", &DerivativeModel::id)
       .def_readonly("stale", &DerivativeModel::stale)
       .def_readonly("created_at", &DerivativeModel::created_at);
-  add_documents(model);
+  add_text_and_json(model);
   py::class_<hydrocoef::DerivativeModelList> list(m, "DerivativeModelList", py::is_final(),
-                                                  made_by_the_module_only(kMadeBy));
+                                                  made_by_the_module_only(kDerivativesMadeBy));
   list.def_readonly("models", &hydrocoef::DerivativeModelList::models);
-  add_documents(list);
+  add_text_and_json(list);
   py::class_<hydrocoef::DerivativeDeletion> deletion(m, "DerivativeDeletion", py::is_final(),
-                                                     made_by_the_module_only(kMadeBy));
+                                                     made_by_the_module_only(kDerivativesMadeBy));
   deletion.def_readonly("name", &hydrocoef::DerivativeDeletion::name)
       .def_readonly("id", &hydrocoef::DerivativeDeletion::id);
-  add_documents(deletion);
+  add_text_and_json(deletion);
   py::class_<hydrocoef::DerivativeEvaluation> evaluation(m, "DerivativeEvaluation", py::is_final(),
-                                                         made_by_the_module_only(kMadeBy));
+                                                         made_by_the_module_only(kDerivativesMadeBy));
   evaluation.def_readonly("name", &hydrocoef::DerivativeEvaluation::name)
       .def_readonly("output", &hydrocoef::DerivativeEvaluation::output)
       .def_readonly("unit", &hydrocoef::DerivativeEvaluation::unit)
@@ -91,7 +86,7 @@ void register_derivatives(py::module_& m) {
       .def_readonly("std_error", &hydrocoef::DerivativeEvaluation::std_error)
       .def_readonly("basis", &hydrocoef::DerivativeEvaluation::basis)
       .def_readonly("stale", &hydrocoef::DerivativeEvaluation::stale);
-  add_documents(evaluation);
+  add_text_and_json(evaluation);
 
   m.def(
       "fit_derivative_model",

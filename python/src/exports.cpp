@@ -21,7 +21,7 @@ using namespace pybind11::literals;
 using hydrocoef::Database;
 
 /// The calls that make the result classes here.
-constexpr const char* kMadeBy =
+constexpr const char* kExportsMadeBy =
     "Database.export_surface(...), Database.export_gazebo(...) and Database.export_forcecoeffs(...)";
 
 std::optional<double> optional_number(const py::object& value) {
@@ -32,15 +32,15 @@ std::optional<double> optional_number(const py::object& value) {
 }  // namespace
 
 void bind_exports(py::module_& m, py::class_<Database>& database) {
-  py::class_<hydrocoef::TableExportAxis>(m, "TableExportAxis", py::is_final(), made_by_the_module_only(kMadeBy))
+  py::class_<hydrocoef::TableExportAxis>(m, "TableExportAxis", py::is_final(), made_by_the_module_only(kExportsMadeBy))
       .def_readonly("name", &hydrocoef::TableExportAxis::name)
       .def_readonly("unit", &hydrocoef::TableExportAxis::unit)
       .def_readonly("breakpoints", &hydrocoef::TableExportAxis::breakpoints, "How many.")
       .def_readonly("lower", &hydrocoef::TableExportAxis::lower)
       .def_readonly("upper", &hydrocoef::TableExportAxis::upper)
       .def_readonly("extrapolation", &hydrocoef::TableExportAxis::extrapolation);
-  py::class_<hydrocoef::TableExportResult>(m, "TableExportResult", py::is_final(), made_by_the_module_only(kMadeBy),
-                                           "What `hydrocoef export` wrote.")
+  py::class_<hydrocoef::TableExportResult>(m, "TableExportResult", py::is_final(),
+                                           made_by_the_module_only(kExportsMadeBy), "What `hydrocoef export` wrote.")
       .def_readonly("surface", &hydrocoef::TableExportResult::surface)
       .def_readonly("body", &hydrocoef::TableExportResult::body)
       .def_readonly("format", &hydrocoef::TableExportResult::format)
@@ -59,7 +59,7 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def("text", &hydrocoef::TableExportResult::text)
       .def("json", &hydrocoef::TableExportResult::json);
   py::class_<hydrocoef::ForceCoeffsExportRun>(m, "ForceCoeffsExportRun", py::is_final(),
-                                              made_by_the_module_only(kMadeBy), "One run's forceCoeffs file.")
+                                              made_by_the_module_only(kExportsMadeBy), "One run's forceCoeffs file.")
       .def_readonly("id", &hydrocoef::ForceCoeffsExportRun::id)
       .def_readonly("body", &hydrocoef::ForceCoeffsExportRun::body)
       .def_readonly("file", &hydrocoef::ForceCoeffsExportRun::file)
@@ -75,7 +75,7 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("last_coefficients", &hydrocoef::ForceCoeffsExportRun::last_coefficients,
                     "Cd, Cs, Cl, CmRoll, CmPitch, CmYaw of the last row, as written.");
   py::class_<hydrocoef::ForceCoeffsExportResult>(m, "ForceCoeffsExportResult", py::is_final(),
-                                                 made_by_the_module_only(kMadeBy),
+                                                 made_by_the_module_only(kExportsMadeBy),
                                                  "What `hydrocoef export --format openfoam-forcecoeffs` wrote.")
       .def_readonly("database", &hydrocoef::ForceCoeffsExportResult::database)
       .def_readonly("directory", &hydrocoef::ForceCoeffsExportResult::directory)
@@ -87,7 +87,7 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("notes", &hydrocoef::ForceCoeffsExportResult::notes)
       .def("text", &hydrocoef::ForceCoeffsExportResult::text)
       .def("json", &hydrocoef::ForceCoeffsExportResult::json);
-  py::class_<hydrocoef::GazeboFitExport>(m, "GazeboFitExport", py::is_final(), made_by_the_module_only(kMadeBy))
+  py::class_<hydrocoef::GazeboFitExport>(m, "GazeboFitExport", py::is_final(), made_by_the_module_only(kExportsMadeBy))
       .def_readonly("dof", &hydrocoef::GazeboFitExport::dof)
       .def_readonly("variable", &hydrocoef::GazeboFitExport::variable)
       .def_readonly("name", &hydrocoef::GazeboFitExport::name)
@@ -100,11 +100,13 @@ void bind_exports(py::module_& m, py::class_<Database>& database) {
       .def_readonly("quadratic_unit", &hydrocoef::GazeboFitExport::quadratic_unit)
       .def_readonly("runs", &hydrocoef::GazeboFitExport::runs)
       .def_readonly("dropped_constant", &hydrocoef::GazeboFitExport::dropped_constant);
-  py::class_<hydrocoef::GazeboElementExport>(m, "GazeboElementExport", py::is_final(), made_by_the_module_only(kMadeBy))
+  py::class_<hydrocoef::GazeboElementExport>(m, "GazeboElementExport", py::is_final(),
+                                             made_by_the_module_only(kExportsMadeBy))
       .def_readonly("name", &hydrocoef::GazeboElementExport::name)
       .def_readonly("values", &hydrocoef::GazeboElementExport::values)
       .def_readonly("unit", &hydrocoef::GazeboElementExport::unit);
-  py::class_<hydrocoef::GazeboExportResult>(m, "GazeboExportResult", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::GazeboExportResult>(m, "GazeboExportResult", py::is_final(),
+                                            made_by_the_module_only(kExportsMadeBy),
                                             "What `hydrocoef export-gazebo` wrote; matrices 6x6 row-major (36).")
       .def_readonly("body", &hydrocoef::GazeboExportResult::body)
       .def_readonly("flavor", &hydrocoef::GazeboExportResult::flavor)

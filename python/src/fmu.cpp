@@ -15,14 +15,14 @@ namespace {
 using namespace pybind11::literals;
 
 /// The call that makes the result classes here.
-constexpr const char* kMadeBy = "export_fmu";
+constexpr const char* kFmuMadeBy = "export_fmu";
 
 }  // namespace
 
 void register_fmu(py::module_& m) {
   using hydrocoef::FmuExportResult;
   using hydrocoef::FmuVariable;
-  py::class_<FmuVariable>(m, "FmuVariable", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<FmuVariable>(m, "FmuVariable", py::is_final(), made_by_the_module_only(kFmuMadeBy),
                           "One Real variable of an FMU, as modelDescription.xml states it.")
       .def_readonly("value_reference", &FmuVariable::value_reference)
       .def_readonly("name", &FmuVariable::name)
@@ -30,7 +30,7 @@ void register_fmu(py::module_& m) {
       .def_readonly("unit", &FmuVariable::unit)
       .def_readonly("start", &FmuVariable::start, "Inputs and parameters: the start value; None for outputs.")
       .def_readonly("description", &FmuVariable::description);
-  py::class_<FmuExportResult>(m, "FmuExportResult", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<FmuExportResult>(m, "FmuExportResult", py::is_final(), made_by_the_module_only(kFmuMadeBy),
                               "What `hydrocoef export-fmu` wrote.")
       .def_readonly("body", &FmuExportResult::body)
       .def_readonly("surface", &FmuExportResult::surface, "The surface (kind surface; '' otherwise).")

@@ -17,7 +17,7 @@ namespace {
 using namespace pybind11::literals;
 
 /// The call that makes the result classes here.
-constexpr const char* kMadeBy = "pmm_derivatives";
+constexpr const char* kPmmDerivativesMadeBy = "pmm_derivatives";
 
 }  // namespace
 
@@ -26,7 +26,7 @@ void register_pmm_derivatives(py::module_& m) {
   using hydrocoef::PmmDerivativeRun;
   using hydrocoef::PmmDerivatives;
   using hydrocoef::PmmFrequencyDerivatives;
-  py::class_<PmmDerivative>(m, "PmmDerivative", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<PmmDerivative>(m, "PmmDerivative", py::is_final(), made_by_the_module_only(kPmmDerivativesMadeBy),
                             "One sway or yaw derivative (SI), with its prime form when L, rho and U are known.")
       .def_readonly("name", &PmmDerivative::name, "Y_v, Y_vdot, N_v, N_vdot, Y_r, Y_rdot, N_r or N_rdot.")
       .def_readonly("value", &PmmDerivative::value)
@@ -36,7 +36,8 @@ void register_pmm_derivatives(py::module_& m) {
       .def_readonly("prime", &PmmDerivative::prime, "The prime (SNAME 1950) value, or None.")
       .def_readonly("prime_std_error", &PmmDerivative::prime_std_error)
       .def_readonly("normalisation", &PmmDerivative::normalisation);
-  py::class_<PmmFrequencyDerivatives>(m, "PmmFrequencyDerivatives", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<PmmFrequencyDerivatives>(m, "PmmFrequencyDerivatives", py::is_final(),
+                                      made_by_the_module_only(kPmmDerivativesMadeBy),
                                       "The derivatives of the runs of one motion at one speed and frequency.")
       .def_readonly("motion", &PmmFrequencyDerivatives::motion, "pure sway or pure yaw.")
       .def_readonly("dof", &PmmFrequencyDerivatives::dof)
@@ -50,7 +51,7 @@ void register_pmm_derivatives(py::module_& m) {
       .def_readonly("amplitude_unit", &PmmFrequencyDerivatives::amplitude_unit)
       .def_readonly("pmm_runs", &PmmFrequencyDerivatives::pmm_runs)
       .def_readonly("derivatives", &PmmFrequencyDerivatives::derivatives);
-  py::class_<PmmDerivativeRun>(m, "PmmDerivativeRun", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<PmmDerivativeRun>(m, "PmmDerivativeRun", py::is_final(), made_by_the_module_only(kPmmDerivativesMadeBy),
                                "One stored run's derivatives (SI).")
       .def_readonly("id", &PmmDerivativeRun::id)
       .def_readonly("dof", &PmmDerivativeRun::dof)
@@ -59,7 +60,7 @@ void register_pmm_derivatives(py::module_& m) {
       .def_readonly("omega", &PmmDerivativeRun::omega)
       .def_readonly("source_path", &PmmDerivativeRun::source_path)
       .def_readonly("derivatives", &PmmDerivativeRun::derivatives);
-  py::class_<PmmDerivatives>(m, "PmmDerivatives", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<PmmDerivatives>(m, "PmmDerivatives", py::is_final(), made_by_the_module_only(kPmmDerivativesMadeBy),
                              "A body's sway and yaw derivatives, as `hydrocoef derivatives pmm`.")
       .def_readonly("body", &PmmDerivatives::body)
       .def_readonly("length", &PmmDerivatives::length, "L [m] used, or None.")

@@ -20,7 +20,7 @@ namespace {
 using namespace pybind11::literals;
 
 /// The calls that make the result classes here.
-constexpr const char* kMadeBy = "set_body_reference, body_references and run_coefficients";
+constexpr const char* kReferenceMadeBy = "set_body_reference, body_references and run_coefficients";
 
 py::array_t<double> array(const std::vector<double>& values) {
   return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
@@ -31,13 +31,12 @@ std::optional<T> optional_value(const py::object& value) {
   return value.is_none() ? std::nullopt : std::optional<T>(value.cast<T>());
 }
 
-constexpr const char* kVelocityNames[] = {"u", "v", "w", "p", "q", "r"};
 constexpr const char* kCoefficientNames[] = {"C_X", "C_Y", "C_Z", "C_K", "C_M", "C_N"};
 
 }  // namespace
 
 void register_reference(py::module_& m) {
-  py::class_<hydrocoef::BodyReference>(m, "BodyReference", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::BodyReference>(m, "BodyReference", py::is_final(), made_by_the_module_only(kReferenceMadeBy),
                                        "A body's reference data (SI; nan where not given).")
       .def_readonly("body", &hydrocoef::BodyReference::body)
       .def_readonly("length", &hydrocoef::BodyReference::length, "Reference length L [m].")
@@ -51,14 +50,15 @@ void register_reference(py::module_& m) {
       .def("text", &hydrocoef::BodyReference::text, "What `hydrocoef body set` prints.")
       .def("json", &hydrocoef::BodyReference::json, "What `hydrocoef body set --json` prints.");
 
-  py::class_<hydrocoef::BodyReferences>(m, "BodyReferences", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::BodyReferences>(m, "BodyReferences", py::is_final(), made_by_the_module_only(kReferenceMadeBy),
                                         "The reference data of a database's bodies.")
       .def_readonly("database", &hydrocoef::BodyReferences::database)
       .def_readonly("bodies", &hydrocoef::BodyReferences::bodies)
       .def("text", &hydrocoef::BodyReferences::text, "What `hydrocoef body show` prints.")
       .def("json", &hydrocoef::BodyReferences::json, "What `hydrocoef body show --json` prints.");
 
-  py::class_<hydrocoef::RunCoefficients>(m, "RunCoefficients", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::RunCoefficients>(m, "RunCoefficients", py::is_final(),
+                                         made_by_the_module_only(kReferenceMadeBy),
                                          "The selected runs' coefficients as columns (numpy arrays; nan where "
                                          "not defined, `note` says why).")
       .def_readonly("database", &hydrocoef::RunCoefficients::database)

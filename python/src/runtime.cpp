@@ -32,14 +32,6 @@ auto refusing(Call&& call) {
   }
 }
 
-/// A sequence of numbers (None: empty) as doubles.
-std::vector<double> numbers(const py::object& value) {
-  if (value.is_none()) return {};
-  const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
-  if (!array || array.ndim() != 1) throw py::type_error("expected a one-dimensional sequence of numbers");
-  return std::vector<double>(array.data(), array.data() + array.size());
-}
-
 py::array_t<double> to_array(const std::vector<double>& values) {
   return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
 }

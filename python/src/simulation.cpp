@@ -16,7 +16,6 @@ namespace {
 
 using namespace pybind11::literals;
 
-constexpr const char* kVelocityNames[] = {"u", "v", "w", "p", "q", "r"};
 constexpr const char* kForceNames[] = {"X", "Y", "Z", "K", "M", "N"};
 
 py::dict trajectory_dict(const hydrocoef::Trajectory& trajectory) {

@@ -202,7 +202,7 @@ py::dict call_surface(const Surface& surface, const py::args& args, py::kwargs k
 }
 
 /// The calls that make the report classes here.
-constexpr const char* kMadeBy =
+constexpr const char* kSurfacesMadeBy =
     "the Database's surface methods (surface_show, surface_list, surface_build, surface_rebuild, query_surface)";
 
 /// The values of `source` (a mapping or the keywords) for each axis, as lists of breakpoints.
@@ -524,14 +524,16 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
 
   // The reports of the surface commands: the numbers as attributes, and
   // text() / json(), what the CLI prints (and with --json).
-  py::class_<hydrocoef::SurfaceAxisReport>(m, "SurfaceAxisReport", py::is_final(), made_by_the_module_only(kMadeBy))
+  py::class_<hydrocoef::SurfaceAxisReport>(m, "SurfaceAxisReport", py::is_final(),
+                                           made_by_the_module_only(kSurfacesMadeBy))
       .def_readonly("name", &hydrocoef::SurfaceAxisReport::name)
       .def_readonly("unit", &hydrocoef::SurfaceAxisReport::unit)
       .def_readonly("lower", &hydrocoef::SurfaceAxisReport::lower)
       .def_readonly("upper", &hydrocoef::SurfaceAxisReport::upper)
       .def_readonly("out_of_range", &hydrocoef::SurfaceAxisReport::out_of_range)
       .def_readonly("breakpoints", &hydrocoef::SurfaceAxisReport::breakpoints, "Gridded surfaces; [] otherwise.");
-  py::class_<hydrocoef::SurfaceOutputReport>(m, "SurfaceOutputReport", py::is_final(), made_by_the_module_only(kMadeBy))
+  py::class_<hydrocoef::SurfaceOutputReport>(m, "SurfaceOutputReport", py::is_final(),
+                                             made_by_the_module_only(kSurfacesMadeBy))
       .def_readonly("name", &hydrocoef::SurfaceOutputReport::name)
       .def_readonly("unit", &hydrocoef::SurfaceOutputReport::unit)
       .def_readonly("loo_max", &hydrocoef::SurfaceOutputReport::loo_max)
@@ -546,7 +548,7 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
             return out;
           },
           "[(point as a list in axis order, sd), ...], largest first.");
-  py::class_<hydrocoef::SurfaceReport>(m, "SurfaceReport", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::SurfaceReport>(m, "SurfaceReport", py::is_final(), made_by_the_module_only(kSurfacesMadeBy),
                                        "A stored surface described whole, as `hydrocoef surface show`.")
       .def_readonly("name", &hydrocoef::SurfaceReport::name)
       .def_readonly("body", &hydrocoef::SurfaceReport::body)
@@ -560,12 +562,13 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
       .def_readonly("outputs", &hydrocoef::SurfaceReport::outputs)
       .def("text", &hydrocoef::SurfaceReport::text)
       .def("json", &hydrocoef::SurfaceReport::json);
-  py::class_<hydrocoef::SurfaceList>(m, "SurfaceList", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::SurfaceList>(m, "SurfaceList", py::is_final(), made_by_the_module_only(kSurfacesMadeBy),
                                      "The stored surfaces, as `hydrocoef surface list`.")
       .def_readonly("surfaces", &hydrocoef::SurfaceList::surfaces)
       .def("text", &hydrocoef::SurfaceList::text)
       .def("json", &hydrocoef::SurfaceList::json);
-  py::class_<hydrocoef::SurfaceBuildReport>(m, "SurfaceBuildReport", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::SurfaceBuildReport>(m, "SurfaceBuildReport", py::is_final(),
+                                            made_by_the_module_only(kSurfacesMadeBy),
                                             "A surface built and stored, as `hydrocoef surface build`.")
       .def_readonly("surface", &hydrocoef::SurfaceBuildReport::surface)
       .def_readonly("id", &hydrocoef::SurfaceBuildReport::id)
@@ -577,12 +580,13 @@ Returns a SurfaceInfo; the surface keeps its build specification for rebuild_sur
       .def("text", &hydrocoef::SurfaceBuildReport::text)
       .def("json", &hydrocoef::SurfaceBuildReport::json);
   py::class_<hydrocoef::SurfaceRebuildReport>(m, "SurfaceRebuildReport", py::is_final(),
-                                              made_by_the_module_only(kMadeBy),
+                                              made_by_the_module_only(kSurfacesMadeBy),
                                               "Surfaces built again, as `hydrocoef surface rebuild`.")
       .def_readonly("rebuilt", &hydrocoef::SurfaceRebuildReport::rebuilt)
       .def("text", &hydrocoef::SurfaceRebuildReport::text)
       .def("json", &hydrocoef::SurfaceRebuildReport::json);
-  py::class_<hydrocoef::SurfaceQueryResult>(m, "SurfaceQueryResult", py::is_final(), made_by_the_module_only(kMadeBy),
+  py::class_<hydrocoef::SurfaceQueryResult>(m, "SurfaceQueryResult", py::is_final(),
+                                            made_by_the_module_only(kSurfacesMadeBy),
                                             "The answer of `hydrocoef query`: a point, or a batch written as CSV.")
       .def_readonly("surface", &hydrocoef::SurfaceQueryResult::surface)
       .def_readonly("stale", &hydrocoef::SurfaceQueryResult::stale)
