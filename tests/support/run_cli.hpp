@@ -42,7 +42,20 @@ inline std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-/// Runs HYDROCOEF_CLI with `args` in directory `cwd`; scratch files go in
+/// The binary the CLI tests run: HYDROCOEF_CLI (this build's), or in the
+/// PostgreSQL run the one $HYDROCOEF_TEST_POSTGRESQL_CLI names when set:
+/// scripts/test.sh runs the PostgreSQL repeats of the CLI suites on the
+/// optimized build's CLI (the store's PostgreSQL code itself runs under the
+/// sanitizers in the store and reliability suites), as the SQLite run covers
+/// the sanitizer build's.
+inline std::string cli_under_test() {
+  if (on_postgresql()) {
+    if (const char* cli = std::getenv("HYDROCOEF_TEST_POSTGRESQL_CLI"); cli != nullptr && *cli != '\0') return cli;
+  }
+  return HYDROCOEF_CLI;
+}
+
+/// Runs the CLI (cli_under_test) with `args` in directory `cwd`; scratch files go in
 /// `cwd`. Standard input is `stdin_path`, or empty. `shell_prefix` runs
 /// before the program in the same shell (e.g. "ulimit -v 3000000 && ").
 inline CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd,
@@ -58,7 +71,7 @@ inline CliResult run_cli(const std::vector<std::string>& args, const std::filesy
         arguments[i] = "--db=" + database_location(cwd / arguments[i].substr(5));
     }
   }
-  command.append(shell_quote(HYDROCOEF_CLI));
+  command.append(shell_quote(cli_under_test()));
   for (const auto& arg : arguments) command.append(" ").append(shell_quote(arg));
   const auto out_path = cwd / ".cli-stdout";
   const auto err_path = cwd / ".cli-stderr";
