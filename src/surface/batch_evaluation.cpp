@@ -119,7 +119,11 @@ inline bool grid_inside(const LocalAxes<N>& g, const double* data, const std::si
     return true;
   }
   std::size_t j = 0;
-  for (; j + 4 <= n_out; j += 4) accumulate<4, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j, 1);
+  for (; j + 6 <= n_out; j += 6) accumulate<6, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j, 1);
+  if (n_out - j >= 4) {
+    accumulate<4, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j, 1);
+    j += 4;
+  }
   if (n_out - j >= 2) {
     accumulate<2, kInner, K>(inner.data(), last, offsets, cell_data + j, out + j, 1);
     j += 2;

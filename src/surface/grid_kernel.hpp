@@ -36,7 +36,7 @@ inline void hermite_derivative_weights(double t, double h, double* dw) {
 template <std::size_t M, std::size_t kInner, std::size_t K>
 inline void accumulate(const double* inner_weights, const double* last, const std::size_t* offsets, const double* data,
                        double* out, std::size_t out_stride) {
-  static_assert(M >= 1 && M <= 4);
+  static_assert(M >= 1 && M <= 6);
   hc_kernel_accumulate(M, kInner, K, inner_weights, last, offsets, data, out, out_stride);
 }
 

@@ -112,8 +112,12 @@ void sum_terms(const double* axis_weights, std::size_t replaced, const double* r
   hc_kernel_inner_weights(N, K, axis_weights, replaced, replacement, inner.data());
   const double* last = N - 1 == replaced ? replacement : axis_weights + 4 * (N - 1);
   std::size_t k = 0;
-  for (; k + 4 <= count; k += 4)
+  for (; k + 6 <= count; k += 6)
+    accumulate<6, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
+  if (count - k >= 4) {
     accumulate<4, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
+    k += 4;
+  }
   if (count - k >= 2) {
     accumulate<2, kInner, K>(inner.data(), last, offsets, data + k, out + k * out_stride, out_stride);
     k += 2;
