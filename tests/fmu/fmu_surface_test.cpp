@@ -22,14 +22,14 @@
 #include "src/surface/stored_surface.hpp"
 #include "tests/fmu/fmi_host.hpp"
 #include "tests/fmu/fmu_test_database.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace hydrocoef {
 namespace {
 
 using test::FmiHost;
+using test::same_bits;
 using test::TempDir;
-
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 struct ModelCloser {
   void operator()(hc_runtime_model* model) const { hc_runtime_close(model); }

@@ -28,7 +28,9 @@
 #include <vector>
 
 #include "tests/fmu/fmi_host.hpp"
+#include "tests/support/asr_v_example.hpp"
 #include "tests/support/run_cli.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
@@ -36,29 +38,10 @@ namespace {
 
 using test::FmiHost;
 using test::run_cli;
+using test::same_bits;
 using test::TempDir;
 
 const std::string kExample = HYDROCOEF_SOURCE_DIR "/examples/asr-v/";
-
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
-
-// The ASR-V database as examples/asr-v/run.sh makes it: both tables, the
-// surfaces asr-v-surge (X(u)) and asr-v-yaw (N(r)), PCHIP, linear outside.
-void make_asr_v_database(const TempDir& dir) {
-  for (const auto& [file, sign] : std::vector<std::pair<std::string, std::string>>{
-           {kExample + "asr-v-surge-damping.csv", "opposing"}, {kExample + "asr-v-yaw-damping.csv", "on-body"}}) {
-    const auto imported =
-        run_cli({"import", file, "--body", "asr-v", "--sign", sign, "--rho", "998.2", "--nu", "1.004e-6"}, dir.path());
-    ASSERT_EQ(imported.exit_code, 0) << imported.err;
-  }
-  for (const auto& [name, output, axis] :
-       std::vector<std::array<std::string, 3>>{{"asr-v-surge", "X", "u"}, {"asr-v-yaw", "N", "r"}}) {
-    const auto built = run_cli({"surface", "build", name, "--body", "asr-v", "--outputs", output, "--axes", axis,
-                                "--method", "pchip", "--extrapolate", "linear"},
-                               dir.path());
-    ASSERT_EQ(built.exit_code, 0) << built.err;
-  }
-}
 
 // The rows of a trajectory CSV (its header skipped), each number read back
 // exactly (the CSV writes the shortest text that reads back to the double).
@@ -170,7 +153,7 @@ std::string scenario_json(const Scenario& run) {
 
 TEST(FmuVehicle, TheAsrVPoolTestIsSimulateBitForBit) {
   TempDir dir;
-  make_asr_v_database(dir);
+  ASSERT_NO_FATAL_FAILURE(test::make_asr_v_example_database(dir));
   const auto exported =
       run_cli({"export-fmu", "asr-v", "--vehicle", kExample + "vehicle.json", "-o", "asr-v.fmu"}, dir.path());
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
@@ -185,7 +168,7 @@ TEST(FmuVehicle, TheAsrVPoolTestIsSimulateBitForBit) {
 
 TEST(FmuVehicle, TheSurfaceDampedAsrVInACurrentIsSimulateBitForBit) {
   TempDir dir;
-  make_asr_v_database(dir);
+  ASSERT_NO_FATAL_FAILURE(test::make_asr_v_example_database(dir));
   const auto exported = run_cli(
       {"export-fmu", "asr-v", "--vehicle", kExample + "vehicle-surfaces.json", "-o", "surfaces.fmu"}, dir.path());
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
@@ -208,7 +191,7 @@ class FmuVehicleCalls : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new TempDir;
-    make_asr_v_database(*dir_);
+    test::make_asr_v_example_database(*dir_);
     for (const auto& [vehicle, fmu] : std::vector<std::pair<std::string, std::string>>{
              {"vehicle.json", "laws.fmu"}, {"vehicle-surfaces.json", "surfaces.fmu"}}) {
       const auto exported = run_cli({"export-fmu", "asr-v", "--vehicle", kExample + vehicle, "-o", fmu}, dir_->path());
@@ -377,7 +360,7 @@ TEST_F(FmuVehicleCalls, OneBinaryServesBothKinds) {
 
 TEST(FmuVehicleCli, RefusedExportsWriteNothing) {
   TempDir dir;
-  make_asr_v_database(dir);
+  ASSERT_NO_FATAL_FAILURE(test::make_asr_v_example_database(dir));
   std::ofstream(dir / "bad.json") << R"({"mass": -6.7, "inertia": [1, 1, 1], "center_of_gravity": [0, 0, 0],
                                         "neutrally_buoyant": true})";
   for (const auto& [args, text] : std::vector<std::pair<std::vector<std::string>, std::string>>{

@@ -19,18 +19,18 @@
 #include <vector>
 
 #include "tests/support/run_cli.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
 namespace {
 
 using test::run_cli;
+using test::same_bits;
 using test::shell_quote;
 using test::TempDir;
 
 const std::string kExample = HYDROCOEF_SOURCE_DIR "/examples/asr-v/";
-
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 // Whitespace- or comma-separated rows of numbers, after one header line.
 std::vector<std::vector<double>> rows_of(const std::string& text, char separator) {

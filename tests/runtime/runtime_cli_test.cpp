@@ -25,13 +25,16 @@
 #include "src/store/database.hpp"
 #include "src/surface/stored_surface.hpp"
 #include "tests/runtime/runtime_stepping.hpp"
+#include "tests/support/asr_v_example.hpp"
 #include "tests/support/run_cli.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hydrocoef {
 namespace {
 
 using test::run_cli;
+using test::same_bits;
 using test::TempDir;
 
 const std::string kSurge = HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-surge-damping.csv";
@@ -49,8 +52,6 @@ void make_database(const TempDir& dir) {
     ASSERT_EQ(built.exit_code, 0) << built.err;
   }
 }
-
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 struct ModelCloser {
   void operator()(hc_runtime_model* model) const { hc_runtime_close(model); }
@@ -345,19 +346,7 @@ TEST(RuntimeCli, AVehicleIsExportedWithTheSurfacesItReads) {
 // stepped through the C API is simulate's trajectory bit for bit.
 TEST(RuntimeCli, TheAsrVPoolTestWithItsSurfacesStepsAsSimulate) {
   TempDir dir;
-  for (const auto& [file, sign] : std::vector<std::pair<std::string, std::string>>{
-           {kSurge, "opposing"}, {HYDROCOEF_SOURCE_DIR "/examples/asr-v/asr-v-yaw-damping.csv", "on-body"}}) {
-    const auto imported =
-        run_cli({"import", file, "--body", "asr-v", "--sign", sign, "--rho", "998.2", "--nu", "1.004e-6"}, dir.path());
-    ASSERT_EQ(imported.exit_code, 0) << imported.err;
-  }
-  for (const auto& [name, output, axis] :
-       std::vector<std::array<std::string, 3>>{{"asr-v-surge", "X", "u"}, {"asr-v-yaw", "N", "r"}}) {
-    const auto built = run_cli({"surface", "build", name, "--body", "asr-v", "--outputs", output, "--axes", axis,
-                                "--method", "pchip", "--extrapolate", "linear"},
-                               dir.path());
-    ASSERT_EQ(built.exit_code, 0) << built.err;
-  }
+  ASSERT_NO_FATAL_FAILURE(test::make_asr_v_example_database(dir));
   const std::string vehicle = HYDROCOEF_SOURCE_DIR "/examples/asr-v/vehicle-surfaces.json";
   const auto exported =
       run_cli({"export", "asr-v", "--format", "runtime", "--vehicle", vehicle, "-o", "asr-v.hcrt"}, dir.path());

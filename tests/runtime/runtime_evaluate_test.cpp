@@ -20,9 +20,12 @@
 #include "src/export/runtime_export.hpp"
 #include "src/surface/coefficient_surface.hpp"
 #include "src/surface/grid_table.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace hydrocoef {
 namespace {
+
+using test::same_bits;
 
 struct ModelCloser {
   void operator()(hc_runtime_model* model) const { hc_runtime_close(model); }
@@ -104,8 +107,6 @@ double coordinate(const GridAxis& axis, std::mt19937_64& random) {
   if (kind < 0.8) return unit(random) < 0.5 ? lo : hi;
   return unit(random) < 0.5 ? lo - 0.6 * range * unit(random) : hi + 0.6 * range * unit(random);
 }
-
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 // Evaluates `points` random points both ways; adds to `refused` those the library refused.
 void compare(const Case& c, const hc_runtime_model* model, std::size_t index, std::size_t points,

@@ -14,13 +14,10 @@
 #include "src/dynamics/scenario.hpp"
 #include "src/dynamics/simulation.hpp"
 #include "src/dynamics/vehicle_model.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace hydrocoef {
-namespace test {
-
-inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
-
-}  // namespace test
+namespace test {}  // namespace test
 
 // Steps a scenario through the C API as simulate_model steps it (one segment:
 // its inputs held; the output events at k / rate, each span in equal RK4

@@ -35,9 +35,12 @@
 #include "src/surface/coefficient_surface.hpp"
 #include "src/surface/grid_table.hpp"
 #include "tests/runtime/runtime_stepping.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace hydrocoef {
 namespace {
+
+using test::same_bits;
 
 struct ModelCloser {
   void operator()(hc_runtime_model* model) const { hc_runtime_close(model); }
@@ -181,8 +184,6 @@ Model open_bytes(const std::string& bytes) {
   EXPECT_EQ(hc_runtime_open_memory(bytes.data(), bytes.size(), &model, err, sizeof err), HC_RUNTIME_OK) << err;
   return Model(model);
 }
-
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 // A random state: a position, an attitude of norm near 1 (as between the
 // steps' normalisations), velocities in the surfaces' ranges and beyond.

@@ -19,13 +19,14 @@
 #include "src/export/runtime_export.hpp"
 #include "src/surface/coefficient_surface.hpp"
 #include "src/surface/grid_table.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace hydrocoef {
 namespace {
 
-using runtime::Model;
+using test::same_bits;
 
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+using runtime::Model;
 
 // A surface of two outputs over `n` axes (even breakpoints on [-1, 1]) with
 // a runs' sigma.
