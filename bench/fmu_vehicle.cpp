@@ -35,13 +35,7 @@ namespace {
 
 // bench_simulate's six-surface ASR-V-like vehicle as the vehicle FMU's runtime file (fmu_model = vehicle).
 std::string six_surface_runtime_file(Interpolation method) {
-  const bench::SixSurfaceVehicle vehicle_and_surfaces = bench::six_surface_vehicle(method);
-  const VehicleModel model = bench::six_surface_model(vehicle_and_surfaces);
-  const auto& surfaces = vehicle_and_surfaces.surfaces;
-  std::vector<RuntimeSurface> runtime;
-  for (const auto& [name, surface] : surfaces) runtime.push_back(runtime_surface(name, surface, {}));
-  const RuntimeVehicle vehicle{&model, {{"name", "bench"}}};
-  return runtime_file_bytes(runtime_model_texts({{"fmu_model", "vehicle"}}, true), runtime, &vehicle);
+  return bench::six_surface_runtime_bytes(method, {{"fmu_model", "vehicle"}});
 }
 
 void logger(fmi2ComponentEnvironment, fmi2String, fmi2Status status, fmi2String category, fmi2String message, ...) {

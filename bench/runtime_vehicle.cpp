@@ -29,13 +29,7 @@ using Runtime = std::unique_ptr<hc_runtime_model, Closer>;
 
 // bench_simulate's six-surface ASR-V-like vehicle as a runtime file, opened.
 Runtime six_surface_runtime(Interpolation method) {
-  const bench::SixSurfaceVehicle vehicle_and_surfaces = bench::six_surface_vehicle(method);
-  const VehicleModel model = bench::six_surface_model(vehicle_and_surfaces);
-  const auto& surfaces = vehicle_and_surfaces.surfaces;
-  std::vector<RuntimeSurface> runtime;
-  for (const auto& [name, surface] : surfaces) runtime.push_back(runtime_surface(name, surface, {}));
-  const RuntimeVehicle vehicle{&model, {{"name", "bench"}}};
-  const std::string bytes = runtime_file_bytes(runtime_model_texts({}, true), runtime, &vehicle);
+  const std::string bytes = bench::six_surface_runtime_bytes(method, {});
   hc_runtime_model* opened = nullptr;
   char err[256];
   if (hc_runtime_open_memory(bytes.data(), bytes.size(), &opened, err, sizeof err) != HC_RUNTIME_OK)

@@ -1,5 +1,5 @@
 // bench_simulate's vehicle, shared by the benchmarks that step it
-// (bench/simulate.cpp, bench/runtime_vehicle.cpp): an ASR-V-like sphere
+// (bench/simulate.cpp, bench/runtime_vehicle.cpp, bench/fmu_vehicle.cpp): an ASR-V-like sphere
 // (6.7 kg, neutrally buoyant, CG 2 cm below the centre, the sphere's added
 // mass) whose six DOFs are each damped by a 2-D gridded surface (20 x 20)
 // over its own velocity and a cross velocity: six separate surfaces, so six
@@ -16,6 +16,7 @@
 
 #include "src/dynamics/rigid_body.hpp"
 #include "src/dynamics/vehicle_model.hpp"
+#include "src/export/runtime_export.hpp"
 
 namespace hydrocoef::bench {
 
@@ -90,6 +91,18 @@ inline ModelInputs turning_inputs() {
   in.tau_b << 0.5, 0.1, 0.0, 0.0, 0.0, 0.003;
   in.current_n = Vector3(0.05, 0.02, 0.0);
   return in;
+}
+
+// The vehicle and its six surfaces as a runtime file (src/export/runtime_export.hpp), with the model's texts
+// `given` (bench/runtime_vehicle.cpp, bench/fmu_vehicle.cpp).
+inline std::string six_surface_runtime_bytes(Interpolation method, RuntimeTexts given) {
+  const SixSurfaceVehicle vehicle_and_surfaces = six_surface_vehicle(method);
+  const VehicleModel model = six_surface_model(vehicle_and_surfaces);
+  std::vector<RuntimeSurface> runtime;
+  for (const auto& [name, surface] : vehicle_and_surfaces.surfaces)
+    runtime.push_back(runtime_surface(name, surface, {}));
+  const RuntimeVehicle vehicle{&model, {{"name", "bench"}}};
+  return runtime_file_bytes(runtime_model_texts(std::move(given), true), runtime, &vehicle);
 }
 
 }  // namespace hydrocoef::bench

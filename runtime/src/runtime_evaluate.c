@@ -37,18 +37,10 @@ static const hc_runtime_surface* surface_at(const hc_runtime_model* model, size_
   return model != NULL && surface < model->surface_count ? &model->surfaces[surface] : NULL;
 }
 
-static const char* find_text(const hc_text_pair* pairs, size_t count, const char* key) {
-  if (key == NULL) return NULL;
-  for (size_t i = 0; i < count; ++i) {
-    if (strcmp(pairs[i].key, key) == 0) return pairs[i].value;
-  }
-  return NULL;
-}
-
 uint64_t hc_runtime_content_hash(const hc_runtime_model* model) { return model != NULL ? model->hash : 0; }
 
 const char* hc_runtime_metadata(const hc_runtime_model* model, const char* key) {
-  return model != NULL ? find_text(model->metadata, model->metadata_count, key) : NULL;
+  return model != NULL ? hc_find_text(model->metadata, model->metadata_count, key) : NULL;
 }
 
 size_t hc_runtime_surface_count(const hc_runtime_model* model) { return model != NULL ? model->surface_count : 0; }
@@ -77,7 +69,7 @@ const char* hc_runtime_surface_method(const hc_runtime_model* model, size_t surf
 
 const char* hc_runtime_surface_metadata(const hc_runtime_model* model, size_t surface, const char* key) {
   const hc_runtime_surface* s = surface_at(model, surface);
-  return s != NULL ? find_text(s->metadata, s->metadata_count, key) : NULL;
+  return s != NULL ? hc_find_text(s->metadata, s->metadata_count, key) : NULL;
 }
 
 int hc_runtime_surface_has_sigma(const hc_runtime_model* model, size_t surface) {
@@ -143,9 +135,10 @@ static void sum(size_t n, size_t K, const double* weights, size_t replaced, cons
   double inner[1024]; /* K^(n-1) <= 4^5 */
   switch (K * 8 + n) {
     HC_SUM_CASE(1, 1)
-    HC_SUM_CASE(2, 1) HC_SUM_CASE(3, 1) HC_SUM_CASE(4, 1) HC_SUM_CASE(5, 1) HC_SUM_CASE(6, 1) HC_SUM_CASE(1, 2)
-        HC_SUM_CASE(2, 2) HC_SUM_CASE(3, 2) HC_SUM_CASE(4, 2) HC_SUM_CASE(5, 2) HC_SUM_CASE(6, 2) HC_SUM_CASE(1, 4)
-            HC_SUM_CASE(2, 4) HC_SUM_CASE(3, 4) HC_SUM_CASE(4, 4) HC_SUM_CASE(5, 4) HC_SUM_CASE(6, 4) default : break;
+    HC_SUM_CASE(2, 1)
+    HC_SUM_CASE(3, 1) HC_SUM_CASE(4, 1) HC_SUM_CASE(5, 1) HC_SUM_CASE(6, 1) HC_SUM_CASE(1, 2) HC_SUM_CASE(2, 2)
+        HC_SUM_CASE(3, 2) HC_SUM_CASE(4, 2) HC_SUM_CASE(5, 2) HC_SUM_CASE(6, 2) HC_SUM_CASE(1, 4) HC_SUM_CASE(2, 4)
+            HC_SUM_CASE(3, 4) HC_SUM_CASE(4, 4) HC_SUM_CASE(5, 4) HC_SUM_CASE(6, 4) default : break;
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "damping_kernel.h"
 #include "grid_kernel.h"
@@ -15,6 +16,15 @@ typedef struct hc_text_pair {
   const char* key;
   const char* value;
 } hc_text_pair;
+
+/* The value of `key` among count pairs, or NULL (also for a NULL key). */
+static inline const char* hc_find_text(const hc_text_pair* pairs, size_t count, const char* key) {
+  if (key == NULL) return NULL;
+  for (size_t i = 0; i < count; ++i) {
+    if (strcmp(pairs[i].key, key) == 0) return pairs[i].value;
+  }
+  return NULL;
+}
 
 typedef struct hc_runtime_axis_info {
   const char* name;

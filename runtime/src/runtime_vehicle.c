@@ -18,10 +18,7 @@ int hc_runtime_has_vehicle(const hc_runtime_model* model) { return vehicle_of(mo
 
 const char* hc_runtime_vehicle_metadata(const hc_runtime_model* model, const char* key) {
   const hc_runtime_vehicle* v = vehicle_of(model);
-  if (v == NULL || key == NULL) return NULL;
-  for (size_t i = 0; i < v->metadata_count; ++i)
-    if (strcmp(v->metadata[i].key, key) == 0) return v->metadata[i].value;
-  return NULL;
+  return v != NULL ? hc_find_text(v->metadata, v->metadata_count, key) : NULL;
 }
 
 size_t hc_runtime_vehicle_disturbance_count(const hc_runtime_model* model) {
